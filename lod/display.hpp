@@ -1,0 +1,51 @@
+// Displays as the acuity model sees them: per-view pixels and asymmetric field of view, as
+// OpenXR reports them (XrFovf angleLeft/Right/Up/Down, radians, left and down negative),
+// the highest spatial frequency a view can show (xi, seed 000 section 3.4), and named presets.
+#pragma once
+
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace gazelod::lod {
+
+// Field of view of one view, OpenXR convention: angle_left_rad < angle_right_rad,
+// angle_down_rad < angle_up_rad; left and down are usually negative.
+struct FovRad {
+  double angle_left_rad = 0.0;
+  double angle_right_rad = 0.0;
+  double angle_up_rad = 0.0;
+  double angle_down_rad = 0.0;
+};
+
+// One view (one eye of an HMD, or a desktop window).
+struct ViewSpec {
+  int width_px = 0;
+  int height_px = 0;
+  FovRad fov;
+};
+
+struct DisplaySpec {
+  std::string name;          // preset key ("quest3") or "custom"
+  std::string label;         // "Meta Quest 3"
+  ViewSpec views[2];         // per-eye; view_count 1 for a desktop
+  int view_count = 2;
+  double refresh_hz = 90.0;
+  double eye_tracking_hz = 0.0;             // 0: no eye tracker
+  double eye_tracking_accuracy_deg = 0.0;   // typical angular error of its tracker, 0 if none
+  std::string source;        // where the figures come from
+};
+
+// xi: the highest displayable frequency in cycles/deg, per axis and combined
+// (xi = max(hpix / (2 hfov), vpix / (2 vfov)), seed 000 section 3.4). Implemented in display.cpp.
+double xi_h_cpd(const ViewSpec& view);
+double xi_v_cpd(const ViewSpec& view);
+double xi_cpd(const ViewSpec& view);
+double xi_cpd(const DisplaySpec& display);
+
+// Presets by command-line name: desktop, iglasses, quest3, questpro, index, viveproeye,
+// varjoxr4, visionpro, psvr2, pimaxcrystal. nullptr when unknown.
+const DisplaySpec* find_display_preset(std::string_view name);
+std::span<const DisplaySpec> display_presets();
+
+}  // namespace gazelod::lod

@@ -1,0 +1,26 @@
+// An object's chain of levels of detail, as the selection and the budget see it.
+// Level 0 is full detail; each coarser level says how much detail it removes (seed 000 3.2).
+#pragma once
+
+#include <cstdint>
+
+namespace gazelod::lod {
+
+// How a level's removed detail is described.
+enum class DetailKind : std::uint8_t {
+  // Highest spatial frequency removed, in cycles per object diameter (Reddy's measure,
+  // from rendering the level against the full model).
+  removed_cycles_per_diameter,
+  // Geometric error in object units (metres); a stand-in: an error subtending angle a removes
+  // detail of about 1 / (2a) cycles/deg.
+  geometric_error_m,
+};
+
+struct LodLevel {
+  std::uint32_t triangles = 0;
+  std::uint32_t vertices = 0;
+  DetailKind detail_kind = DetailKind::removed_cycles_per_diameter;
+  double detail = 0.0;  // 0 for the full-detail level
+};
+
+}  // namespace gazelod::lod

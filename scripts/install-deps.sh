@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages gazelod needs to build, test and run. Idempotent; run as
+# root (or with sudo available). Every dependency is a Debian package: nothing is downloaded
+# from anywhere else.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config git
+  # OpenXR: loader + headers, Khronos's hello_xr, the core validation layer
+  libopenxr-dev libopenxr-loader1 libopenxr-utils openxr-layer-corevalidation
+  # Vulkan with Mesa's lavapipe (CPU) driver; glslang compiles our shaders
+  libvulkan-dev mesa-vulkan-drivers vulkan-tools glslang-tools
+  # Maths, devices, assets, formats, command line
+  libglm-dev libhidapi-dev libtinygltf-dev libmeshoptimizer-dev nlohmann-json3-dev libcli11-dev
+  libpng-dev libstb-dev
+  # Tests and benchmarks
+  libgtest-dev libgmock-dev libbenchmark-dev
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages already installed"
+  exit 0
+fi
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then
+  command -v sudo >/dev/null || { echo "install-deps: need root or sudo to install: ${missing[*]}" >&2; exit 1; }
+  SUDO=sudo
+fi
+echo "install-deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# The two set-up commands of the README:
+#   bash scripts/setup.sh run    install, build, run the main job
+#   bash scripts/setup.sh test   install, build, run every test (also under ASan + UBSan)
+# Build folders: build/ (release with debug info), build-asan/ (sanitizers).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+what="${1:-}"
+[ $# -gt 0 ] && shift
+jobs="$(nproc 2>/dev/null || echo 2)"
+
+bash scripts/install-deps.sh
+
+build() {  # build DIR [cmake args...]
+  local dir="$1"; shift
+  cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo "$@" >/dev/null
+  cmake --build "$dir" -j"$jobs"
+}
+
+case "$what" in
+  run)
+    build build -DGAZELOD_BUILD_TESTS=OFF -DGAZELOD_BUILD_BENCH=OFF
+    ./build/plugin/cli/gazelod run "$@"
+    ;;
+  test)
+    build build
+    echo "== tests (release) =="
+    ctest --test-dir build --output-on-failure -j"$jobs" --timeout 600
+    echo "== unit tests under AddressSanitizer + UndefinedBehaviorSanitizer =="
+    build build-asan -DGAZELOD_SANITIZE=ON -DGAZELOD_BUILD_BENCH=OFF
+    ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+      ctest --test-dir build-asan --output-on-failure -j"$jobs" -L unit --timeout 600
+    ;;
+  *)
+    echo "usage: bash scripts/setup.sh run|test" >&2
+    exit 2
+    ;;
+esac

@@ -1,0 +1,41 @@
+// A small SVG line-plot writer for reports (frames over time, per-HMD comparisons):
+// stacked panels sharing one x axis, optional vertical event markers. No dependencies.
+#pragma once
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace gazelod::cli {
+
+struct PlotSeries {
+  std::string label;
+  std::string colour;          // CSS colour, e.g. "#d62728"
+  std::vector<double> y;       // one value per x; non-finite values break the line
+};
+
+struct PlotPanel {
+  std::string y_label;
+  std::vector<PlotSeries> series;
+};
+
+struct PlotMarker {
+  double x = 0.0;
+  std::string colour;
+};
+
+struct Plot {
+  std::string title;
+  std::string x_label;
+  std::vector<double> x;
+  std::vector<PlotPanel> panels;
+  std::vector<PlotMarker> markers;       // vertical lines across every panel
+  std::string marker_legend;             // what the markers mean
+  int width_px = 960;
+  int panel_height_px = 220;
+};
+
+// Writes a standalone SVG document. Empty or constant series still produce valid axes.
+void write_svg(const Plot& plot, std::ostream& out);
+
+}  // namespace gazelod::cli

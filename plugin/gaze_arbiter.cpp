@@ -1,0 +1,68 @@
+#include "plugin/gaze_arbiter.hpp"
+
+namespace gazelod::plugin {
+namespace {
+
+std::string seconds(std::int64_t ns) { return std::to_string(static_cast<double>(ns) * 1e-9).substr(0, 5) + " s"; }
+
+}  // namespace
+
+GazeArbiter::GazeArbiter(gaze::GazeSource* primary, gaze::GazeSource* secondary, ArbiterConfig config)
+    : primary_(primary), secondary_(secondary), config_(config) {}
+
+void GazeArbiter::switch_to(ArbitratedSource s, const std::string& why, bool force_report) {
+  if (s == current_ && reported_initial_ && !force_report) return;
+  current_ = s;
+  reported_initial_ = true;
+  if (changed_) changed_(s, why);
+}
+
+ArbiterResult GazeArbiter::update(std::int64_t t_ns) {
+  if (!started_) {
+    started_ = true;
+    first_t_ns_ = t_ns;
+  }
+  ArbiterResult result;
+  bool newly_distrusted = false;  // reported even if the active source stays the same
+
+  if (primary_ && !primary_distrusted_) {
+    if (auto s = primary_->sample_at(t_ns)) {
+      primary_ever_ = true;
+      result.source = ArbitratedSource::primary;
+      result.sample = *s;
+      switch_to(ArbitratedSource::primary, primary_->name() + " eye gaze delivered", false);
+      return result;
+    }
+    // Never delivered within the timeout: the runtime advertises gaze it does not have.
+    if (!primary_ever_ && t_ns - first_t_ns_ > config_.silence_timeout_ns) {
+      primary_distrusted_ = true;
+      newly_distrusted = true;
+    }
+  }
+
+  std::string why;
+  if (!primary_) {
+    why = "no primary gaze source";
+  } else if (primary_distrusted_) {
+    why = primary_->name() + " advertised eye gaze but delivered none in " + seconds(config_.silence_timeout_ns);
+  } else {
+    why = primary_->name() + " gaze unavailable (" + primary_->status() + ")";
+  }
+
+  if (secondary_) {
+    if (auto s = secondary_->sample_at(t_ns)) {
+      result.source = ArbitratedSource::secondary;
+      result.sample = *s;
+      switch_to(ArbitratedSource::secondary, why + "; using " + secondary_->name(), newly_distrusted);
+      return result;
+    }
+    why += "; " + secondary_->name() + " unavailable (" + secondary_->status() + ")";
+  }
+  // Short gaps of a trusted primary (blinks) are bridged by the source's own hold; beyond
+  // that the head-fixed fallback keeps detail with a widened cone.
+  switch_to(ArbitratedSource::head_fixed, why + "; head-fixed gaze with a widened cone", newly_distrusted);
+  result.source = ArbitratedSource::head_fixed;
+  return result;
+}
+
+}  // namespace gazelod::plugin

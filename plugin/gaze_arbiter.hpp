@@ -1,0 +1,60 @@
+// Chooses the gaze source each frame: the runtime's eye gaze, else an external tracker or
+// trace, else head-fixed gaze with a widened cone. Reports each change once, with why.
+// A runtime that advertises gaze but never delivers it loses trust after a timeout.
+#pragma once
+
+#include "gaze/gaze_source.hpp"
+
+#include <cstdint>
+#include <functional>
+#include <string>
+
+namespace gazelod::plugin {
+
+enum class ArbitratedSource : std::uint8_t { primary, secondary, head_fixed };
+
+struct ArbiterConfig {
+  // Until the primary source has delivered once, it is given this long from the first
+  // frame before it is distrusted for the rest of the session (ns). Gaps after it has
+  // delivered (blinks, lost tracking) fall back only while they last.
+  std::int64_t silence_timeout_ns = 1'000'000'000;
+};
+
+struct ArbiterResult {
+  ArbitratedSource source = ArbitratedSource::head_fixed;
+  gaze::GazeSample sample;  // valid only when source != head_fixed
+};
+
+class GazeArbiter {
+ public:
+  using Changed = std::function<void(ArbitratedSource now, const std::string& why)>;
+
+  // Either source may be null. The arbiter does not own them.
+  GazeArbiter(gaze::GazeSource* primary, gaze::GazeSource* secondary, ArbiterConfig config = {});
+
+  void on_change(Changed callback) { changed_ = std::move(callback); }
+
+  // Called once per frame at the predicted display time. The change callback fires on each
+  // change of source, and once more when the primary is distrusted.
+  ArbiterResult update(std::int64_t t_ns);
+
+  ArbitratedSource current() const { return current_; }
+  // True once the primary source was judged silent (advertised but never delivered).
+  bool primary_distrusted() const { return primary_distrusted_; }
+
+ private:
+  void switch_to(ArbitratedSource s, const std::string& why, bool force_report);
+
+  gaze::GazeSource* primary_;
+  gaze::GazeSource* secondary_;
+  ArbiterConfig config_;
+  Changed changed_;
+  ArbitratedSource current_ = ArbitratedSource::head_fixed;
+  bool started_ = false;
+  bool reported_initial_ = false;
+  std::int64_t first_t_ns_ = 0;
+  bool primary_ever_ = false;
+  bool primary_distrusted_ = false;
+};
+
+}  // namespace gazelod::plugin

@@ -1,0 +1,100 @@
+#include "plugin/gaze_arbiter.hpp"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace gazelod::plugin {
+namespace {
+
+// A scripted source: available on the listed frames only.
+class ScriptedSource : public gaze::GazeSource {
+ public:
+  ScriptedSource(std::string name, std::function<bool(std::int64_t)> available)
+      : name_(std::move(name)), available_(std::move(available)) {}
+  std::string name() const override { return name_; }
+  std::optional<gaze::GazeSample> sample_at(std::int64_t t_ns) override {
+    if (!available_(t_ns)) return std::nullopt;
+    gaze::GazeSample s;
+    s.t_ns = t_ns;
+    s.valid = true;
+    return s;
+  }
+  std::string status() const override { return "scripted gap"; }
+
+ private:
+  std::string name_;
+  std::function<bool(std::int64_t)> available_;
+};
+
+constexpr std::int64_t kMs = 1'000'000;
+
+struct Log {
+  std::vector<ArbitratedSource> sources;
+  std::vector<std::string> reasons;
+};
+
+GazeArbiter make(gaze::GazeSource* p, gaze::GazeSource* s, Log& log) {
+  GazeArbiter a(p, s, {1000 * kMs});
+  a.on_change([&log](ArbitratedSource now, const std::string& why) {
+    log.sources.push_back(now);
+    log.reasons.push_back(why);
+  });
+  return a;
+}
+
+TEST(GazeArbiter, UsesPrimaryWhenItDelivers) {
+  ScriptedSource primary("openxr", [](std::int64_t) { return true; });
+  Log log;
+  auto a = make(&primary, nullptr, log);
+  for (int i = 0; i < 10; ++i) EXPECT_EQ(a.update(i * 11 * kMs).source, ArbitratedSource::primary);
+  ASSERT_EQ(log.sources.size(), 1u);  // reported once
+}
+
+TEST(GazeArbiter, DistrustsARuntimeThatAdvertisesButNeverDelivers) {
+  ScriptedSource silent("openxr", [](std::int64_t) { return false; });
+  ScriptedSource hid("hid", [](std::int64_t) { return true; });
+  Log log;
+  auto a = make(&silent, &hid, log);
+  EXPECT_EQ(a.update(0).source, ArbitratedSource::secondary);
+  EXPECT_FALSE(a.primary_distrusted());
+  a.update(1500 * kMs);
+  EXPECT_TRUE(a.primary_distrusted());
+  ASSERT_GE(log.reasons.size(), 2u);
+  EXPECT_NE(log.reasons.back().find("advertised eye gaze but delivered none"), std::string::npos);
+  EXPECT_EQ(log.sources.back(), ArbitratedSource::secondary);
+}
+
+TEST(GazeArbiter, FallsBackDuringGapsAndReturns) {
+  // Delivers except between 100 and 200 ms.
+  ScriptedSource primary("openxr", [](std::int64_t t) { return t < 100 * kMs || t >= 200 * kMs; });
+  Log log;
+  auto a = make(&primary, nullptr, log);
+  EXPECT_EQ(a.update(0).source, ArbitratedSource::primary);
+  EXPECT_EQ(a.update(150 * kMs).source, ArbitratedSource::head_fixed);
+  EXPECT_EQ(a.update(160 * kMs).source, ArbitratedSource::head_fixed);
+  EXPECT_EQ(a.update(250 * kMs).source, ArbitratedSource::primary);
+  ASSERT_EQ(log.sources.size(), 3u);  // primary, head-fixed, primary: one report per change
+  EXPECT_NE(log.reasons[1].find("scripted gap"), std::string::npos);
+  EXPECT_FALSE(a.primary_distrusted());  // it had delivered: a gap is not distrust
+}
+
+TEST(GazeArbiter, HeadFixedWithoutAnySource) {
+  Log log;
+  auto a = make(nullptr, nullptr, log);
+  EXPECT_EQ(a.update(0).source, ArbitratedSource::head_fixed);
+  ASSERT_EQ(log.sources.size(), 1u);
+  EXPECT_NE(log.reasons[0].find("head-fixed"), std::string::npos);
+}
+
+TEST(GazeArbiter, SecondaryUnpluggedMidRunFallsToHeadFixed) {
+  ScriptedSource hid("hid", [](std::int64_t t) { return t < 50 * kMs; });
+  Log log;
+  auto a = make(nullptr, &hid, log);
+  EXPECT_EQ(a.update(0).source, ArbitratedSource::secondary);
+  EXPECT_EQ(a.update(60 * kMs).source, ArbitratedSource::head_fixed);
+  EXPECT_NE(log.reasons.back().find("hid unavailable"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace gazelod::plugin

@@ -34,6 +34,10 @@ struct DisplaySpec {
   double eye_tracking_hz = 0.0;             // 0: no eye tracker
   double eye_tracking_accuracy_deg = 0.0;   // typical angular error of its tracker, 0 if none
   std::string source;        // where the figures come from
+  // Extension (gazelod, not seed 000): pixels per degree at the lens centre where the maker
+  // states it (lenses concentrate pixels there), 0 if unknown. xi_cpd() stays Reddy's
+  // whole-view average; xi_center_cpd() gives the centre figure.
+  double center_ppd = 0.0;
 };
 
 // xi: the highest displayable frequency in cycles/deg, per axis and combined
@@ -45,6 +49,17 @@ double xi_cpd(const DisplaySpec& display);
 
 // Presets by command-line name: desktop, iglasses, quest3, questpro, index, viveproeye,
 // varjoxr4, visionpro, psvr2, pimaxcrystal. nullptr when unknown.
+// Extensions (gazelod): field of view in degrees per axis, a symmetric FOV from degrees,
+// the centre-of-lens xi (center_ppd / 2, one pixel is half a cycle; falls back to xi_cpd),
+// and validation. validate_* return "" when valid, else a message naming the bad field
+// (pixels must be > 0, each FOV axis in (0, 180) deg with finite angles in (-90, 90) deg).
+double fov_h_deg(const ViewSpec& view);
+double fov_v_deg(const ViewSpec& view);
+FovRad symmetric_fov(double fov_h_deg, double fov_v_deg);
+double xi_center_cpd(const DisplaySpec& display);
+std::string validate_view(const ViewSpec& view);
+std::string validate_display(const DisplaySpec& display);
+
 const DisplaySpec* find_display_preset(std::string_view name);
 std::span<const DisplaySpec> display_presets();
 

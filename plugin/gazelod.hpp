@@ -55,6 +55,9 @@ struct PluginConfig {
   // Without eye tracking gaze is head-fixed (straight ahead) and the cone is widened to
   // cover where the eyes usually are relative to the head (degrees).
   double head_fixed_cone_deg = 20.0;
+  // Also select with the criteria sets size+eccentricity and size+velocity each frame, so a
+  // report can split the reduction between the criteria (two more selections per frame).
+  bool compute_breakdown = false;
 };
 
 struct ObjectDesc {
@@ -72,12 +75,17 @@ struct FrameDecisions {
   std::span<const std::uint8_t> lod_size_only;   // what each criterion alone allows
   std::span<const std::uint8_t> lod_eccentricity_only;
   std::span<const std::uint8_t> lod_velocity_only;
+  std::span<const std::uint8_t> lod_size_eccentricity;  // empty unless compute_breakdown
+  std::span<const std::uint8_t> lod_size_velocity;      // empty unless compute_breakdown
   GazeSourceKind gaze_source = GazeSourceKind::head_fixed;
   bool gaze_valid = false;
   glm::dvec3 gaze_direction_world{0.0, 0.0, -1.0};
+  glm::dvec3 gaze_direction_head{0.0, 0.0, -1.0};  // as the source gave it (head space)
   glm::dvec3 eye_position_world{0.0};
   glm::dvec3 head_angular_velocity_rad_s{0.0};   // base space
   double cone_inflation_deg = 0.0;
+  double xi_cpd = 0.0;                             // display limit used this frame
+  bool head_valid = false;
 };
 
 class LodPlugin {

@@ -1,5 +1,7 @@
 #include "plugin/cli/xr_app.hpp"
 
+#include "sim/runtime/simulator_state_ext.h"
+
 #include <algorithm>
 #include <array>
 #include <cstdio>
@@ -68,6 +70,8 @@ void XrApp::create_instance(bool want_eye_gaze) {
   std::vector<const char*> exts{XR_KHR_VULKAN_ENABLE2_EXTENSION_NAME};
   eye_gaze_enabled_ = want_eye_gaze && has(XR_EXT_EYE_GAZE_INTERACTION_EXTENSION_NAME);
   if (eye_gaze_enabled_) exts.push_back(XR_EXT_EYE_GAZE_INTERACTION_EXTENSION_NAME);
+  simulator_state_enabled_ = has(XR_GAZELOD_SIMULATOR_STATE_EXTENSION_NAME);
+  if (simulator_state_enabled_) exts.push_back(XR_GAZELOD_SIMULATOR_STATE_EXTENSION_NAME);
 
   XrInstanceCreateInfo info{XR_TYPE_INSTANCE_CREATE_INFO};
   std::strncpy(info.applicationInfo.applicationName, "gazelod run", XR_MAX_APPLICATION_NAME_SIZE - 1);
@@ -219,6 +223,15 @@ void XrApp::create_swapchains() {
     swapchains_.push_back(std::move(sv));
   }
   projection_views_.assign(swapchains_.size(), {XR_TYPE_COMPOSITION_LAYER_PROJECTION_VIEW});
+}
+
+XrTime XrApp::scenario_time_base() const {
+  if (!simulator_state_enabled_) return 0;
+  PFN_xrVoidFunction f = nullptr;
+  if (XR_FAILED(xrGetInstanceProcAddr(instance_, "xrGetSimulatorStateGAZELOD", &f)) || !f) return 0;
+  XrSimulatorStateGAZELOD state{};
+  if (XR_FAILED(reinterpret_cast<PFN_xrGetSimulatorStateGAZELOD>(f)(session_, &state))) return 0;
+  return state.scenarioTimeBase;
 }
 
 bool XrApp::poll_events(const std::function<void(XrSessionState, XrTime)>& on_state) {

@@ -42,6 +42,9 @@ class XrApp {
   XrSpace local_space() const { return local_space_; }
   bool eye_gaze_enabled() const { return eye_gaze_enabled_; }
   const std::string& runtime_name() const { return runtime_name_; }
+  // Scenario time 0 as an XrTime, when the runtime is gazelod's simulator
+  // (XR_GAZELOD_simulator_state); 0 otherwise.
+  XrTime scenario_time_base() const;
   const std::string& system_name() const { return system_name_; }
 
   VkInstance vk_instance() const { return vk_instance_; }
@@ -81,6 +84,7 @@ class XrApp {
   XrSessionState state_ = XR_SESSION_STATE_UNKNOWN;
   bool session_running_ = false;
   bool eye_gaze_enabled_ = false;
+  bool simulator_state_enabled_ = false;
   std::string runtime_name_, system_name_, vk_device_name_;
   VkInstance vk_instance_ = VK_NULL_HANDLE;
   VkPhysicalDevice vk_physical_ = VK_NULL_HANDLE;

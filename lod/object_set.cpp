@@ -1,0 +1,122 @@
+// Validation and the owning builder for ObjectSet (see object_set.hpp).
+#include "lod/object_set.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace gazelod::lod {
+
+double level_weight(const LodLevel& level) {
+  if (!(level.detail > 0.0)) return 0.0;
+  return level.detail_kind == DetailKind::removed_cycles_per_diameter ? level.detail
+                                                                      : 1.0 / level.detail;
+}
+
+std::string validate_chain(std::span<const LodLevel> levels) {
+  std::ostringstream m;
+  if (levels.empty() || levels.size() > 255) {
+    m << "a chain needs 1 to 255 levels, got " << levels.size();
+    return m.str();
+  }
+  for (std::size_t k = 1; k < levels.size(); ++k) {
+    const LodLevel& l = levels[k];
+    if (l.detail_kind != levels[0].detail_kind) {
+      m << "level " << k << ": detail kind differs from level 0 (one kind per chain)";
+      return m.str();
+    }
+    if (!std::isfinite(l.detail) || !(l.detail > 0.0)) {
+      m << "level " << k << ": detail must be finite and > 0, got " << l.detail;
+      return m.str();
+    }
+    if (k >= 2 && level_weight(l) > level_weight(levels[k - 1])) {
+      m << "level " << k << ": must remove no finer detail than level " << k - 1
+        << (l.detail_kind == DetailKind::removed_cycles_per_diameter
+                ? " (removed cycles per diameter must not increase)"
+                : " (geometric error must not decrease)");
+      return m.str();
+    }
+  }
+  return {};
+}
+
+std::string validate_objects(const ObjectSet& o) {
+  std::ostringstream m;
+  const std::size_t n = o.size();
+  const bool moving = !o.vel_x_m_s.empty() || !o.vel_y_m_s.empty() || !o.vel_z_m_s.empty();
+  if (o.center_x_m.size() != n || o.center_y_m.size() != n || o.center_z_m.size() != n ||
+      o.detail_kind.size() != n || o.lod_first.size() != n || o.lod_count.size() != n ||
+      (moving && (o.vel_x_m_s.size() != n || o.vel_y_m_s.size() != n || o.vel_z_m_s.size() != n))) {
+    m << "object arrays differ in length (radius_m has " << n << ")";
+    return m.str();
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!std::isfinite(o.center_x_m[i]) || !std::isfinite(o.center_y_m[i]) ||
+        !std::isfinite(o.center_z_m[i])) {
+      m << "object " << i << ": centre is not finite";
+      return m.str();
+    }
+    if (!std::isfinite(o.radius_m[i]) || o.radius_m[i] < 0.0) {
+      m << "object " << i << ": radius_m must be finite and >= 0, got " << o.radius_m[i];
+      return m.str();
+    }
+    if (moving && (!std::isfinite(o.vel_x_m_s[i]) || !std::isfinite(o.vel_y_m_s[i]) ||
+                   !std::isfinite(o.vel_z_m_s[i]))) {
+      m << "object " << i << ": velocity is not finite";
+      return m.str();
+    }
+    const std::size_t first = o.lod_first[i], count = o.lod_count[i];
+    if (count == 0 || first + count > o.level_weight.size()) {
+      m << "object " << i << ": levels [" << first << ", " << first + count
+        << ") out of range of level_weight (" << o.level_weight.size() << ")";
+      return m.str();
+    }
+    for (std::size_t k = 1; k < count; ++k) {
+      const double w = o.level_weight[first + k];
+      if (!std::isfinite(w) || !(w > 0.0) || (k >= 2 && w > o.level_weight[first + k - 1])) {
+        m << "object " << i << " level " << k << ": weight must be finite, > 0 and not above "
+          << "the finer level's, got " << w;
+        return m.str();
+      }
+    }
+  }
+  return {};
+}
+
+std::uint32_t ObjectStore::add(const glm::dvec3& c, double radius_m, const glm::dvec3& v,
+                               std::span<const LodLevel> levels) {
+  if (std::string e = validate_chain(levels); !e.empty()) throw std::invalid_argument(e);
+  if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z))
+    throw std::invalid_argument("centre is not finite");
+  if (!std::isfinite(radius_m) || radius_m < 0.0)
+    throw std::invalid_argument("radius_m must be finite and >= 0");
+  if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
+    throw std::invalid_argument("velocity is not finite");
+  const auto id = static_cast<std::uint32_t>(radius_.size());
+  cx_.push_back(c.x), cy_.push_back(c.y), cz_.push_back(c.z);
+  vx_.push_back(v.x), vy_.push_back(v.y), vz_.push_back(v.z);
+  radius_.push_back(radius_m);
+  kind_.push_back(levels[0].detail_kind);
+  first_.push_back(static_cast<std::uint32_t>(weight_.size()));
+  count_.push_back(static_cast<std::uint8_t>(levels.size()));
+  for (const LodLevel& l : levels) weight_.push_back(level_weight(l));
+  return id;
+}
+
+void ObjectStore::set_motion(std::uint32_t id, const glm::dvec3& c, const glm::dvec3& v) {
+  if (id >= radius_.size()) throw std::out_of_range("object id out of range");
+  cx_[id] = c.x, cy_[id] = c.y, cz_[id] = c.z;
+  vx_[id] = v.x, vy_[id] = v.y, vz_[id] = v.z;
+}
+
+void ObjectStore::reserve(std::size_t objects, std::size_t levels) {
+  for (auto* a : {&cx_, &cy_, &cz_, &radius_, &vx_, &vy_, &vz_}) a->reserve(objects);
+  kind_.reserve(objects), first_.reserve(objects), count_.reserve(objects);
+  weight_.reserve(levels);
+}
+
+ObjectSet ObjectStore::view() const {
+  return ObjectSet{cx_, cy_, cz_, radius_, vx_, vy_, vz_, kind_, first_, count_, weight_};
+}
+
+}  // namespace gazelod::lod

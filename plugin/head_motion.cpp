@@ -1,0 +1,58 @@
+#include "plugin/head_motion.hpp"
+
+#include <cmath>
+
+namespace gazelod::plugin {
+
+glm::dvec3 angular_velocity_from_poses(const glm::dquat& q0, const glm::dquat& q1, double dt_s) {
+  if (!(dt_s > 0.0) || !std::isfinite(dt_s)) return glm::dvec3(0.0);
+  glm::dquat d = q1 * glm::conjugate(q0);  // rotation from q0 to q1, in the outer frame
+  if (d.w < 0.0) d = -d;                    // q and -q are the same rotation: take the short way
+  const glm::dvec3 axis_sin(d.x, d.y, d.z);
+  const double s = glm::length(axis_sin);
+  if (!std::isfinite(s) || !std::isfinite(d.w)) return glm::dvec3(0.0);
+  // angle = 2 atan2(|v|, w); for tiny s, axis_sin / s * angle -> 2 axis_sin / w.
+  const double angle = 2.0 * std::atan2(s, d.w);
+  const glm::dvec3 rotvec = s > 1e-12 ? axis_sin * (angle / s) : axis_sin * (2.0 / d.w);
+  return rotvec / dt_s;
+}
+
+HeadMotion HeadTracker::locate(XrTime time) {
+  XrSpaceVelocity velocity{XR_TYPE_SPACE_VELOCITY};
+  XrSpaceLocation loc{XR_TYPE_SPACE_LOCATION};
+  loc.next = &velocity;
+  HeadMotion m;
+  if (XR_FAILED(xrLocateSpace(view_, base_, time, &loc))) return m;
+  const XrSpaceLocationFlags need = XR_SPACE_LOCATION_ORIENTATION_VALID_BIT | XR_SPACE_LOCATION_POSITION_VALID_BIT;
+  if ((loc.locationFlags & need) != need) return m;
+  const auto& q = loc.pose.orientation;
+  m.orientation = glm::normalize(glm::dquat(q.w, q.x, q.y, q.z));
+  m.position_m = {loc.pose.position.x, loc.pose.position.y, loc.pose.position.z};
+  m.valid = std::isfinite(m.orientation.w) && std::isfinite(m.position_m.x) &&
+            std::isfinite(m.position_m.y) && std::isfinite(m.position_m.z);
+  if (!m.valid) return m;
+
+  const double dt_s = have_previous_ ? static_cast<double>(time - previous_time_) * 1e-9 : 0.0;
+  if (velocity.velocityFlags & XR_SPACE_VELOCITY_ANGULAR_VALID_BIT) {
+    m.angular_velocity_rad_s = {velocity.angularVelocity.x, velocity.angularVelocity.y, velocity.angularVelocity.z};
+    m.velocity_from_runtime = true;
+  } else if (have_previous_) {
+    m.angular_velocity_rad_s = angular_velocity_from_poses(previous_orientation_, m.orientation, dt_s);
+  }
+  if (velocity.velocityFlags & XR_SPACE_VELOCITY_LINEAR_VALID_BIT) {
+    m.linear_velocity_m_s = {velocity.linearVelocity.x, velocity.linearVelocity.y, velocity.linearVelocity.z};
+  } else if (have_previous_ && dt_s > 0.0) {
+    m.linear_velocity_m_s = (m.position_m - previous_position_) / dt_s;
+  }
+  for (int i = 0; i < 3; ++i) {
+    if (!std::isfinite(m.angular_velocity_rad_s[i])) m.angular_velocity_rad_s = glm::dvec3(0.0);
+    if (!std::isfinite(m.linear_velocity_m_s[i])) m.linear_velocity_m_s = glm::dvec3(0.0);
+  }
+  have_previous_ = true;
+  previous_orientation_ = m.orientation;
+  previous_position_ = m.position_m;
+  previous_time_ = time;
+  return m;
+}
+
+}  // namespace gazelod::plugin

@@ -1,0 +1,268 @@
+// The plugin: a thin adapter from OpenXR (head, views, eye gaze) to the core's selection.
+#include "plugin/gazelod.hpp"
+
+#include "lod/display.hpp"
+#include "lod/object_set.hpp"
+#include "lod/select.hpp"
+#include "plugin/gaze_arbiter.hpp"
+#include "plugin/head_motion.hpp"
+#include "plugin/openxr_gaze_source.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace gazelod {
+
+const char* to_string(GazeSourceKind kind) {
+  switch (kind) {
+    case GazeSourceKind::openxr: return "openxr";
+    case GazeSourceKind::external: return "external";
+    case GazeSourceKind::head_fixed: return "head-fixed";
+  }
+  return "?";
+}
+
+namespace {
+
+constexpr double kDegPerRad = 57.29577951308232;
+
+void check(XrResult r, const char* call) {
+  if (XR_FAILED(r)) throw std::runtime_error(std::string("gazelod plugin: ") + call + " failed (" + std::to_string(r) + ")");
+}
+
+GazeSourceKind kind_of(plugin::ArbitratedSource s) {
+  switch (s) {
+    case plugin::ArbitratedSource::primary: return GazeSourceKind::openxr;
+    case plugin::ArbitratedSource::secondary: return GazeSourceKind::external;
+    case plugin::ArbitratedSource::head_fixed: break;
+  }
+  return GazeSourceKind::head_fixed;
+}
+
+class LodPluginImpl final : public LodPlugin {
+ public:
+  LodPluginImpl(XrInstance instance, XrSystemId system, XrSession session, XrSpace base, PluginConfig config)
+      : instance_(instance), system_(system), session_(session), base_(base), config_(std::move(config)) {
+    XrReferenceSpaceCreateInfo view_info{XR_TYPE_REFERENCE_SPACE_CREATE_INFO};
+    view_info.referenceSpaceType = XR_REFERENCE_SPACE_TYPE_VIEW;
+    view_info.poseInReferenceSpace.orientation.w = 1.0f;
+    check(xrCreateReferenceSpace(session_, &view_info, &view_space_), "xrCreateReferenceSpace(VIEW)");
+    head_ = std::make_unique<plugin::HeadTracker>(view_space_, base_);
+
+    if (config_.use_openxr_eye_gaze && plugin::system_supports_eye_gaze(instance_, system_)) {
+      xr_gaze_ = std::make_unique<plugin::OpenXrGazeSource>(instance_, session_);
+      if (!config_.application_attaches_action_sets) xr_gaze_->attach_and_own_sync();
+    }
+    plugin::ArbiterConfig ac;
+    ac.silence_timeout_ns = static_cast<std::int64_t>(config_.gaze_silence_timeout_s * 1e9);
+    arbiter_ = std::make_unique<plugin::GazeArbiter>(xr_gaze_.get(), config_.external_source.get(), ac);
+    arbiter_->on_change([this](plugin::ArbitratedSource s, const std::string& why) {
+      active_ = kind_of(s);
+      if (changed_) changed_(active_, why);
+    });
+
+    init_display();
+  }
+
+  ~LodPluginImpl() override {
+    xr_gaze_.reset();
+    if (view_space_ != XR_NULL_HANDLE) xrDestroySpace(view_space_);
+  }
+
+  XrActionSet action_set() const override { return xr_gaze_ ? xr_gaze_->action_set() : XR_NULL_HANDLE; }
+  void action_sets_attached() override {
+    if (xr_gaze_) xr_gaze_->action_sets_attached();
+  }
+
+  std::uint32_t add_object(const ObjectDesc& d) override {
+    const std::uint32_t id = store_.add(d.center_m, d.radius_m, d.velocity_m_s, d.lods);
+    resize_outputs();
+    return id;
+  }
+  void set_object_motion(std::uint32_t id, const glm::dvec3& c, const glm::dvec3& v) override {
+    store_.set_motion(id, c, v);
+  }
+  std::size_t object_count() const override { return store_.size(); }
+
+  void on_session_state(XrSessionState, XrTime) override {}
+
+  const FrameDecisions& begin_frame(XrTime t) override {
+    const plugin::HeadMotion head = head_->locate(t);
+    const plugin::ArbiterResult gaze = arbiter_->update(static_cast<std::int64_t>(t));
+    update_display(t);
+
+    lod::Viewer v;
+    v.xi_cpd = xi_cpd_;
+    v.use_size = config_.criteria.size;
+    v.use_eccentricity = config_.criteria.eccentricity;
+    v.use_velocity = config_.criteria.velocity;
+    const glm::dquat q = head.valid ? head.orientation : last_head_orientation_;
+    if (head.valid) {
+      last_head_orientation_ = head.orientation;
+      last_head_position_ = head.position_m;
+    }
+    v.eye_position_m = last_head_position_;
+    v.eye_velocity_m_s = head.valid ? head.linear_velocity_m_s : glm::dvec3(0.0);
+    v.head_angular_velocity_rad_s = head.valid ? head.angular_velocity_rad_s : glm::dvec3(0.0);
+
+    glm::dvec3 gaze_head(0.0, 0.0, -1.0);
+    double error_deg = config_.head_fixed_cone_deg;
+    if (gaze.source != plugin::ArbitratedSource::head_fixed) {
+      gaze_head = gaze.sample.direction;
+      error_deg = gaze.source == plugin::ArbitratedSource::primary ? config_.openxr_gaze_error_deg
+                                                                   : config_.external_gaze_error_deg;
+      // Eye-in-head rotation from successive samples of the same source (pursuit keeps
+      // detail); none across a source change or a gap.
+      if (have_prev_gaze_ && prev_gaze_source_ == gaze.source && gaze.sample.t_ns > prev_gaze_t_ns_) {
+        const double dt = static_cast<double>(gaze.sample.t_ns - prev_gaze_t_ns_) * 1e-9;
+        const glm::dvec3 omega_head = glm::cross(prev_gaze_head_, gaze_head) / dt;
+        v.gaze_angular_velocity_in_head_rad_s = q * omega_head;
+      }
+      have_prev_gaze_ = true;
+      prev_gaze_head_ = gaze_head;
+      prev_gaze_t_ns_ = gaze.sample.t_ns;
+      prev_gaze_source_ = gaze.source;
+    } else {
+      have_prev_gaze_ = false;
+    }
+    // A saccade's eye speed would read as pursuit; cap it at a pursuit-like 100 deg/s.
+    const double w = glm::length(v.gaze_angular_velocity_in_head_rad_s);
+    const double w_max = 100.0 / kDegPerRad;
+    if (!(w <= w_max)) v.gaze_angular_velocity_in_head_rad_s *= std::isfinite(w) && w > 0 ? w_max / w : 0.0;
+
+    v.gaze_direction = q * gaze_head;
+    v.tracker_error_deg = error_deg;
+
+    const std::string err = lod::select_lods(v, store_.view(), decisions_out_);
+    if (!err.empty()) {
+      // The core refused this frame's viewer: keep full detail rather than guess.
+      std::fill(lod_.begin(), lod_.end(), 0);
+      std::fill(limited_.begin(), limited_.end(), static_cast<std::uint8_t>(lod::Criterion::invalid_input));
+    }
+    if (config_.compute_breakdown) {
+      lod::Viewer se = v;
+      se.use_velocity = false;
+      lod::select_lods(se, store_.view(), breakdown_se_out_);
+      lod::Viewer sv = v;
+      sv.use_eccentricity = false;
+      lod::select_lods(sv, store_.view(), breakdown_sv_out_);
+    }
+
+    frame_.gaze_source = kind_of(gaze.source);
+    frame_.gaze_valid = gaze.source != plugin::ArbitratedSource::head_fixed;
+    frame_.gaze_direction_world = v.gaze_direction;
+    frame_.gaze_direction_head = gaze_head;
+    frame_.eye_position_world = v.eye_position_m;
+    frame_.head_angular_velocity_rad_s = v.head_angular_velocity_rad_s;
+    frame_.cone_inflation_deg = error_deg;
+    frame_.xi_cpd = xi_cpd_;
+    frame_.head_valid = head.valid;
+    return frame_;
+  }
+
+  void end_frame(double measured_frame_ms) override { last_frame_ms_ = measured_frame_ms; }
+
+  GazeSourceKind active_source() const override { return active_; }
+  void on_source_changed(SourceChanged cb) override { changed_ = std::move(cb); }
+
+ private:
+  void init_display() {
+    if (!config_.hmd_override.empty()) {
+      const lod::DisplaySpec* preset = lod::find_display_preset(config_.hmd_override);
+      if (!preset) throw std::runtime_error("gazelod plugin: unknown HMD preset '" + config_.hmd_override + "'");
+      xi_cpd_ = lod::xi_cpd(*preset);
+      xi_fixed_ = true;
+      return;
+    }
+    std::uint32_t n = 0;
+    const auto stereo = XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO;
+    check(xrEnumerateViewConfigurationViews(instance_, system_, stereo, 0, &n, nullptr), "xrEnumerateViewConfigurationViews");
+    std::vector<XrViewConfigurationView> cv(n, {XR_TYPE_VIEW_CONFIGURATION_VIEW});
+    check(xrEnumerateViewConfigurationViews(instance_, system_, stereo, n, &n, cv.data()), "xrEnumerateViewConfigurationViews");
+    view_pixels_.clear();
+    for (const auto& c : cv)
+      view_pixels_.push_back({static_cast<int>(c.recommendedImageRectWidth), static_cast<int>(c.recommendedImageRectHeight)});
+    views_.assign(n, {XR_TYPE_VIEW});
+  }
+
+  // xi from the views' FOV (as the runtime locates them) and the recommended resolution.
+  void update_display(XrTime t) {
+    if (xi_fixed_ || views_.empty()) return;
+    XrViewLocateInfo info{XR_TYPE_VIEW_LOCATE_INFO};
+    info.viewConfigurationType = XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO;
+    info.displayTime = t;
+    info.space = view_space_;
+    XrViewState vs{XR_TYPE_VIEW_STATE};
+    std::uint32_t n = static_cast<std::uint32_t>(views_.size());
+    if (XR_FAILED(xrLocateViews(session_, &info, &vs, n, &n, views_.data()))) return;
+    double xi = 0.0;
+    for (std::uint32_t i = 0; i < n && i < view_pixels_.size(); ++i) {
+      lod::ViewSpec spec;
+      spec.width_px = view_pixels_[i].first;
+      spec.height_px = view_pixels_[i].second;
+      spec.fov = {views_[i].fov.angleLeft, views_[i].fov.angleRight, views_[i].fov.angleUp, views_[i].fov.angleDown};
+      if (lod::validate_view(spec).empty()) xi = std::max(xi, lod::xi_cpd(spec));
+    }
+    if (xi > 0.0) xi_cpd_ = xi;
+  }
+
+  void resize_outputs() {
+    const std::size_t n = store_.size();
+    for (auto* v : {&lod_, &limited_, &size_only_, &ecc_only_, &vel_only_, &se_, &sv_, &scratch_a_, &scratch_b_, &scratch_c_, &scratch_d_})
+      v->resize(n);
+    decisions_out_ = {lod_, limited_, size_only_, ecc_only_, vel_only_, {}, {}, {}};
+    breakdown_se_out_ = {se_, scratch_a_, scratch_b_, scratch_c_, scratch_d_, {}, {}, {}};
+    breakdown_sv_out_ = {sv_, scratch_a_, scratch_b_, scratch_c_, scratch_d_, {}, {}, {}};
+    frame_.lod = lod_;
+    frame_.limited_by = limited_;
+    frame_.lod_size_only = size_only_;
+    frame_.lod_eccentricity_only = ecc_only_;
+    frame_.lod_velocity_only = vel_only_;
+    if (config_.compute_breakdown) {
+      frame_.lod_size_eccentricity = se_;
+      frame_.lod_size_velocity = sv_;
+    }
+  }
+
+  XrInstance instance_;
+  XrSystemId system_;
+  XrSession session_;
+  XrSpace base_;
+  PluginConfig config_;
+  XrSpace view_space_ = XR_NULL_HANDLE;
+  std::unique_ptr<plugin::HeadTracker> head_;
+  std::unique_ptr<plugin::OpenXrGazeSource> xr_gaze_;
+  std::unique_ptr<plugin::GazeArbiter> arbiter_;
+  SourceChanged changed_;
+  GazeSourceKind active_ = GazeSourceKind::head_fixed;
+
+  lod::ObjectStore store_;
+  std::vector<std::uint8_t> lod_, limited_, size_only_, ecc_only_, vel_only_, se_, sv_;
+  std::vector<std::uint8_t> scratch_a_, scratch_b_, scratch_c_, scratch_d_;
+  lod::Decisions decisions_out_, breakdown_se_out_, breakdown_sv_out_;
+  FrameDecisions frame_;
+
+  double xi_cpd_ = 30.0;
+  bool xi_fixed_ = false;
+  std::vector<std::pair<int, int>> view_pixels_;
+  std::vector<XrView> views_;
+  glm::dquat last_head_orientation_{1.0, 0.0, 0.0, 0.0};
+  glm::dvec3 last_head_position_{0.0};
+  bool have_prev_gaze_ = false;
+  glm::dvec3 prev_gaze_head_{0.0, 0.0, -1.0};
+  std::int64_t prev_gaze_t_ns_ = 0;
+  plugin::ArbitratedSource prev_gaze_source_ = plugin::ArbitratedSource::head_fixed;
+  double last_frame_ms_ = 0.0;
+};
+
+}  // namespace
+
+std::unique_ptr<LodPlugin> LodPlugin::create(XrInstance instance, XrSystemId system, XrSession session,
+                                             XrSpace base_space, PluginConfig config) {
+  if (instance == XR_NULL_HANDLE || session == XR_NULL_HANDLE || base_space == XR_NULL_HANDLE)
+    throw std::invalid_argument("gazelod plugin: instance, session and base space must be valid handles");
+  return std::make_unique<LodPluginImpl>(instance, system, session, base_space, std::move(config));
+}
+
+}  // namespace gazelod

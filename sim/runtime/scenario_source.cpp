@@ -1,0 +1,43 @@
+// Loads the runtime's scenario from the environment (see scenario_source.hpp).
+#include "sim/runtime/scenario_source.hpp"
+
+#include <cmath>
+#include <cstdlib>
+#include <stdexcept>
+#include <string>
+
+namespace gazelod::xrrt {
+namespace {
+
+const char* env(const char* name) {
+  const char* v = std::getenv(name);
+  return (v != nullptr && *v != '\0') ? v : nullptr;
+}
+
+}  // namespace
+
+sim::Scenario load_runtime_scenario() {
+  sim::Scenario scenario;
+  if (const char* file = env("GAZELOD_SIM_SCENARIO")) {
+    scenario = sim::load_scenario_file(file);
+  } else {
+    scenario = sim::load_scenario_json(sim::default_scenario_json(), "<embedded default scenario>");
+  }
+  if (const char* d = env("GAZELOD_SIM_DURATION_S")) {
+    char* end = nullptr;
+    const double seconds = std::strtod(d, &end);
+    if (end == d || *end != '\0' || !std::isfinite(seconds) || seconds <= 0.0 || seconds > 1e6)
+      throw std::runtime_error(std::string("GAZELOD_SIM_DURATION_S=\"") + d +
+                               "\": expected a number of seconds in (0, 1e6]");
+    scenario.duration_s = seconds;
+  }
+  if (const char* p = env("GAZELOD_SIM_PACED")) {
+    const std::string v(p);
+    if (v == "1") scenario.runtime.paced = true;
+    else if (v == "0") scenario.runtime.paced = false;
+    else throw std::runtime_error("GAZELOD_SIM_PACED=\"" + v + "\": expected 0 or 1");
+  }
+  return scenario;
+}
+
+}  // namespace gazelod::xrrt

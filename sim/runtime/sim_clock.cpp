@@ -1,0 +1,28 @@
+// The simulated clock (see sim_clock.hpp).
+#include "sim/runtime/sim_clock.hpp"
+
+#include <cmath>
+
+namespace gazelod::xrrt {
+
+void SimClock::start(bool paced, double refresh_hz) {
+  paced_ = paced;
+  // Guarded: the scenario loader checks the rate, but a zero or NaN must not divide here.
+  const double hz = std::isfinite(refresh_hz) && refresh_hz >= 1.0 ? refresh_hz : 90.0;
+  period_ns_ = static_cast<std::int64_t>(std::llround(1e9 / hz));
+  origin_mono_ns_ = monotonic_ns();
+  last_frame_time_ = kTimeBaseNs;
+}
+
+XrTime SimClock::now() const {
+  if (paced_) return from_monotonic_ns(monotonic_ns());
+  return last_frame_time_;
+}
+
+std::int64_t SimClock::monotonic_ns() {
+  timespec ts{};
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000 + ts.tv_nsec;
+}
+
+}  // namespace gazelod::xrrt

@@ -1,0 +1,188 @@
+// Mason's incremental algorithm (1999 Fig. 41, sec. 7.2): from any start state it reaches the
+// greedy answer under convexity; every intermediate state is a valid level of detail; time
+// truncation still yields a complete, affordable selection; a frame allocates nothing.
+#include "lod/knapsack.hpp"
+#include "lod/knapsack_incremental.hpp"
+#include "mckp_test_util.hpp"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+
+// The replacement new/delete pair is malloc/free on both sides; GCC cannot see that.
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+// Counts heap allocations while `g_count_allocations` is set (replaces global new).
+static std::atomic<bool> g_count_allocations{false};
+static std::atomic<long> g_allocations{0};
+void* operator new(std::size_t n) {
+  if (g_count_allocations) ++g_allocations;
+  if (void* p = std::malloc(n ? n : 1)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
+namespace gazelod::lod {
+namespace {
+
+std::vector<std::uint32_t> random_choice(std::mt19937& rng, const MckpInstance& inst) {
+  std::vector<std::uint32_t> c(inst.subset_count());
+  for (std::size_t k = 0; k < c.size(); ++k)
+    c[k] = std::uniform_int_distribution<std::uint32_t>(0, inst.subset_size(k) - 1)(rng);
+  return c;
+}
+
+TEST(BudgetIncremental, EqualsGreedyFromAnyStartUnderConvexity) {
+  std::mt19937 rng(5);
+  IncrementalScheduler sched;
+  MckpSolution out;
+  int compared = 0;
+  for (int trial = 0; trial < 500; ++trial) {
+    const MckpInstance inst = test::random_convex(rng);
+    const MckpSolution greedy = solve_mason_greedy(inst, /*fill_after_critical=*/false);
+    IncrementalScheduler::Options opt;
+    opt.drop_ip_dominated = true;
+    sched.reset(inst, opt);
+    for (int start = 0; start < 6; ++start) {
+      const auto prev = random_choice(rng, inst);
+      sched.step(inst, prev, {}, std::chrono::seconds(10), out);
+      EXPECT_FALSE(out.truncated);
+      EXPECT_EQ(out.choice, greedy.choice) << "trial " << trial << " start " << start;
+      EXPECT_NEAR(out.profit, greedy.profit, 1e-9);
+      ++compared;
+    }
+  }
+  EXPECT_EQ(compared, 3000);
+}
+
+TEST(BudgetIncremental, HierarchicalEqualsGreedyFromEveryValidStart) {
+  std::mt19937 rng(11);
+  IncrementalScheduler sched;
+  MckpSolution out;
+  int compared = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    const MckpInstance inst = test::random_hierarchical(rng);
+    const MckpSolution greedy = solve_mason_hierarchical(inst, /*fill_after_critical=*/false);
+    sched.reset(inst);
+    for (const auto& lod : test::all_lods(sched.tree())) {
+      // Express the start LOD as an answer (the API's input), then step.
+      MckpSolution start;
+      start.choice.assign(inst.subset_count(), kNoItem);
+      start.group_choice.assign(inst.groups.size(), kNoItem);
+      for (std::uint32_t n : lod) {
+        const HmckpNode& nd = sched.tree().nodes[n];
+        (nd.subset != kNoItem ? start.choice[nd.subset] : start.group_choice[nd.group]) = nd.index;
+      }
+      sched.step(inst, start.choice, start.group_choice, std::chrono::seconds(10), out);
+      EXPECT_EQ(out.choice, greedy.choice) << "trial " << trial;
+      EXPECT_EQ(out.group_choice, greedy.group_choice) << "trial " << trial;
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 400);
+}
+
+struct Watch {
+  long calls = 0;
+  long invalid = 0;
+};
+
+TEST(BudgetIncremental, EveryIntermediateStateIsAValidLod) {
+  std::mt19937 rng(17);
+  IncrementalScheduler sched;
+  Watch watch;
+  sched.set_observer(
+      [](void* ctx, const IncrementalScheduler& s) {
+        auto* w = static_cast<Watch*>(ctx);
+        ++w->calls;
+        w->invalid += !is_valid_lod(s.tree(), s.selected());
+      },
+      &watch);
+  MckpSolution out;
+  for (int trial = 0; trial < 300; ++trial) {
+    const MckpInstance inst = trial % 2 ? test::random_hierarchical(rng) : test::random_general(rng);
+    sched.reset(inst);
+    sched.step(inst, trial % 2 ? std::vector<std::uint32_t>{} : random_choice(rng, inst), {},
+               std::chrono::seconds(10), out);
+  }
+  EXPECT_GT(watch.calls, 1000);
+  EXPECT_EQ(watch.invalid, 0);
+}
+
+TEST(BudgetIncremental, TruncatedFrameIsStillCompleteAndAffordable) {
+  std::mt19937 rng(3);
+  MckpInstance inst;
+  for (int k = 0; k < 2000; ++k) {
+    std::vector<MckpItem> items;
+    double w = 1, p = 1, slope = 2 + std::uniform_real_distribution<double>(0, 1)(rng);
+    for (int j = 0; j < 6; ++j) {
+      items.push_back({p, w});
+      w += 1 + j;
+      p += slope * (1 + j);
+      slope *= 0.6;
+    }
+    inst.add_subset(items);
+  }
+  inst.capacity = lowest_cost(inst) * 3;
+  IncrementalScheduler sched;
+  sched.reset(inst);
+  MckpSolution out;
+  sched.step(inst, {}, {}, std::chrono::nanoseconds(0), out);  // stop at the first check
+  EXPECT_TRUE(out.truncated);
+  EXPECT_TRUE(out.feasible);
+  EXPECT_LE(out.cost, inst.capacity);
+  for (std::uint32_t c : out.choice) EXPECT_NE(c, kNoItem);
+  // The next frames continue from there and converge (the skipped work is repaid).
+  MckpSolution next;
+  for (int f = 0; f < 200 && (f == 0 || next.truncated); ++f) {
+    sched.step(inst, out.choice, {}, std::chrono::nanoseconds(0), next);
+    out = next;
+  }
+  sched.step(inst, out.choice, {}, std::chrono::seconds(10), next);
+  EXPECT_FALSE(next.truncated);
+  EXPECT_NEAR(next.profit, solve_mason_greedy(inst, false).profit, 1e-6 * next.profit);
+}
+
+TEST(BudgetIncremental, LowestLevelOverCapacityIsReportedInfeasible) {
+  const MckpInstance inst = test::make_instance(1, {{{1, 2}, {2, 3}}, {{1, 1}}});
+  IncrementalScheduler sched;
+  sched.reset(inst);
+  MckpSolution out;
+  sched.step(inst, {}, {}, std::chrono::seconds(1), out);
+  EXPECT_FALSE(out.feasible);
+  EXPECT_EQ(out.choice, (std::vector<std::uint32_t>{0, 0}));
+}
+
+TEST(BudgetIncremental, AFrameAllocatesNothingAfterSetup) {
+  std::mt19937 rng(8);
+  MckpInstance inst;
+  for (int k = 0; k < 500; ++k) {
+    std::vector<MckpItem> items;
+    double w = 1, p = 1;
+    for (int j = 0; j < 5; ++j) {
+      items.push_back({p, w});
+      w *= 2;
+      p += 10.0 / (j + 1);
+    }
+    inst.add_subset(items);
+  }
+  inst.capacity = lowest_cost(inst) * 4;
+  IncrementalScheduler sched;
+  sched.reset(inst);
+  MckpSolution out, next;
+  sched.step(inst, {}, {}, std::chrono::seconds(1), out);  // first frame sizes `out`
+  next = out;
+  std::normal_distribution<double> noise(0.0, 0.02);
+  for (MckpItem& it : inst.items) it.profit *= 1.0 + noise(rng);
+  g_allocations = 0;
+  g_count_allocations = true;
+  for (int f = 0; f < 10; ++f) sched.step(inst, out.choice, {}, std::chrono::seconds(1), next);
+  g_count_allocations = false;
+  EXPECT_EQ(g_allocations.load(), 0);
+  EXPECT_TRUE(next.feasible);
+}
+
+}  // namespace
+}  // namespace gazelod::lod

@@ -1,0 +1,188 @@
+// XR_KHR_vulkan_enable2 on lavapipe: Vulkan instance and device created through the runtime,
+// a session with a Vulkan binding, swapchains of real VkImages and the acquire / wait /
+// release and xrEndFrame layer rules.
+#include "sim/runtime/xr_headers.hpp"
+#include "tests/runtime/xr_client.hpp"
+
+#include <cstdlib>
+#include <cstring>
+#include <vector>
+
+namespace gazelod::xrrt_test {
+namespace {
+
+struct VulkanRig {
+  XrInstance instance = XR_NULL_HANDLE;
+  XrSystemId system = XR_NULL_SYSTEM_ID;
+  VkInstance vk_instance = VK_NULL_HANDLE;
+  VkPhysicalDevice physical = VK_NULL_HANDLE;
+  VkDevice device = VK_NULL_HANDLE;
+  std::uint32_t family = 0;
+  XrSession session = XR_NULL_HANDLE;
+
+  void create_devices() {
+    instance = create_instance({XR_KHR_VULKAN_ENABLE2_EXTENSION_NAME});
+    ASSERT_NE(instance, XR_NULL_HANDLE);
+    system = get_system(instance);
+    // No session before the graphics requirements were queried.
+    VkInstance fake = reinterpret_cast<VkInstance>(uintptr_t(1));
+    XrGraphicsBindingVulkan2KHR early{XR_TYPE_GRAPHICS_BINDING_VULKAN2_KHR};
+    early.instance = fake;
+    early.physicalDevice = reinterpret_cast<VkPhysicalDevice>(uintptr_t(1));
+    early.device = reinterpret_cast<VkDevice>(uintptr_t(1));
+    XrSessionCreateInfo si{XR_TYPE_SESSION_CREATE_INFO, &early};
+    si.systemId = system;
+    XrSession s = XR_NULL_HANDLE;
+    EXPECT_EQ(xrCreateSession(instance, &si, &s), XR_ERROR_GRAPHICS_REQUIREMENTS_CALL_MISSING);
+
+    XrGraphicsRequirementsVulkan2KHR req{XR_TYPE_GRAPHICS_REQUIREMENTS_VULKAN2_KHR};
+    XRRT_ASSERT_XR(proc<PFN_xrGetVulkanGraphicsRequirements2KHR>(instance, "xrGetVulkanGraphicsRequirements2KHR")(
+        instance, system, &req));
+    EXPECT_LE(req.minApiVersionSupported, XR_MAKE_VERSION(1, 0, 0));
+
+    VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
+    app.apiVersion = VK_API_VERSION_1_0;
+    VkInstanceCreateInfo ici{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+    ici.pApplicationInfo = &app;
+    XrVulkanInstanceCreateInfoKHR xci{XR_TYPE_VULKAN_INSTANCE_CREATE_INFO_KHR};
+    xci.systemId = system;
+    xci.pfnGetInstanceProcAddr = &vkGetInstanceProcAddr;
+    xci.vulkanCreateInfo = &ici;
+    VkResult vr = VK_ERROR_UNKNOWN;
+    XRRT_ASSERT_XR(proc<PFN_xrCreateVulkanInstanceKHR>(instance, "xrCreateVulkanInstanceKHR")(instance, &xci,
+                                                                                               &vk_instance, &vr));
+    ASSERT_EQ(vr, VK_SUCCESS);
+    XrVulkanGraphicsDeviceGetInfoKHR gi{XR_TYPE_VULKAN_GRAPHICS_DEVICE_GET_INFO_KHR};
+    gi.systemId = system;
+    gi.vulkanInstance = vk_instance;
+    XRRT_ASSERT_XR(proc<PFN_xrGetVulkanGraphicsDevice2KHR>(instance, "xrGetVulkanGraphicsDevice2KHR")(instance, &gi,
+                                                                                                     &physical));
+    std::uint32_t nq = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(physical, &nq, nullptr);
+    std::vector<VkQueueFamilyProperties> qs(nq);
+    vkGetPhysicalDeviceQueueFamilyProperties(physical, &nq, qs.data());
+    for (family = 0; family < nq && !(qs[family].queueFlags & VK_QUEUE_GRAPHICS_BIT);) ++family;
+    ASSERT_LT(family, nq);
+    const float priority = 1.0f;
+    VkDeviceQueueCreateInfo qci{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+    qci.queueFamilyIndex = family;
+    qci.queueCount = 1;
+    qci.pQueuePriorities = &priority;
+    VkDeviceCreateInfo dci{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+    dci.queueCreateInfoCount = 1;
+    dci.pQueueCreateInfos = &qci;
+    XrVulkanDeviceCreateInfoKHR xdi{XR_TYPE_VULKAN_DEVICE_CREATE_INFO_KHR};
+    xdi.systemId = system;
+    xdi.pfnGetInstanceProcAddr = &vkGetInstanceProcAddr;
+    xdi.vulkanPhysicalDevice = physical;
+    xdi.vulkanCreateInfo = &dci;
+    XRRT_ASSERT_XR(proc<PFN_xrCreateVulkanDeviceKHR>(instance, "xrCreateVulkanDeviceKHR")(instance, &xdi, &device, &vr));
+    ASSERT_EQ(vr, VK_SUCCESS);
+
+    XrGraphicsBindingVulkan2KHR binding{XR_TYPE_GRAPHICS_BINDING_VULKAN2_KHR};
+    binding.instance = vk_instance;
+    binding.physicalDevice = physical;
+    binding.device = device;
+    binding.queueFamilyIndex = family;
+    si.next = &binding;
+    XRRT_ASSERT_XR(xrCreateSession(instance, &si, &session));
+    drain_states(instance);
+    XrSessionBeginInfo bi{XR_TYPE_SESSION_BEGIN_INFO};
+    bi.primaryViewConfigurationType = XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO;
+    XRRT_ASSERT_XR(xrBeginSession(session, &bi));
+  }
+
+  void destroy() {
+    if (session) xrDestroySession(session);
+    if (instance) xrDestroyInstance(instance);
+    if (device) vkDestroyDevice(device, nullptr);
+    if (vk_instance) vkDestroyInstance(vk_instance, nullptr);
+  }
+};
+
+TEST(RuntimeVulkan, SwapchainsOfRealImagesOnLavapipe) {
+  setenv("VK_ICD_FILENAMES", "/usr/share/vulkan/icd.d/lvp_icd.x86_64.json", 1);
+  use_runtime(5.0);
+  VulkanRig rig;
+  ASSERT_NO_FATAL_FAILURE(rig.create_devices());
+  std::uint32_t n = 0;
+  ASSERT_EQ(xrEnumerateSwapchainFormats(rig.session, 0, &n, nullptr), XR_SUCCESS);
+  ASSERT_GT(n, 0u);
+  std::vector<int64_t> formats(n);
+  ASSERT_EQ(xrEnumerateSwapchainFormats(rig.session, n, &n, formats.data()), XR_SUCCESS);
+  XrSwapchainCreateInfo sci{XR_TYPE_SWAPCHAIN_CREATE_INFO};
+  sci.usageFlags = XR_SWAPCHAIN_USAGE_COLOR_ATTACHMENT_BIT | XR_SWAPCHAIN_USAGE_SAMPLED_BIT;
+  sci.format = 12345;  // not a format the runtime offers
+  sci.sampleCount = 1;
+  sci.width = 64;
+  sci.height = 48;
+  sci.faceCount = 1;
+  sci.arraySize = 1;
+  sci.mipCount = 1;
+  XrSwapchain sc = XR_NULL_HANDLE;
+  EXPECT_EQ(xrCreateSwapchain(rig.session, &sci, &sc), XR_ERROR_SWAPCHAIN_FORMAT_UNSUPPORTED);
+  sci.format = formats[0];
+  ASSERT_EQ(xrCreateSwapchain(rig.session, &sci, &sc), XR_SUCCESS);
+  ASSERT_EQ(xrEnumerateSwapchainImages(sc, 0, &n, nullptr), XR_SUCCESS);
+  ASSERT_GE(n, 2u);
+  std::vector<XrSwapchainImageVulkan2KHR> images(n, {XR_TYPE_SWAPCHAIN_IMAGE_VULKAN2_KHR});
+  ASSERT_EQ(xrEnumerateSwapchainImages(sc, n, &n, reinterpret_cast<XrSwapchainImageBaseHeader*>(images.data())),
+            XR_SUCCESS);
+  for (const auto& img : images) EXPECT_NE(img.image, VK_NULL_HANDLE);
+  VkMemoryRequirements req{};
+  vkGetImageMemoryRequirements(rig.device, images[0].image, &req);  // a real image on our device
+  EXPECT_GE(req.size, 64u * 48u * 4u);
+
+  XrSwapchainImageWaitInfo wait{XR_TYPE_SWAPCHAIN_IMAGE_WAIT_INFO};
+  wait.timeout = XR_INFINITE_DURATION;
+  EXPECT_EQ(xrWaitSwapchainImage(sc, &wait), XR_ERROR_CALL_ORDER_INVALID);
+  EXPECT_EQ(xrReleaseSwapchainImage(sc, nullptr), XR_ERROR_CALL_ORDER_INVALID);
+
+  XrFrameState fs{XR_TYPE_FRAME_STATE};
+  ASSERT_EQ(xrWaitFrame(rig.session, nullptr, &fs), XR_SUCCESS);
+  ASSERT_EQ(xrBeginFrame(rig.session, nullptr), XR_SUCCESS);
+  XrReferenceSpaceCreateInfo rs{XR_TYPE_REFERENCE_SPACE_CREATE_INFO};
+  rs.referenceSpaceType = XR_REFERENCE_SPACE_TYPE_LOCAL;
+  rs.poseInReferenceSpace.orientation.w = 1.0f;
+  XrSpace local = XR_NULL_HANDLE;
+  ASSERT_EQ(xrCreateReferenceSpace(rig.session, &rs, &local), XR_SUCCESS);
+  XrCompositionLayerProjectionView views[2] = {{XR_TYPE_COMPOSITION_LAYER_PROJECTION_VIEW},
+                                               {XR_TYPE_COMPOSITION_LAYER_PROJECTION_VIEW}};
+  for (auto& v : views) {
+    v.pose.orientation.w = 1.0f;
+    v.subImage.swapchain = sc;
+    v.subImage.imageRect = {{0, 0}, {64, 48}};
+  }
+  XrCompositionLayerProjection layer{XR_TYPE_COMPOSITION_LAYER_PROJECTION};
+  layer.space = local;
+  layer.viewCount = 2;
+  layer.views = views;
+  const XrCompositionLayerBaseHeader* layers[] = {reinterpret_cast<XrCompositionLayerBaseHeader*>(&layer)};
+  XrFrameEndInfo end{XR_TYPE_FRAME_END_INFO};
+  end.displayTime = fs.predictedDisplayTime;
+  end.environmentBlendMode = XR_ENVIRONMENT_BLEND_MODE_OPAQUE;
+  end.layerCount = 1;
+  end.layers = layers;
+  EXPECT_EQ(xrEndFrame(rig.session, &end), XR_ERROR_LAYER_INVALID);  // no image released yet
+
+  std::uint32_t index = 99;
+  ASSERT_EQ(xrAcquireSwapchainImage(sc, nullptr, &index), XR_SUCCESS);
+  EXPECT_LT(index, n);
+  EXPECT_EQ(xrReleaseSwapchainImage(sc, nullptr), XR_ERROR_CALL_ORDER_INVALID);  // not waited
+  ASSERT_EQ(xrWaitSwapchainImage(sc, &wait), XR_SUCCESS);
+  EXPECT_EQ(xrWaitSwapchainImage(sc, &wait), XR_ERROR_CALL_ORDER_INVALID);
+  ASSERT_EQ(xrReleaseSwapchainImage(sc, nullptr), XR_SUCCESS);
+  views[1].subImage.imageRect = {{8, 0}, {64, 48}};
+  EXPECT_EQ(xrEndFrame(rig.session, &end), XR_ERROR_SWAPCHAIN_RECT_INVALID);
+  views[1].subImage.imageRect = {{0, 0}, {64, 48}};
+  EXPECT_EQ(xrEndFrame(rig.session, &end), XR_SUCCESS);
+  // Every image can be held at once, one more cannot.
+  for (std::uint32_t i = 0; i < n; ++i) ASSERT_EQ(xrAcquireSwapchainImage(sc, nullptr, &index), XR_SUCCESS);
+  EXPECT_EQ(xrAcquireSwapchainImage(sc, nullptr, &index), XR_ERROR_CALL_ORDER_INVALID);
+  EXPECT_EQ(xrDestroySwapchain(sc), XR_SUCCESS);
+  EXPECT_EQ(xrDestroySwapchain(sc), XR_ERROR_HANDLE_INVALID);
+  rig.destroy();
+}
+
+}  // namespace
+}  // namespace gazelod::xrrt_test

@@ -70,6 +70,18 @@ class IncrementalScheduler {
   void place(std::span<const std::uint32_t> prev_choice,
              std::span<const std::uint32_t> prev_group_choice);
   void critical_solution(std::uint32_t critical, const MckpInstance& frame);
+  // Flat instances (no groups: one chain per subset) take a fast path, in
+  // knapsack_incremental_flat.cpp: one pass over the objects per frame, no tree walks.
+  double move_key(const MckpItem& from, const MckpItem& to) const {
+    return options_.key == MoveKey::value ? item_value(to) : relative_value(from, to);
+  }
+  void place_flat(std::span<const std::uint32_t> prev_choice);
+  void load_all_flat();
+  void reload() {
+    if (flat_) load_all_flat();
+    else load_all();
+  }
+  void write_flat(MckpSolution& out) const;
   void consider_inc(std::uint32_t node);  // load into the heap, or leave out if far below the band
   void consider_dec(std::uint32_t node);
   void load_all();                        // the band was too narrow: load every candidate
@@ -82,6 +94,13 @@ class IncrementalScheduler {
 
   Options options_;
   HmckpTree tree_;
+  bool flat_ = false;                // no groups: every node but the root is a chain node
+  bool flat_dirty_ = true;           // selected_ does not match pos_: clear it all
+  // Flat, nothing dropped and every subset's items already in cost order: node 1 + j is item j
+  // (no index tables to read per frame). full_ is not kept on the flat path.
+  std::vector<std::uint32_t> pos_;   // flat: per subset, the selected chain position
+  std::vector<std::uint32_t> src_;   // flat: per node, its index into the frame's items
+  bool flat_identity_ = false;
   const MckpInstance* frame_ = nullptr;
   const MckpItem* items_ = nullptr;  // frame_->items, cached for the hot loops
   std::size_t n_items_ = 0;

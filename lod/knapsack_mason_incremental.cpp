@@ -25,6 +25,13 @@ void IncrementalScheduler::reset(const MckpInstance& structure, const Options& o
   impostor_items_.assign(impostors, MckpItem{});
   inc_.reserve(n);
   dec_.reserve(n);
+  flat_ = structure.groups.empty();
+  flat_dirty_ = true;
+  pos_.assign(structure.subset_count(), 0);
+  src_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) src_[i] = tree_.nodes[i].source;
+  flat_identity_ = flat_ && n == structure.items.size() + 1;
+  for (std::size_t i = 1; flat_identity_ && i < n; ++i) flat_identity_ = src_[i] == i - 1;
 }
 
 double IncrementalScheduler::key_of(std::uint32_t node) const {
@@ -149,7 +156,7 @@ void IncrementalScheduler::increment(std::uint32_t i) {
   selected_[i] = 0;
   const std::uint32_t p = nd.parent;
   if (p != 0) dec_.erase(p);
-  full_[p] -= 1;
+  if (!flat_) full_[p] -= 1;
   profit_ -= item(i).profit;
   cost_ -= item(i).cost;
   for (std::uint32_t a = nd.first; a < nd.first + nd.count; ++a) {
@@ -162,8 +169,9 @@ void IncrementalScheduler::increment(std::uint32_t i) {
       inc_.push(m);
     }
   }
-  full_[i] = nd.count;
+  if (!flat_) full_[i] = nd.count;
   dec_.push(i);  // keys_[i] is still the key of its set
+  if (flat_) pos_[nd.subset] = i + 1 - tree_.subset_chain[nd.subset];
 }
 
 void IncrementalScheduler::decrement(std::uint32_t j) {
@@ -176,14 +184,15 @@ void IncrementalScheduler::decrement(std::uint32_t j) {
     cost_ -= item(m).cost;
     inc_.erase(m);
   }
-  full_[j] = 0;
+  if (!flat_) full_[j] = 0;
   selected_[j] = 1;
   profit_ += item(j).profit;
   cost_ += item(j).cost;
   inc_.push(j);
+  if (flat_) pos_[nd.subset] = j - tree_.subset_chain[nd.subset];
   const std::uint32_t p = nd.parent;
-  full_[p] += 1;
-  if (p != 0 && full_[p] == tree_.nodes[p].count) {
+  if (!flat_) full_[p] += 1;
+  if (p != 0 && (flat_ || full_[p] == tree_.nodes[p].count)) {  // flat: sets of one
     keys_[p] = key_of(p);
     dec_.push(p);
   }
@@ -216,10 +225,20 @@ void IncrementalScheduler::critical_solution(std::uint32_t critical, const MckpI
   }
   profit_ = h.profit;
   cost_ = h.cost;
+  if (flat_) {  // the critical node's object one level up, every other object at its lowest
+    std::fill(pos_.begin(), pos_.end(), 0u);
+    const std::uint32_t s = tree_.nodes[critical].subset;
+    pos_[s] = critical + 1 - tree_.subset_chain[s];
+    flat_dirty_ = true;  // selected_ was rewritten: clear it all next frame
+  }
   notify();
 }
 
 void IncrementalScheduler::write(MckpSolution& out) const {
+  if (flat_) {
+    write_flat(out);
+    return;
+  }
   const MckpInstance& f = *frame_;
   out.choice.assign(f.subset_count(), kNoItem);
   out.group_choice.assign(f.groups.size(), kNoItem);
@@ -271,25 +290,30 @@ void IncrementalScheduler::step(const MckpInstance& frame,
   out.iterations = 0;
   out.proven_optimal = false;
 
-  // Pre-test (F&S, Mason): when the lowest level does not fit, answer it, marked infeasible.
-  lowest_ = MckpItem{};
-  const HmckpNode& root = tree_.nodes[0];
-  for (std::uint32_t a = root.first; a < root.first + root.count; ++a) {
-    const MckpItem& it = item(tree_.members[a]);
-    lowest_.profit += it.profit;
-    lowest_.cost += it.cost;
-  }
-  if (lowest_.cost > frame.capacity) {
-    place({}, {});
-    write(out);
-    out.feasible = false;
-    return;
-  }
   all_loaded_ = !(critical_key_ > 0.0) || !std::isfinite(critical_key_) || band_ > 1e6;
   band_lo_ = critical_key_ * (1.0 - band_);
   band_hi_ = critical_key_ * (1.0 + band_);
   const bool banded = !all_loaded_;
-  place(prev_choice, prev_group_choice);
+  if (flat_) {
+    place_flat(prev_choice);  // sums the lowest level on the way
+  } else {
+    lowest_ = MckpItem{};
+    const HmckpNode& root = tree_.nodes[0];
+    for (std::uint32_t a = root.first; a < root.first + root.count; ++a) {
+      const MckpItem& it = item(tree_.members[a]);
+      lowest_.profit += it.profit;
+      lowest_.cost += it.cost;
+    }
+  }
+  // Pre-test (F&S, Mason): when the lowest level does not fit, answer it, marked infeasible.
+  if (lowest_.cost > frame.capacity) {
+    if (flat_) place_flat({});
+    else place({}, {});
+    write(out);
+    out.feasible = false;
+    return;
+  }
+  if (!flat_) place(prev_choice, prev_group_choice);
   notify();
 
   const std::uint64_t move_cap =
@@ -300,7 +324,7 @@ void IncrementalScheduler::step(const MckpInstance& frame,
   for (std::uint64_t round = 1; !done; ++round) {
     last = kNoItem;
     // A left-out candidate could beat a heap's top: load them all (rare; widens the band).
-    if (!all_loaded_ && (inc_.empty() || keys_[inc_.top()] < band_lo_)) load_all();
+    if (!all_loaded_ && (inc_.empty() || keys_[inc_.top()] < band_lo_)) reload();
     if (!inc_.empty()) {
       last = inc_.top();
       increment(last);
@@ -309,7 +333,7 @@ void IncrementalScheduler::step(const MckpInstance& frame,
     }
     bool decremented = false;
     while (cost_ > frame.capacity) {
-      if (!all_loaded_ && (dec_.empty() || keys_[dec_.top()] > band_hi_)) load_all();
+      if (!all_loaded_ && (dec_.empty() || keys_[dec_.top()] > band_hi_)) reload();
       if (dec_.empty()) break;
       const std::uint32_t j = dec_.top();
       decrement(j);
@@ -330,7 +354,7 @@ void IncrementalScheduler::step(const MckpInstance& frame,
     // The critical set: the best increment left. Mason takes the set incremented and
     // decremented in the last round, which is the same set from a state below the greedy one
     // but not from one above it (then several sets go out in the last round).
-    if (!all_loaded_ && (inc_.empty() || keys_[inc_.top()] < band_lo_)) load_all();
+    if (!all_loaded_ && (inc_.empty() || keys_[inc_.top()] < band_lo_)) reload();
     last = inc_.empty() ? kNoItem : inc_.top();
     // Next frame's band: around this critical key; wider after a miss, slowly narrower.
     critical_key_ = last == kNoItem ? 0.0 : keys_[last];

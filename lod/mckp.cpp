@@ -10,20 +10,6 @@ void MckpInstance::add_subset(std::span<const MckpItem> subset_items) {
   subset_offsets.push_back(static_cast<std::uint32_t>(items.size()));
 }
 
-double relative_value(const MckpItem& from, const MckpItem& to) {
-  const double dp = to.profit - from.profit;
-  const double dw = to.cost - from.cost;
-  constexpr double inf = std::numeric_limits<double>::infinity();
-  if (dw > 0.0) return dp / dw;
-  return dp > 0.0 ? inf : -inf;  // free gain first; a costless loss last
-}
-
-double item_value(const MckpItem& item) {
-  constexpr double inf = std::numeric_limits<double>::infinity();
-  if (item.cost > 0.0) return item.profit / item.cost;
-  return item.profit > 0.0 ? inf : 0.0;
-}
-
 void reduce_ip_dominated(const MckpInstance& instance, std::vector<std::uint32_t>& kept,
                          std::vector<std::uint32_t>& kept_offsets) {
   kept.clear();

@@ -66,10 +66,23 @@ void reduce_ip_dominated(const MckpInstance& instance, std::vector<std::uint32_t
                          std::vector<std::uint32_t>& kept_offsets);
 
 // Relative value RV(j, i) = (p_j - p_i) / (w_j - w_i) (Mason Def. 3.1), guarded: a step that
-// does not cost more ranks first when it gains profit, last otherwise; never NaN.
-double relative_value(const MckpItem& from, const MckpItem& to);
+// does not cost more ranks first when it loses no profit (a free gain, or an identical item:
+// taking it costs nothing and may open free gains behind it), last when it loses profit;
+// never NaN.
+// (Inline: the incremental solver evaluates it for every object every frame.)
+inline double relative_value(const MckpItem& from, const MckpItem& to) {
+  const double dp = to.profit - from.profit;
+  const double dw = to.cost - from.cost;
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  if (dw > 0.0) return dp / dw;
+  return dp >= 0.0 ? inf : -inf;
+}
 // Value p / w (Funkhouser & Sequin), guarded the same way.
-double item_value(const MckpItem& item);
+inline double item_value(const MckpItem& item) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  if (item.cost > 0.0) return item.profit / item.cost;
+  return item.profit > 0.0 ? inf : 0.0;
+}
 
 // Strict greedy order over candidate moves: higher key first, then the lower stable id.
 inline bool precedes(double key_a, std::uint32_t id_a, double key_b, std::uint32_t id_b) {

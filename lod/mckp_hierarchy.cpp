@@ -78,12 +78,15 @@ void build_hmckp_tree(const MckpInstance& instance, std::span<const std::uint32_
       n.source = base + kept[a];
       tree.nodes.push_back(n);
     }
-    // A dropped item maps to the costliest kept item that costs no more (one always exists:
-    // the cheapest kept item is a cheapest item).
+    // A kept item maps to itself; a dropped item to the costliest kept item that costs no
+    // more (one always exists: the cheapest kept item is a cheapest item).
     for (std::uint32_t j = 0; j < items.size(); ++j) {
       std::uint32_t pos = 0;
-      for (std::uint32_t a = kept_offsets[k]; a < kept_offsets[k + 1]; ++a)
-        if (items[kept[a]].cost <= items[j].cost) pos = a - kept_offsets[k];
+      bool own = false;
+      for (std::uint32_t a = kept_offsets[k]; a < kept_offsets[k + 1] && !own; ++a) {
+        own = kept[a] == j;
+        if (own || items[kept[a]].cost <= items[j].cost) pos = a - kept_offsets[k];
+      }
       tree.chain_pos[base + j] = pos;
     }
   }

@@ -1,10 +1,13 @@
-// Per-object LOD selection over structure-of-arrays data (see select.hpp). The loop avoids
-// libm: angles by fast::atan2_nonneg, G's log by fast::log10_normal (only for v > 0.825), and
-// levels are compared as w_k * q > A (a multiply per level, no log or division per level).
+// Per-object LOD selection over structure-of-arrays data (see select.hpp), in blocks of
+// detail::kSelectBlock objects (lod/select_kernel.hpp): phase 1 computes E, v, alpha and the
+// acuity terms of every object, the chains' weights are gathered into rows, phase 2 counts
+// the levels each criterion allows and writes the decisions; both phases are vectorised
+// (AVX2 / AVX-512 where the CPU has them). This file validates, drives the blocks and handles
+// the rare objects the vector path leaves out. bench/lod/bench_select.cpp measures it.
 #include "lod/select.hpp"
 
 #include "lod/acuity.hpp"
-#include "lod/fast_math.hpp"
+#include "lod/select_kernel.hpp"
 
 #include <glm/geometric.hpp>
 
@@ -22,16 +25,73 @@ bool finite3(const glm::dvec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
-// G and M as in acuity.cpp, inlined for the loop (tests check they agree).
-inline double g_fast(double vel_dps, double vel_zero_dps) {
-  if (!(vel_dps > kVelocitySeamDps)) return kAcuityMaxCpd;
-  if (vel_dps >= vel_zero_dps) return 0.0;
-  return std::clamp(kGIntercept - kGSlope * fast::log10_normal(vel_dps), 0.0, kAcuityMaxCpd);
+detail::KernelFrame kernel_frame(const FrameConstants& f) {
+  detail::KernelFrame kf{};
+  for (int k = 0; k < 3; ++k) {
+    kf.eye_m[k] = f.eye[k];
+    kf.eye_vel_m_s[k] = f.eye_vel[k];
+    kf.gaze_unit[k] = f.gaze_unit[k];
+    kf.gaze_omega_rad_s[k] = f.gaze_omega[k];
+  }
+  kf.tracker_error_rad = f.tracker_error_rad;
+  kf.xi_cpd = f.xi_cpd;
+  kf.scale = f.scale;
+  kf.vel_zero_dps = velocity_zero_dps();
+  kf.acuity_static_cpd = f.acuity_static_cpd;
+  kf.use_size = f.use_size;
+  kf.use_eccentricity = f.use_eccentricity;
+  kf.use_velocity = f.use_velocity;
+  return kf;
 }
-inline double m_inline(double ecc_deg) {
-  if (!(ecc_deg > kEccentricitySeamDeg)) return 1.0;
-  const double q = kMSlope * ecc_deg + 1.0;
-  return std::min(1.0, kMNumerator / (q * q));
+
+void write_diagnostics(const detail::KernelBlock& b, std::size_t m, std::size_t base,
+                       const Decisions& out) {
+  const std::size_t n = base + m;
+  if (out.ecc_deg.size() >= n)
+    for (std::size_t j = 0; j < m; ++j) out.ecc_deg[base + j] = static_cast<float>(b.ecc_deg[j]);
+  if (out.vel_dps.size() >= n)
+    for (std::size_t j = 0; j < m; ++j)
+      out.vel_dps[base + j] = static_cast<float>(std::min(std::sqrt(b.vel2_dps2[j]), 3.0e38));
+  if (out.angular_radius_deg.size() >= n)
+    for (std::size_t j = 0; j < m; ++j)
+      out.angular_radius_deg[base + j] = static_cast<float>(b.alpha_deg[j]);
+}
+
+// The same rule as select_kernel_levels, scalar, for a chain longer than the rows hold.
+void decide_long_chain(const detail::KernelFrame& f, const detail::KernelBlock& b, std::size_t j,
+                       std::span<const double> w, const Decisions& out, std::size_t i) {
+  if (b.p2_cycles[j] < 0.0) return;  // invalid geometry: phase 2 has marked it
+  const double a0 = f.acuity_static_cpd, s = f.scale, xi = f.xi_cpd;
+  const double p2 = b.kind_error[j] > 0.5 ? b.p2_error[j] : b.p2_cycles[j];
+  const double floor_per_w = (1.0 + 4e-15) / a0;
+  const double p2_floor = w[1] * w[1] * floor_per_w * floor_per_w;
+  const double p2_off = p2 > p2_floor ? p2 : p2_floor;
+  const double g = b.g_cpd[j], inv_m = b.inv_m[j], xi_m = xi * inv_m;
+  const double av = s * std::min(g, xi), ae = s * std::min(kAcuityMaxCpd, xi_m),
+               ac = s * std::min(g, xi_m);
+  const double ts = a0 * a0 * p2, te = ae * ae * p2_off, tv = av * av * p2_off,
+               tc = ac * ac * (f.use_size ? p2 : p2_off);
+  unsigned ls = 0, le = 0, lv = 0, lc = 0;
+  for (std::size_t k = 1; k < w.size(); ++k) {
+    const double w2 = w[k] * w[k], w2m = w2 * inv_m * inv_m;
+    ls += w2 > ts;
+    le += w2m > te;
+    lv += w2 > tv;
+    lc += w2m > tc;
+  }
+  ls = f.use_size ? ls : 0;
+  le = f.use_eccentricity ? le : 0;
+  lv = f.use_velocity ? lv : 0;
+  const Criterion why = lc == 0    ? Criterion::none
+                        : lc == ls ? Criterion::size
+                        : lc == le ? Criterion::eccentricity
+                        : lc == lv ? Criterion::velocity
+                                   : Criterion::combined;
+  out.lod[i] = static_cast<std::uint8_t>(lc);
+  out.lod_size_only[i] = static_cast<std::uint8_t>(ls);
+  out.lod_eccentricity_only[i] = static_cast<std::uint8_t>(le);
+  out.lod_velocity_only[i] = static_cast<std::uint8_t>(lv);
+  out.limited_by[i] = static_cast<std::uint8_t>(why);
 }
 
 }  // namespace
@@ -98,86 +158,67 @@ std::string select_lods(const Viewer& viewer, const ObjectSet& o, const Decision
              diag_a = out.angular_radius_deg.size() >= n;
 
   const FrameConstants f = prepare_frame(viewer);
-  const double vel_zero = velocity_zero_dps();
-  const double a0 = f.acuity_static_cpd;
-  const double s = f.scale, xi = f.xi_cpd;
+  const detail::KernelFrame kf = kernel_frame(f);
+  const detail::KernelInput in{o.center_x_m.data(), o.center_y_m.data(), o.center_z_m.data(),
+                               o.radius_m.data(),   moving ? o.vel_x_m_s.data() : nullptr,
+                               moving ? o.vel_y_m_s.data() : nullptr,
+                               moving ? o.vel_z_m_s.data() : nullptr};
   const std::size_t n_weights = o.level_weight.size();
   const double* w_all = o.level_weight.data();
+  const detail::ChainInput chains{o.lod_first.data(), o.lod_count.data(), o.detail_kind.data(),
+                                  w_all, n_weights};
+  detail::KernelBlock blk;  // about 21 KiB, reused per block
+  std::uint32_t first_b[detail::kSelectBlock];
+  std::uint16_t count_b[detail::kSelectBlock];  // levels in the fast path (1 = none coarser)
+  std::uint16_t bad[detail::kSelectBlock], slow[detail::kSelectBlock];
 
-  for (std::size_t i = 0; i < n; ++i) {
-    const glm::dvec3 c{o.center_x_m[i] - f.eye.x, o.center_y_m[i] - f.eye.y,
-                       o.center_z_m[i] - f.eye.z};
-    const double r = o.radius_m[i];
-    const glm::dvec3 vo = moving ? glm::dvec3{o.vel_x_m_s[i], o.vel_y_m_s[i], o.vel_z_m_s[i]}
-                                 : glm::dvec3{0.0};
-    const std::size_t first = o.lod_first[i], count = o.lod_count[i];
-    const double d2 = glm::dot(c, c);
-    if (!std::isfinite(d2) || !std::isfinite(r) || r < 0.0 || !finite3(vo) || count == 0 ||
-        first + count > n_weights) {
+  for (std::size_t base = 0; base < n; base += detail::kSelectBlock) {
+    const std::size_t m = std::min(detail::kSelectBlock, n - base);
+    detail::select_kernel_geometry(kf, in, base, m, blk);
+
+    // Kinds and the chains' weights as rows: in bulk for back-to-back chains of one length,
+    // else object by object. Chains out of range or too long for the rows run with one
+    // level (no coarser level) and are overwritten below.
+    std::size_t n_bad = 0, n_slow = 0;
+    std::size_t rows = detail::select_kernel_rows_regular(chains, base, m, blk);
+    const bool regular = rows > 0;
+    rows = regular ? rows : 1;
+    for (std::size_t j = 0; j < m && !regular; ++j) {
+      const std::size_t i = base + j;
+      const std::size_t first = o.lod_first[i], count = o.lod_count[i];
+      const bool ok = count > 0 && first + count <= n_weights;  // bad geometry: phase 2
+      const bool fits = count <= detail::kRowLevels + 1;
+      if (!ok) [[unlikely]] bad[n_bad++] = static_cast<std::uint16_t>(j);
+      else if (!fits) [[unlikely]] slow[n_slow++] = static_cast<std::uint16_t>(j);
+      first_b[j] = static_cast<std::uint32_t>(first);
+      count_b[j] = static_cast<std::uint16_t>(ok && fits ? count : 1);
+      rows = std::max<std::size_t>(rows, count_b[j] - 1u);
+      blk.kind_error[j] = o.detail_kind[i] != DetailKind::removed_cycles_per_diameter ? 1.0 : 0.0;
+    }
+    for (std::size_t k = 0; k < rows && !regular; ++k) {  // row k: w_{k+1}^2
+      for (std::size_t j = 0; j < m; ++j) {
+        const double w = k + 1 < count_b[j] ? w_all[first_b[j] + k + 1] : 0.0;
+        blk.weight[k][j] = w * w;
+      }
+    }
+    detail::select_kernel_levels(kf, m, rows, blk,
+                                 {out.lod.data() + base, out.limited_by.data() + base,
+                                  out.lod_size_only.data() + base,
+                                  out.lod_eccentricity_only.data() + base,
+                                  out.lod_velocity_only.data() + base});
+    if (diag_e || diag_v || diag_a) write_diagnostics(blk, m, base, out);
+    for (std::size_t t = 0; t < n_slow; ++t) {
+      const std::size_t j = slow[t], i = base + j;
+      decide_long_chain(kf, blk, j, {w_all + o.lod_first[i], o.lod_count[i]}, out, i);
+    }
+    for (std::size_t t = 0; t < n_bad; ++t) {
+      const std::size_t i = base + bad[t];
       out.lod[i] = out.lod_size_only[i] = out.lod_eccentricity_only[i] = out.lod_velocity_only[i] = 0;
       out.limited_by[i] = static_cast<std::uint8_t>(Criterion::invalid_input);
       if (diag_e) out.ecc_deg[i] = 0.0f;
       if (diag_v) out.vel_dps[i] = 0.0f;
       if (diag_a) out.angular_radius_deg[i] = 0.0f;
-      continue;
     }
-    const double d = std::sqrt(d2);
-    const bool inside = !(d > r);
-    const double alpha =
-        inside ? std::numbers::pi / 2 : fast::atan2_nonneg(r, std::sqrt((d - r) * (d + r)));
-    const glm::dvec3 cr = glm::cross(f.gaze_unit, c);
-    const double phi = fast::atan2_nonneg(std::sqrt(glm::dot(cr, cr)), glm::dot(f.gaze_unit, c));
-    const double ecc_deg = inside ? 0.0 : std::max(0.0, phi - alpha - f.tracker_error_rad) * kDegPerRad;
-
-    double vel_dps = 0.0;
-    if (d2 > 0.0) {
-      const glm::dvec3 w = glm::cross(c, vo - f.eye_vel) / d2 - f.gaze_omega;
-      const glm::dvec3 t = glm::cross(w, c);
-      vel_dps = std::sqrt(glm::dot(t, t)) / d * kDegPerRad;
-      if (!(vel_dps >= 0.0)) vel_dps = 0.0;  // overflow to NaN: keep detail
-    }
-    const double g = f.use_velocity ? g_fast(vel_dps, vel_zero) : kAcuityMaxCpd;
-    const double m = f.use_eccentricity ? m_inline(ecc_deg) : 1.0;
-
-    // Frequency per unit weight: f_k = w_k * q.
-    const double alpha_deg = alpha * kDegPerRad;
-    const double q = o.detail_kind[i] == DetailKind::removed_cycles_per_diameter
-                         ? 0.5 / alpha_deg
-                         : d * (std::numbers::pi / 360.0);
-    const double* w = w_all + first;
-    const double w1 = count > 1 ? w[1] : 0.0;
-    // Size switched off: no smaller than where level 1 sits at the static limit. The factor
-    // keeps w1 * cap <= a0 despite rounding, so size-off never drops level 1 on its own.
-    const double q_off = w1 > 0.0 ? std::min(q, a0 / w1 * (1.0 - 1e-15)) : q;
-    const double q_comb = f.use_size ? q : q_off;
-    const double a_e = s * std::min(kAcuityMaxCpd * m, xi);
-    const double a_v = s * std::min(g, xi);
-    const double a_c = s * std::min(g * m, xi);
-
-    unsigned ls = 0, le = 0, lv = 0, lc = 0;
-    for (std::size_t k = 1; k < count; ++k) {
-      ls += w[k] * q > a0;
-      le += w[k] * q_off > a_e;
-      lv += w[k] * q_off > a_v;
-      lc += w[k] * q_comb > a_c;
-    }
-    if (!f.use_size) ls = 0;
-    if (!f.use_eccentricity) le = 0;
-    if (!f.use_velocity) lv = 0;
-    Criterion why = Criterion::combined;
-    if (lc == 0) why = Criterion::none;
-    else if (f.use_size && lc == ls) why = Criterion::size;
-    else if (f.use_eccentricity && lc == le) why = Criterion::eccentricity;
-    else if (f.use_velocity && lc == lv) why = Criterion::velocity;
-
-    out.lod[i] = static_cast<std::uint8_t>(lc);
-    out.lod_size_only[i] = static_cast<std::uint8_t>(ls);
-    out.lod_eccentricity_only[i] = static_cast<std::uint8_t>(le);
-    out.lod_velocity_only[i] = static_cast<std::uint8_t>(lv);
-    out.limited_by[i] = static_cast<std::uint8_t>(why);
-    if (diag_e) out.ecc_deg[i] = static_cast<float>(ecc_deg);
-    if (diag_v) out.vel_dps[i] = static_cast<float>(std::min(vel_dps, 3.0e38));
-    if (diag_a) out.angular_radius_deg[i] = static_cast<float>(alpha_deg);
   }
   return {};
 }

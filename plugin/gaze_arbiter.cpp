@@ -1,7 +1,19 @@
 #include "plugin/gaze_arbiter.hpp"
 
+#include <cmath>
+
 namespace gazelod::plugin {
 namespace {
+
+// A sample the selection can use: marked valid, with a finite, non-zero direction. A source
+// handing out NaN or a zero vector counts as not delivering (never reaches a decision).
+std::optional<gaze::GazeSample> usable(std::optional<gaze::GazeSample> s) {
+  if (!s || !s->valid) return std::nullopt;
+  const glm::dvec3& d = s->direction;
+  const double len2 = d.x * d.x + d.y * d.y + d.z * d.z;
+  if (!std::isfinite(len2) || len2 < 1e-12) return std::nullopt;
+  return s;
+}
 
 std::string seconds(std::int64_t ns) { return std::to_string(static_cast<double>(ns) * 1e-9).substr(0, 5) + " s"; }
 
@@ -26,7 +38,7 @@ ArbiterResult GazeArbiter::update(std::int64_t t_ns) {
   bool newly_distrusted = false;  // reported even if the active source stays the same
 
   if (primary_ && !primary_distrusted_) {
-    if (auto s = primary_->sample_at(t_ns)) {
+    if (auto s = usable(primary_->sample_at(t_ns))) {
       primary_ever_ = true;
       result.source = ArbitratedSource::primary;
       result.sample = *s;
@@ -50,7 +62,7 @@ ArbiterResult GazeArbiter::update(std::int64_t t_ns) {
   }
 
   if (secondary_) {
-    if (auto s = secondary_->sample_at(t_ns)) {
+    if (auto s = usable(secondary_->sample_at(t_ns))) {
       result.source = ArbitratedSource::secondary;
       result.sample = *s;
       switch_to(ArbitratedSource::secondary, why + "; using " + secondary_->name(), newly_distrusted);

@@ -9,12 +9,14 @@ packages=(
   # OpenXR: loader + headers, Khronos's hello_xr, the core validation layer
   libopenxr-dev libopenxr-loader1 libopenxr-utils openxr-layer-corevalidation
   # Vulkan with Mesa's lavapipe (CPU) driver; glslang compiles our shaders
-  libvulkan-dev mesa-vulkan-drivers vulkan-tools glslang-tools
+  libvulkan-dev mesa-vulkan-drivers vulkan-tools vulkan-validationlayers glslang-tools
   # Maths, devices, assets, formats, command line
   libglm-dev libhidapi-dev libtinygltf-dev libmeshoptimizer-dev nlohmann-json3-dev libcli11-dev
   libpng-dev libstb-dev
-  # Tests and benchmarks
-  libgtest-dev libgmock-dev libbenchmark-dev
+  # Tests and benchmarks; clang + its runtime for the libFuzzer targets (scripts/fuzz.sh)
+  libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-14-dev
+  # The evaluation's peer (bench/peer): OpenSceneGraph's osg::LOD
+  libopenscenegraph-dev
 )
 
 missing=()

@@ -56,6 +56,13 @@ struct EffectSpec {
   std::string json_path;              // "effects[2]", for error messages
 };
 
+// The observer's path before head effects: position_m(t) = start_m + velocity_m_s * t
+// (seed 000's forward walk through a random field of objects).
+struct HeadPath {
+  glm::dvec3 start_m{0.0};
+  glm::dvec3 velocity_m_s{0.0};
+};
+
 struct Scenario {
   int version = 1;
   std::string name;
@@ -66,6 +73,7 @@ struct Scenario {
   std::vector<SceneObject> objects;
   std::vector<EffectSpec> effects;
   RuntimeOptions runtime;
+  HeadPath head_path;                 // scene.head_path, or the generator's forward_speed_m_s
 };
 
 Scenario load_scenario_json(std::string_view json_text, std::string_view source_name);
@@ -73,6 +81,9 @@ Scenario load_scenario_file(const std::string& path);
 // The embedded default: a seed-000-style field of objects with four LODs, an eye-tracked HMD
 // preset, head sweeps, saccades and a pursuit.
 std::string_view default_scenario_json();
+// The scenario as JSON that load_scenario_json reads back to an equal scenario (generated
+// objects are written out explicitly), e.g. to hand an adjusted scenario to the runtime.
+std::string scenario_to_json(const Scenario& scenario);
 
 // Head pose in the world (LOCAL) frame, with velocities, at a time.
 struct HeadState {
@@ -88,6 +99,7 @@ struct ObjectState {
   glm::dvec3 velocity_m_s{0.0};
 };
 
+// Not thread-safe: one caller at a time (the simulated runtime holds its lock).
 class Simulator {
  public:
   explicit Simulator(Scenario scenario);
@@ -109,6 +121,9 @@ class Simulator {
   std::span<const ObjectState> objects_at(std::int64_t t_ns);
 
   std::int64_t duration_ns() const;
+  // When the tracker delivers its first sample (taken at 0): its latency. Before that,
+  // tracker_at returns an invalid sample with t_ns 0.
+  std::int64_t first_tracker_sample_ns() const;
 
  private:
   struct Impl;

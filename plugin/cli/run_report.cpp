@@ -35,6 +35,9 @@ RunSummary summarize(const std::vector<FrameRecord>& frames, double budget_ms) {
   std::vector<double> ms;
   ms.reserve(frames.size());
   double r_size = 0, r_se = 0, r_sv = 0, r_all = 0;
+  std::uint64_t lods_drawn = 0, lods_size = 0, lods_se = 0, lods_sv = 0, lods_map = 0;
+  double object_frames = 0.0, view_object_frames = 0.0;
+  std::array<std::uint64_t, 6> view_lods{};
   for (const FrameRecord& f : frames) {
     ms.push_back(f.frame_ms);
     s.mean_frame_ms += f.frame_ms;
@@ -47,6 +50,21 @@ RunSummary summarize(const std::vector<FrameRecord>& frames, double budget_ms) {
     r_size += full - static_cast<double>(f.triangles_size_only);
     r_se += full - static_cast<double>(f.triangles_size_eccentricity);
     r_sv += full - static_cast<double>(f.triangles_size_velocity);
+    s.set_size.triangles += f.triangles_size_only;
+    s.set_size_eccentricity.triangles += f.triangles_size_eccentricity;
+    s.set_size_velocity.triangles += f.triangles_size_velocity;
+    s.set_lod_map.triangles += f.triangles_lod_map;
+    lods_drawn += f.lod_sum_drawn;
+    lods_size += f.lod_sum_size_only;
+    lods_se += f.lod_sum_size_eccentricity;
+    lods_sv += f.lod_sum_size_velocity;
+    lods_map += f.lod_sum_lod_map;
+    object_frames += static_cast<double>(std::max<std::int64_t>(f.objects, 0));
+    view_object_frames += static_cast<double>(std::max<std::int64_t>(f.objects_in_view, 0));
+    for (std::size_t k = 0; k < s.in_view.size(); ++k) {
+      s.in_view[k].triangles += f.in_view_triangles[k];
+      view_lods[k] += f.in_view_lod_sum[k];
+    }
     if (budget_ms > 0.0 && f.frame_ms > budget_ms) ++s.frames_over_budget;
     if (f.gaze_valid) ++s.gaze_valid_frames;
     if (f.saccade) ++s.saccades;
@@ -59,6 +77,16 @@ RunSummary summarize(const std::vector<FrameRecord>& frames, double budget_ms) {
   const size_t rank = static_cast<size_t>(std::ceil(0.95 * n));
   s.p95_frame_ms = ms[std::clamp<size_t>(rank, 1, ms.size()) - 1];
   s.max_frame_ms = ms.back();
+  s.set_none.triangles = s.triangles_full;
+  s.set_drawn.triangles = s.triangles_drawn;
+  s.set_drawn.average_lod = safe_ratio(static_cast<double>(lods_drawn), object_frames);
+  s.set_size.average_lod = safe_ratio(static_cast<double>(lods_size), object_frames);
+  s.set_size_eccentricity.average_lod = safe_ratio(static_cast<double>(lods_se), object_frames);
+  s.set_size_velocity.average_lod = safe_ratio(static_cast<double>(lods_sv), object_frames);
+  s.set_lod_map.average_lod = safe_ratio(static_cast<double>(lods_map), object_frames);
+  for (std::size_t k = 0; k < s.in_view.size(); ++k)
+    s.in_view[k].average_lod = safe_ratio(static_cast<double>(view_lods[k]), view_object_frames);
+  s.objects_in_view_mean = view_object_frames / n;
   s.shares.size = safe_ratio(r_size, r_all);
   s.shares.eccentricity = safe_ratio(r_all - r_sv, r_all);
   s.shares.velocity = safe_ratio(r_all - r_se, r_all);
@@ -132,6 +160,18 @@ void write_report_files(const std::filesystem::path& dir, const RunInfo& info,
                  {"eccentricity", s.shares.eccentricity},
                  {"velocity", s.shares.velocity},
                  {"interaction", s.shares.interaction}};
+  const auto set_json = [](const SetTotals& t) {
+    return nlohmann::json{{"triangles", t.triangles}, {"average_lod", t.average_lod}};
+  };
+  j["criteria_sets"] = {{"none", set_json(s.set_none)},
+                        {"size", set_json(s.set_size)},
+                        {"size+eccentricity", set_json(s.set_size_eccentricity)},
+                        {"size+velocity", set_json(s.set_size_velocity)},
+                        {"drawn", set_json(s.set_drawn)}};
+  j["lod_map"] = set_json(s.set_lod_map);
+  j["in_view"] = {{"objects_per_frame", s.objects_in_view_mean}};
+  static const char* view_names[] = {"none", "size", "size+eccentricity", "size+velocity", "drawn", "lod_map"};
+  for (std::size_t k = 0; k < s.in_view.size(); ++k) j["in_view"][view_names[k]] = set_json(s.in_view[k]);
   j["gaze_valid_frames"] = s.gaze_valid_frames;
   j["saccades"] = s.saccades;
   if (info.budget_ms > 0.0) {

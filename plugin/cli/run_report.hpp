@@ -29,6 +29,21 @@ struct FrameRecord {
   bool gaze_valid = false;
   bool saccade = false;             // a saccade began at this frame (for the plot)
   double head_speed_dps = 0.0;
+  // For the evaluation (gazelod compare / eval): the object count, the summed levels of each
+  // criteria set (average LOD = sum / objects), and seed 004's LOD map evaluated offline on
+  // the same frame (plugin/cli/eval_lod_map.hpp; nothing it picks is drawn).
+  std::int64_t objects = 0;
+  std::uint64_t lod_sum_drawn = 0;
+  std::uint64_t lod_sum_size_only = 0;
+  std::uint64_t lod_sum_size_eccentricity = 0;
+  std::uint64_t lod_sum_size_velocity = 0;
+  std::uint64_t triangles_lod_map = 0;
+  std::uint64_t lod_sum_lod_map = 0;
+  // The same restricted to the objects in the view frustum this frame, per set in the order
+  // none, size, size+eccentricity, size+velocity, drawn, lod map.
+  std::int64_t objects_in_view = 0;
+  std::array<std::uint64_t, 6> in_view_triangles{};
+  std::array<std::uint64_t, 6> in_view_lod_sum{};
 };
 
 struct RunInfo {
@@ -50,6 +65,13 @@ struct ReductionShares {
   double interaction = 0.0;
 };
 
+// One criteria set over a run: triangles summed over frames (per eye) and the mean level
+// over every object of every frame.
+struct SetTotals {
+  std::uint64_t triangles = 0;
+  double average_lod = 0.0;
+};
+
 struct RunSummary {
   std::int64_t frames = 0;
   double mean_frame_ms = 0.0;
@@ -63,6 +85,12 @@ struct RunSummary {
   std::int64_t frames_over_budget = 0;
   std::int64_t gaze_valid_frames = 0;
   std::int64_t saccades = 0;
+  // Criteria sets ("none" = every object at level 0; "drawn" = the run's own --criteria).
+  SetTotals set_none, set_size, set_size_eccentricity, set_size_velocity, set_drawn, set_lod_map;
+  // Over the objects in view only (FrameRecord::in_view_*), same order; average_lod per
+  // object in view.
+  std::array<SetTotals, 6> in_view{};
+  double objects_in_view_mean = 0.0;
 };
 
 RunSummary summarize(const std::vector<FrameRecord>& frames, double budget_ms);

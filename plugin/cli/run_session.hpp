@@ -14,6 +14,7 @@ namespace gazelod::cli {
 struct RunOptions {
   std::int64_t frames = 0;             // 0: the scenario's whole duration
   std::string scenario_path;           // "" = the embedded default scenario
+  std::string scene_path;              // a glb from `gazelod bake`: its objects replace the scenario's
   std::string hmd;                     // preset overriding the scenario's display
   Criteria criteria;
   std::filesystem::path out_dir = "gazelod-out";

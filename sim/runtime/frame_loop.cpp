@@ -65,6 +65,7 @@ XrResult WaitFrame(XrSession session, const XrFrameWaitInfo* waitInfo, XrFrameSt
           frameState->type != XR_TYPE_FRAME_STATE)
         return XR_ERROR_VALIDATION_FAILURE;
       if (!s->running) return XR_ERROR_SESSION_NOT_RUNNING;
+      if (s->lost) return XR_ERROR_SESSION_LOST;
       const SimClock& clock = instance_of(*s)->clock;
       const std::int64_t period = clock.period_ns();
       vsync = s->last_vsync_index + 1;
@@ -107,6 +108,7 @@ XrResult BeginFrame(XrSession session, const XrFrameBeginInfo* info) {
     if (s == nullptr) return XR_ERROR_HANDLE_INVALID;
     if (info != nullptr && info->type != XR_TYPE_FRAME_BEGIN_INFO) return XR_ERROR_VALIDATION_FAILURE;
     if (!s->running) return XR_ERROR_SESSION_NOT_RUNNING;
+    if (s->lost) return XR_ERROR_SESSION_LOST;
     if (s->waited_frames == 0) return XR_ERROR_CALL_ORDER_INVALID;
     --s->waited_frames;
     if (s->frame_begun) return XR_FRAME_DISCARDED;  // the previous begun frame is dropped
@@ -122,6 +124,7 @@ XrResult EndFrame(XrSession session, const XrFrameEndInfo* info) {
     if (s == nullptr) return XR_ERROR_HANDLE_INVALID;
     if (info == nullptr || info->type != XR_TYPE_FRAME_END_INFO) return XR_ERROR_VALIDATION_FAILURE;
     if (!s->running) return XR_ERROR_SESSION_NOT_RUNNING;
+    if (s->lost) return XR_ERROR_SESSION_LOST;
     if (!s->frame_begun) return XR_ERROR_CALL_ORDER_INVALID;
     if (info->displayTime <= 0) return XR_ERROR_TIME_INVALID;
     if (info->environmentBlendMode != XR_ENVIRONMENT_BLEND_MODE_OPAQUE) {
@@ -137,6 +140,12 @@ XrResult EndFrame(XrSession session, const XrFrameEndInfo* info) {
     s->frame_begun = false;
     ++s->frames_submitted;
     s->layers_submitted += info->layerCount;
+    if (inst.faults.lose_session_at_frame != 0 && s->frames_submitted == inst.faults.lose_session_at_frame) {
+      // Injected fault: this frame was shown; the session is lost from here on.
+      s->lost = true;
+      if (!inst.faults.lose_session_silently)
+        change_state(*instance_of(*s), *s, XR_SESSION_STATE_LOSS_PENDING, info->displayTime);
+    }
     return XR_SUCCESS;
   });
 }

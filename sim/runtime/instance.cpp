@@ -88,6 +88,7 @@ XrResult CreateInstance(const XrInstanceCreateInfo* info, XrInstance* instance) 
     inst->app_name = info->applicationInfo.applicationName;
     try {
       sim::Scenario scenario = load_runtime_scenario();
+      inst->faults = load_runtime_faults();
       inst->clock.start(scenario.runtime.paced, scenario.display.refresh_hz);
       inst->simulator = std::make_unique<sim::Simulator>(std::move(scenario));
     } catch (const std::exception& e) {

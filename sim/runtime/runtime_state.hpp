@@ -5,6 +5,7 @@
 
 #include "sim/runtime/xr_headers.hpp"
 #include "sim/runtime/path_table.hpp"
+#include "sim/runtime/scenario_source.hpp"
 #include "sim/runtime/sim_clock.hpp"
 #include "sim/simulator.hpp"
 
@@ -30,6 +31,7 @@ struct Instance {
   std::string app_name;
   std::unique_ptr<sim::Simulator> simulator;
   SimClock clock;
+  RuntimeFaults faults;  // injected from the environment (scenario_source.hpp)
   PathTable paths;
   std::deque<XrEventDataBuffer> events;
   bool graphics_requirements_queried = false;
@@ -72,6 +74,7 @@ struct Session {
   bool exit_requested = false;     // xrRequestExitSession or the scenario's end
   bool headless = false;
   bool scenario_ended = false;      // the stop was started by the scenario's end
+  bool lost = false;                // injected session loss (RuntimeFaults): frame calls fail
   XrViewConfigurationType view_config = XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO;
   // Vulkan binding (XR_KHR_vulkan_enable(2)); null when headless.
   VkInstance vk_instance = VK_NULL_HANDLE;

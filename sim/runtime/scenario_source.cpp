@@ -40,4 +40,22 @@ sim::Scenario load_runtime_scenario() {
   return scenario;
 }
 
+RuntimeFaults load_runtime_faults() {
+  RuntimeFaults faults;
+  if (const char* n = env("GAZELOD_SIM_LOSE_SESSION_AT_FRAME")) {
+    char* end = nullptr;
+    const unsigned long long frame = std::strtoull(n, &end, 10);
+    if (end == n || *end != '\0' || *n == '-' || frame == 0 || frame > 1'000'000'000ull)
+      throw std::runtime_error(std::string("GAZELOD_SIM_LOSE_SESSION_AT_FRAME=\"") + n +
+                               "\": expected a frame number in [1, 1e9]");
+    faults.lose_session_at_frame = frame;
+  }
+  if (const char* p = env("GAZELOD_SIM_LOSE_SESSION_SILENTLY")) {
+    const std::string v(p);
+    if (v == "1") faults.lose_session_silently = true;
+    else if (v != "0") throw std::runtime_error("GAZELOD_SIM_LOSE_SESSION_SILENTLY=\"" + v + "\": expected 0 or 1");
+  }
+  return faults;
+}
+
 }  // namespace gazelod::xrrt

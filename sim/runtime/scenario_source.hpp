@@ -10,4 +10,15 @@ namespace gazelod::xrrt {
 // Throws sim::ScenarioError (or std::runtime_error for a bad environment variable).
 sim::Scenario load_runtime_scenario();
 
+// Injected faults (docs/runtime.md, "Fault injection"), for testing applications' error paths:
+// GAZELOD_SIM_LOSE_SESSION_AT_FRAME=N loses the session after the Nth xrEndFrame: it queues
+// XR_SESSION_STATE_LOSS_PENDING (unless GAZELOD_SIM_LOSE_SESSION_SILENTLY=1) and every later
+// xrWaitFrame / xrBeginFrame / xrEndFrame returns XR_ERROR_SESSION_LOST.
+struct RuntimeFaults {
+  std::uint64_t lose_session_at_frame = 0;  // 0: never
+  bool lose_session_silently = false;
+};
+// Throws std::runtime_error naming a bad variable.
+RuntimeFaults load_runtime_faults();
+
 }  // namespace gazelod::xrrt

@@ -102,6 +102,27 @@ TEST(BudgetWorked, T4Figure23) {
   EXPECT_DOUBLE_EQ(test::brute_force(t4()).profit, 11);
 }
 
+// Ties: two identical objects, room for one upgrade (RV 2 each). The strict order (relative
+// value, then the lower stable id) gives it to object 0 in every Mason solver, and the
+// incremental one gets there from either start without cycling.
+TEST(BudgetWorked, TiesGoToTheLowerStableId) {
+  const MckpInstance inst = make_instance(3, {{{1, 1}, {3, 2}}, {{1, 1}, {3, 2}}});
+  for (SolverKind k : {SolverKind::mason_greedy, SolverKind::mason_full,
+                       SolverKind::mason_incremental, SolverKind::mason_hierarchical}) {
+    const MckpSolution s = solve(k, inst);
+    EXPECT_EQ(s.choice, (Sel{1, 0})) << solver_name(k);
+    EXPECT_DOUBLE_EQ(s.profit, 4) << solver_name(k);
+  }
+  IncrementalScheduler sched;
+  sched.reset(inst);
+  MckpSolution out;
+  for (const Sel& start : {Sel{0, 1}, Sel{1, 1}, Sel{0, 0}, Sel{1, 0}}) {
+    sched.step(inst, start, {}, std::chrono::seconds(1), out);
+    EXPECT_FALSE(out.truncated);
+    EXPECT_EQ(out.choice, (Sel{1, 0})) << start[0] << start[1];
+  }
+}
+
 // T5, Fig. 27: root object with impostors 1, 2; children A (4), B (5, 6), C (3) with leaf
 // children D (7), E (8). Leaves are subsets A, B, D, E; C and the root are groups.
 MckpInstance t5(double capacity) {

@@ -362,5 +362,114 @@ TEST(SelectMonotone, LowerScaleNeverMoreDetail) {
   EXPECT_EQ(prev, 3);
 }
 
+// The fast path handles blocks of back-to-back chains of one length up to 8 levels; these
+// cover the other paths: chains of mixed length (filled object by object), chains longer
+// than 8 levels (a scalar loop), single-level chains, a count that is not a multiple of the
+// block size, and static objects (no velocity arrays).
+std::vector<LodLevel> chain_of(std::size_t levels, bool cycles) {
+  std::vector<LodLevel> c{{1000, 0, cycles ? DetailKind::removed_cycles_per_diameter
+                                           : DetailKind::geometric_error_m, 0.0}};
+  for (std::size_t k = 1; k < levels; ++k)
+    c.push_back({100, 0, c[0].detail_kind,
+                 cycles ? 600.0 / std::pow(1.6, double(k - 1)) : 0.001 * std::pow(1.7, double(k - 1))});
+  return c;
+}
+
+Scene mixed_chain_scene(std::size_t n, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(-1, 1);
+  Scene s;
+  for (std::size_t i = 0; i < n; ++i) {
+    const glm::dvec3 c{u(rng) * 50, u(rng) * 20, u(rng) * 50};
+    const double r = std::pow(10.0, 1.5 * u(rng) - 0.5);
+    const glm::dvec3 v{u(rng) * 5, u(rng) * 5, u(rng) * 5};
+    auto chain = chain_of(1 + (i * 7) % 12, i % 3 != 0);  // 1 .. 12 levels
+    s.store.add(c, r, v, chain);
+    s.c.push_back(c), s.v.push_back(v), s.r.push_back(r), s.chains.push_back(chain);
+  }
+  return s;
+}
+
+TEST(SelectPaths, MixedAndLongChainsMatchReference) {
+  const Scene sc = mixed_chain_scene(3001, 11);
+  for (int mask = 0; mask < 8; ++mask) {
+    Viewer vw = moving_viewer();
+    vw.use_size = mask & 1, vw.use_eccentricity = mask & 2, vw.use_velocity = mask & 4;
+    expect_matches_reference(vw, sc);
+  }
+  // Long chains do reach their deep levels (the scalar path is exercised, not skipped).
+  Out out(sc.r.size());
+  ASSERT_EQ(select_lods(moving_viewer(), sc.store.view(), out.d()), "");
+  EXPECT_GT(*std::max_element(out.lod.begin(), out.lod.end()), 7);
+}
+
+TEST(SelectPaths, LayoutOfWeightsDoesNotChangeDecisions) {
+  // The same objects once back to back (bulk path) and once with the chains stored in
+  // reverse order (object-by-object path): identical bytes.
+  const Scene sc = random_scene(1000, 12);
+  const ObjectSet a = sc.store.view();
+  std::vector<double> weights;
+  std::vector<std::uint32_t> first(a.size());
+  for (std::size_t i = a.size(); i-- > 0;) {
+    first[i] = static_cast<std::uint32_t>(weights.size());
+    for (std::size_t k = 0; k < a.lod_count[i]; ++k) weights.push_back(a.level_weight[a.lod_first[i] + k]);
+  }
+  ObjectSet b = a;
+  b.level_weight = weights;
+  b.lod_first = first;
+  ASSERT_EQ(validate_objects(b), "");
+  Out oa(a.size()), ob(a.size());
+  ASSERT_EQ(select_lods(moving_viewer(), a, oa.d()), "");
+  ASSERT_EQ(select_lods(moving_viewer(), b, ob.d()), "");
+  EXPECT_EQ(oa.lod, ob.lod);
+  EXPECT_EQ(oa.why, ob.why);
+  EXPECT_EQ(oa.s, ob.s);
+  EXPECT_EQ(oa.e, ob.e);
+  EXPECT_EQ(oa.v, ob.v);
+}
+
+TEST(SelectPaths, StaticObjectsEqualZeroVelocity) {
+  Scene sc;
+  std::mt19937_64 rng(13);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (std::size_t i = 0; i < 700; ++i)
+    sc.store.add({u(rng) * 40, u(rng) * 10, u(rng) * 40}, 0.5 + u(rng) * 0.4, {0, 0, 0},
+                 (i % 2) ? cycles_chain() : error_chain());
+  ObjectSet with = sc.store.view(), without = with;
+  without.vel_x_m_s = without.vel_y_m_s = without.vel_z_m_s = {};
+  Out o1(with.size()), o2(with.size());
+  ASSERT_EQ(select_lods(moving_viewer(), with, o1.d()), "");
+  ASSERT_EQ(select_lods(moving_viewer(), without, o2.d()), "");
+  EXPECT_EQ(o1.lod, o2.lod);
+  EXPECT_EQ(o1.why, o2.why);
+  EXPECT_EQ(o1.vel, o2.vel);
+}
+
+TEST(SelectPaths, InvalidObjectWithLongChainStaysInvalid) {
+  ObjectStore st;
+  st.add({0, 0, -10}, 1, {}, chain_of(12, true));
+  st.add({0, 0, -10}, 1, {}, chain_of(12, true));
+  st.set_motion(1, {kNaN, 0, -10}, {});
+  Out out(2);
+  Viewer vw;
+  vw.xi_cpd = 10;
+  ASSERT_EQ(select_lods(vw, st.view(), out.d()), "");
+  EXPECT_GT(out.lod[0], 0);
+  EXPECT_EQ(out.lod[1], 0);
+  EXPECT_EQ(static_cast<Criterion>(out.why[1]), Criterion::invalid_input);
+  EXPECT_EQ(out.ecc[1], 0.0f);
+}
+
+TEST(SelectPaths, EmptyWeightArrayIsInvalidNotARead) {
+  ObjectStore st;
+  st.add({0, 0, -10}, 1, {}, cycles_chain());
+  ObjectSet os = st.view();
+  os.level_weight = {};  // every chain now out of range (ASan checks there is no read)
+  Out out(1);
+  ASSERT_EQ(select_lods(Viewer{}, os, out.d()), "");
+  EXPECT_EQ(out.lod[0], 0);
+  EXPECT_EQ(static_cast<Criterion>(out.why[0]), Criterion::invalid_input);
+}
+
 }  // namespace
 }  // namespace gazelod::lod

@@ -30,6 +30,10 @@ TEST(RuntimePacing, WaitFrameSleepsToTheDisplayRefresh) {
   const std::int64_t start_ns = monotonic_ns();
   for (int i = 0; i < kFrames; ++i) {
     const XrTime before = fs.predictedDisplayTime;
+    // The clock just before the call: the prediction must lie ahead of it. (Reading the clock
+    // after the call would flake on a loaded machine, where the thread may be descheduled.)
+    timespec now{};
+    clock_gettime(CLOCK_MONOTONIC, &now);
     ASSERT_EQ(xrWaitFrame(hs.session, nullptr, &fs), XR_SUCCESS);
     ASSERT_EQ(xrBeginFrame(hs.session, nullptr), XR_SUCCESS);
     XrFrameEndInfo end{XR_TYPE_FRAME_END_INFO};
@@ -38,9 +42,6 @@ TEST(RuntimePacing, WaitFrameSleepsToTheDisplayRefresh) {
     ASSERT_EQ(xrEndFrame(hs.session, &end), XR_SUCCESS);
     EXPECT_GT(fs.predictedDisplayTime, before);
     EXPECT_EQ((fs.predictedDisplayTime - first) % fs.predictedDisplayPeriod, 0) << "on the refresh grid";
-    // The predicted display time is still ahead of the clock when xrWaitFrame returns.
-    timespec now{};
-    clock_gettime(CLOCK_MONOTONIC, &now);
     XrTime now_xr = 0;
     ASSERT_EQ(to_xr(hs.instance, &now, &now_xr), XR_SUCCESS);
     EXPECT_GT(fs.predictedDisplayTime, now_xr);

@@ -1,0 +1,156 @@
+// load_baked_scene: scene traversal with world matrices, chain reading, bounding spheres.
+#include "bake/baked_scene.hpp"
+
+#include "bake/bake_error.hpp"
+#include "bake/gltf_load.hpp"
+#include "bake/mesh_extract.hpp"
+#include "lod/object_set.hpp"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/mat4x4.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace gazelod::bake {
+namespace {
+
+using tinygltf::Value;
+
+glm::dmat4 local_matrix(const tinygltf::Node& n) {
+  if (n.matrix.size() == 16) return glm::make_mat4(n.matrix.data());  // column-major, as glTF
+  glm::dmat4 m(1.0);
+  if (n.translation.size() == 3) m = glm::translate(m, glm::dvec3(n.translation[0], n.translation[1], n.translation[2]));
+  if (n.rotation.size() == 4)  // glTF stores x, y, z, w
+    m *= glm::mat4_cast(glm::dquat(n.rotation[3], n.rotation[0], n.rotation[1], n.rotation[2]));
+  if (n.scale.size() == 3) m = glm::scale(m, glm::dvec3(n.scale[0], n.scale[1], n.scale[2]));
+  return m;
+}
+
+struct Reader {
+  const std::string& path;
+  const tinygltf::Model& m;
+
+  [[noreturn]] void fail(const std::string& where, const std::string& what) const {
+    throw BakeError(path + ": " + where + ": " + what);
+  }
+
+  const Value& member(const Value& obj, const std::string& key, const std::string& where) const {
+    if (!obj.IsObject() || !obj.Has(key)) fail(where + "/" + key, "missing");
+    return obj.Get(key);
+  }
+
+  double number(const Value& obj, const std::string& key, const std::string& where) const {
+    const Value& v = member(obj, key, where);
+    if (!v.IsNumber() || !std::isfinite(v.GetNumberAsDouble()))
+      fail(where + "/" + key, "must be a finite number");
+    return v.GetNumberAsDouble();
+  }
+
+  lod::LodLevel level(int node, int expect_level) const {
+    const std::string where = "/nodes/" + std::to_string(node) + "/extras/gazelod_lod";
+    const tinygltf::Node& n = m.nodes[static_cast<std::size_t>(node)];
+    if (!n.extras.IsObject() || !n.extras.Has("gazelod_lod"))
+      fail(where, "missing (not written by gazelod bake?)");
+    const Value& e = n.extras.Get("gazelod_lod");
+    if (!e.IsObject()) fail(where, "must be an object");
+    if (number(e, "level", where) != expect_level)
+      fail(where + "/level", "expected " + std::to_string(expect_level));
+    const double tri = number(e, "triangles", where), det = number(e, "detail_cycles_per_diameter", where);
+    if (!(tri >= 1.0 && tri <= 4294967295.0) || tri != std::floor(tri))
+      fail(where + "/triangles", "must be a whole number >= 1");
+    if (det < 0.0) fail(where + "/detail_cycles_per_diameter", "must be >= 0");
+    lod::LodLevel l;
+    l.triangles = static_cast<std::uint32_t>(tri);
+    const double verts = e.Has("vertices") ? number(e, "vertices", where) : 0.0;
+    l.vertices = verts >= 0.0 && verts <= 4294967295.0 ? static_cast<std::uint32_t>(verts) : 0;
+    l.detail_kind = lod::DetailKind::removed_cycles_per_diameter;
+    l.detail = expect_level == 0 ? 0.0 : det;
+    return l;
+  }
+
+  // World-space sphere around the box centre of the transformed full-detail positions.
+  void sphere(int node, const glm::dmat4& world, BakedObject& o) const {
+    const tinygltf::Mesh& mesh = m.meshes[static_cast<std::size_t>(m.nodes[static_cast<std::size_t>(node)].mesh)];
+    std::vector<glm::dvec3> pts;
+    for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
+      const auto it = mesh.primitives[p].attributes.find("POSITION");
+      const std::string where = "/nodes/" + std::to_string(node) + " mesh primitive " + std::to_string(p);
+      if (it == mesh.primitives[p].attributes.end()) fail(where, "has no POSITION");
+      const std::vector<float> xyz = read_positions(m, it->second, path + ": " + where);
+      for (std::size_t i = 0; i + 2 < xyz.size(); i += 3)
+        pts.push_back(glm::dvec3(world * glm::dvec4(xyz[i], xyz[i + 1], xyz[i + 2], 1.0)));
+    }
+    if (pts.empty()) return;
+    glm::dvec3 lo = pts[0], hi = pts[0];
+    for (const auto& q : pts) lo = glm::min(lo, q), hi = glm::max(hi, q);
+    o.center_m = (lo + hi) * 0.5;
+    double r2 = 0.0;
+    for (const auto& q : pts) r2 = std::max(r2, glm::dot(q - o.center_m, q - o.center_m));
+    o.radius_m = std::sqrt(r2);
+  }
+
+  void object(int node, const glm::dmat4& world, std::vector<BakedObject>& out) const {
+    const tinygltf::Node& n = m.nodes[static_cast<std::size_t>(node)];
+    BakedObject o;
+    o.node = node;
+    o.name = n.name.empty() ? "node " + std::to_string(node) : n.name;
+    o.lods.push_back(level(node, 0));
+    const auto ext = n.extensions.find("MSFT_lod");
+    if (ext != n.extensions.end()) {
+      const std::string where = "/nodes/" + std::to_string(node) + "/extensions/MSFT_lod/ids";
+      const Value& ids = member(ext->second, "ids", "/nodes/" + std::to_string(node) + "/extensions/MSFT_lod");
+      if (!ids.IsArray()) fail(where, "must be an array");
+      for (std::size_t k = 0; k < ids.ArrayLen(); ++k) {
+        const Value& id = ids.Get(static_cast<int>(k));
+        const std::string w = where + "/" + std::to_string(k);
+        if (!id.IsInt() || id.GetNumberAsInt() < 0 ||
+            static_cast<std::size_t>(id.GetNumberAsInt()) >= m.nodes.size())
+          fail(w, "not a node index");
+        if (m.nodes[static_cast<std::size_t>(id.GetNumberAsInt())].mesh < 0) fail(w, "node has no mesh");
+        o.lods.push_back(level(id.GetNumberAsInt(), static_cast<int>(k + 1)));
+      }
+    }
+    if (std::string e = lod::validate_chain(o.lods); !e.empty())
+      fail("/nodes/" + std::to_string(node), "LOD chain: " + e);
+    sphere(node, world, o);
+    out.push_back(std::move(o));
+  }
+
+  void visit(int node, const glm::dmat4& parent, std::vector<bool>& on_path,
+             std::vector<BakedObject>& out) const {
+    if (node < 0 || static_cast<std::size_t>(node) >= m.nodes.size())
+      fail("/nodes", "reference to missing node " + std::to_string(node));
+    if (on_path[static_cast<std::size_t>(node)]) fail("/nodes/" + std::to_string(node), "node graph has a cycle");
+    on_path[static_cast<std::size_t>(node)] = true;
+    const tinygltf::Node& n = m.nodes[static_cast<std::size_t>(node)];
+    const glm::dmat4 world = parent * local_matrix(n);
+    if (n.mesh >= 0) {
+      if (static_cast<std::size_t>(n.mesh) >= m.meshes.size())
+        fail("/nodes/" + std::to_string(node) + "/mesh", "no such mesh");
+      object(node, world, out);
+    }
+    for (int c : n.children) visit(c, world, on_path, out);
+    on_path[static_cast<std::size_t>(node)] = false;
+  }
+};
+
+}  // namespace
+
+std::vector<BakedObject> load_baked_scene(const std::string& path) {
+  LoadedGltf g = load_gltf(path);
+  const Reader r{path, g.model};
+  std::vector<BakedObject> out;
+  std::vector<bool> on_path(g.model.nodes.size(), false);
+  const auto& scenes = g.model.scenes;
+  for (std::size_t s = 0; s < scenes.size(); ++s) {
+    if (g.model.defaultScene >= 0 && static_cast<int>(s) != g.model.defaultScene) continue;
+    for (int root : scenes[s].nodes) r.visit(root, glm::dmat4(1.0), on_path, out);
+  }
+  if (out.empty()) throw BakeError(path + ": /scenes: no node with a mesh in the scene");
+  return out;
+}
+
+}  // namespace gazelod::bake

@@ -1,0 +1,84 @@
+// load_gltf: read the bytes, check a GLB's declared length against the file, then tinygltf.
+#include "bake/gltf_load.hpp"
+
+#include "bake/bake_error.hpp"
+
+#include <cerrno>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+
+namespace gazelod::bake {
+namespace {
+
+// tinygltf image callback: keep the encoded bytes as they are (Image::as_is).
+bool keep_image_bytes(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+                      const unsigned char* bytes, int size, void*) {
+  if (size < 0 || (size > 0 && !bytes)) return false;
+  image->image.assign(bytes, bytes + size);
+  image->as_is = true;
+  return true;
+}
+
+std::vector<unsigned char> read_all(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw BakeError(path + ": is a directory");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw BakeError(path + ": cannot open for reading (" + std::strerror(errno) + ")");
+  std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)),
+                                   std::istreambuf_iterator<char>());
+  if (in.bad()) throw BakeError(path + ": read error");
+  if (bytes.empty()) throw BakeError(path + ": file is empty");
+  return bytes;
+}
+
+std::uint32_t le32(const unsigned char* p) {
+  return std::uint32_t(p[0]) | std::uint32_t(p[1]) << 8 | std::uint32_t(p[2]) << 16 |
+         std::uint32_t(p[3]) << 24;
+}
+
+std::string trim(std::string s) {
+  while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
+  return s;
+}
+
+}  // namespace
+
+LoadedGltf load_gltf(const std::string& path) {
+  const std::vector<unsigned char> bytes = read_all(path);
+  const bool glb = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+  if (glb) {
+    if (bytes.size() < 20)
+      throw BakeError(path + ": truncated GLB: " + std::to_string(bytes.size()) +
+                      " bytes, the header alone needs 20");
+    const std::uint32_t declared = le32(bytes.data() + 8);
+    if (declared > bytes.size())
+      throw BakeError(path + ": truncated GLB: header (byte 8) declares " +
+                      std::to_string(declared) + " bytes, file has " +
+                      std::to_string(bytes.size()));
+  }
+  if (bytes.size() > UINT32_MAX) throw BakeError(path + ": larger than 4 GiB");
+
+  tinygltf::TinyGLTF loader;
+  loader.SetImageLoader(keep_image_bytes, nullptr);
+  LoadedGltf out;
+  std::string err, warn;
+  const std::string base_dir = std::filesystem::path(path).parent_path().string();
+  const auto n = static_cast<unsigned int>(bytes.size());
+  const bool ok =
+      glb ? loader.LoadBinaryFromMemory(&out.model, &err, &warn, bytes.data(), n, base_dir)
+          : loader.LoadASCIIFromString(&out.model, &err, &warn,
+                                       reinterpret_cast<const char*>(bytes.data()), n, base_dir);
+  if (!ok || !err.empty())
+    throw BakeError(path + ": " + (glb ? "invalid GLB: " : "invalid glTF: ") +
+                    (err.empty() ? std::string("tinygltf rejected the file") : trim(err)));
+  std::istringstream w(warn);
+  for (std::string line; std::getline(w, line);)
+    if (!line.empty()) out.warnings.push_back(path + ": " + line);
+  return out;
+}
+
+}  // namespace gazelod::bake

@@ -1,0 +1,146 @@
+// Accessor reading with explicit bounds checks: a malformed file must give a message, not a
+// read past the buffer (tinygltf does not check accessor ranges).
+#include "bake/mesh_extract.hpp"
+
+#include "bake/bake_error.hpp"
+
+#include <cmath>
+#include <cstring>
+
+namespace gazelod::bake {
+namespace {
+
+const char* mode_name(int mode) {
+  switch (mode) {
+    case TINYGLTF_MODE_POINTS: return "POINTS";
+    case TINYGLTF_MODE_LINE: return "LINES";
+    case TINYGLTF_MODE_LINE_LOOP: return "LINE_LOOP";
+    case TINYGLTF_MODE_LINE_STRIP: return "LINE_STRIP";
+    case TINYGLTF_MODE_TRIANGLE_STRIP: return "TRIANGLE_STRIP";
+    case TINYGLTF_MODE_TRIANGLE_FAN: return "TRIANGLE_FAN";
+    default: return "unknown";
+  }
+}
+
+// The checked byte range of an accessor: first element and stride.
+struct View {
+  const unsigned char* first = nullptr;
+  std::size_t stride = 0;
+  std::size_t count = 0;
+};
+
+View checked_view(const tinygltf::Model& m, int accessor, std::size_t element_size,
+                  const std::string& where) {
+  const std::string a_where = where + " (accessor " + std::to_string(accessor) + ")";
+  if (accessor < 0 || static_cast<std::size_t>(accessor) >= m.accessors.size())
+    throw BakeError(a_where + ": no such accessor");
+  const tinygltf::Accessor& a = m.accessors[accessor];
+  if (a.sparse.isSparse) throw BakeError(a_where + ": sparse accessors are not supported");
+  if (a.bufferView < 0 || static_cast<std::size_t>(a.bufferView) >= m.bufferViews.size())
+    throw BakeError(a_where + ": has no bufferView (all-zero data is not supported)");
+  const tinygltf::BufferView& bv = m.bufferViews[a.bufferView];
+  if (bv.buffer < 0 || static_cast<std::size_t>(bv.buffer) >= m.buffers.size())
+    throw BakeError(a_where + ": bufferView " + std::to_string(a.bufferView) + " has no buffer");
+  const std::vector<unsigned char>& data = m.buffers[bv.buffer].data;
+  const std::size_t stride = bv.byteStride ? bv.byteStride : element_size;
+  if (stride < element_size)
+    throw BakeError(a_where + ": byteStride " + std::to_string(stride) + " < element size " +
+                    std::to_string(element_size));
+  // Checked in this order so that no product can overflow.
+  const bool past_end =
+      bv.byteOffset > data.size() || bv.byteLength > data.size() - bv.byteOffset ||
+      (a.count > 0 && (a.byteOffset > bv.byteLength ||
+                       (a.count - 1) > (bv.byteLength - a.byteOffset) / stride ||
+                       a.byteOffset + stride * (a.count - 1) + element_size > bv.byteLength));
+  if (past_end)
+    throw BakeError(a_where + ": reads past the end of its bufferView " +
+                    std::to_string(a.bufferView) + " / buffer " + std::to_string(bv.buffer) +
+                    " (truncated data?)");
+  return {data.data() + bv.byteOffset + a.byteOffset, stride, a.count};
+}
+
+std::vector<std::uint32_t> read_indices(const tinygltf::Model& m, int accessor,
+                                        std::size_t vertex_count, const std::string& where) {
+  const tinygltf::Accessor& a = m.accessors.at(static_cast<std::size_t>(accessor));
+  std::size_t size = 0;
+  switch (a.componentType) {
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: size = 1; break;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: size = 2; break;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: size = 4; break;
+    default:
+      throw BakeError(where + ": indices accessor " + std::to_string(accessor) +
+                      " has component type " + std::to_string(a.componentType) +
+                      " (need unsigned byte/short/int)");
+  }
+  if (a.type != TINYGLTF_TYPE_SCALAR)
+    throw BakeError(where + ": indices accessor " + std::to_string(accessor) + " is not SCALAR");
+  const View v = checked_view(m, accessor, size, where + " indices");
+  std::vector<std::uint32_t> out(v.count);
+  for (std::size_t i = 0; i < v.count; ++i) {
+    const unsigned char* p = v.first + i * v.stride;
+    std::uint32_t x = 0;
+    if (size == 1) x = p[0];
+    else if (size == 2) { std::uint16_t s; std::memcpy(&s, p, 2); x = s; }
+    else std::memcpy(&x, p, 4);
+    if (x >= vertex_count)
+      throw BakeError(where + ": index " + std::to_string(i) + " is " + std::to_string(x) +
+                      ", but there are only " + std::to_string(vertex_count) + " vertices");
+    out[i] = x;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string primitive_label(const tinygltf::Model& model, int mesh, int primitive) {
+  std::string s = "mesh " + std::to_string(mesh);
+  if (mesh >= 0 && static_cast<std::size_t>(mesh) < model.meshes.size() &&
+      !model.meshes[mesh].name.empty())
+    s += " '" + model.meshes[mesh].name + "'";
+  return s + " primitive " + std::to_string(primitive);
+}
+
+std::vector<float> read_positions(const tinygltf::Model& m, int accessor,
+                                  const std::string& where) {
+  if (accessor < 0 || static_cast<std::size_t>(accessor) >= m.accessors.size())
+    throw BakeError(where + ": POSITION accessor " + std::to_string(accessor) + " does not exist");
+  const tinygltf::Accessor& a = m.accessors[accessor];
+  if (a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT || a.type != TINYGLTF_TYPE_VEC3)
+    throw BakeError(where + ": POSITION accessor " + std::to_string(accessor) +
+                    " must be float VEC3 (quantized positions are not supported)");
+  const View v = checked_view(m, accessor, 12, where + " POSITION");
+  std::vector<float> out(3 * v.count);
+  for (std::size_t i = 0; i < v.count; ++i) {
+    std::memcpy(&out[3 * i], v.first + i * v.stride, 12);
+    for (int c = 0; c < 3; ++c)
+      if (!std::isfinite(out[3 * i + c]))
+        throw BakeError(where + ": POSITION " + std::to_string(i) + " is not finite");
+  }
+  return out;
+}
+
+PrimitiveGeometry extract_primitive(const tinygltf::Model& m, int mesh, int primitive) {
+  const std::string where = primitive_label(m, mesh, primitive);
+  const tinygltf::Primitive& p = m.meshes.at(static_cast<std::size_t>(mesh))
+                                     .primitives.at(static_cast<std::size_t>(primitive));
+  if (p.mode != TINYGLTF_MODE_TRIANGLES)
+    throw BakeError(where + ": mode " + std::to_string(p.mode) + " (" + mode_name(p.mode) +
+                    ") is not supported; only TRIANGLES (4) can be simplified");
+  const auto pos = p.attributes.find("POSITION");
+  if (pos == p.attributes.end()) throw BakeError(where + ": has no POSITION attribute");
+  PrimitiveGeometry g;
+  g.positions_xyz = read_positions(m, pos->second, where);
+  const std::size_t vcount = g.positions_xyz.size() / 3;
+  if (p.indices >= 0) {
+    g.indices = read_indices(m, p.indices, vcount, where);
+  } else {
+    g.indices.resize(vcount);
+    for (std::size_t i = 0; i < vcount; ++i) g.indices[i] = static_cast<std::uint32_t>(i);
+  }
+  if (g.indices.size() % 3 != 0)
+    throw BakeError(where + ": " + std::to_string(g.indices.size()) +
+                    " indices is not a whole number of triangles");
+  return g;
+}
+
+}  // namespace gazelod::bake

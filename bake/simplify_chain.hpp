@@ -1,0 +1,49 @@
+// One primitive's LOD chain with meshoptimizer (0.18 on Debian 12): every coarser level is
+// simplified from the full-detail indices, so its error is measured against the original.
+// meshopt 0.18 has no meshopt_simplifyWithAttributes: simplification is position-only, but it
+// keeps attribute seams (vertices sharing a position with different UVs/normals) intact.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace gazelod::bake {
+
+struct ChainOptions {
+  // Triangle ratio of each coarser level against level 0, strictly decreasing in (0, 1).
+  std::vector<double> ratios{0.25, 0.0625, 0.015625};
+  // Largest error meshopt may introduce, relative to the mesh extent (meshopt_simplifyScale);
+  // 1 = the whole extent, i.e. no limit: the triangle ratio alone decides.
+  double target_error_rel = 1.0;
+  // meshopt_SimplifyLockBorder: open borders (where a mesh's primitives meet, the rim of a
+  // sheet) stay in place, so primitives do not crack apart; levels this blocks fall back to
+  // meshopt_simplifySloppy, which does not keep them.
+  bool lock_borders = false;
+};
+
+struct SimplifiedLevel {
+  std::vector<std::uint32_t> indices;  // triangle list into the original vertices
+  std::uint32_t vertices = 0;          // distinct vertices the indices use
+  double error_rel = 0.0;              // relative to scale_m (running maximum over levels)
+  double error_m = 0.0;                // error_rel * scale_m, in the positions' units
+  bool sloppy = false;                 // reached with meshopt_simplifySloppy
+};
+
+struct PrimitiveChain {
+  double scale_m = 0.0;  // meshopt_simplifyScale: the largest extent of the positions
+  // ratios.size() + 1 levels; level 0 is the input. A level that cannot get below the previous
+  // one repeats it; a level may be empty when sloppy simplification removes everything.
+  std::vector<SimplifiedLevel> levels;
+};
+
+// Validates the options; returns "" or a message naming the bad value.
+std::string validate_chain_options(const ChainOptions& options);
+
+// positions_xyz: 3 floats per vertex, all finite; indices: a triangle list (size % 3 == 0) with
+// every index < vertex count. The caller checks both (mesh_extract does).
+PrimitiveChain simplify_chain(std::span<const float> positions_xyz,
+                              std::span<const std::uint32_t> indices, const ChainOptions& options);
+
+}  // namespace gazelod::bake

@@ -1,0 +1,22 @@
+// Opening a trace file in any supported layout as a RecordStream (the stream owns the file).
+#pragma once
+
+#include "gaze/record_stream.hpp"
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace gazelod::gaze {
+
+enum class TraceFormat { gazelod, gazebasevr, pupil };
+
+std::optional<TraceFormat> parse_trace_format(std::string_view name);  // "gazelod", ...
+std::string_view trace_format_name(TraceFormat format);
+
+// Opens `path`; throws TraceError (file unreadable, bad header) naming the file.
+std::unique_ptr<RecordStream> open_trace(const std::string& path, TraceFormat format,
+                                         ReadOptions options = {});
+
+}  // namespace gazelod::gaze

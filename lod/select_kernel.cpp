@@ -1,0 +1,139 @@
+// Phase 1 of the selection (see select_kernel.hpp): straight-line, branch-free arithmetic per
+// object so that GCC vectorises the loop (check with -fopt-info-vec). Conventions:
+//   - every "if" is a ternary (a blend), every helper is inlined (fast_math.hpp);
+//   - invalid objects are not skipped: their NaNs flow through and are replaced by 0 at
+//     the end, with p2_cycles = -1 telling phase 2 to give them level 0;
+//   - '&' and '|' instead of '&&' and '||', 0/1 factors instead of bool blends on
+//     loop-invariant flags, no byte-wide data (each of these stops GCC 12 vectorising);
+//   - divisions and square roots share one slow unit (per object: 4 divisions, 2 roots):
+//     one reciprocal 1 / d^2 is reused, d and v stay squared, the eccentricity phi - alpha
+//     is a single atan2 of the rotated (cos, sin) pair, M(E) is kept as 1 / M, and the
+//     levels compare squares against A^2 p^2 instead of dividing.
+#include "lod/select_kernel.hpp"
+
+#include "lod/acuity.hpp"
+#include "lod/fast_math.hpp"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace gazelod::lod::detail {
+namespace {
+
+constexpr double kDegPerRad = 180.0 / std::numbers::pi;
+constexpr double kMaxFinite = std::numeric_limits<double>::max();
+
+// |x| <= max is false for NaN and +-inf, and vectorises (std::isfinite may not).
+[[gnu::always_inline]] inline bool finite(double x) { return std::fabs(x) <= kMaxFinite; }
+
+}  // namespace
+
+// The clones: baseline x86-64 (SSE2) for any CPU, x86-64-v3 (AVX2, FMA) and x86-64-v4
+// (AVX-512) where present. Dispatch happens once, at load time, through an ifunc (glibc).
+// -DGAZELOD_NO_CLONES builds the baseline only (to test it on a machine with AVX).
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GAZELOD_NO_CLONES)
+__attribute__((target_clones("default", "arch=x86-64-v3", "arch=x86-64-v4")))
+#endif
+void select_kernel_geometry(const KernelFrame& f, const KernelInput& in, std::size_t begin,
+                            std::size_t count, KernelBlock& out) {
+  const double* __restrict cx = in.center_x_m + begin;
+  const double* __restrict cy = in.center_y_m + begin;
+  const double* __restrict cz = in.center_z_m + begin;
+  const double* __restrict rad = in.radius_m + begin;
+  // Static objects read a block of zeros: the loads stay unconditional (a conditional load
+  // or a blend on a loop-invariant flag blocks if-conversion, and with it vectorisation).
+  static constexpr double kZeros[kSelectBlock] = {};
+  const bool moving = in.vel_x_m_s != nullptr;
+  const double* __restrict vx = moving ? in.vel_x_m_s + begin : kZeros;
+  const double* __restrict vy = moving ? in.vel_y_m_s + begin : kZeros;
+  const double* __restrict vz = moving ? in.vel_z_m_s + begin : kZeros;
+
+  const double ex = f.eye_m[0], ey = f.eye_m[1], ez = f.eye_m[2];
+  const double evx = f.eye_vel_m_s[0], evy = f.eye_vel_m_s[1], evz = f.eye_vel_m_s[2];
+  const double gx = f.gaze_unit[0], gy = f.gaze_unit[1], gz = f.gaze_unit[2];
+  const double ox = f.gaze_omega_rad_s[0], oy = f.gaze_omega_rad_s[1], oz = f.gaze_omega_rad_s[2];
+  const double err = f.tracker_error_rad;
+  const double vel_zero2 = f.vel_zero_dps * f.vel_zero_dps;
+  // Switches as 0/1 factors, not bool blends: a loop-invariant bool mixed with the
+  // double-width masks is a mask conversion GCC 12 does not vectorise.
+  const double on_e = f.use_eccentricity ? 1.0 : 0.0, on_v = f.use_velocity ? 1.0 : 0.0;
+
+  // The inputs are the caller's arrays, the outputs a block-local struct: they never
+  // overlap, but 8 x 8 runtime alias checks are more than GCC will emit, so say it here.
+#pragma GCC ivdep
+  for (std::size_t i = 0; i < count; ++i) {
+    const double c_x = cx[i] - ex, c_y = cy[i] - ey, c_z = cz[i] - ez;
+    const double r = rad[i];
+    const double ovx = vx[i], ovy = vy[i], ovz = vz[i];
+    const double d2 = c_x * c_x + c_y * c_y + c_z * c_z;
+    // '&' and '|', never '&&' / '||': a short circuit is a branch (or a bool phi GCC 12
+    // cannot vectorise).
+    const bool ok = finite(d2) & finite(r) & (r >= 0.0) & finite(ovx) & finite(ovy) & finite(ovz);
+    // No sqrt for d itself: only h needs one (d^2 - r^2 by an FMA is as exact as (d-r)(d+r)
+    // with a rounded d).
+    const double r2 = r * r;
+    const bool inside = !(d2 > r2);
+
+    // Angular radius alpha = atan2(r, h), h = sqrt(d^2 - r^2).
+    const double h = std::sqrt(inside ? 0.0 : d2 - r2);
+    const double alpha = inside ? std::numbers::pi / 2 : fast::atan2_nonneg(r, h);
+
+    // Gaze-to-centre angle phi: sin phi = |g x c| / d, cos phi = g.c / d. With sin alpha =
+    // r / d and cos alpha = h / d, phi - alpha = atan2(sp h - cp r, cp h + sp r) (all times
+    // d^2): one atan2, still exact for tiny angles. Negative sine: the gaze ray passes
+    // through the sphere (E = 0).
+    const double kx = gy * c_z - gz * c_y, ky = gz * c_x - gx * c_z, kz = gx * c_y - gy * c_x;
+    const double sp = std::sqrt(kx * kx + ky * ky + kz * kz);
+    const double cp = gx * c_x + gy * c_y + gz * c_z;
+    const double sin_e = sp * h - cp * r, cos_e = cp * h + sp * r;
+    // sin_e = 0 with cos_e < 0 is phi - alpha = pi (a point straight behind the eye).
+    const bool off_ray = (sin_e > 0.0) | ((sin_e == 0.0) & (cos_e < 0.0));
+    const double ecc_rad = off_ray ? fast::atan2_nonneg(sin_e, cos_e) - err : 0.0;
+    const double ecc_deg = (!inside & (ecc_rad > 0.0)) ? ecc_rad * kDegPerRad : 0.0;
+
+    // Retinal velocity: w = c x (v_obj - v_eye) / d^2 - w_gaze, speed^2 = |w x c|^2 / d^2
+    // (squared: G needs only its log, and the comparisons work on v^2; no sqrt).
+    const double inv_d2 = 1.0 / d2;
+    const double rx = ovx - evx, ry = ovy - evy, rz = ovz - evz;
+    const double wx = (c_y * rz - c_z * ry) * inv_d2 - ox;
+    const double wy = (c_z * rx - c_x * rz) * inv_d2 - oy;
+    const double wz = (c_x * ry - c_y * rx) * inv_d2 - oz;
+    const double tx = wy * c_z - wz * c_y, ty = wz * c_x - wx * c_z, tz = wx * c_y - wy * c_x;
+    const double vel2_raw = (tx * tx + ty * ty + tz * tz) * inv_d2 * (kDegPerRad * kDegPerRad);
+    // d = 0 or overflow gives NaN: 0 keeps detail (as the scalar criteria do at r = 0).
+    const double vel2 = vel2_raw >= 0.0 ? vel2_raw : 0.0;
+
+    // G(v) on v^2 clamped into the log branch's range (log10 v = log10(v^2) / 2), then the
+    // two flat pieces by blends.
+    constexpr double kSeam2 = kVelocitySeamDps * kVelocitySeamDps, kCap2 = 200.0 * 200.0;
+    const double v2_log = vel2 < kSeam2 ? kSeam2 : (vel2 > kCap2 ? kCap2 : vel2);
+    const double g_log = kGIntercept - (0.5 * kGSlope) * fast::log10_normal(v2_log);
+    const double g_clamped = g_log < 0.0 ? 0.0 : (g_log > kAcuityMaxCpd ? kAcuityMaxCpd : g_log);
+    const double g_raw = !(vel2 > kSeam2) ? kAcuityMaxCpd : (vel2 >= vel_zero2 ? 0.0 : g_clamped);
+    const double g = on_v * g_raw + (1.0 - on_v) * kAcuityMaxCpd;  // g_raw is finite
+
+    // 1 / M(E) = max(1, (0.3 E + 1)^2 / 7.49) beyond the seam: no division (phase 2 moves
+    // it to the other side of the comparison).
+    const double mq = kMSlope * ecc_deg + 1.0;
+    const double inv_m_branch = mq * mq * (1.0 / kMNumerator);
+    const double inv_m_max = inv_m_branch > 1.0 ? inv_m_branch : 1.0;
+    const double inv_m_raw = ecc_deg > kEccentricitySeamDeg ? inv_m_max : 1.0;
+    const double inv_m = on_e * inv_m_raw + (1.0 - on_e);
+
+    const double alpha_deg = alpha * kDegPerRad;
+    // Squared threshold factors of both kinds (see select_kernel.hpp); phase 2 picks by kind.
+    // d = 0: inv_d2 = +inf, so p_error^2 = +inf (no level), as q = 0 in the unsquared rule.
+    constexpr double kErrFactor = 360.0 / std::numbers::pi;
+    const double p2_err = (kErrFactor * kErrFactor) * inv_d2;
+    out.ecc_deg[i] = ok ? ecc_deg : 0.0;
+    out.vel2_dps2[i] = ok ? vel2 : 0.0;
+    out.alpha_deg[i] = ok ? alpha_deg : 0.0;
+    out.p2_cycles[i] = ok ? 4.0 * alpha_deg * alpha_deg : -1.0;
+    out.p2_error[i] = ok ? p2_err : 0.0;
+    out.inv_m[i] = inv_m;
+    out.g_cpd[i] = g;
+  }
+}
+
+}  // namespace gazelod::lod::detail

@@ -1,0 +1,85 @@
+// gazelod bake IN.gltf|IN.glb -o OUT.glb [--levels N | --ratios r1,r2,...] [--target-error E]
+// [--lock-borders]:
+// an MSFT_lod chain per mesh node (bake/bake.hpp). Progress on stderr, the summary on stdout.
+#include "bake/bake.hpp"
+#include "bake/bake_error.hpp"
+#include "bake/summary.hpp"
+#include "plugin/cli/command.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <memory>
+#include <string>
+
+namespace gazelod::cli {
+namespace {
+
+struct Options {
+  std::string input, output, ratios, target_error;
+  int levels = 0;
+  bool lock_borders = false;
+};
+
+double parse_number(const std::string& option, const std::string& text) {
+  double v = 0.0;
+  const char* end = text.data() + text.size();
+  auto [p, ec] = std::from_chars(text.data(), end, v);
+  if (ec != std::errc{} || p != end || text.empty() || !std::isfinite(v))
+    throw UsageError(option + ": '" + text + "' is not a finite number");
+  return v;
+}
+
+std::vector<double> parse_ratios(const std::string& text) {
+  std::vector<double> r;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = text.find(',', start);
+    r.push_back(parse_number("--ratios", text.substr(start, comma - start)));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return r;
+}
+
+int run_bake(const Options& o, Io io) {
+  if (o.levels != 0 && !o.ratios.empty()) throw UsageError("--levels: give either --levels or --ratios, not both");
+  bake::BakeOptions opts;
+  if (o.levels != 0) {
+    if (o.levels < 2 || o.levels > 16) throw UsageError("--levels: must be in [2, 16], got " + std::to_string(o.levels));
+    opts.chain.ratios = bake::ratios_for_levels(o.levels);
+  } else if (!o.ratios.empty()) {
+    opts.chain.ratios = parse_ratios(o.ratios);
+  }
+  if (!o.target_error.empty()) opts.chain.target_error_rel = parse_number("--target-error", o.target_error);
+  if (std::string e = bake::validate_chain_options(opts.chain); !e.empty())
+    throw UsageError((o.target_error.empty() ? "--ratios: " : "--ratios/--target-error: ") + e);
+  opts.chain.lock_borders = o.lock_borders;
+  opts.progress = [&io](const std::string& line) { io.err << line << '\n' << std::flush; };
+  try {
+    const bake::BakeReport report = bake::bake_file(o.input, o.output, opts);
+    io.out << bake::format_summary(report);
+  } catch (const bake::OutputError& e) {
+    throw UsageError(e.what(), 1);  // the input was fine: "other failure"
+  } catch (const bake::BakeError& e) {
+    throw UsageError(e.what(), 2);  // bad input file
+  }
+  return 0;
+}
+
+const Registrar reg(
+    "bake", "Bake glTF LOD chains (MSFT_lod) with meshoptimizer",
+    [](CLI::App& app) -> Action {
+      auto o = std::make_shared<Options>();
+      app.add_option("input", o->input, "input .gltf or .glb")->required();
+      app.add_option("-o,--output", o->output, "output .glb (written atomically)")->required();
+      app.add_option("--levels", o->levels, "levels in all, each with 1/4 of the previous triangles (default 4)");
+      app.add_option("--ratios", o->ratios, "triangle ratios of the coarser levels, e.g. 0.5,0.2,0.05");
+      app.add_option("--target-error", o->target_error,
+                     "largest error per level relative to the mesh extent (default 1 = no limit)");
+      app.add_flag("--lock-borders", o->lock_borders,
+                   "keep open borders in place (no cracks between a mesh's primitives)");
+      return [o](Io io) { return run_bake(*o, io); };
+    });
+
+}  // namespace
+}  // namespace gazelod::cli

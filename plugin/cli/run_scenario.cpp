@@ -1,0 +1,150 @@
+#include "plugin/cli/run_scenario.hpp"
+
+#include "bake/baked_scene.hpp"
+#include "bake/bake_error.hpp"
+#include "gaze/replay_source.hpp"
+#include "gaze/trace_error.hpp"
+#include "gaze/trace_open.hpp"
+#include "lod/display.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+namespace gazelod::cli {
+namespace {
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw UsageError("--scenario: cannot open '" + path + "'");
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+void set_env(const char* name, const std::string& value) {
+  if (::setenv(name, value.c_str(), 1) != 0) throw UsageError(std::string("cannot set ") + name);
+}
+
+// A trace replayed from the run's first frame: trace time 0 (its first sample) is mapped to
+// the first time the plugin asks for, so any recording lines up with any session.
+class TraceFromFirstFrame final : public gaze::GazeSource {
+ public:
+  explicit TraceFromFirstFrame(std::vector<gaze::TraceRecord> records)
+      : start_ns_(records.empty() ? 0 : records.front().gaze.t_ns), replay_(std::move(records)) {}
+  std::string name() const override { return "trace"; }
+  std::optional<gaze::GazeSample> sample_at(std::int64_t t_ns) override {
+    if (!started_) {
+      offset_ns_ = t_ns - start_ns_;
+      started_ = true;
+    }
+    auto s = replay_.sample_at(t_ns - offset_ns_);
+    if (s) s->t_ns += offset_ns_;
+    return s;
+  }
+  std::string status() const override { return replay_.status(); }
+
+ private:
+  std::int64_t start_ns_ = 0, offset_ns_ = 0;
+  bool started_ = false;
+  gaze::ReplaySource replay_;
+};
+
+}  // namespace
+
+PreparedScenario prepare_scenario(const RunOptions& opt) {
+  PreparedScenario p;
+  p.label = opt.scenario_path.empty() ? "default" : opt.scenario_path;
+  std::string text = opt.scenario_path.empty() ? std::string(sim::default_scenario_json())
+                                               : read_file(opt.scenario_path);
+  // --hmd replaces the scenario's display, so the runtime reports the same views the plugin
+  // is told about. Patched in the JSON text so the runtime reads exactly this scenario.
+  if (!opt.hmd.empty()) {
+    if (lod::find_display_preset(opt.hmd) == nullptr)
+      throw UsageError("--hmd: unknown HMD '" + opt.hmd + "' (see gazelod hmds)");
+    nlohmann::json j;
+    try {
+      j = nlohmann::json::parse(text);
+    } catch (const nlohmann::json::exception& e) {
+      throw UsageError(p.label + ": not JSON: " + e.what());
+    }
+    if (!j.is_object()) throw UsageError(p.label + ": the scenario must be a JSON object");
+    j["display"] = opt.hmd;
+    text = j.dump(2);
+  }
+  try {
+    p.scenario = sim::load_scenario_json(text, p.label);
+  } catch (const sim::ScenarioError& e) {
+    throw UsageError(e.what());
+  }
+  // --scene: the baked glTF's objects and their LOD chains replace the scenario's scene (the
+  // scenario still gives display, motion and effects).
+  if (!opt.scene_path.empty()) {
+    std::vector<bake::BakedObject> baked;
+    try {
+      baked = bake::load_baked_scene(opt.scene_path);
+    } catch (const bake::BakeError& e) {
+      throw UsageError(std::string("--scene: ") + e.what());
+    }
+    if (baked.empty()) throw UsageError("--scene: '" + opt.scene_path + "' has no meshes");
+    p.scenario.objects.clear();
+    for (bake::BakedObject& b : baked) {
+      sim::SceneObject o;
+      o.name = b.name;
+      o.position_m = b.center_m;
+      o.radius_m = b.radius_m;
+      o.lods = std::move(b.lods);
+      p.scenario.objects.push_back(std::move(o));
+    }
+    p.label += " + " + opt.scene_path;
+  }
+  if (opt.frames > 0) {
+    const double rate = p.scenario.frame_rate_hz > 0 ? p.scenario.frame_rate_hz : 90.0;
+    p.scenario.duration_s = static_cast<double>(opt.frames) / rate;
+  }
+  p.duration_s = p.scenario.duration_s;
+
+  std::error_code ec;
+  std::filesystem::create_directories(opt.out_dir, ec);
+  if (ec) throw UsageError("--out: cannot create '" + opt.out_dir.string() + "': " + ec.message());
+  p.file = opt.out_dir / "scenario.json";
+  std::ofstream out(p.file, std::ios::binary | std::ios::trunc);
+  out << text << "\n";
+  if (!out) throw UsageError("--out: cannot write '" + p.file.string() + "'");
+  return p;
+}
+
+void point_loader_at_simulator(const PreparedScenario& prepared, const RunOptions& opt) {
+  if (const char* given = std::getenv("XR_RUNTIME_JSON"); given == nullptr || *given == '\0') {
+#ifdef GAZELOD_XR_RUNTIME_JSON
+    set_env("XR_RUNTIME_JSON", GAZELOD_XR_RUNTIME_JSON);
+#else
+    throw UsageError("--runtime sim: this build has no simulated runtime; set XR_RUNTIME_JSON");
+#endif
+  }
+  set_env("GAZELOD_SIM_SCENARIO", std::filesystem::absolute(prepared.file).string());
+  // A second of slack: the run asks the session to end after its frames, the runtime must
+  // not end it first.
+  std::ostringstream d;
+  d.precision(17);
+  d << prepared.duration_s + 1.0;
+  set_env("GAZELOD_SIM_DURATION_S", d.str());
+  set_env("GAZELOD_SIM_PACED", opt.paced ? "1" : "0");
+}
+
+std::shared_ptr<gaze::GazeSource> make_external_source(const RunOptions& opt) {
+  if (opt.trace_path.empty()) return nullptr;
+  try {
+    auto stream = gaze::open_trace(opt.trace_path, gaze::TraceFormat::gazelod);
+    auto records = gaze::ReplaySource::load(*stream);
+    if (records.empty()) throw UsageError("--trace: '" + opt.trace_path + "' has no samples");
+    return std::make_shared<TraceFromFirstFrame>(std::move(records));
+  } catch (const gaze::TraceError& e) {
+    throw UsageError(std::string("--trace: ") + e.what());
+  }
+}
+
+}  // namespace gazelod::cli

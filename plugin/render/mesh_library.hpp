@@ -1,0 +1,46 @@
+// All meshes a renderer can draw, in one vertex and one index buffer: a stand-in sphere per
+// distinct LOD triangle count (see sphere_mesh.hpp), shared by both eyes. Built once on the
+// CPU, then uploaded; drawing needs only a mesh id.
+#pragma once
+
+#include "plugin/render/device_context.hpp"
+#include "plugin/render/gpu_memory.hpp"
+#include "plugin/render/sphere_mesh.hpp"
+
+#include <cstdint>
+#include <map>
+#include <vector>
+
+namespace gazelod::render {
+
+struct MeshRange {
+  std::uint32_t first_index = 0;
+  std::uint32_t index_count = 0;
+  std::int32_t vertex_offset = 0;
+  std::uint32_t triangles() const { return index_count / 3; }
+};
+
+class MeshLibrary {
+ public:
+  // A sphere with about `target_triangles` triangles; equal resolutions share one mesh.
+  // Throws RenderError after upload().
+  std::uint32_t add_sphere(std::uint32_t target_triangles);
+
+  // Copies every mesh into host-visible Vulkan buffers. Call once, after the last add.
+  void upload(const DeviceContext& ctx);
+  bool uploaded() const { return vertices_.buffer() != VK_NULL_HANDLE; }
+
+  std::size_t size() const { return ranges_.size(); }
+  const MeshRange& range(std::uint32_t mesh) const { return ranges_.at(mesh); }
+  VkBuffer vertex_buffer() const { return vertices_.buffer(); }
+  VkBuffer index_buffer() const { return indices_.buffer(); }
+
+ private:
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> by_resolution_;
+  std::vector<MeshRange> ranges_;
+  std::vector<glm::vec3> positions_;
+  std::vector<std::uint32_t> indices_cpu_;
+  HostBuffer vertices_, indices_;
+};
+
+}  // namespace gazelod::render

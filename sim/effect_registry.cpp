@@ -1,0 +1,88 @@
+// Effect names to makers. An explicit table rather than self-registering statics, which a
+// static library would drop at link time.
+#include "sim/effect.hpp"
+#include "sim/effects/effects.hpp"
+
+#include <array>
+#include <cmath>
+#include <string>
+
+namespace gazelod::sim {
+namespace {
+
+using Maker = std::unique_ptr<Effect> (*)(EffectInit&);
+struct Entry {
+  std::string_view name;
+  Maker make;
+};
+
+constexpr std::array<Entry, 12> kEffects{{
+    {"head_sweep", effects::make_head_sweep},
+    {"head_turn", effects::make_head_turn},
+    {"head_track", effects::make_head_track},
+    {"saccades", effects::make_saccades},
+    {"smooth_pursuit", effects::make_smooth_pursuit},
+    {"tracker_noise", effects::make_tracker_noise},
+    {"tracker_latency", effects::make_tracker_latency},
+    {"tracker_rate", effects::make_tracker_rate},
+    {"dropouts", effects::make_dropouts},
+    {"blinks", effects::make_blinks},
+    {"calibration_offset", effects::make_calibration_offset},
+    {"object_motion", effects::make_object_motion},
+}};
+
+constexpr std::array<std::string_view, kEffects.size()> kNames = [] {
+  std::array<std::string_view, kEffects.size()> n{};
+  for (std::size_t i = 0; i < kEffects.size(); ++i) n[i] = kEffects[i].name;
+  return n;
+}();
+
+}  // namespace
+
+std::span<const std::string_view> effect_names() { return kNames; }
+
+std::int64_t to_ns(double seconds) { return static_cast<std::int64_t>(std::llround(seconds * 1e9)); }
+
+TimeWindow read_window(JsonFields& params) {
+  TimeWindow w;
+  w.start_ns = to_ns(params.number("start_s", 0.0, 0.0, 1e6));
+  if (params.has("end_s")) {
+    const double end_s = params.number("end_s", 0.0, 0.0, 1e6);
+    w.end_ns = to_ns(end_s);
+    if (w.end_ns <= w.start_ns) params.fail("end_s", "must be after start_s");
+  }
+  return w;
+}
+
+std::unique_ptr<Effect> make_effect(const EffectSpec& spec, const Scenario& scenario, std::size_t index,
+                                    const std::string& source) {
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(spec.params_json);
+  } catch (const nlohmann::json::exception& e) {
+    throw_at(source, spec.json_path, std::string("invalid JSON: ") + e.what());
+  }
+  JsonFields params(j, spec.json_path, source);
+  (void)params.child("type");
+  for (const Entry& e : kEffects) {
+    if (e.name != spec.type) continue;
+    EffectInit init{scenario, params, CounterRng{scenario.seed, index + 1}, source};
+    std::unique_ptr<Effect> effect = e.make(init);
+    params.finish();
+    return effect;
+  }
+  std::string known;
+  for (const Entry& e : kEffects) known += (known.empty() ? "" : ", ") + std::string(e.name);
+  throw_at(source, spec.json_path + ".type", "unknown effect \"" + spec.type + "\" (known: " + known + ")");
+}
+
+namespace effects {
+std::size_t object_index(const Scenario& scenario, JsonFields& params, const std::string& key,
+                         const std::string& name) {
+  for (std::size_t i = 0; i < scenario.objects.size(); ++i)
+    if (scenario.objects[i].name == name) return i;
+  params.fail(key, "no scene object named \"" + name + "\"");
+}
+}  // namespace effects
+
+}  // namespace gazelod::sim

@@ -1,0 +1,25 @@
+// The effect makers, one per file in this folder; effect_registry.cpp maps names to them.
+#pragma once
+
+#include "sim/effect.hpp"
+
+namespace gazelod::sim::effects {
+
+std::unique_ptr<Effect> make_head_sweep(EffectInit& init);
+std::unique_ptr<Effect> make_head_turn(EffectInit& init);
+std::unique_ptr<Effect> make_head_track(EffectInit& init);
+std::unique_ptr<Effect> make_saccades(EffectInit& init);
+std::unique_ptr<Effect> make_smooth_pursuit(EffectInit& init);
+std::unique_ptr<Effect> make_tracker_noise(EffectInit& init);
+std::unique_ptr<Effect> make_tracker_latency(EffectInit& init);
+std::unique_ptr<Effect> make_tracker_rate(EffectInit& init);
+std::unique_ptr<Effect> make_dropouts(EffectInit& init);
+std::unique_ptr<Effect> make_blinks(EffectInit& init);
+std::unique_ptr<Effect> make_calibration_offset(EffectInit& init);
+std::unique_ptr<Effect> make_object_motion(EffectInit& init);
+
+// Index of the scenario object called `name`; fails at params' key when there is none.
+std::size_t object_index(const Scenario& scenario, JsonFields& params, const std::string& key,
+                         const std::string& name);
+
+}  // namespace gazelod::sim::effects

@@ -1,0 +1,94 @@
+// head_track: the head pose replayed from a recorded trace (gazelod's trace format, or any
+// layout gaze/trace_open.hpp reads) with head columns. Trace time `offset_s` (default: its
+// first row) is scenario time 0; poses are interpolated (slerp / lerp) and the angular and
+// linear velocities are those of the segment. Before the first row and after the last the
+// pose is held (or, with "loop": true, the track repeats). Other head effects add on top.
+#include "gaze/trace_error.hpp"
+#include "gaze/trace_open.hpp"
+#include "sim/effects/effects.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <vector>
+
+namespace gazelod::sim::effects {
+namespace {
+
+std::string resolve(const std::string& file, const std::string& source) {
+  const std::filesystem::path p(file);
+  if (p.is_absolute()) return file;
+  const std::filesystem::path src(source);
+  if (std::filesystem::is_regular_file(src) && !std::filesystem::exists(p))
+    return (src.parent_path() / p).string();
+  return file;
+}
+
+class HeadTrack final : public Effect {
+ public:
+  explicit HeadTrack(EffectInit& in) {
+    const std::string file = in.params.required_string("file");
+    const std::string fmt_name = in.params.string("format", "gazelod");
+    const std::optional<gaze::TraceFormat> fmt = gaze::parse_trace_format(fmt_name);
+    if (!fmt) in.params.fail("format", "unknown trace format \"" + fmt_name + "\"");
+    loop_ = in.params.boolean("loop", false);
+    const bool has_offset = in.params.has("offset_s");
+    const double offset_s = in.params.number("offset_s", 0.0, -1e9, 1e9);
+    try {
+      std::unique_ptr<gaze::RecordStream> stream = gaze::open_trace(resolve(file, in.source), *fmt);
+      if (!stream->has_head()) in.params.fail("file", file + ": the trace has no head columns");
+      gaze::TraceRecord r;
+      while (stream->next(r)) {
+        if (!r.has_head || !r.head.valid) continue;
+        if (!t_ns_.empty() && r.head.t_ns <= t_ns_.back()) continue;  // keep times strictly increasing
+        t_ns_.push_back(r.head.t_ns);
+        q_.push_back(glm::normalize(r.head.orientation));
+        p_.push_back(r.head.position_m);
+      }
+    } catch (const gaze::TraceError& e) {
+      in.params.fail("file", e.what());
+    }
+    if (t_ns_.empty()) in.params.fail("file", file + ": no valid head pose in the trace");
+    const std::int64_t origin = has_offset ? static_cast<std::int64_t>(std::llround(offset_s * 1e9)) : t_ns_.front();
+    for (std::int64_t& t : t_ns_) t -= origin;
+  }
+  unsigned stages() const override { return kStageHead; }
+  void apply_head(std::int64_t t_ns, HeadMotion& h) const override {
+    if (loop_ && t_ns_.size() > 1) {
+      const std::int64_t span = t_ns_.back() - t_ns_.front();
+      t_ns = t_ns_.front() + ((t_ns - t_ns_.front()) % span + span) % span;
+    }
+    h.has_track = true;
+    const auto it = std::upper_bound(t_ns_.begin(), t_ns_.end(), t_ns);
+    if (it == t_ns_.begin() || it == t_ns_.end()) {  // outside the track: hold
+      const std::size_t i = it == t_ns_.begin() ? 0 : t_ns_.size() - 1;
+      h.track = q_[i];
+      h.position_m += p_[i];
+      return;
+    }
+    const std::size_t i = static_cast<std::size_t>(it - t_ns_.begin()) - 1;
+    const double dt_s = static_cast<double>(t_ns_[i + 1] - t_ns_[i]) * 1e-9;
+    const double f = static_cast<double>(t_ns - t_ns_[i]) / static_cast<double>(t_ns_[i + 1] - t_ns_[i]);
+    glm::dquat b = q_[i + 1];
+    if (glm::dot(q_[i], b) < 0.0) b = -b;  // the short way
+    h.track = glm::normalize(glm::slerp(q_[i], b, f));
+    glm::dquat d = b * glm::conjugate(q_[i]);  // world-frame rotation over the segment
+    const glm::dvec3 v(d.x, d.y, d.z);
+    const double s = glm::length(v);
+    if (s > 1e-15) h.track_angular_velocity_rad_s = v / s * (2.0 * std::atan2(s, d.w) / dt_s);
+    h.position_m += p_[i] + (p_[i + 1] - p_[i]) * f;
+    h.velocity_m_s += (p_[i + 1] - p_[i]) / dt_s;
+  }
+
+ private:
+  bool loop_ = false;
+  std::vector<std::int64_t> t_ns_;
+  std::vector<glm::dquat> q_;
+  std::vector<glm::dvec3> p_;
+};
+
+}  // namespace
+
+std::unique_ptr<Effect> make_head_track(EffectInit& init) { return std::make_unique<HeadTrack>(init); }
+
+}  // namespace gazelod::sim::effects

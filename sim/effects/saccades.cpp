@@ -1,0 +1,91 @@
+// saccades: fixations of random duration joined by saccades of random amplitude and direction
+// that follow the main sequence (sim/main_sequence.hpp). The whole schedule is drawn once, from
+// (seed, effect, fixation index) in order, so any time can be asked for in any order.
+#include "sim/angles.hpp"
+#include "sim/effects/effects.hpp"
+#include "sim/main_sequence.hpp"
+
+#include <algorithm>
+#include <vector>
+
+namespace gazelod::sim::effects {
+namespace {
+
+struct Segment {
+  std::int64_t fix_start_ns = 0;  // fixation on `from` ...
+  std::int64_t sac_start_ns = 0;  // ... then a saccade to `to` ...
+  std::int64_t sac_end_ns = 0;    // ... that lands here
+  glm::dvec3 from{0, 0, -1}, to{0, 0, -1};
+  double ratio = 0.5;             // mean / peak velocity
+};
+
+class Saccades final : public Effect {
+ public:
+  explicit Saccades(EffectInit& in) : rng_(in.rng) {
+    fix_min_ms_ = in.params.number("fixation_min_ms", 150.0, 20.0, 1e5);
+    fix_max_ms_ = in.params.number("fixation_max_ms", std::max(400.0, fix_min_ms_), fix_min_ms_, 1e5);
+    amp_min_deg_ = in.params.number("amplitude_min_deg", 2.0, 0.0, 90.0);
+    amp_max_deg_ = in.params.number("amplitude_max_deg", std::max(15.0, amp_min_deg_), amp_min_deg_, 90.0);
+    range_rad_ = in.params.number("range_deg", 20.0, 0.0, 60.0) * kDegToRad;
+    window_ = read_window(in.params);
+    next_start_ns_ = window_.start_ns;
+    extend_to(std::min(window_.end_ns, window_.start_ns + to_ns(60.0)));
+  }
+  unsigned stages() const override { return kStageGaze; }
+  void apply_gaze(std::int64_t t_ns, const EffectContext&, glm::dvec3& dir) const override {
+    if (!window_.contains(t_ns)) return;
+    extend_to(t_ns);
+    auto it = std::upper_bound(segments_.begin(), segments_.end(), t_ns,
+                               [](std::int64_t t, const Segment& s) { return t < s.fix_start_ns; });
+    const Segment& s = *std::prev(it);
+    if (t_ns < s.sac_start_ns) dir = s.from;
+    else if (t_ns >= s.sac_end_ns) dir = s.to;
+    else {
+      const double tau = static_cast<double>(t_ns - s.sac_start_ns) / static_cast<double>(s.sac_end_ns - s.sac_start_ns);
+      dir = glm::normalize(slerp_dir(s.from, s.to, saccade_progress(tau, s.ratio)));
+    }
+  }
+
+ private:
+  // The schedule is drawn in order, fixation by fixation, as far as the latest time asked
+  // for: the same segments whatever the order of queries, and memory grows only with the
+  // time actually simulated.
+  void extend_to(std::int64_t t_ns) const {
+    while (segments_.empty() || segments_.back().sac_end_ns <= t_ns) {
+      const std::uint64_t i = segments_.size();
+      Segment s;
+      s.fix_start_ns = next_start_ns_;
+      s.sac_start_ns = s.fix_start_ns + to_ns(rng_.uniform(4 * i, fix_min_ms_, fix_max_ms_) * 1e-3);
+      const double amp_rad = rng_.uniform(4 * i + 1, amp_min_deg_, amp_max_deg_) * kDegToRad;
+      const double theta = rng_.uniform(4 * i + 2, 0.0, 2.0 * std::numbers::pi);
+      YawPitch next{cur_.yaw_rad + amp_rad * std::cos(theta), cur_.pitch_rad + amp_rad * std::sin(theta)};
+      if (std::hypot(next.yaw_rad, next.pitch_rad) > range_rad_) {  // turn back towards the centre
+        next = {cur_.yaw_rad - amp_rad * std::cos(theta), cur_.pitch_rad - amp_rad * std::sin(theta)};
+        const double ecc = std::hypot(next.yaw_rad, next.pitch_rad);
+        if (ecc > range_rad_ && ecc > 0.0) next = {next.yaw_rad * range_rad_ / ecc, next.pitch_rad * range_rad_ / ecc};
+      }
+      s.from = direction_from(cur_);
+      s.to = direction_from(next);
+      const double amp_deg = angle_between_rad(s.from, s.to) * kRadToDeg;
+      s.ratio = saccade_velocity_ratio(amp_deg);
+      s.sac_end_ns = s.sac_start_ns + to_ns(saccade_duration_s(amp_deg));
+      segments_.push_back(s);
+      cur_ = next;
+      next_start_ns_ = s.sac_end_ns;
+    }
+  }
+
+  CounterRng rng_;
+  double fix_min_ms_ = 0, fix_max_ms_ = 0, amp_min_deg_ = 0, amp_max_deg_ = 0, range_rad_ = 0;
+  TimeWindow window_;
+  // Lazily extended schedule (the Simulator is not thread-safe; the runtime holds one lock).
+  mutable std::vector<Segment> segments_;
+  mutable YawPitch cur_{};
+  mutable std::int64_t next_start_ns_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<Effect> make_saccades(EffectInit& init) { return std::make_unique<Saccades>(init); }
+
+}  // namespace gazelod::sim::effects

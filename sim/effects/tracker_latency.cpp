@@ -1,0 +1,24 @@
+// tracker_latency: a sample taken at s reaches the application at s + latency_ms, so at time t
+// the newest sample is one taken at or before t - latency.
+#include "sim/effects/effects.hpp"
+
+namespace gazelod::sim::effects {
+namespace {
+
+class TrackerLatency final : public Effect {
+ public:
+  explicit TrackerLatency(EffectInit& in) {
+    latency_ns_ = to_ns(in.params.required_number("latency_ms", 0.0, 1000.0) * 1e-3);
+  }
+  unsigned stages() const override { return kStageTrackerTiming; }
+  void apply_timing(TrackerTiming& t) const override { t.latency_ns += latency_ns_; }
+
+ private:
+  std::int64_t latency_ns_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<Effect> make_tracker_latency(EffectInit& init) { return std::make_unique<TrackerLatency>(init); }
+
+}  // namespace gazelod::sim::effects

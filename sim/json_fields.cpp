@@ -1,0 +1,136 @@
+#include "sim/json_fields.hpp"
+
+#include "sim/simulator.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace gazelod::sim {
+
+std::string json_type_name(const nlohmann::json& v) {
+  if (v.is_boolean()) return "boolean";
+  if (v.is_number()) return "number";
+  if (v.is_string()) return "string";
+  if (v.is_array()) return "array";
+  if (v.is_object()) return "object";
+  return "null";
+}
+
+void throw_at(const std::string& source, const std::string& path, const std::string& message) {
+  throw ScenarioError(source + ": " + (path.empty() ? std::string("(top level)") : path) + ": " + message);
+}
+
+JsonFields::JsonFields(const nlohmann::json& object, std::string path, std::string source)
+    : obj_(object), path_(std::move(path)), source_(std::move(source)) {
+  if (!obj_.is_object()) throw_at(source_, path_, "expected an object, got " + json_type_name(obj_));
+}
+
+std::string JsonFields::key_path(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+
+bool JsonFields::has(const std::string& key) const { return obj_.contains(key); }
+
+void JsonFields::fail(const std::string& key, const std::string& message) const {
+  throw_at(source_, key.empty() ? path_ : key_path(key), message);
+}
+
+const nlohmann::json* JsonFields::find(const std::string& key) {
+  const auto it = obj_.find(key);
+  if (it == obj_.end()) return nullptr;
+  used_.insert(key);
+  return &*it;
+}
+
+const nlohmann::json* JsonFields::child(const std::string& key) { return find(key); }
+
+namespace {
+std::string range_text(double lo, double hi) {
+  std::ostringstream s;
+  s << "[" << lo << ", " << hi << "]";
+  return s.str();
+}
+}  // namespace
+
+double JsonFields::number(const std::string& key, double fallback, double lo, double hi) {
+  const nlohmann::json* v = find(key);
+  if (!v) return fallback;
+  if (!v->is_number()) fail(key, "expected a number, got " + json_type_name(*v));
+  const double x = v->get<double>();
+  if (!std::isfinite(x) || x < lo || x > hi) {
+    std::ostringstream s;
+    s << "must be in " << range_text(lo, hi) << ", got " << x;
+    fail(key, s.str());
+  }
+  return x;
+}
+
+double JsonFields::required_number(const std::string& key, double lo, double hi) {
+  if (!has(key)) fail(key, "missing (a number in " + range_text(lo, hi) + ")");
+  return number(key, 0.0, lo, hi);
+}
+
+std::int64_t JsonFields::integer(const std::string& key, std::int64_t fallback, std::int64_t lo, std::int64_t hi) {
+  const nlohmann::json* v = find(key);
+  if (!v) return fallback;
+  if (!v->is_number_integer()) fail(key, "expected an integer, got " + (v->is_number() ? v->dump() : json_type_name(*v)));
+  if (v->is_number_unsigned() && v->get<std::uint64_t>() > static_cast<std::uint64_t>(hi))
+    fail(key, "must be in " + range_text(static_cast<double>(lo), static_cast<double>(hi)) + ", got " + v->dump());
+  const std::int64_t x = v->get<std::int64_t>();
+  if (x < lo || x > hi)
+    fail(key, "must be in " + range_text(static_cast<double>(lo), static_cast<double>(hi)) + ", got " + v->dump());
+  return x;
+}
+
+std::uint64_t JsonFields::unsigned_integer(const std::string& key, std::uint64_t fallback) {
+  const nlohmann::json* v = find(key);
+  if (!v) return fallback;
+  if (!v->is_number_unsigned())  // nlohmann keeps non-negative integers unsigned
+    fail(key, "expected a non-negative integer, got " + (v->is_number() ? v->dump() : json_type_name(*v)));
+  return v->get<std::uint64_t>();
+}
+
+bool JsonFields::boolean(const std::string& key, bool fallback) {
+  const nlohmann::json* v = find(key);
+  if (!v) return fallback;
+  if (!v->is_boolean()) fail(key, "expected true or false, got " + json_type_name(*v));
+  return v->get<bool>();
+}
+
+std::string JsonFields::string(const std::string& key, const std::string& fallback) {
+  const nlohmann::json* v = find(key);
+  if (!v) return fallback;
+  if (!v->is_string()) fail(key, "expected a string, got " + json_type_name(*v));
+  return v->get<std::string>();
+}
+
+std::string JsonFields::required_string(const std::string& key) {
+  if (!has(key)) fail(key, "missing (a string)");
+  return string(key, "");
+}
+
+glm::dvec3 JsonFields::vec3(const std::string& key, glm::dvec3 fallback, double lo, double hi) {
+  const nlohmann::json* v = find(key);
+  if (!v) return fallback;
+  if (!v->is_array() || v->size() != 3) fail(key, "expected [x, y, z], got " + json_type_name(*v));
+  glm::dvec3 out;
+  for (int i = 0; i < 3; ++i) {
+    const nlohmann::json& e = (*v)[static_cast<std::size_t>(i)];
+    const std::string p = key + "[" + std::to_string(i) + "]";
+    if (!e.is_number()) fail(p, "expected a number, got " + json_type_name(e));
+    out[i] = e.get<double>();
+    if (!std::isfinite(out[i]) || out[i] < lo || out[i] > hi) {
+      std::ostringstream s;
+      s << "must be in " << range_text(lo, hi) << ", got " << out[i];
+      fail(p, s.str());
+    }
+  }
+  return out;
+}
+
+void JsonFields::finish() const {
+  for (const auto& [key, value] : obj_.items()) {
+    (void)value;
+    if (!used_.count(key)) fail(key, "unknown key");
+  }
+}
+
+}  // namespace gazelod::sim

@@ -1,0 +1,202 @@
+// Every bake error path gives a message naming the file and the place, and no output file.
+#include "bake/bake.hpp"
+#include "bake/bake_error.hpp"
+#include "tests/bake/test_meshes.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+
+namespace gazelod::bake {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Runs bake_file and returns the BakeError message ("" when none was thrown).
+std::string bake_error(const std::string& in, const std::string& out) {
+  try {
+    bake_file(in, out, BakeOptions{});
+  } catch (const BakeError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+struct Case {
+  std::string dir, in, out;
+};
+
+// Writes the single-mesh model after `edit`, bakes it, and checks the output is absent.
+std::string bake_edited(const std::string& name, const std::function<void(tinygltf::Model&)>& edit) {
+  const std::string dir = testing::temp_dir("err_" + name);
+  tinygltf::Model m = testing::single_mesh_model(testing::icosphere(2, 1.0));
+  edit(m);
+  const std::string in = testing::write_model(m, dir + "/in.glb");
+  const std::string msg = bake_error(in, dir + "/out.glb");
+  EXPECT_FALSE(fs::exists(dir + "/out.glb")) << name;
+  for (const auto& e : fs::directory_iterator(dir))
+    EXPECT_EQ(e.path().filename().string().find(".tmp-"), std::string::npos) << e.path();
+  return msg;
+}
+
+void write_bytes(const std::string& path, const std::string& bytes) {
+  std::ofstream(path, std::ios::binary) << bytes;
+}
+
+std::string read_bytes(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
+}
+
+#define EXPECT_HAS(msg, part) EXPECT_NE((msg).find(part), std::string::npos) << (msg)
+
+TEST(BakeErrors, MissingFile) {
+  const std::string dir = testing::temp_dir("err_missing");
+  const std::string m = bake_error(dir + "/nope.glb", dir + "/out.glb");
+  EXPECT_HAS(m, dir + "/nope.glb: cannot open for reading");
+}
+
+TEST(BakeErrors, EmptyFileAndDirectory) {
+  const std::string dir = testing::temp_dir("err_empty");
+  write_bytes(dir + "/empty.gltf", "");
+  EXPECT_HAS(bake_error(dir + "/empty.gltf", dir + "/out.glb"), "empty.gltf: file is empty");
+  EXPECT_HAS(bake_error(dir, dir + "/out.glb"), ": is a directory");
+}
+
+TEST(BakeErrors, TruncatedGlbNamesDeclaredAndActualLength) {
+  const std::string dir = testing::temp_dir("err_trunc_glb");
+  const std::string full = read_bytes(testing::write_model(testing::scene_model(), dir + "/full.glb"));
+  write_bytes(dir + "/cut.glb", full.substr(0, full.size() / 2));
+  const std::string m = bake_error(dir + "/cut.glb", dir + "/out.glb");
+  EXPECT_HAS(m, "cut.glb: truncated GLB: header (byte 8) declares " + std::to_string(full.size()) +
+                    " bytes, file has " + std::to_string(full.size() / 2));
+  write_bytes(dir + "/tiny.glb", full.substr(0, 10));
+  EXPECT_HAS(bake_error(dir + "/tiny.glb", dir + "/out.glb"), "tiny.glb: truncated GLB: 10 bytes");
+  EXPECT_FALSE(fs::exists(dir + "/out.glb"));
+}
+
+TEST(BakeErrors, TruncatedGltfJson) {
+  const std::string dir = testing::temp_dir("err_trunc_gltf");
+  const std::string full = read_bytes(testing::write_model(testing::scene_model(), dir + "/full.gltf"));
+  write_bytes(dir + "/cut.gltf", full.substr(0, full.size() / 3));
+  const std::string m = bake_error(dir + "/cut.gltf", dir + "/out.glb");
+  EXPECT_HAS(m, "cut.gltf: invalid glTF: ");
+}
+
+TEST(BakeErrors, MissingPosition) {
+  const std::string m = bake_edited("nopos", [](tinygltf::Model& g) {
+    auto& at = g.meshes[0].primitives[0].attributes;  // tinygltf needs some attribute
+    at["TEXCOORD_0"] = at["POSITION"];
+    at.erase("POSITION");
+  });
+  EXPECT_HAS(m, "in.glb: mesh 0 'M' primitive 0: has no POSITION attribute");
+}
+
+TEST(BakeErrors, SparseAccessor) {
+  const std::string m = bake_edited("sparse", [](tinygltf::Model& g) {
+    auto& a = g.accessors[std::size_t(g.meshes[0].primitives[0].attributes["POSITION"])];
+    a.sparse.isSparse = true;
+    a.sparse.count = 1;
+    a.sparse.indices.bufferView = a.bufferView;
+    a.sparse.indices.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+    a.sparse.values.bufferView = a.bufferView;
+  });
+  EXPECT_HAS(m, "mesh 0 'M' primitive 0 POSITION (accessor 0): sparse accessors are not supported");
+}
+
+TEST(BakeErrors, UnsupportedModes) {
+  const std::string strip = bake_edited("strip", [](tinygltf::Model& g) {
+    g.meshes[0].primitives[0].mode = TINYGLTF_MODE_TRIANGLE_STRIP;
+  });
+  EXPECT_HAS(strip, "mesh 0 'M' primitive 0: mode 5 (TRIANGLE_STRIP) is not supported");
+  const std::string lines = bake_edited("lines", [](tinygltf::Model& g) {
+    g.meshes[0].primitives[0].mode = TINYGLTF_MODE_LINE;
+  });
+  EXPECT_HAS(lines, "mode 1 (LINES) is not supported");
+}
+
+TEST(BakeErrors, IndexOutOfRange) {
+  const std::string m = bake_edited("index", [](tinygltf::Model& g) {
+    const auto& a = g.accessors[std::size_t(g.meshes[0].primitives[0].indices)];
+    const auto& bv = g.bufferViews[std::size_t(a.bufferView)];
+    const std::uint32_t bad = 1000;
+    std::memcpy(g.buffers[0].data.data() + bv.byteOffset + 4 * 5, &bad, 4);
+  });
+  EXPECT_HAS(m, "mesh 0 'M' primitive 0: index 5 is 1000, but there are only 162 vertices");
+}
+
+TEST(BakeErrors, AccessorPastItsBuffer) {
+  const std::string m = bake_edited("range", [](tinygltf::Model& g) {
+    g.accessors[std::size_t(g.meshes[0].primitives[0].attributes["POSITION"])].count += 10;
+  });
+  EXPECT_HAS(m, "POSITION (accessor 0): reads past the end of its bufferView 0");
+}
+
+TEST(BakeErrors, NonFloatPositionAndNonFinite) {
+  const std::string q = bake_edited("quant", [](tinygltf::Model& g) {
+    g.accessors[0].componentType = TINYGLTF_COMPONENT_TYPE_SHORT;
+  });
+  EXPECT_HAS(q, "POSITION accessor 0 must be float VEC3");
+  const std::string nan = bake_edited("nan", [](tinygltf::Model& g) {
+    const float x = NAN;
+    std::memcpy(g.buffers[0].data.data() + g.bufferViews[0].byteOffset + 12 * 7 + 4, &x, 4);
+  });
+  EXPECT_HAS(nan, "mesh 0 'M' primitive 0: POSITION 7 is not finite");
+}
+
+TEST(BakeErrors, IndexCountNotTriangles) {
+  const std::string m = bake_edited("count", [](tinygltf::Model& g) {
+    g.accessors[std::size_t(g.meshes[0].primitives[0].indices)].count -= 1;
+  });
+  EXPECT_HAS(m, "959 indices is not a whole number of triangles");
+}
+
+TEST(BakeErrors, UnwritableOutputLeavesNothingBehind) {
+  const std::string dir = testing::temp_dir("err_output");
+  const std::string in = testing::write_model(testing::scene_model(), dir + "/in.glb");
+  try {
+    bake_file(in, dir + "/missing/out.glb", BakeOptions{});
+    FAIL() << "no error";
+  } catch (const OutputError& e) {
+    EXPECT_HAS(std::string(e.what()), "missing/out.glb: output folder");
+  }
+  fs::create_directory(dir + "/isdir.glb");
+  try {
+    bake_file(in, dir + "/isdir.glb", BakeOptions{});
+    FAIL() << "no error";
+  } catch (const OutputError& e) {
+    EXPECT_HAS(std::string(e.what()), "isdir.glb: output is a directory");
+  }
+  std::size_t files = 0;
+  for (const auto& e : fs::directory_iterator(dir)) files += e.is_regular_file();
+  EXPECT_EQ(files, 1u);  // in.glb only: no temporary left
+}
+
+TEST(BakeErrors, FailedBakeKeepsAnExistingOutput) {
+  const std::string dir = testing::temp_dir("err_keep");
+  write_bytes(dir + "/out.glb", "previous");
+  write_bytes(dir + "/bad.gltf", "{\"asset\":{\"version\":\"2.0\"},");
+  EXPECT_NE(bake_error(dir + "/bad.gltf", dir + "/out.glb"), "");
+  EXPECT_EQ(read_bytes(dir + "/out.glb"), "previous");
+}
+
+TEST(BakeErrors, BadOptions) {
+  const std::string dir = testing::temp_dir("err_options");
+  const std::string in = testing::write_model(testing::scene_model(), dir + "/in.glb");
+  BakeOptions o;
+  o.chain.ratios = {0.5, 0.7};
+  try {
+    bake_file(in, dir + "/out.glb", o);
+    FAIL() << "no error";
+  } catch (const BakeError& e) {
+    EXPECT_HAS(std::string(e.what()), "ratios must decrease strictly");
+  }
+  EXPECT_FALSE(fs::exists(dir + "/out.glb"));
+}
+
+}  // namespace
+}  // namespace gazelod::bake

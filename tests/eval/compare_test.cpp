@@ -1,0 +1,182 @@
+// gazelod compare end to end on the simulated runtime (headless), and its parsing of a run's
+// summary: the JSON contract, no criterion ever adding triangles, errors for bad input.
+#include "lod/display.hpp"
+#include "plugin/cli/command.hpp"
+#include "plugin/cli/compare_runs.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace gazelod::cli {
+namespace {
+
+struct Result {
+  int rc = 0;
+  std::string out, err;
+};
+
+Result cli(const std::vector<std::string>& args) {
+  std::ostringstream out, err;
+  Result r;
+  r.rc = run(args, out, err);
+  r.out = out.str();
+  r.err = err.str();
+  return r;
+}
+
+std::filesystem::path scratch() {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  auto dir = std::filesystem::path(GAZELOD_BINARY_DIR) / "test-scratch" / (std::string("eval.") + info->name());
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+void use_simulated_runtime() {
+  ::setenv("XR_RUNTIME_JSON", GAZELOD_XR_RUNTIME_JSON, 1);
+  ::setenv("GAZELOD_SIM_PACED", "0", 1);
+  ::unsetenv("GAZELOD_SIM_DURATION_S");
+}
+
+// A motion-rich scene: forward flight, head sweeping, saccades, so all criteria have work.
+std::filesystem::path write_scenario(const std::filesystem::path& dir) {
+  const auto path = dir / "scene.json";
+  std::ofstream(path) << R"({"version": 1, "display": "questpro", "duration_s": 2, "frame_rate_hz": 30,
+    "scene": {"generators": [{"type": "random_field", "count": 150, "forward_speed_m_s": 3}]},
+    "effects": [{"type": "head_sweep", "yaw_amplitude_deg": 40, "yaw_period_s": 1.5},
+                {"type": "saccades"}]})";
+  return path;
+}
+
+TEST(Compare, JsonShapeAndNoCriterionAddsTriangles) {
+  use_simulated_runtime();
+  const auto dir = scratch();
+  const Result r = cli({"compare", "--hmd", "questpro", "--hmd", "iglasses", "--scenario",
+                        write_scenario(dir).string(), "--json", "--out", (dir / "out").string()});
+  ASSERT_EQ(r.rc, 0) << r.err;
+  const auto doc = nlohmann::json::parse(r.out);
+  ASSERT_TRUE(doc.at("hmds").is_array());
+  ASSERT_EQ(doc.at("hmds").size(), 2u);
+  EXPECT_EQ(doc["hmds"][0].at("hmd"), "questpro");
+  EXPECT_EQ(doc["hmds"][1].at("hmd"), "iglasses");
+  for (const auto& h : doc["hmds"]) {
+    const std::string name = h.at("hmd");
+    // xi from the preset's pixels and FOV (lod/display.hpp), e.g. the i-glasses' 4.79 c/deg
+    // of perceptual-model.md's table.
+    EXPECT_NEAR(h.at("xi_cpd").get<double>(), lod::xi_cpd(*lod::find_display_preset(name)), 1e-9);
+    if (name == "iglasses") {
+      EXPECT_NEAR(h["xi_cpd"].get<double>(), 4.79, 0.01);
+      EXPECT_NEAR(h.at("eccentricity_threshold_deg").get<double>(), 28.95, 0.05);
+      EXPECT_NEAR(h.at("velocity_threshold_dps").get<double>(), 80.20, 0.05);
+    }
+    const auto& runs = h.at("runs");
+    for (const char* set : kCriteriaSets) {
+      ASSERT_TRUE(runs.contains(set)) << name << " " << set;
+      ASSERT_TRUE(runs[set].at("triangles").is_number());
+      ASSERT_TRUE(runs[set].at("average_lod").is_number());
+    }
+    const auto tri = [&](const char* s) { return runs[s]["triangles"].get<double>(); };
+    const auto lod = [&](const char* s) { return runs[s]["average_lod"].get<double>(); };
+    // Each added criterion: never more triangles, never a finer average level.
+    const std::pair<const char*, const char*> added[] = {
+        {"none", "size"}, {"size", "size+eccentricity"}, {"size", "size+velocity"},
+        {"size+eccentricity", "size+eccentricity+velocity"}, {"size+velocity", "size+eccentricity+velocity"}};
+    for (const auto& [without, with] : added) {
+      EXPECT_LE(tri(with), tri(without)) << name << ": " << with << " vs " << without;
+      EXPECT_GE(lod(with), lod(without)) << name << ": " << with << " vs " << without;
+    }
+    EXPECT_EQ(lod("none"), 0.0);
+    EXPECT_GT(tri("none"), 0.0);
+    EXPECT_LT(tri("size+eccentricity+velocity"), tri("none")) << name << ": nothing was reduced";
+    for (const char* k : {"size", "eccentricity", "velocity"}) {
+      EXPECT_GE(h.at("shares").at(k).get<double>(), 0.0) << k;
+      EXPECT_LE(h["shares"][k].get<double>(), 1.0 + 1e-12) << k;
+    }
+    EXPECT_LE(h.at("lod_map").at("triangles").get<double>(), tri("none"));
+  }
+  EXPECT_TRUE(std::filesystem::file_size(dir / "out" / "compare.svg") > 500);
+  EXPECT_TRUE(std::filesystem::exists(dir / "out" / "questpro" / "summary.json"));
+}
+
+TEST(Compare, UnknownHmdIsAnErrorNamingIt) {
+  const auto dir = scratch();
+  const Result r = cli({"compare", "--hmd", "questpro", "--hmd", "nosuchhmd", "--out", dir.string()});
+  EXPECT_NE(r.rc, 0);
+  EXPECT_NE(r.err.find("nosuchhmd"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "questpro")) << "no run before every name is checked";
+}
+
+TEST(Compare, SummaryMissingAFieldNamesItsPath) {
+  nlohmann::json s = {{"frames", 10}, {"criteria", "size,eccentricity,velocity"},
+                      {"criteria_sets", {{"none", {{"triangles", 100}, {"average_lod", 0.0}}}}}};
+  try {
+    comparison_from_summary("questpro", s, "x/summary.json");
+    FAIL() << "expected an error";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("x/summary.json: criteria_sets.size"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Compare, SharesFromHandMadeSummary) {
+  // none 1000, size 400, size+ecc 300, size+vel 350, all 250: reduction 750;
+  // size (1000-400)/750 = 0.8, eccentricity (350-250)/750, velocity (300-250)/750.
+  const auto set = [](int t, double l) { return nlohmann::json{{"triangles", t}, {"average_lod", l}}; };
+  nlohmann::json s = {{"frames", 10}, {"criteria", "size,eccentricity,velocity"},
+                      {"criteria_sets", {{"none", set(1000, 0)}, {"size", set(400, 1)}, {"size+eccentricity", set(300, 1.2)},
+                                         {"size+velocity", set(350, 1.1)}, {"drawn", set(250, 1.5)}}},
+                      {"lod_map", set(500, 1.0)}};
+  const HmdComparison c = comparison_from_summary("iglasses", s, "hand");
+  EXPECT_NEAR(c.share_size, 0.8, 1e-12);
+  EXPECT_NEAR(c.share_eccentricity, 100.0 / 750.0, 1e-12);
+  EXPECT_NEAR(c.share_velocity, 50.0 / 750.0, 1e-12);
+  EXPECT_NEAR(c.share_interaction, 0.0, 1e-12);
+  EXPECT_EQ(c.sets[4].triangles, 250u);
+  EXPECT_EQ(c.lod_map.triangles, 500u);
+}
+
+}  // namespace
+}  // namespace gazelod::cli
+
+namespace gazelod::cli {
+namespace {
+
+// Smoke test of `gazelod eval` (selection only, two small points, one layout): the tables
+// are written and adding size to eccentricity + velocity never lowers the average level.
+TEST(EvalSmoke, HeadlessTablesAreWrittenAndConsistent) {
+  use_simulated_runtime();
+  const auto dir = scratch();
+  const Result r = cli({"eval", "--no-render", "--counts", "10", "50", "--layouts", "1", "--out", dir.string()});
+  ASSERT_EQ(r.rc, 0) << r.err;
+  std::ifstream md(dir / "eval_tables.md");
+  ASSERT_TRUE(md.good());
+  std::string line;
+  int rows = 0;
+  bool in_figure6 = false;
+  while (std::getline(md, line)) {
+    if (line.rfind("### Figure 6", 0) == 0) in_figure6 = true;
+    else if (line.rfind("###", 0) == 0) in_figure6 = false;
+    if (!in_figure6 || (line.rfind("| 10 |", 0) != 0 && line.rfind("| 50 |", 0) != 0)) continue;
+    // | objects | in view | LOD all | LOD ecc+vel | ...
+    std::vector<std::string> cells;
+    std::istringstream in(line);
+    std::string c;
+    while (std::getline(in, c, '|')) cells.push_back(c);
+    ASSERT_GE(cells.size(), 5u) << line;
+    EXPECT_GE(std::stod(cells[3]), std::stod(cells[4])) << line;
+    EXPECT_GE(std::stod(cells[3]), 1.0) << line;
+    EXPECT_LE(std::stod(cells[3]), 4.0) << line;
+    ++rows;
+  }
+  EXPECT_EQ(rows, 2);
+  EXPECT_TRUE(std::filesystem::exists(dir / "figure6.svg"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "head_turns.svg"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "figure5.svg")) << "--no-render skips Figure 5";
+}
+
+}  // namespace
+}  // namespace gazelod::cli

@@ -1,0 +1,115 @@
+// The `gazelod trace` command-line contract, through gazelod::cli::run.
+#include "gaze/trace_writer.hpp"
+#include "plugin/cli/command.hpp"
+#include "tests/gaze/synth.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace gazelod::gaze {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+  int rc;
+  std::string out, err;
+};
+
+Result run(const std::vector<std::string>& args) {
+  std::ostringstream out, err;
+  const int rc = cli::run(args, out, err);
+  return {rc, out.str(), err.str()};
+}
+
+fs::path temp_file(const std::string& name) {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  const fs::path dir = fs::path(::testing::TempDir()) / ("gazelod_trace_cli_" + std::string(info->name()));
+  fs::create_directories(dir);
+  return dir / name;
+}
+
+void write_text(const fs::path& p, const std::string& text) {
+  std::ofstream(p, std::ios::binary) << text;
+}
+
+TEST(TraceCli, StatsJsonMatchesTheGeneratedTrace) {
+  testing::Synth s;
+  s.fixate(0.5);
+  for (int i = 0; i < 5; ++i) {
+    s.saccade(8.0, i % 2 ? 180.0 : 0.0);
+    s.fixate(0.4);
+  }
+  s.blink(0.1);
+  s.fixate(0.4);
+  const fs::path p = temp_file("synth.csv");
+  {
+    std::ofstream f(p, std::ios::binary);
+    TraceWriter w(f);
+    for (const auto& g : s.out) w.write(TraceRecord{g, false, {}});
+  }
+  const Result r = run({"trace", "stats", p.string(), "--json"});
+  ASSERT_EQ(r.rc, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const double n = static_cast<double>(s.out.size());
+  EXPECT_EQ(j["samples"].get<std::size_t>(), s.out.size());
+  EXPECT_NEAR(j["duration_s"].get<double>(), (n - 1) * 0.004, 1e-9);
+  EXPECT_NEAR(j["rate_hz"].get<double>(), 250.0, 1e-6);
+  EXPECT_NEAR(j["invalid_fraction"].get<double>(), 25.0 / n, 1e-12);  // 0.1 s blink
+  EXPECT_EQ(j["saccades"].get<int>(), 5);
+  // Six fixations between/around the saccades; the blink splits the last one into two.
+  EXPECT_EQ(j["fixations"].get<int>(), 7);
+  EXPECT_EQ(j["skipped_lines"].get<int>(), 0);
+}
+
+TEST(TraceCli, MalformedFileExitsNonZeroNamingTheLine) {
+  const fs::path p = temp_file("bad.csv");
+  write_text(p, "t_ns,gaze_x,gaze_y,gaze_z\n0,0,0,-1\n4000000,0,0,x\n");
+  Result r = run({"trace", "stats", p.string()});
+  EXPECT_NE(r.rc, 0);
+  EXPECT_NE(r.err.find(p.string() + ":3:"), std::string::npos) << r.err;
+  // Lenient: succeeds, and the skipped line is reported (stderr and JSON).
+  r = run({"trace", "stats", p.string(), "--json", "--lenient"});
+  EXPECT_EQ(r.rc, 0);
+  EXPECT_NE(r.err.find(":3:"), std::string::npos);
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["samples"].get<int>(), 1);
+  EXPECT_EQ(j["skipped_lines"].get<int>(), 1);
+  EXPECT_EQ(j["skipped"][0]["line"].get<int>(), 3);
+  // Missing file, unknown format.
+  r = run({"trace", "stats", (p.parent_path() / "nope.csv").string()});
+  EXPECT_NE(r.rc, 0);
+  EXPECT_NE(r.err.find("nope.csv"), std::string::npos);
+  EXPECT_EQ(run({"trace", "stats", p.string(), "--format", "tobii"}).rc, 2);
+}
+
+TEST(TraceCli, ConvertGazeBaseVrThenStats) {
+  const fs::path in = temp_file("gbvr.csv"), out = temp_file("gbvr_gazelod.csv");
+  std::string text = "n,x,y,lx,ly,rx,ry,xT,yT,zT\n";
+  for (int i = 0; i < 100; ++i)
+    text += std::to_string(i * 4) + (i >= 40 && i < 50 ? ",NaN,NaN" : ",1.5,-2") + ",0,0,0,0,0,0,1\n";
+  write_text(in, text);
+  Result r = run({"trace", "convert", in.string(), out.string(), "--format", "gazebasevr"});
+  ASSERT_EQ(r.rc, 0) << r.err;
+  EXPECT_FALSE(fs::exists(out.string() + ".part"));
+  r = run({"trace", "stats", out.string(), "--json"});
+  ASSERT_EQ(r.rc, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["samples"].get<int>(), 100);
+  EXPECT_NEAR(j["duration_s"].get<double>(), 0.396, 1e-12);
+  EXPECT_NEAR(j["invalid_fraction"].get<double>(), 0.1, 1e-12);
+  EXPECT_EQ(j["saccades"].get<int>(), 0);
+  // A failing conversion leaves no output behind.
+  const fs::path bad_out = temp_file("never.csv");
+  write_text(in, "n,x\n");
+  EXPECT_NE(run({"trace", "convert", in.string(), bad_out.string(), "--format", "gazebasevr"}).rc, 0);
+  EXPECT_FALSE(fs::exists(bad_out));
+  EXPECT_FALSE(fs::exists(bad_out.string() + ".part"));
+}
+
+}  // namespace
+}  // namespace gazelod::gaze

@@ -1,0 +1,93 @@
+// gazelod hid list / record, run through the command registry against the fake hidapi.
+#include "plugin/cli/command.hpp"
+#include "tests/hid/fake_hidapi.hpp"
+#include "tests/hid/report_bytes.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace gazelod::gaze::hid {
+namespace {
+
+using testing::Bytes;
+using testing::tracking_report;
+
+struct Result {
+  int code;
+  std::string out, err;
+};
+Result run(const std::vector<std::string>& args) {
+  std::ostringstream out, err;
+  const int code = cli::run(args, out, err);
+  return {code, out.str(), err.str()};
+}
+
+const std::string kPath = "/dev/hidraw-fake-cli";
+
+class HidCliTest : public ::testing::Test {
+ protected:
+  void SetUp() override { fake_hid::reset(); }
+  void TearDown() override { fake_hid::reset(); }
+};
+
+TEST_F(HidCliTest, ListShowsOnlyUsagePage0x12) {
+  fake_hid::plug({"/dev/hidraw-fake-mouse", 0x01, 0x02});
+  fake_hid::plug({kPath});
+  const Result r = run({"hid", "list", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j.size(), 1u);
+  EXPECT_EQ(j[0]["path"], kPath);
+  EXPECT_EQ(j[0]["usage_page"], 0x12);
+  EXPECT_EQ(j[0]["kind"], "eye tracker");
+  fake_hid::reset();
+  const Result none = run({"hid", "list"});
+  EXPECT_EQ(none.code, 0);
+  EXPECT_NE(none.out.find("no HID eye tracker"), std::string::npos);
+}
+
+TEST_F(HidCliTest, RecordWritesEverySampleToATrace) {
+  fake_hid::plug({kPath});
+  fake_hid::set_feature(
+      kPath,
+      Bytes{}.u8(kReportConfiguration).u16(1).u16(2).u32(3).u16(4).i32(527040).i32(296460).b);
+  fake_hid::set_feature(kPath, Bytes{}.u8(kReportStatus).u8(1).u16(250).b);
+  for (int i = 0; i < 3; ++i)
+    fake_hid::push_input(kPath, tracking_report(1000 + 4000u * i, 263520, 148230,
+                                                {-32000, 0, 600000}, {32000, 0, 600000}));
+  fake_hid::push_input(kPath, Bytes{}.u8(0x10).pad(5).b);  // short: skipped, not written
+  const auto out = std::filesystem::temp_directory_path() / "gazelod_hid_cli_test.csv";
+  const Result r = run({"hid", "record", "--out", out.string(), "--seconds", "0.3"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("3 samples (0 invalid)"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("skipped 1 malformed"), std::string::npos) << r.err;
+  std::ifstream in(out);
+  std::string line;
+  int rows = -1;  // the column header
+  while (std::getline(in, line))
+    if (!line.empty() && line[0] != '#') ++rows;
+  EXPECT_EQ(rows, 3);
+  std::filesystem::remove(out);
+}
+
+TEST_F(HidCliTest, BadOptionsAndNoDeviceFailWithAMessage) {
+  const Result neg = run({"hid", "record", "--out", "/tmp/x.csv", "--seconds", "-1"});
+  EXPECT_EQ(neg.code, 2);
+  EXPECT_NE(neg.err.find("--seconds"), std::string::npos) << neg.err;
+  const Result layout =
+      run({"hid", "record", "--out", "/tmp/x.csv", "--seconds", "1", "--layout", "zz"});
+  EXPECT_EQ(layout.code, 2);
+  EXPECT_NE(layout.err.find("--layout"), std::string::npos) << layout.err;
+  const auto out = std::filesystem::temp_directory_path() / "gazelod_hid_cli_none.csv";
+  const Result none = run({"hid", "record", "--out", out.string(), "--seconds", "0.02"});
+  EXPECT_EQ(none.code, 1);
+  EXPECT_NE(none.err.find("no HID eye tracker could be opened"), std::string::npos) << none.err;
+  std::filesystem::remove(out);
+}
+
+}  // namespace
+}  // namespace gazelod::gaze::hid

@@ -1,0 +1,119 @@
+// `gazelod run` end to end on the simulated runtime: the report, its invariants, and the
+// fallbacks when eye gaze is missing.
+#include "run_test_util.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <sstream>
+
+namespace gazelod::test {
+namespace {
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> cells;
+  std::istringstream in(line);
+  std::string c;
+  while (std::getline(in, c, ',')) cells.push_back(c);
+  return cells;
+}
+
+TEST(RunCli, DefaultScenario120FramesWritesAConsistentReport) {
+  use_simulated_runtime("");
+  const auto dir = scratch_dir();
+  const CliResult r = run_cli({"run", "--frames", "120", "--out", dir.string(), "--quiet"});
+  ASSERT_EQ(r.rc, 0) << r.err;
+  const auto summary = nlohmann::json::parse(read_text(dir / "summary.json"));
+  EXPECT_EQ(summary.at("frames").get<int>(), 120);
+  const auto drawn = summary.at("triangles_drawn").get<std::uint64_t>();
+  const auto full = summary.at("triangles_full").get<std::uint64_t>();
+  EXPECT_GT(full, 0u);
+  EXPECT_LE(drawn, full);
+  EXPECT_LT(drawn, full) << "the default scenario should let some detail go";
+  for (const char* k : {"size", "eccentricity", "velocity"}) {
+    const double share = summary.at("shares").at(k).get<double>();
+    EXPECT_GE(share, 0.0) << k;
+    EXPECT_LE(share, 1.0) << k;
+  }
+
+  // Every frame row: drawn never above full detail.
+  std::ifstream csv(dir / "frames.csv");
+  std::string line;
+  ASSERT_TRUE(std::getline(csv, line));
+  const auto header = split(line);
+  const auto col = [&](const std::string& name) {
+    const auto it = std::find(header.begin(), header.end(), name);
+    EXPECT_NE(it, header.end()) << name;
+    return static_cast<std::size_t>(it - header.begin());
+  };
+  const std::size_t c_drawn = col("triangles_drawn"), c_full = col("triangles_full");
+  int rows = 0;
+  while (std::getline(csv, line)) {
+    const auto cells = split(line);
+    ASSERT_GT(cells.size(), std::max(c_drawn, c_full)) << "row " << rows;
+    EXPECT_LE(std::stoull(cells[c_drawn]), std::stoull(cells[c_full])) << "row " << rows;
+    ++rows;
+  }
+  EXPECT_EQ(rows, 120);
+  EXPECT_TRUE(std::filesystem::file_size(dir / "frames.svg") > 1000);
+  EXPECT_TRUE(std::filesystem::file_size(dir / "frame.png") > 1000);
+  EXPECT_NE(r.out.find("triangles"), std::string::npos) << r.out;
+}
+
+TEST(RunCli, WithoutEyeGazeFallsBackToHeadFixedAndSaysSo) {
+  use_simulated_runtime("");
+  const auto dir = scratch_dir();
+  const CliResult r = run_cli({"run", "--frames", "30", "--out", dir.string(), "--no-eye-gaze", "--no-render"});
+  ASSERT_EQ(r.rc, 0) << r.err;
+  EXPECT_NE(r.err.find("head-fixed"), std::string::npos) << r.err;
+  const auto summary = nlohmann::json::parse(read_text(dir / "summary.json"));
+  EXPECT_EQ(summary.at("gaze_valid_frames").get<int>(), 0);
+}
+
+TEST(RunCli, RuntimeThatNeverDeliversGazeIsDistrusted) {
+  const auto dir = scratch_dir();
+  const auto scenario = dir / "never.json";
+  std::ofstream(scenario) << R"({"version": 1, "display": "questpro", "duration_s": 3,
+    "scene": {"generators": [{"type": "random_field", "count": 50}]},
+    "effects": [{"type": "saccades"}],
+    "runtime": {"gaze_delivery": "never_delivers"}})";
+  use_simulated_runtime("");
+  const CliResult r = run_cli({"run", "--scenario", scenario.string(), "--frames", "180", "--out",
+                               (dir / "out").string(), "--no-render"});
+  ASSERT_EQ(r.rc, 0) << r.err;
+  EXPECT_NE(r.err.find("delivered none"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("head-fixed"), std::string::npos) << r.err;
+}
+
+TEST(RunCli, BadInputsAreClearErrors) {
+  use_simulated_runtime("");
+  const auto dir = scratch_dir();
+  const auto bad = dir / "bad.json";
+  std::ofstream(bad) << R"({"version": 1, "display": "quest3", "effects": [{"type": "head_turn", "rate_deg_s": 900, "duration_s": 1}]})";
+  CliResult r = run_cli({"run", "--scenario", bad.string(), "--out", (dir / "o").string()});
+  EXPECT_NE(r.rc, 0);
+  EXPECT_NE(r.err.find("effects[0]"), std::string::npos) << r.err;
+
+  r = run_cli({"run", "--scenario", (dir / "missing.json").string(), "--out", (dir / "o").string()});
+  EXPECT_NE(r.rc, 0);
+  EXPECT_NE(r.err.find("missing.json"), std::string::npos) << r.err;
+
+  r = run_cli({"run", "--hmd", "nosuchhmd", "--out", (dir / "o").string()});
+  EXPECT_NE(r.rc, 0);
+  EXPECT_NE(r.err.find("nosuchhmd"), std::string::npos) << r.err;
+
+  std::ofstream(dir / "afile") << "x";
+  r = run_cli({"run", "--frames", "5", "--out", (dir / "afile" / "sub").string()});
+  EXPECT_NE(r.rc, 0);
+  EXPECT_NE(r.err.find("--out"), std::string::npos) << r.err;
+
+  ::setenv("XR_RUNTIME_JSON", (dir / "no-runtime.json").c_str(), 1);
+  r = run_cli({"run", "--frames", "5", "--out", (dir / "o2").string(), "--no-render"});
+  EXPECT_NE(r.rc, 0);
+  EXPECT_FALSE(r.err.empty());
+  use_simulated_runtime("");
+}
+
+}  // namespace
+}  // namespace gazelod::test

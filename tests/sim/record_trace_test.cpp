@@ -1,0 +1,98 @@
+// Recording a scenario as a gazelod trace and reading it back (gaze/trace_reader.hpp); and
+// head_track replaying a recorded head: a round trip through the trace format.
+#include "gaze/trace_error.hpp"
+#include "gaze/trace_reader.hpp"
+#include "sim/record_trace.hpp"
+#include "tests/sim/sim_test_util.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+namespace gazelod::sim {
+namespace {
+
+using namespace test;
+constexpr std::int64_t kMs = 1'000'000;
+
+std::vector<gaze::TraceRecord> read_back(const std::string& text) {
+  std::istringstream in(text);
+  gaze::TraceReader reader(in, "recorded.csv");
+  std::vector<gaze::TraceRecord> out;
+  gaze::TraceRecord r;
+  while (reader.next(r)) out.push_back(r);
+  return out;
+}
+
+TEST(RecordTrace, OneRowPerTrackerSampleWithTheHeadAtThatTime) {
+  nlohmann::json j = base_scenario({{{"type", "head_sweep"}, {"yaw_amplitude_deg", 20}},
+                                    {{"type", "saccades"}},
+                                    {{"type", "tracker_rate"}, {"rate_hz", 60}},
+                                    {{"type", "tracker_latency"}, {"latency_ms", 20}},
+                                    {{"type", "blinks"}, {"rate_per_min", 30}}});
+  j["duration_s"] = 4;
+  j["frame_rate_hz"] = 90;
+  Simulator sim = make_sim(j);
+  std::ostringstream out;
+  const RecordStats st = record_trace(sim, out);
+  const std::vector<gaze::TraceRecord> rows = read_back(out.str());
+  ASSERT_EQ(rows.size(), st.rows);
+  // 90 Hz questions of a 60 Hz tracker for 4 s: every sample taken in [0, 4 s - 20 ms) once.
+  EXPECT_NEAR(double(rows.size()), 60 * 3.98, 1.0);
+  EXPECT_EQ(rows.front().gaze.t_ns, 0);
+  EXPECT_EQ(rows.front().gaze.valid, sim.tracker_at(20 * kMs).valid);
+  EXPECT_GT(st.invalid_rows, 0u);
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const gaze::TraceRecord& r = rows[i];
+    if (i > 0) EXPECT_GT(r.gaze.t_ns, rows[i - 1].gaze.t_ns);
+    const gaze::GazeSample expect = sim.tracker_at(r.gaze.t_ns + 20 * kMs);
+    EXPECT_EQ(expect.t_ns, r.gaze.t_ns);
+    EXPECT_EQ(r.gaze.valid, expect.valid);
+    if (expect.valid) EXPECT_LT(angle_deg(r.gaze.direction, expect.direction), 1e-9);
+    ASSERT_TRUE(r.has_head);
+    const glm::dquat q = sim.head_at(r.gaze.t_ns).orientation;
+    EXPECT_NEAR(std::abs(glm::dot(q, r.head.orientation)), 1.0, 1e-12);
+  }
+}
+
+TEST(RecordTrace, HeadTrackReplaysARecordedHead) {
+  nlohmann::json j = base_scenario({{{"type", "head_sweep"}, {"yaw_amplitude_deg", 30}, {"yaw_period_s", 3},
+                                     {"pitch_amplitude_deg", 10}, {"pitch_period_s", 2}}});
+  j["duration_s"] = 3;
+  j["frame_rate_hz"] = 500;  // dense rows, so interpolation error is small
+  Simulator original = make_sim(j);
+  const std::string path = std::string(GAZELOD_BINARY_DIR) + "/tests/sim/recorded_head.csv";
+  {
+    std::ofstream out(path);
+    record_trace(original, out);
+  }
+  nlohmann::json replay = base_scenario({{{"type", "head_track"}, {"file", path}}});
+  Simulator sim = make_sim(replay);
+  for (std::int64_t t = 0; t < 2990 * kMs; t += 37 * kMs) {
+    const HeadState a = original.head_at(t), b = sim.head_at(t);
+    const glm::dquat d = glm::conjugate(a.orientation) * b.orientation;
+    EXPECT_LT(2.0 * std::atan2(glm::length(glm::dvec3(d.x, d.y, d.z)), std::abs(d.w)), 1e-5) << t;
+    // Segment velocity of a 2 ms segment vs the script's instantaneous one.
+    EXPECT_LT(glm::length(a.angular_velocity_rad_s - b.angular_velocity_rad_s), 0.01) << t;
+  }
+  // Before and after: held.
+  EXPECT_EQ(sim.head_at(10'000 * kMs).angular_velocity_rad_s, glm::dvec3(0.0));
+}
+
+TEST(RecordTrace, HeadTrackErrorsNameTheParameter) {
+  nlohmann::json j = base_scenario({{{"type", "head_track"}, {"file", "/nonexistent/head.csv"}}});
+  try {
+    (void)load_scenario_json(j.dump(), "s.json");
+    FAIL() << "no error";
+  } catch (const ScenarioError& e) {
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("s.json: effects[0].file: "));
+  }
+  j["effects"][0]["file"] = "x.csv";
+  j["effects"][0]["format"] = "tobii9";
+  EXPECT_THROW((void)load_scenario_json(j.dump(), "s.json"), ScenarioError);
+}
+
+}  // namespace
+}  // namespace gazelod::sim

@@ -11,6 +11,7 @@
 
 #include "gaze/gaze_source.hpp"
 #include "lod/lod_chain.hpp"
+#include "plugin/frame_budget.hpp"
 
 #include <glm/vec3.hpp>
 #include <openxr/openxr.h>
@@ -58,6 +59,11 @@ struct PluginConfig {
   // Also select with the criteria sets size+eccentricity and size+velocity each frame, so a
   // report can split the reduction between the criteria (two more selections per frame).
   bool compute_breakdown = false;
+  // Frame budget (ms, 0 = none): after the perceptual selection, Mason's incremental solver
+  // coarsens levels so the predicted frame time (a cost model fit online from end_frame's
+  // measured times) stays under the budget. Never finer than the perceptual choice.
+  double budget_ms = 0.0;
+  FrameBudgetOptions budget;
 };
 
 struct ObjectDesc {
@@ -70,7 +76,8 @@ struct ObjectDesc {
 
 // Per-object outcome of one frame, indexed by object id.
 struct FrameDecisions {
-  std::span<const std::uint8_t> lod;             // chosen level
+  std::span<const std::uint8_t> lod;             // chosen level (after the budget, if any)
+  std::span<const std::uint8_t> lod_perceptual;  // the perceptual choice before the budget
   std::span<const std::uint8_t> limited_by;      // lod::Criterion value (see lod/select.hpp)
   std::span<const std::uint8_t> lod_size_only;   // what each criterion alone allows
   std::span<const std::uint8_t> lod_eccentricity_only;
@@ -86,6 +93,10 @@ struct FrameDecisions {
   double cone_inflation_deg = 0.0;
   double xi_cpd = 0.0;                             // display limit used this frame
   bool head_valid = false;
+  // With a frame budget: the frame time the cost model predicts for `lod`, and whether even
+  // the coarsest levels were predicted over the budget.
+  double predicted_ms = 0.0;
+  bool budget_infeasible = false;
 };
 
 class LodPlugin {

@@ -77,6 +77,9 @@ class LodPluginImpl final : public LodPlugin {
 
   std::uint32_t add_object(const ObjectDesc& d) override {
     const std::uint32_t id = store_.add(d.center_m, d.radius_m, d.velocity_m_s, d.lods);
+    chains_.push_back(d.lods);
+    importance_.push_back(d.importance);
+    budget_.reset();  // rebuilt with the new object at the next frame
     resize_outputs();
     return id;
   }
@@ -149,6 +152,8 @@ class LodPluginImpl final : public LodPlugin {
       lod::select_lods(sv, store_.view(), breakdown_sv_out_);
     }
 
+    apply_budget();
+
     frame_.gaze_source = kind_of(gaze.source);
     frame_.gaze_valid = gaze.source != plugin::ArbitratedSource::head_fixed;
     frame_.gaze_direction_world = v.gaze_direction;
@@ -161,12 +166,37 @@ class LodPluginImpl final : public LodPlugin {
     return frame_;
   }
 
-  void end_frame(double measured_frame_ms) override { last_frame_ms_ = measured_frame_ms; }
+  void end_frame(double measured_frame_ms) override {
+    last_frame_ms_ = measured_frame_ms;
+    if (budget_) budget_->observe(measured_frame_ms);
+  }
 
   GazeSourceKind active_source() const override { return active_; }
   void on_source_changed(SourceChanged cb) override { changed_ = std::move(cb); }
 
  private:
+  // The budget pass: the perceptual levels are the finest worth drawing; the solver coarsens
+  // them until the predicted frame time fits. Benefit grows with projected area (pixels).
+  void apply_budget() {
+    frame_.predicted_ms = 0.0;
+    frame_.budget_infeasible = false;
+    if (!(config_.budget_ms > 0.0) || store_.size() == 0) return;
+    if (!budget_) budget_ = std::make_unique<FrameBudget>(chains_, config_.budget_ms, config_.budget);
+    const double px_per_deg = 2.0 * xi_cpd_;  // xi = pixels / (2 * FOV)
+    for (std::size_t i = 0; i < store_.size(); ++i) {
+      const double r_px = static_cast<double>(angular_radius_deg_[i]) * px_per_deg;
+      budget_view_[i].size_px = std::isfinite(r_px) ? 3.14159265358979 * r_px * r_px : 0.0;
+      budget_view_[i].importance = std::clamp(importance_[i], 0.0, 1.0);
+    }
+    try {
+      frame_.budget_infeasible = !budget_->choose(lod_, budget_view_, budget_lod_);
+      frame_.predicted_ms = budget_->predicted_ms();
+    } catch (const std::exception&) {
+      // Inputs the solver refuses: draw the perceptual choice rather than guess.
+      std::copy(lod_.begin(), lod_.end(), budget_lod_.begin());
+    }
+  }
+
   void init_display() {
     if (!config_.hmd_override.empty()) {
       const lod::DisplaySpec* preset = lod::find_display_preset(config_.hmd_override);
@@ -211,10 +241,16 @@ class LodPluginImpl final : public LodPlugin {
     const std::size_t n = store_.size();
     for (auto* v : {&lod_, &limited_, &size_only_, &ecc_only_, &vel_only_, &se_, &sv_, &scratch_a_, &scratch_b_, &scratch_c_, &scratch_d_})
       v->resize(n);
-    decisions_out_ = {lod_, limited_, size_only_, ecc_only_, vel_only_, {}, {}, {}};
+    angular_radius_deg_.resize(n);
+    budget_lod_.resize(n);
+    budget_view_.resize(n);
+    const bool budget = config_.budget_ms > 0.0;
+    decisions_out_ = {lod_, limited_, size_only_, ecc_only_, vel_only_, {}, {},
+                      budget ? std::span<float>(angular_radius_deg_) : std::span<float>()};
     breakdown_se_out_ = {se_, scratch_a_, scratch_b_, scratch_c_, scratch_d_, {}, {}, {}};
     breakdown_sv_out_ = {sv_, scratch_a_, scratch_b_, scratch_c_, scratch_d_, {}, {}, {}};
-    frame_.lod = lod_;
+    frame_.lod = budget ? std::span<const std::uint8_t>(budget_lod_) : std::span<const std::uint8_t>(lod_);
+    frame_.lod_perceptual = lod_;
     frame_.limited_by = limited_;
     frame_.lod_size_only = size_only_;
     frame_.lod_eccentricity_only = ecc_only_;
@@ -254,6 +290,13 @@ class LodPluginImpl final : public LodPlugin {
   std::int64_t prev_gaze_t_ns_ = 0;
   plugin::ArbitratedSource prev_gaze_source_ = plugin::ArbitratedSource::head_fixed;
   double last_frame_ms_ = 0.0;
+
+  std::vector<std::vector<lod::LodLevel>> chains_;
+  std::vector<double> importance_;
+  std::vector<float> angular_radius_deg_;
+  std::vector<std::uint8_t> budget_lod_;
+  std::vector<BudgetObjectView> budget_view_;
+  std::unique_ptr<FrameBudget> budget_;
 };
 
 }  // namespace

@@ -89,6 +89,10 @@ int run_session(const RunOptions& opt, Io io) {
   config.use_openxr_eye_gaze = opt.eye_gaze && app->eye_gaze_enabled();
   config.criteria = opt.criteria;
   config.compute_breakdown = true;
+  config.budget_ms = opt.budget_ms;
+  // Plan with a margin: the cost fit is unbiased, so without one about half the frames would
+  // land above their prediction.
+  config.budget.headroom = 0.15;
   config.hmd_override = opt.hmd;
   config.external_source = make_external_source(opt);
   auto plugin = LodPlugin::create(app->instance(), app->system(), app->session(), app->local_space(), config);
@@ -181,6 +185,7 @@ int run_session(const RunOptions& opt, Io io) {
     r.t_s = t_s;
     r.frame_ms = frame_ms;
     r.select_ms = select_ms;
+    r.predicted_ms = d.predicted_ms;
     r.triangles_drawn = triangles(chains, d.lod);
     r.triangles_full = triangles_full;
     r.triangles_size_only = triangles(chains, d.lod_size_only);

@@ -86,6 +86,44 @@ TEST(RunCli, RuntimeThatNeverDeliversGazeIsDistrusted) {
   EXPECT_NE(r.err.find("head-fixed"), std::string::npos) << r.err;
 }
 
+TEST(RunCli, BudgetKeepsThePredictedFrameTimeUnderTheBudget) {
+  use_simulated_runtime("");
+  const auto dir = scratch_dir();
+  const double budget_ms = 200.0;
+  const CliResult r = run_cli({"run", "--frames", "60", "--budget-ms", "200", "--out", dir.string(), "--quiet"});
+  ASSERT_EQ(r.rc, 0) << r.err;
+  const auto summary = nlohmann::json::parse(read_text(dir / "summary.json"));
+  EXPECT_EQ(summary.at("budget_ms").get<double>(), budget_ms);
+  EXPECT_TRUE(summary.contains("frames_over_budget"));
+
+  std::ifstream csv(dir / "frames.csv");
+  std::string line;
+  ASSERT_TRUE(std::getline(csv, line));
+  const auto header = split(line);
+  const auto col = [&](const std::string& name) {
+    return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+  };
+  const std::size_t c_pred = col("predicted_ms"), c_drawn = col("triangles_drawn");
+  ASSERT_LT(c_pred, header.size());
+  std::vector<std::pair<double, std::uint64_t>> rows;
+  while (std::getline(csv, line)) {
+    const auto cells = split(line);
+    rows.emplace_back(std::stod(cells[c_pred]), std::stoull(cells[c_drawn]));
+  }
+  ASSERT_EQ(rows.size(), 60u);
+  // Every frame is planned under the budget, unless even the cheapest frame (every object at
+  // its coarsest level: the fewest triangles of the run) is predicted over it.
+  std::uint64_t fewest = UINT64_MAX;
+  for (const auto& [pred, drawn] : rows) fewest = std::min(fewest, drawn);
+  int planned_under = 0;
+  for (const auto& [pred, drawn] : rows) {
+    EXPECT_GT(pred, 0.0);
+    if (pred <= budget_ms + 1e-9) ++planned_under;
+    else EXPECT_EQ(drawn, fewest) << "a frame predicted over budget must already be the coarsest";
+  }
+  EXPECT_GT(planned_under, 0);
+}
+
 TEST(RunCli, BadInputsAreClearErrors) {
   use_simulated_runtime("");
   const auto dir = scratch_dir();

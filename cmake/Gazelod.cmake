@@ -44,6 +44,14 @@ function(gazelod_test name)
     set(A_LABELS unit)
   endif()
   gtest_discover_tests(${name} PROPERTIES LABELS "${A_LABELS}" DISCOVERY_TIMEOUT 60)
+  # `cmake --build DIR --target gazelod_unit_tests` builds just what `ctest -L unit` runs (the
+  # sanitizer pass in CI builds only these).
+  if("unit" IN_LIST A_LABELS)
+    if(NOT TARGET gazelod_unit_tests)
+      add_custom_target(gazelod_unit_tests)
+    endif()
+    add_dependencies(gazelod_unit_tests ${name})
+  endif()
 endfunction()
 
 # gazelod_bench(NAME SOURCES ... LIBS ...): a Google Benchmark program.

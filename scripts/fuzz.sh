@@ -6,7 +6,7 @@
 #   FUZZ_SECONDS=600 scripts/fuzz.sh fuzz_scenario fuzz_gltf
 #
 # Seeds: fuzz/corpus/<target>/ (read only). New coverage goes to build-fuzz/corpus/<target>/,
-# crashes to build-fuzz/artifacts/<target>/. A crash stops the script with exit 1: fix it, copy
+# crashes to build-fuzz/artifacts/<target>/; fuzz/<name>.dict, where present, is the dictionary. A crash stops the script with exit 1: fix it, copy
 # the input into fuzz/corpus/<target>/ (tests/faults replays every corpus file in ctest).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -28,9 +28,10 @@ for t in "${targets[@]}"; do
   name=${t#fuzz_}
   work="$build/corpus/$name"; art="$build/artifacts/$name"
   mkdir -p "$work" "$art"
+  dict=(); [ -f "$root/fuzz/$name.dict" ] && dict=(-dict="$root/fuzz/$name.dict")
   echo "fuzz.sh: $t for ${seconds}s (seeds fuzz/corpus/$name, corpus $work)"
   if ! "$build/fuzz/$t" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=65536 \
-       -print_final_stats=1 -artifact_prefix="$art/" "$work" "$root/fuzz/corpus/$name" \
+       -print_final_stats=1 "${dict[@]}" -artifact_prefix="$art/" "$work" "$root/fuzz/corpus/$name" \
        > "$build/$t.log" 2>&1; then
     echo "fuzz.sh: $t FAILED: see $build/$t.log and $art/" >&2
     tail -n 40 "$build/$t.log" >&2

@@ -11,10 +11,15 @@ jobs="$(nproc 2>/dev/null || echo 2)"
 
 bash scripts/install-deps.sh
 
-build() {  # build DIR [cmake args...]
+build() {  # build DIR [cmake args...] [-- target]
   local dir="$1"; shift
-  cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo "$@" >/dev/null
-  cmake --build "$dir" -j"$jobs"
+  local args=() target=()
+  while [ $# -gt 0 ]; do
+    if [ "$1" = "--" ]; then shift; target=(--target "$@"); break; fi
+    args+=("$1"); shift
+  done
+  cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo "${args[@]}" >/dev/null
+  cmake --build "$dir" -j"$jobs" "${target[@]}"
 }
 
 case "$what" in
@@ -23,11 +28,11 @@ case "$what" in
     ./build/plugin/cli/gazelod run "$@"
     ;;
   test)
-    build build
+    build build -DGAZELOD_BUILD_TESTS=ON -DGAZELOD_BUILD_BENCH=ON
     echo "== tests (release) =="
     ctest --test-dir build --output-on-failure -j"$jobs" --timeout 600
     echo "== unit tests under AddressSanitizer + UndefinedBehaviorSanitizer =="
-    build build-asan -DGAZELOD_SANITIZE=ON -DGAZELOD_BUILD_BENCH=OFF
+    build build-asan -DGAZELOD_SANITIZE=ON -DGAZELOD_BUILD_BENCH=OFF -- gazelod_unit_tests
     ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
       ctest --test-dir build-asan --output-on-failure -j"$jobs" -L unit --timeout 600
     ;;

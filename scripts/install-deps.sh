@@ -12,7 +12,7 @@ packages=(
   libvulkan-dev mesa-vulkan-drivers vulkan-tools vulkan-validationlayers glslang-tools
   # Maths, devices, assets, formats, command line
   libglm-dev libhidapi-dev libtinygltf-dev libmeshoptimizer-dev nlohmann-json3-dev libcli11-dev
-  libpng-dev libstb-dev
+  libpng-dev
   # Tests and benchmarks; clang + its runtime for the libFuzzer targets (scripts/fuzz.sh)
   libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-14-dev
   # The evaluation's peer (bench/peer): OpenSceneGraph's osg::LOD

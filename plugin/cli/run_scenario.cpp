@@ -7,9 +7,13 @@
 #include "gaze/trace_open.hpp"
 #include "lod/display.hpp"
 
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <cstdio>
+#include <set>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -53,6 +57,73 @@ class TraceFromFirstFrame final : public gaze::GazeSource {
   gaze::ReplaySource replay_;
 };
 
+// --scene: the baked glTF's objects and LOD chains replace the scenario's scene objects, in the
+// scenario text itself, so the simulated runtime and this process step the same scenario. The
+// scene is moved in front of the viewer's start (its bounding sphere's centre 2 radii + 1 m
+// down -Z, at eye height); effects that name objects the baked scene lacks (a pursuit, object
+// motion) are dropped with a note.
+std::string with_baked_scene(const std::string& text, const std::string& label, const std::string& scene_path) {
+  std::vector<bake::BakedObject> baked;
+  try {
+    baked = bake::load_baked_scene(scene_path);
+  } catch (const bake::BakeError& e) {
+    throw UsageError(std::string("--scene: ") + e.what());
+  }
+  if (baked.empty()) throw UsageError("--scene: '" + scene_path + "' has no meshes");
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::exception& e) {
+    throw UsageError(label + ": not JSON: " + e.what());
+  }
+  glm::dvec3 lo(1e300), hi(-1e300);
+  for (const auto& b : baked) {
+    lo = glm::min(lo, b.center_m - glm::dvec3(b.radius_m));
+    hi = glm::max(hi, b.center_m + glm::dvec3(b.radius_m));
+  }
+  const glm::dvec3 mid = 0.5 * (lo + hi);
+  const double radius = 0.5 * glm::length(hi - lo);
+  glm::dvec3 start(0.0);
+  if (j.contains("scene") && j["scene"].contains("head_path") && j["scene"]["head_path"].contains("start_m")) {
+    const auto& s = j["scene"]["head_path"]["start_m"];
+    if (s.is_array() && s.size() == 3) start = {s[0].get<double>(), s[1].get<double>(), s[2].get<double>()};
+  }
+  const glm::dvec3 shift = start + glm::dvec3(0.0, 0.0, -(2.0 * radius + 1.0)) - mid;
+  nlohmann::json objects = nlohmann::json::array();
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < baked.size(); ++i) {
+    const auto& b = baked[i];
+    std::string name = b.name;
+    if (!names.insert(name).second) names.insert(name += "#" + std::to_string(i));
+    nlohmann::json lods = nlohmann::json::array();
+    for (const auto& l : b.lods)
+      lods.push_back({{"triangles", l.triangles}, {"vertices", l.vertices},
+                      {"detail_kind", l.detail_kind == lod::DetailKind::geometric_error_m ? "geometric_error_m" : "removed_cycles_per_diameter"},
+                      {"detail", l.detail}});
+    const glm::dvec3 c = b.center_m + shift;
+    objects.push_back({{"name", name}, {"position_m", {c.x, c.y, c.z}}, {"radius_m", b.radius_m}, {"lods", lods}});
+  }
+  nlohmann::json scene = j.value("scene", nlohmann::json::object());
+  scene.erase("generators");
+  scene["objects"] = objects;
+  j["scene"] = scene;
+  if (j.contains("effects") && j["effects"].is_array()) {
+    nlohmann::json kept = nlohmann::json::array();
+    for (const auto& e : j["effects"]) {
+      const bool names_object = e.is_object() && e.contains("object") && e["object"].is_string() &&
+                                e["object"].get<std::string>() != "*";
+      if (names_object && !names.count(e["object"].get<std::string>())) {
+        std::fprintf(stderr, "gazelod run: --scene: effect %s on object '%s' dropped (not in the baked scene)\n",
+                     e.value("type", std::string("?")).c_str(), e["object"].get<std::string>().c_str());
+        continue;
+      }
+      kept.push_back(e);
+    }
+    j["effects"] = kept;
+  }
+  return j.dump(2);
+}
+
 }  // namespace
 
 PreparedScenario prepare_scenario(const RunOptions& opt) {
@@ -75,31 +146,14 @@ PreparedScenario prepare_scenario(const RunOptions& opt) {
     j["display"] = opt.hmd;
     text = j.dump(2);
   }
+  if (!opt.scene_path.empty()) {
+    text = with_baked_scene(text, p.label, opt.scene_path);
+    p.label += " + " + opt.scene_path;
+  }
   try {
     p.scenario = sim::load_scenario_json(text, p.label);
   } catch (const sim::ScenarioError& e) {
     throw UsageError(e.what());
-  }
-  // --scene: the baked glTF's objects and their LOD chains replace the scenario's scene (the
-  // scenario still gives display, motion and effects).
-  if (!opt.scene_path.empty()) {
-    std::vector<bake::BakedObject> baked;
-    try {
-      baked = bake::load_baked_scene(opt.scene_path);
-    } catch (const bake::BakeError& e) {
-      throw UsageError(std::string("--scene: ") + e.what());
-    }
-    if (baked.empty()) throw UsageError("--scene: '" + opt.scene_path + "' has no meshes");
-    p.scenario.objects.clear();
-    for (bake::BakedObject& b : baked) {
-      sim::SceneObject o;
-      o.name = b.name;
-      o.position_m = b.center_m;
-      o.radius_m = b.radius_m;
-      o.lods = std::move(b.lods);
-      p.scenario.objects.push_back(std::move(o));
-    }
-    p.label += " + " + opt.scene_path;
   }
   if (opt.frames > 0) {
     const double rate = p.scenario.frame_rate_hz > 0 ? p.scenario.frame_rate_hz : 90.0;

@@ -20,6 +20,7 @@ struct EvalFlags {
   bool full = false;
   bool no_render = false;
   int layouts = 0;
+  double radius_scale = 1.0;
   std::vector<int> counts;
 };
 
@@ -32,6 +33,7 @@ int run_eval(const EvalFlags& flags, Io io) {
   if (flags.layouts > 0) o.layouts = flags.layouts;
   if (!flags.counts.empty()) o.counts = flags.counts;
   o.frame_rates = !flags.no_render;
+  o.radius_scale = flags.radius_scale;
   const std::filesystem::path out = flags.out;
   o.work_dir = flags.work.empty() ? out / "runs" : std::filesystem::path(flags.work);
   std::error_code ec;
@@ -51,7 +53,7 @@ int run_eval(const EvalFlags& flags, Io io) {
   std::ofstream md(md_path);
   if (!md) throw UsageError("cannot write " + md_path.string(), 1);
   md << "<!-- written by: gazelod eval" << (flags.full ? " --full" : "") << ", " << o.layouts
-     << " layouts per point -->\n\n";
+     << " layouts per point, radius scale " << o.radius_scale << " -->\n\n";
   if (!f5.empty()) {
     md << "### Figure 5: frame rate without and with perceptual LOD (rendered, "
        << o.render_rate_hz * 5.0 << " frames per 5 s path)\n\n";
@@ -84,6 +86,8 @@ const Registrar reg("eval", "Reproduce seed 000's experiments (frame rate, avera
       ->check(CLI::Range(1, 1000));
   app.add_option("--counts", flags->counts, "Object counts (default 10 20 50 100 200 500 1000)")
       ->check(CLI::Range(1, 100000));
+  app.add_option("--radius-scale", flags->radius_scale, "Scale the objects' radii (default 1: 0.3 to 1.5 m)")
+      ->check(CLI::Range(0.01, 100.0));
   app.add_flag("--no-render", flags->no_render, "Skip the rendered frame-rate runs (Figure 5)");
   return [=](Io io) { return run_eval(*flags, io); };
 });

@@ -21,7 +21,7 @@ std::vector<EvalRun> layouts(const EvalOptions& o, ReddyScenario sc, const std::
     std::string name = label + "_" + criteria + "_layout" + std::to_string(l);
     for (char& c : name)
       if (c == ',') c = '+';
-      else if (c == ' ') c = '_';
+      else if (c == ' ' || c == '/') c = '_';
     runs.push_back(eval_run(sc, criteria, render, o.work_dir / name));
     progress(label + ", " + criteria + ", layout " + std::to_string(l) + "/" + std::to_string(o.layouts) +
              (render ? fmt(": %.1f Hz, %.0f triangles/frame", runs.back().frame_rate_hz, runs.back().triangles_per_frame)
@@ -37,6 +37,7 @@ std::vector<Figure5Row> run_figure5(const EvalOptions& o, const Progress& progre
   for (int n : o.counts) {
     ReddyScenario sc;
     sc.objects = n;
+    sc.radius_scale = o.radius_scale;
     sc.frame_rate_hz = o.render_rate_hz;
     const std::string label = "figure5 " + std::to_string(n) + " objects";
     Figure5Row row;
@@ -53,6 +54,7 @@ std::vector<Figure6Row> run_figure6(const EvalOptions& o, const Progress& progre
   for (int n : o.counts) {
     ReddyScenario sc;
     sc.objects = n;
+    sc.radius_scale = o.radius_scale;
     sc.frame_rate_hz = o.headless_rate_hz;
     const std::string label = "figure6 " + std::to_string(n) + " objects";
     Figure6Row row;
@@ -69,6 +71,7 @@ std::vector<HeadTurnRow> run_head_turns(const EvalOptions& o, const Progress& pr
   for (double rate : o.head_turn_deg_s) {
     ReddyScenario sc;
     sc.objects = o.head_turn_objects;
+    sc.radius_scale = o.radius_scale;
     sc.frame_rate_hz = o.headless_rate_hz;
     sc.head_turn_deg_s = rate;
     sc.surround = true;

@@ -18,6 +18,7 @@ struct EvalOptions {
   double headless_rate_hz = 72.0;   // ... in the selection-only runs (the paper's refresh)
   std::vector<double> head_turn_deg_s{0.0, 90.0, 135.0, 180.0};
   int head_turn_objects = 200;
+  double radius_scale = 1.0;        // object radii x this (1: 0.3 to 1.5 m)
   bool frame_rates = true;          // false: skip the rendered (slow) Figure 5 runs
   std::filesystem::path work_dir;   // each run's report
 };

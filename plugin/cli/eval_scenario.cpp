@@ -44,14 +44,16 @@ std::string reddy_scenario_json(const ReddyScenario& s) {
       const double azimuth = uniform(state, 0.0, 6.283185307179586), dist = uniform(state, 5.0, 80.0);
       p = {dist * std::sin(azimuth), uniform(state, -12, 12), -dist * std::cos(azimuth)};
     }
-    objects.push_back({{"name", "o" + std::to_string(i)},
+    std::string name = "o";  // (not "o" + to_string: GCC 12's -Wrestrict false positive)
+    name += std::to_string(i);
+    objects.push_back({{"name", name},
                        {"position_m", {p.x, p.y, p.z}},
-                       {"radius_m", uniform(state, 0.3, 1.5)},
+                       {"radius_m", s.radius_scale * uniform(state, 0.3, 1.5)},
                        {"lods", lods}});
   }
   nlohmann::json j = {
       {"version", 1},
-      {"name", "reddy_n" + std::to_string(s.objects) + "_layout" + std::to_string(s.layout_seed)},
+      {"name", std::string("reddy_n").append(std::to_string(s.objects)).append("_layout").append(std::to_string(s.layout_seed))},
       {"display", {{"name", "reddy-sgi"}, {"width_px", s.width_px}, {"height_px", s.height_px},
                    {"fov_h_deg", 43.6}, {"fov_v_deg", 33.4}}},
       {"duration_s", s.duration_s},

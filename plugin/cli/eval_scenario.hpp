@@ -20,6 +20,7 @@ struct ReddyScenario {
   // Objects all around the observer (uniform azimuth, 5-80 m) instead of a field ahead, so a
   // head turning for 5 s keeps seeing a statistically unchanged scene.
   bool surround = false;
+  double radius_scale = 1.0;       // multiplies the 0.3 to 1.5 m radii (a sensitivity check)
   double duration_s = 5.0;
   int width_px = 1280;             // assumed (the paper gives only the FOV)
   int height_px = 1024;

@@ -1,4 +1,4 @@
-// Fuzzes the frame-budget instance reader (JSON in, MckpInstance out). Invariants: an accepted
+// Fuzzes the frame-budget instance reader (a JSON file in, MckpInstance out). Invariants: an accepted
 // instance has a finite capacity >= 0, finite costs >= 0 and finite profits, and consistent
 // subset offsets; small accepted instances are also solved, and a solution never exceeds the
 // capacity when the cheapest choice fits.
@@ -9,22 +9,34 @@
 #include "plugin/cli/budget_instance.hpp"
 #include "plugin/cli/command.hpp"
 
-#include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <string>
+#include <unistd.h>
 #include <stdexcept>
 
 namespace gazelod::fuzz {
 
 int budget_instance(const std::uint8_t* data, std::size_t size) {
-  const auto doc = nlohmann::json::parse(data, data + size, nullptr, /*allow_exceptions=*/false);
-  if (doc.is_discarded()) return 0;  // not JSON: read_budget_instance reports that itself
+  // Through the file reader `gazelod budget --instance` uses (JSON errors included).
+  static const std::string path = [] {
+    const char* dir = std::getenv("TMPDIR");
+    return std::string(dir && *dir ? dir : "/tmp") + "/gazelod_fuzz_budget_" + std::to_string(::getpid()) + ".json";
+  }();
+  {
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+  }
   lod::MckpInstance inst;
   try {
-    inst = cli::parse_budget_instance(doc, "fuzz.json");
+    inst = cli::read_budget_instance(path);
   } catch (const cli::UsageError&) {
-    return 0;  // the documented rejection (names the JSON path)
+    std::remove(path.c_str());
+    return 0;  // the documented rejection (names the file and the JSON path)
   }
+  std::remove(path.c_str());
   check(std::isfinite(inst.capacity) && inst.capacity >= 0.0, "capacity not finite and >= 0");
   check(!inst.subset_offsets.empty() && inst.subset_offsets.front() == 0 &&
             inst.subset_offsets.back() == inst.items.size(),

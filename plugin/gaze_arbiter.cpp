@@ -36,13 +36,16 @@ ArbiterResult GazeArbiter::update(std::int64_t t_ns) {
   }
   ArbiterResult result;
   bool newly_distrusted = false;  // reported even if the active source stays the same
+  // Reasons are only spelled out when a change is reported: no allocation in a steady frame.
+  auto must_report = [&](ArbitratedSource s) { return s != current_ || !reported_initial_ || newly_distrusted; };
 
   if (primary_ && !primary_distrusted_) {
     if (auto s = usable(primary_->sample_at(t_ns))) {
       primary_ever_ = true;
       result.source = ArbitratedSource::primary;
       result.sample = *s;
-      switch_to(ArbitratedSource::primary, primary_->name() + " eye gaze delivered", false);
+      if (must_report(result.source))
+        switch_to(ArbitratedSource::primary, primary_->name() + " eye gaze delivered", false);
       return result;
     }
     // Never delivered within the timeout: the runtime advertises gaze it does not have.
@@ -52,6 +55,13 @@ ArbiterResult GazeArbiter::update(std::int64_t t_ns) {
     }
   }
 
+  const std::optional<gaze::GazeSample> second = secondary_ ? usable(secondary_->sample_at(t_ns)) : std::nullopt;
+  // Short gaps of a trusted primary (blinks) are bridged by the source's own hold; beyond
+  // that the head-fixed fallback keeps detail with a widened cone.
+  result.source = second ? ArbitratedSource::secondary : ArbitratedSource::head_fixed;
+  if (second) result.sample = *second;
+  if (!must_report(result.source)) return result;
+
   std::string why;
   if (!primary_) {
     why = "no primary gaze source";
@@ -60,20 +70,13 @@ ArbiterResult GazeArbiter::update(std::int64_t t_ns) {
   } else {
     why = primary_->name() + " gaze unavailable (" + primary_->status() + ")";
   }
-
-  if (secondary_) {
-    if (auto s = usable(secondary_->sample_at(t_ns))) {
-      result.source = ArbitratedSource::secondary;
-      result.sample = *s;
-      switch_to(ArbitratedSource::secondary, why + "; using " + secondary_->name(), newly_distrusted);
-      return result;
-    }
-    why += "; " + secondary_->name() + " unavailable (" + secondary_->status() + ")";
+  if (second) {
+    why += "; using " + secondary_->name();
+  } else {
+    if (secondary_) why += "; " + secondary_->name() + " unavailable (" + secondary_->status() + ")";
+    why += "; head-fixed gaze with a widened cone";
   }
-  // Short gaps of a trusted primary (blinks) are bridged by the source's own hold; beyond
-  // that the head-fixed fallback keeps detail with a widened cone.
-  switch_to(ArbitratedSource::head_fixed, why + "; head-fixed gaze with a widened cone", newly_distrusted);
-  result.source = ArbitratedSource::head_fixed;
+  switch_to(result.source, why, newly_distrusted);
   return result;
 }
 

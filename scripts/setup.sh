@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The two set-up commands of the README:
 #   bash scripts/setup.sh run    install, build, run the main job
-#   bash scripts/setup.sh test   install, build, run every test (also under ASan + UBSan)
-# Build folders: build/ (release), build-asan/ (sanitizers, unit tests only).
+#   bash scripts/setup.sh test   install, build, run every test (also under ASan + UBSan, TSan)
+# Build folders: build/ (release), build-asan/ (ASan+UBSan, unit tests only), build-tsan/
+# (ThreadSanitizer, the HID reader thread's tests).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 what="${1:-}"
@@ -37,6 +38,11 @@ case "$what" in
       "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -g1" -- gazelod_unit_tests
     ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
       ctest --test-dir build-asan --output-on-failure -j"$jobs" -L unit --timeout 600
+    echo "== HID reader thread under ThreadSanitizer =="
+    build build-tsan -DGAZELOD_TSAN=ON -DGAZELOD_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=Debug \
+      "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -g1" -- test_hid test_faults
+    TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 ./build-tsan/tests/hid/test_hid
+    TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 ./build-tsan/tests/faults/test_faults --gtest_filter='HidFaults.*'
     ;;
   *)
     echo "usage: bash scripts/setup.sh run|test" >&2

@@ -107,6 +107,8 @@ Scenario load_scenario_json(std::string_view json_text, std::string_view source_
   } catch (const nlohmann::json::parse_error& e) {
     throw ScenarioError(source + ":" + line_column(json_text, e.byte > 0 ? e.byte - 1 : 0) +
                         ": JSON syntax error: " + e.what());
+  } catch (const nlohmann::json::exception& e) {  // e.g. out_of_range: a number too large
+    throw ScenarioError(source + ": JSON error: " + e.what());
   }
   JsonFields f(j, "", source);
   Scenario sc;

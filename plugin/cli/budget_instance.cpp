@@ -103,6 +103,8 @@ lod::MckpInstance read_budget_instance(const std::string& path) {
     doc = json::parse(in);
   } catch (const json::parse_error& e) {
     throw UsageError(path + ": JSON parse error at byte " + std::to_string(e.byte) + ": " + e.what());
+  } catch (const json::exception& e) {  // e.g. out_of_range: a number too large for a double
+    throw UsageError(path + ": JSON error: " + e.what());
   }
   return parse_budget_instance(doc, path);
 }

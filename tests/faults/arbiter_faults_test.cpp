@@ -6,9 +6,29 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
+#include <new>
 #include <vector>
+
+// Counts every allocation of this test program, for "a steady frame allocates nothing".
+namespace {
+std::atomic<long> g_allocations{0};
+}
+void* operator new(std::size_t n) {
+  ++g_allocations;
+  if (void* p = std::malloc(n ? n : 1)) return p;
+  throw std::bad_alloc();
+}
+void* operator new(std::size_t n, const std::nothrow_t&) noexcept {
+  ++g_allocations;
+  return std::malloc(n ? n : 1);
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
 
 namespace gazelod::plugin {
 namespace {
@@ -152,6 +172,38 @@ TEST(ArbiterFaults, UnplugAndReplugOfTheExternalTrackerAreEachReportedOnce) {
   EXPECT_NE(c.seen[2].second.find("hid unavailable (hid: unplugged)"), std::string::npos)
       << c.seen[2].second;
   EXPECT_EQ(c.seen[3].first, ArbitratedSource::secondary);
+}
+
+// The plugin promises no allocation per frame after the first (plugin/gazelod.hpp): the
+// arbiter spells out a reason only when it reports a change.
+class FixedSource : public gaze::GazeSource {
+ public:
+  std::string name() const override { return "openxr"; }  // short: no allocation
+  std::optional<gaze::GazeSample> sample_at(std::int64_t) override { return next; }
+  std::optional<gaze::GazeSample> next;
+};
+
+TEST(ArbiterFaults, SteadyFramesAllocateNothingInAnyState) {
+  FixedSource xr, hid;
+  GazeArbiter a(&xr, &hid, ArbiterConfig{100 * kMs});
+  Changes c;
+  a.on_change(c.sink());
+  c.seen.reserve(16);
+  std::int64_t t = 0;
+  auto steady = [&](ArbitratedSource expected) {
+    a.update(t += 11 * kMs);  // may report (and allocate) a change
+    const long before = g_allocations.load();
+    for (int i = 0; i < 500; ++i) EXPECT_EQ(a.update(t += 11 * kMs).source, expected);
+    return g_allocations.load() - before;
+  };
+  xr.next = sample(0, kAhead);
+  EXPECT_EQ(steady(ArbitratedSource::primary), 0);
+  xr.next.reset();
+  hid.next = sample(0, kAhead);
+  EXPECT_EQ(steady(ArbitratedSource::secondary), 0);
+  hid.next.reset();
+  EXPECT_EQ(steady(ArbitratedSource::head_fixed), 0);
+  EXPECT_EQ(c.seen.size(), 3u);
 }
 
 }  // namespace

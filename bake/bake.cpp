@@ -8,10 +8,12 @@
 #include "bake/glb_write.hpp"
 #include "bake/mesh_extract.hpp"
 #include "bake/msft_lod_writer.hpp"
+#include "bake/profile_render.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <sstream>
 
 namespace gazelod::bake {
@@ -52,7 +54,26 @@ std::string mesh_name(const tinygltf::Model& m, int mesh) {
 
 // One mesh: simplify each primitive, then combine level by level; a level that does not get
 // below the previous one in total, or loses every triangle, ends the chain.
-MeshChain bake_mesh(const tinygltf::Model& m, int mesh, const ChainOptions& o, MeshReport& rep) {
+// Renders the chain (all primitives as one mesh) and stores each level's rendered figure.
+void profile_mesh(Profiler& profiler, const std::vector<PrimitiveGeometry>& geo, MeshChain& chain) {
+  std::vector<float> xyz;
+  std::vector<std::vector<std::uint32_t>> levels(chain.levels.size());
+  std::vector<std::uint32_t> base;
+  for (const auto& g : geo) {
+    base.push_back(static_cast<std::uint32_t>(xyz.size() / 3));
+    xyz.insert(xyz.end(), g.positions_xyz.begin(), g.positions_xyz.end());
+    for (std::uint32_t i : g.indices) levels[0].push_back(base.back() + i);
+  }
+  for (std::size_t k = 1; k < chain.levels.size(); ++k)
+    for (std::size_t p = 0; p < geo.size(); ++p)
+      for (std::uint32_t i : chain.levels[k].primitive_indices[p]) levels[k].push_back(base[p] + i);
+  const std::vector<LevelProfile> prof = profiler.profile(xyz, levels);
+  for (std::size_t k = 0; k < chain.levels.size(); ++k)
+    chain.levels[k].rendered_cycles_per_diameter = prof[k].rendered_cycles_per_diameter;
+}
+
+MeshChain bake_mesh(const tinygltf::Model& m, int mesh, const ChainOptions& o, Profiler* profiler,
+                    MeshReport& rep) {
   const auto& prims = m.meshes[static_cast<std::size_t>(mesh)].primitives;
   std::vector<PrimitiveGeometry> geo;
   for (std::size_t p = 0; p < prims.size(); ++p)
@@ -86,13 +107,18 @@ MeshChain bake_mesh(const tinygltf::Model& m, int mesh, const ChainOptions& o, M
     l.error_relative = extent_m > 0.0 ? l.error_m / extent_m : 0.0;
     chain.levels.push_back(std::move(l));
   }
+  if (profiler != nullptr && chain.levels.size() > 1) {
+    const auto tp = Clock::now();
+    profile_mesh(*profiler, geo, chain);
+    rep.profile_seconds = seconds_since(tp);
+  }
   rep.primitives = prims.size();
   rep.diameter_m = chain.diameter_m;
   for (std::size_t k = 0; k < chain.levels.size(); ++k) {
     const MeshLevel& l = chain.levels[k];
     rep.levels.push_back({l.triangles, l.vertices, l.error_relative, l.error_m,
                           k == 0 ? 0.0 : detail_cycles_per_diameter(chain.diameter_m, l.error_m),
-                          l.sloppy});
+                          l.sloppy, l.rendered_cycles_per_diameter});
   }
   return chain;
 }
@@ -117,6 +143,12 @@ BakeReport bake_model(tinygltf::Model& m, const BakeOptions& o) {
       used[static_cast<std::size_t>(n.mesh)] = true;
   const auto total = static_cast<std::size_t>(std::count(used.begin(), used.end(), true));
 
+  if (o.profile_viewpoints != 0 && o.profile_viewpoints != 6 && o.profile_viewpoints != 18)
+    throw BakeError("profile: viewpoints must be 0 (off), 6 or 18, got " +
+                    std::to_string(o.profile_viewpoints));
+  std::unique_ptr<Profiler> profiler;
+  if (o.profile_viewpoints != 0 && total > 0)
+    profiler = std::make_unique<Profiler>(ProfileOptions{o.profile_viewpoints});
   std::vector<MeshChain> chains(m.meshes.size());
   std::size_t done = 0;
   for (std::size_t mi = 0; mi < m.meshes.size(); ++mi) {
@@ -129,7 +161,7 @@ BakeReport bake_model(tinygltf::Model& m, const BakeOptions& o) {
       o.progress("bake: mesh " + std::to_string(done + 1) + "/" + std::to_string(total) + " " +
                  mesh_name(m, rep.mesh) + " (" + std::to_string(m.meshes[mi].primitives.size()) +
                  " primitives) ...");
-    chains[mi] = bake_mesh(m, rep.mesh, o.chain, rep);
+    chains[mi] = bake_mesh(m, rep.mesh, o.chain, profiler.get(), rep);
     rep.seconds = seconds_since(tm);
     report.input_triangles += rep.levels.empty() ? 0 : rep.levels[0].triangles;
     ++done;

@@ -1,6 +1,8 @@
 // gazelod bake: a glTF scene in, the same scene with an MSFT_lod chain per mesh node out.
 // Pipeline: gltf_load -> mesh_extract -> simplify_chain (per primitive) -> mesh chain (here)
-// -> gltf_pack + msft_lod_writer -> glb_write. Rendered (Reddy 3.3) profiles are not part of it.
+// -> gltf_pack + msft_lod_writer -> glb_write. With options.profile_viewpoints 6 or 18 each
+// chain is also rendered (Reddy 3.3, profile_render.hpp) and the figure stored beside the
+// geometric one.
 #pragma once
 
 #include "bake/simplify_chain.hpp"
@@ -17,12 +19,14 @@ namespace gazelod::bake {
 struct BakeOptions {
   ChainOptions chain;
   std::function<void(const std::string&)> progress;  // one line per call; may be empty
+  int profile_viewpoints = 0;  // 0: no rendered profile; 6 or 18 viewpoints (needs Vulkan)
 };
 
 struct LevelReport {
   std::uint32_t triangles = 0, vertices = 0;
   double error_relative = 0.0, error_m = 0.0, detail_cycles_per_diameter = 0.0;
   bool sloppy = false;
+  double rendered_cycles_per_diameter = -1.0;  // < 0: not profiled
 };
 
 struct MeshReport {
@@ -31,6 +35,7 @@ struct MeshReport {
   std::size_t primitives = 0;
   double diameter_m = 0.0;
   double seconds = 0.0;
+  double profile_seconds = 0.0;     // part of `seconds` spent on the rendered profile
   std::vector<LevelReport> levels;  // levels[0] is the input
   std::string note;                 // why the chain is shorter than asked, if it is
 };
@@ -44,7 +49,8 @@ struct BakeReport {
 };
 
 // Bakes a loaded model in place (packs it, adds the chains). Throws BakeError naming the mesh
-// and primitive for geometry it cannot handle; the model is then unusable.
+// and primitive for geometry it cannot handle; the model is then unusable. With a profile,
+// throws render::NoVulkanDevice without Vulkan, std::invalid_argument for bad viewpoints.
 BakeReport bake_model(tinygltf::Model& model, const BakeOptions& options);
 
 // Loads `in`, bakes, writes `out` atomically. Throws BakeError; `out` is untouched on failure.

@@ -58,7 +58,13 @@ struct Reader {
     if (!e.IsObject()) fail(where, "must be an object");
     if (number(e, "level", where) != expect_level)
       fail(where + "/level", "expected " + std::to_string(expect_level));
-    const double tri = number(e, "triangles", where), det = number(e, "detail_cycles_per_diameter", where);
+    const double tri = number(e, "triangles", where);
+    double det = number(e, "detail_cycles_per_diameter", where);
+    // A rendered profile (bake --profile, Reddy's method) is preferred to the geometric estimate.
+    if (e.Has("rendered_cycles_per_diameter")) {
+      det = number(e, "rendered_cycles_per_diameter", where);
+      if (det < 0.0) fail(where + "/rendered_cycles_per_diameter", "must be >= 0");
+    }
     if (!(tri >= 1.0 && tri <= 4294967295.0) || tri != std::floor(tri))
       fail(where + "/triangles", "must be a whole number >= 1");
     if (det < 0.0) fail(where + "/detail_cycles_per_diameter", "must be >= 0");

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <cmath>
 #include <string>
 
 namespace gazelod::bake {
@@ -65,6 +66,8 @@ tinygltf::Value lod_extras(int level, const MeshLevel& l, double diameter_m) {
   o["diameter_m"] = tinygltf::Value(diameter_m);
   o["detail_cycles_per_diameter"] =
       tinygltf::Value(level == 0 ? 0.0 : detail_cycles_per_diameter(diameter_m, l.error_m));
+  if (l.rendered_cycles_per_diameter >= 0.0 && std::isfinite(l.rendered_cycles_per_diameter))
+    o["rendered_cycles_per_diameter"] = tinygltf::Value(level == 0 ? 0.0 : l.rendered_cycles_per_diameter);
   return tinygltf::Value(std::move(o));
 }
 

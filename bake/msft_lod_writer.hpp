@@ -2,8 +2,9 @@
 // levels become extra nodes (same transform, mesh "<name>_lod<k>", not in any scene) listed in
 // the node's extensions.MSFT_lod.ids, finest first. Every level's node carries
 //   extras.gazelod_lod = {level, triangles, vertices, error_relative, error_m, diameter_m,
-//                         detail_cycles_per_diameter}
-// (error_m and diameter_m in the mesh's own units; detail = diameter / (2 error), detail.hpp).
+//                         detail_cycles_per_diameter[, rendered_cycles_per_diameter]}
+// (error_m and diameter_m in the mesh's own units; detail = diameter / (2 error), detail.hpp;
+// rendered = Reddy's rendered profile, profile_render.hpp, only when the bake profiled).
 // Coarser meshes share the original vertex accessors; only index accessors are added.
 #pragma once
 
@@ -20,6 +21,8 @@ struct MeshLevel {
   double error_relative = 0.0;  // error_m / the mesh's extent (meshopt_simplifyScale)
   double error_m = 0.0;
   bool sloppy = false;
+  // Removed cycles per diameter from the rendered profile; < 0 when not profiled.
+  double rendered_cycles_per_diameter = -1.0;
   // Per original primitive; an empty list drops that primitive at this level. Unused at level 0.
   std::vector<std::vector<std::uint32_t>> primitive_indices;
 };

@@ -2,7 +2,10 @@
 
 #include "plugin/render/render_error.hpp"
 
+#include <cmath>
+#include <cstdint>
 #include <cstring>
+#include <string>
 
 namespace gazelod::render {
 
@@ -23,6 +26,33 @@ std::uint32_t MeshLibrary::add_sphere(std::uint32_t target_triangles) {
   ranges_.push_back(range);
   by_resolution_.emplace(key, id);
   return id;
+}
+
+std::uint32_t MeshLibrary::add_mesh(std::span<const glm::vec3> positions_unit,
+                                    std::span<const std::uint32_t> indices) {
+  if (uploaded()) throw RenderError("MeshLibrary::add_mesh after upload()");
+  if (indices.size() % 3 != 0)
+    throw RenderError("MeshLibrary::add_mesh: index count " + std::to_string(indices.size()) +
+                      " is not a multiple of 3");
+  for (std::size_t i = 0; i < indices.size(); ++i)
+    if (indices[i] >= positions_unit.size())
+      throw RenderError("MeshLibrary::add_mesh: index " + std::to_string(i) + " = " +
+                        std::to_string(indices[i]) + " is out of range (" +
+                        std::to_string(positions_unit.size()) + " vertices)");
+  for (std::size_t v = 0; v < positions_unit.size(); ++v)
+    if (!std::isfinite(positions_unit[v].x) || !std::isfinite(positions_unit[v].y) ||
+        !std::isfinite(positions_unit[v].z))
+      throw RenderError("MeshLibrary::add_mesh: position " + std::to_string(v) + " is not finite");
+  if (positions_.size() + positions_unit.size() > static_cast<std::size_t>(INT32_MAX))
+    throw RenderError("MeshLibrary::add_mesh: too many vertices for one library");
+  MeshRange range;
+  range.first_index = static_cast<std::uint32_t>(indices_cpu_.size());
+  range.index_count = static_cast<std::uint32_t>(indices.size());
+  range.vertex_offset = static_cast<std::int32_t>(positions_.size());
+  positions_.insert(positions_.end(), positions_unit.begin(), positions_unit.end());
+  indices_cpu_.insert(indices_cpu_.end(), indices.begin(), indices.end());
+  ranges_.push_back(range);
+  return static_cast<std::uint32_t>(ranges_.size() - 1);
 }
 
 void MeshLibrary::upload(const DeviceContext& ctx) {

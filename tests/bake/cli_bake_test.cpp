@@ -1,4 +1,5 @@
 // gazelod bake through gazelod::cli::run: exit codes, progress, summary, usage errors.
+#include "tests/cli_run.hpp"
 #include "bake/baked_scene.hpp"
 #include "plugin/cli/command.hpp"
 #include "tests/bake/test_meshes.hpp"
@@ -11,15 +12,8 @@
 namespace gazelod::cli {
 namespace {
 
-struct Result {
-  int rc;
-  std::string out, err;
-};
-Result run_cli(std::vector<std::string> args) {
-  std::ostringstream out, err;
-  const int rc = run(args, out, err);
-  return {rc, out.str(), err.str()};
-}
+using Result = test::CliResult;
+using test::run_cli;
 
 #define EXPECT_HAS(msg, part) EXPECT_NE((msg).find(part), std::string::npos) << (msg)
 

@@ -1,4 +1,5 @@
 // gazelod thresholds and gazelod hmds through gazelod::cli::run.
+#include "tests/cli_run.hpp"
 #include "lod/acuity.hpp"
 #include "plugin/cli/command.hpp"
 
@@ -10,15 +11,8 @@
 namespace gazelod::cli {
 namespace {
 
-struct Result {
-  int rc;
-  std::string out, err;
-};
-Result run_cli(std::vector<std::string> args) {
-  std::ostringstream out, err;
-  const int rc = run(args, out, err);
-  return {rc, out.str(), err.str()};
-}
+using Result = test::CliResult;
+using test::run_cli;
 
 TEST(CliThresholds, DesktopJsonMatchesReferenceTable) {
   const Result r = run_cli({"thresholds", "--hmd", "desktop", "--at-eccentricity", "10", "--json"});

@@ -27,15 +27,6 @@ void use_simulated_runtime(const std::string& scenario_file) {
   ::unsetenv("GAZELOD_SIM_DURATION_S");
 }
 
-CliResult run_cli(std::vector<std::string> args) {
-  std::ostringstream out, err;
-  CliResult r;
-  r.rc = cli::run(args, out, err);
-  r.out = out.str();
-  r.err = err.str();
-  return r;
-}
-
 std::string read_text(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   std::ostringstream s;

@@ -2,6 +2,8 @@
 // `gazelod` invoked in-process.
 #pragma once
 
+#include "tests/cli_run.hpp"
+
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -14,11 +16,6 @@ std::filesystem::path scratch_dir();
 // Points the loader at the simulated runtime (unpaced) and at `scenario_file` ("" = default).
 void use_simulated_runtime(const std::string& scenario_file);
 
-struct CliResult {
-  int rc = 0;
-  std::string out, err;
-};
-CliResult run_cli(std::vector<std::string> args);
 
 std::string read_text(const std::filesystem::path& file);
 

@@ -12,7 +12,9 @@
 //   geometric error e (m):        f = 1 / (2 (e / d) deg) (small-angle: over-states the angle,
 //                                 so it errs towards keeping detail)
 // and may be used when f_k > A = s * min(G(v) M(E), xi). E is the nearest point's eccentricity
-// minus the tracker's error, v the retinal velocity (lod/criteria.hpp).
+// minus the tracker's error, v the retinal velocity (lod/criteria.hpp). The vectorised kernels
+// (lod/select_kernel*.cpp) evaluate the same rule on squared quantities to avoid roots and
+// divisions per level; the tests compare them with a direct reference.
 // Switching a criterion off zeroes its input (seed 000 section 6): E = 0, v = 0, and for size
 // the object counts as no smaller than the size at which level 1 sits exactly at the foveal,
 // static limit s * min(60, xi) (so size alone never drops a level). Switching off never lowers

@@ -113,63 +113,58 @@ XrResult SyncActions(XrSession session, const XrActionsSyncInfo* info) {
   });
 }
 
-XrResult GetActionStateBoolean(XrSession session, const XrActionStateGetInfo* info, XrActionStateBoolean* state) {
+namespace {
+
+// The shared part of xrGetActionState{Boolean,Float,Vector2f}: checks, then the bound sources'
+// values now and at the previous sync, handed to `fill`, which sets the typed current state and
+// whether it changed. isActive and lastChangeTime follow from whether any source is bound.
+template <typename State, typename Fill>
+XrResult get_action_state(XrSession session, const XrActionStateGetInfo* info, State* state,
+                          XrActionType action_type, XrStructureType struct_type, Fill fill) {
   return guarded([&] {
     std::lock_guard lock(runtime_mutex());
     Session* s = find_session(session);
     const Action* a = nullptr;
-    if (XrResult r = check_get(s, info, XR_ACTION_TYPE_BOOLEAN_INPUT, &a); r != XR_SUCCESS) return r;
-    if (state == nullptr || state->type != XR_TYPE_ACTION_STATE_BOOLEAN) return XR_ERROR_VALIDATION_FAILURE;
+    if (XrResult r = check_get(s, info, action_type, &a); r != XR_SUCCESS) return r;
+    if (state == nullptr || state->type != struct_type) return XR_ERROR_VALIDATION_FAILURE;
     const Instance& inst = *instance_of(*s);
     const ActionState& st = s->action_states[a->id];
     const auto now = select(inst, st.current, info->subactionPath);
     const auto before = select(inst, st.previous, info->subactionPath);
-    const bool value = largest(now) > 0.5f;
+    const bool changed = fill(now, before, *state);
     state->isActive = now.empty() ? XR_FALSE : XR_TRUE;
-    state->currentState = value ? XR_TRUE : XR_FALSE;
-    state->changedSinceLastSync = (!now.empty() && !before.empty() && value != (largest(before) > 0.5f)) ? XR_TRUE : XR_FALSE;
+    state->changedSinceLastSync = (!now.empty() && !before.empty() && changed) ? XR_TRUE : XR_FALSE;
     state->lastChangeTime = now.empty() ? 0 : st.last_change_time;
     return XR_SUCCESS;
   });
+}
+
+}  // namespace
+
+XrResult GetActionStateBoolean(XrSession session, const XrActionStateGetInfo* info, XrActionStateBoolean* state) {
+  return get_action_state(session, info, state, XR_ACTION_TYPE_BOOLEAN_INPUT, XR_TYPE_ACTION_STATE_BOOLEAN,
+                          [](const auto& now, const auto& before, XrActionStateBoolean& out) {
+                            const bool value = largest(now) > 0.5f;
+                            out.currentState = value ? XR_TRUE : XR_FALSE;
+                            return value != (largest(before) > 0.5f);
+                          });
 }
 
 XrResult GetActionStateFloat(XrSession session, const XrActionStateGetInfo* info, XrActionStateFloat* state) {
-  return guarded([&] {
-    std::lock_guard lock(runtime_mutex());
-    Session* s = find_session(session);
-    const Action* a = nullptr;
-    if (XrResult r = check_get(s, info, XR_ACTION_TYPE_FLOAT_INPUT, &a); r != XR_SUCCESS) return r;
-    if (state == nullptr || state->type != XR_TYPE_ACTION_STATE_FLOAT) return XR_ERROR_VALIDATION_FAILURE;
-    const Instance& inst = *instance_of(*s);
-    const ActionState& st = s->action_states[a->id];
-    const auto now = select(inst, st.current, info->subactionPath);
-    const auto before = select(inst, st.previous, info->subactionPath);
-    state->isActive = now.empty() ? XR_FALSE : XR_TRUE;
-    state->currentState = largest(now);
-    state->changedSinceLastSync = (!now.empty() && !before.empty() && largest(now) != largest(before)) ? XR_TRUE : XR_FALSE;
-    state->lastChangeTime = now.empty() ? 0 : st.last_change_time;
-    return XR_SUCCESS;
-  });
+  return get_action_state(session, info, state, XR_ACTION_TYPE_FLOAT_INPUT, XR_TYPE_ACTION_STATE_FLOAT,
+                          [](const auto& now, const auto& before, XrActionStateFloat& out) {
+                            out.currentState = largest(now);
+                            return largest(now) != largest(before);
+                          });
 }
 
 XrResult GetActionStateVector2f(XrSession session, const XrActionStateGetInfo* info, XrActionStateVector2f* state) {
-  return guarded([&] {
-    std::lock_guard lock(runtime_mutex());
-    Session* s = find_session(session);
-    const Action* a = nullptr;
-    if (XrResult r = check_get(s, info, XR_ACTION_TYPE_VECTOR2F_INPUT, &a); r != XR_SUCCESS) return r;
-    if (state == nullptr || state->type != XR_TYPE_ACTION_STATE_VECTOR2F) return XR_ERROR_VALIDATION_FAILURE;
-    const Instance& inst = *instance_of(*s);
-    const ActionState& st = s->action_states[a->id];
-    const auto now = select(inst, st.current, info->subactionPath);
-    const auto before = select(inst, st.previous, info->subactionPath);
-    const XrVector2f v = longest(now), b = longest(before);
-    state->isActive = now.empty() ? XR_FALSE : XR_TRUE;
-    state->currentState = v;
-    state->changedSinceLastSync = (!now.empty() && !before.empty() && (v.x != b.x || v.y != b.y)) ? XR_TRUE : XR_FALSE;
-    state->lastChangeTime = now.empty() ? 0 : st.last_change_time;
-    return XR_SUCCESS;
-  });
+  return get_action_state(session, info, state, XR_ACTION_TYPE_VECTOR2F_INPUT, XR_TYPE_ACTION_STATE_VECTOR2F,
+                          [](const auto& now, const auto& before, XrActionStateVector2f& out) {
+                            const XrVector2f v = longest(now), b = longest(before);
+                            out.currentState = v;
+                            return v.x != b.x || v.y != b.y;
+                          });
 }
 
 XrResult GetActionStatePose(XrSession session, const XrActionStateGetInfo* info, XrActionStatePose* state) {

@@ -12,47 +12,51 @@
 
 namespace gazelod::lod::fast {
 
-// atan(u) for |u| <= tan(pi/8): the odd Taylor series to u^21 (truncation < 1e-10).
-// atan u = u + u^3 Q(u^2), Q = -1/3 + x/5 - x^2/7 + ... + x^9/21 (x = u^2), evaluated by
-// Estrin's scheme: four dependent FMA steps instead of Horner's nine, which matters because
-// the vectorised selection loop is bound by this dependency chain, not by throughput.
+// atan(u) for |u| <= tan(pi/8): atan u = u + u^3 Q(u^2), Q a degree-5 polynomial in x = u^2
+// interpolating (atan u - u) / u^3 at the Chebyshev nodes of [0, tan^2(pi/8)] (near-minimax:
+// |error| < 4e-11 rad, where the Taylor series needs degree 9 for 1e-11;
+// scripts/fit_fast_math.py). Estrin's scheme: three dependent FMA steps instead of Horner's
+// five, and fewer operations, which is what bounds the vectorised selection loop.
 [[gnu::always_inline]] inline double atan_small(double u) {
-  const double x = u * u, x2 = x * x, x4 = x2 * x2, x8 = x4 * x4;
-  const double p01 = -1.0 / 3.0 + x * (1.0 / 5.0);
-  const double p23 = -1.0 / 7.0 + x * (1.0 / 9.0);
-  const double p45 = -1.0 / 11.0 + x * (1.0 / 13.0);
-  const double p67 = -1.0 / 15.0 + x * (1.0 / 17.0);
-  const double p89 = -1.0 / 19.0 + x * (1.0 / 21.0);
-  const double p03 = p01 + x2 * p23, p47 = p45 + x2 * p67;
-  const double q = (p03 + x4 * p47) + x8 * p89;
+  const double x = u * u, x2 = x * x, x4 = x2 * x2;
+  const double p01 = -0.33333333279254806 + x * 0.19999977258688625;
+  const double p23 = -0.14284151193630637 + x * 0.11071365021834943;
+  const double p45 = -0.0862467614446554 + x * 0.05048138509265249;
+  const double q = (p01 + x2 * p23) + x4 * p45;
   return u + u * x * q;
 }
 
-// atan2(y, x) for y >= 0 (a sine from a cross product's length), in [0, pi]. 0 when both are 0.
-// One division: with num <= den (octant folding), atan(num/den) is reduced by
+// atan2(y, x) for y >= 0 and x >= 0 (an angular radius from r and h), in [0, pi/2]; 0 when
+// both are 0. One division: with num <= den (octant folding), atan(num/den) is reduced by
 // atan(t) = pi/4 + atan((t-1)/(t+1)) = pi/4 + atan((num-den)/(num+den)) for t > tan(pi/8).
-[[gnu::always_inline]] inline double atan2_nonneg(double y, double x) {
+[[gnu::always_inline]] inline double atan2_first_quadrant(double y, double x) {
   constexpr double kTanPi8 = 0.41421356237309503;
-  const double ax = x < 0.0 ? -x : x;
-  const bool steep = y > ax;
-  const double num = steep ? ax : y;
-  const double den = steep ? y : ax;
+  const bool steep = y > x;
+  const double num = steep ? x : y;
+  const double den = steep ? y : x;
   // As a 0/1 factor, not a blend of the operands: GCC would otherwise push the blend past
   // the division and divide twice.
   const double big = num > kTanPi8 * den ? 1.0 : 0.0;
   // den == 0 implies num == 0 (num <= den): 0 / 1 gives angle 0 without a 0/0.
   const double top = num - big * den;
   const double bottom = (den > 0.0 ? den : 1.0) + big * num;
-  const double r = atan_small(top / bottom);
-  const double a = big * (std::numbers::pi / 4) + r;
-  const double a_steep = steep ? std::numbers::pi / 2 - a : a;
-  return x < 0.0 ? std::numbers::pi - a_steep : a_steep;
+  const double a = big * (std::numbers::pi / 4) + atan_small(top / bottom);
+  return steep ? std::numbers::pi / 2 - a : a;
+}
+
+// atan2(y, x) for y >= 0 (a sine from a cross product's length), in [0, pi].
+[[gnu::always_inline]] inline double atan2_nonneg(double y, double x) {
+  const double a = atan2_first_quadrant(y, x < 0.0 ? -x : x);
+  return x < 0.0 ? std::numbers::pi - a : a;
 }
 
 // log10(x) for a positive, normal, finite x (callers clamp: the selection calls it on
-// v clamped to [0.825, 200]). ln m by the atanh series on m in [sqrt(1/2), sqrt(2)]. The
-// exponent is turned into a double by the 2^52 trick (no int64 -> double conversion, which
-// AVX2 lacks), so the function vectorises.
+// v^2 clamped to [0.825^2, 200^2]). x = 2^e m with m in [sqrt(1/2), sqrt(2)], and
+// ln m = 2 y S(y^2), y = (m - 1) / (m + 1), S(z) = atanh(y) / y = 1 + z/3 + z^2/5 + ...
+// replaced by a degree-4 polynomial interpolating it at the Chebyshev nodes of
+// [0, ((sqrt2 - 1) / (sqrt2 + 1))^2] (|error in log10| < 7e-13; scripts/fit_fast_math.py).
+// The exponent is turned into a double by the 2^52 trick (no int64 -> double conversion,
+// which AVX2 lacks), so the function vectorises.
 [[gnu::always_inline]] inline double log10_normal(double x) {
   const std::uint64_t bits = std::bit_cast<std::uint64_t>(x);
   // bit pattern of 2^52 + biased exponent, as a double, minus 2^52 + 1023.
@@ -63,13 +67,13 @@ namespace gazelod::lod::fast {
   const double m = fold ? m_raw * 0.5 : m_raw;
   const double e = fold ? e_raw + 1.0 : e_raw;
   const double y = (m - 1.0) / (m + 1.0);
-  // atanh series 1 + z/3 + z^2/5 + ... + z^6/13 (z = y^2) by Estrin's scheme (short chain).
-  const double z = y * y, z2 = z * z, z4 = z2 * z2;
-  const double s01 = 1.0 + z * (1.0 / 3), s23 = 1.0 / 5 + z * (1.0 / 7),
-               s45 = 1.0 / 9 + z * (1.0 / 11);
-  const double s = (s01 + z2 * s23) + z4 * (s45 + z2 * (1.0 / 13));
-  const double ln = e * std::numbers::ln2 + 2.0 * y * s;
-  return ln * (1.0 / std::numbers::ln10);
+  // 2 S(z) / ln 10 by Estrin's scheme (a short dependency chain).
+  constexpr double k = 2.0 / std::numbers::ln10;
+  const double z = y * y, z2 = z * z;
+  const double s01 = k * 1.0000000000041798 + z * (k * 0.33333332623741235);
+  const double s23 = k * 0.20000192336301803 + z * (k * 0.14267525530381753);
+  const double s = (s01 + z2 * s23) + (z2 * z2) * (k * 0.11808179100683015);
+  return e * (std::numbers::ln2 / std::numbers::ln10) + y * s;
 }
 
 }  // namespace gazelod::lod::fast

@@ -69,7 +69,9 @@ void select_kernel_geometry(const KernelFrame& f, const KernelInput& in, std::si
     const double d2 = c_x * c_x + c_y * c_y + c_z * c_z;
     // '&' and '|', never '&&' / '||': a short circuit is a branch (or a bool phi GCC 12
     // cannot vectorise).
-    const bool ok = finite(d2) & finite(r) & (r >= 0.0) & finite(ovx) & finite(ovy) & finite(ovz);
+    // x * 0 is NaN exactly when x is not finite, so one comparison checks all three velocity
+    // components (and the radius) at once.
+    const bool ok = (d2 <= kMaxFinite) & (r >= 0.0) & (r * 0.0 + ovx * 0.0 + ovy * 0.0 + ovz * 0.0 == 0.0);
     // No sqrt for d itself: only h needs one (d^2 - r^2 by an FMA is as exact as (d-r)(d+r)
     // with a rounded d).
     const double r2 = r * r;
@@ -77,7 +79,7 @@ void select_kernel_geometry(const KernelFrame& f, const KernelInput& in, std::si
 
     // Angular radius alpha = atan2(r, h), h = sqrt(d^2 - r^2).
     const double h = std::sqrt(inside ? 0.0 : d2 - r2);
-    const double alpha = inside ? std::numbers::pi / 2 : fast::atan2_nonneg(r, h);
+    const double alpha = inside ? std::numbers::pi / 2 : fast::atan2_first_quadrant(r, h);
 
     // Gaze-to-centre angle phi: sin phi = |g x c| / d, cos phi = g.c / d. With sin alpha =
     // r / d and cos alpha = h / d, phi - alpha = atan2(sp h - cp r, cp h + sp r) (all times
@@ -107,19 +109,20 @@ void select_kernel_geometry(const KernelFrame& f, const KernelInput& in, std::si
     // G(v) on v^2 clamped into the log branch's range (log10 v = log10(v^2) / 2), then the
     // two flat pieces by blends.
     constexpr double kSeam2 = kVelocitySeamDps * kVelocitySeamDps, kCap2 = 200.0 * 200.0;
+    // Switched off: v = 0 (seed 000 section 6), so G = 60.
+    const double vel2_on = vel2 * on_v;
     const double v2_log = vel2 < kSeam2 ? kSeam2 : (vel2 > kCap2 ? kCap2 : vel2);
     const double g_log = kGIntercept - (0.5 * kGSlope) * fast::log10_normal(v2_log);
     const double g_clamped = g_log < 0.0 ? 0.0 : (g_log > kAcuityMaxCpd ? kAcuityMaxCpd : g_log);
-    const double g_raw = !(vel2 > kSeam2) ? kAcuityMaxCpd : (vel2 >= vel_zero2 ? 0.0 : g_clamped);
-    const double g = on_v * g_raw + (1.0 - on_v) * kAcuityMaxCpd;  // g_raw is finite
+    const double g = !(vel2_on > kSeam2) ? kAcuityMaxCpd : (vel2_on >= vel_zero2 ? 0.0 : g_clamped);
 
     // 1 / M(E) = max(1, (0.3 E + 1)^2 / 7.49) beyond the seam: no division (phase 2 moves
     // it to the other side of the comparison).
-    const double mq = kMSlope * ecc_deg + 1.0;
+    const double ecc_on = ecc_deg * on_e;  // switched off: E = 0, so 1 / M = 1
+    const double mq = kMSlope * ecc_on + 1.0;
     const double inv_m_branch = mq * mq * (1.0 / kMNumerator);
     const double inv_m_max = inv_m_branch > 1.0 ? inv_m_branch : 1.0;
-    const double inv_m_raw = ecc_deg > kEccentricitySeamDeg ? inv_m_max : 1.0;
-    const double inv_m = on_e * inv_m_raw + (1.0 - on_e);
+    const double inv_m = ecc_on > kEccentricitySeamDeg ? inv_m_max : 1.0;
 
     const double alpha_deg = alpha * kDegPerRad;
     // Squared threshold factors of both kinds (see select_kernel.hpp); phase 2 picks by kind.

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <sstream>
 
@@ -20,6 +21,7 @@ namespace gazelod::lod {
 namespace {
 
 constexpr double kDegPerRad = 180.0 / std::numbers::pi;
+constexpr double kMaxP2 = std::numeric_limits<double>::max();
 
 bool finite3(const glm::dvec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
@@ -60,24 +62,27 @@ void write_diagnostics(const detail::KernelBlock& b, std::size_t m, std::size_t 
 // The same rule as select_kernel_levels, scalar, for a chain longer than the rows hold.
 void decide_long_chain(const detail::KernelFrame& f, const detail::KernelBlock& b, std::size_t j,
                        std::span<const double> w, const Decisions& out, std::size_t i) {
-  if (b.p2_cycles[j] < 0.0) return;  // invalid geometry: phase 2 has marked it
+  if (!(b.p2_cycles[j] <= kMaxP2)) return;  // invalid geometry: phase 2 has marked it
   const double a0 = f.acuity_static_cpd, s = f.scale, xi = f.xi_cpd;
   const double p2 = b.kind_error[j] > 0.5 ? b.p2_error[j] : b.p2_cycles[j];
   const double floor_per_w = (1.0 + 4e-15) / a0;
-  const double p2_floor = w[1] * w[1] * floor_per_w * floor_per_w;
+  const double w1_2 = static_cast<float>(w[1] * w[1]);  // as the rows hold it
+  const double p2_floor = w1_2 * floor_per_w * floor_per_w;
   const double p2_off = p2 > p2_floor ? p2 : p2_floor;
-  const double g = b.g_cpd[j], inv_m = b.inv_m[j], xi_m = xi * inv_m;
-  const double av = s * std::min(g, xi), ae = s * std::min(kAcuityMaxCpd, xi_m),
-               ac = s * std::min(g, xi_m);
-  const double ts = a0 * a0 * p2, te = ae * ae * p2_off, tv = av * av * p2_off,
-               tc = ac * ac * (f.use_size ? p2 : p2_off);
+  const double g = b.g_cpd[j], m = 1.0 / b.inv_m[j];
+  const double av = s * std::min(g, xi), ae = s * std::min(kAcuityMaxCpd * m, xi),
+               ac = s * std::min(g * m, xi);
+  // Thresholds and weights compared in float, as select_kernel_levels does.
+  const float ts = static_cast<float>(a0 * a0 * p2), te = static_cast<float>(ae * ae * p2_off),
+              tv = static_cast<float>(av * av * p2_off),
+              tc = static_cast<float>(ac * ac * (f.use_size ? p2 : p2_off));
   unsigned ls = 0, le = 0, lv = 0, lc = 0;
   for (std::size_t k = 1; k < w.size(); ++k) {
-    const double w2 = w[k] * w[k], w2m = w2 * inv_m * inv_m;
+    const float w2 = static_cast<float>(w[k] * w[k]);
     ls += w2 > ts;
-    le += w2m > te;
+    le += w2 > te;
     lv += w2 > tv;
-    lc += w2m > tc;
+    lc += w2 > tc;
   }
   ls = f.use_size ? ls : 0;
   le = f.use_eccentricity ? le : 0;
@@ -158,7 +163,8 @@ std::string select_lods(const Viewer& viewer, const ObjectSet& o, const Decision
              diag_a = out.angular_radius_deg.size() >= n;
 
   const FrameConstants f = prepare_frame(viewer);
-  const detail::KernelFrame kf = kernel_frame(f);
+  detail::KernelFrame kf = kernel_frame(f);
+  kf.diagnostics = diag_e || diag_v || diag_a;
   const detail::KernelInput in{o.center_x_m.data(), o.center_y_m.data(), o.center_z_m.data(),
                                o.radius_m.data(),   moving ? o.vel_x_m_s.data() : nullptr,
                                moving ? o.vel_y_m_s.data() : nullptr,
@@ -174,6 +180,12 @@ std::string select_lods(const Viewer& viewer, const ObjectSet& o, const Decision
 
   for (std::size_t base = 0; base < n; base += detail::kSelectBlock) {
     const std::size_t m = std::min(detail::kSelectBlock, n - base);
+    if (base + m < n) {
+      const std::size_t nb = base + m, mb = std::min(detail::kSelectBlock, n - nb);
+      const std::size_t f0 = o.lod_first[nb], f1 = o.lod_first[nb + mb - 1] + o.lod_count[nb + mb - 1];
+      if (f0 < f1 && f1 <= n_weights)
+        for (std::size_t off = f0; off < f1; off += 8) __builtin_prefetch(w_all + off);
+    }
     detail::select_kernel_geometry(kf, in, base, m, blk);
 
     // Kinds and the chains' weights as rows: in bulk for back-to-back chains of one length,
@@ -198,7 +210,7 @@ std::string select_lods(const Viewer& viewer, const ObjectSet& o, const Decision
     for (std::size_t k = 0; k < rows && !regular; ++k) {  // row k: w_{k+1}^2
       for (std::size_t j = 0; j < m; ++j) {
         const double w = k + 1 < count_b[j] ? w_all[first_b[j] + k + 1] : 0.0;
-        blk.weight[k][j] = w * w;
+        blk.weight[k][j] = static_cast<float>(w * w);
       }
     }
     detail::select_kernel_levels(kf, m, rows, blk,

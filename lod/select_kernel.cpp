@@ -2,7 +2,7 @@
 // object so that GCC vectorises the loop (check with -fopt-info-vec). Conventions:
 //   - every "if" is a ternary (a blend), every helper is inlined (fast_math.hpp);
 //   - invalid objects are not skipped: their NaNs flow through and are replaced by 0 at
-//     the end, with p2_cycles = -1 telling phase 2 to give them level 0;
+//     the end, with p2_cycles = +inf telling phase 2 to give them level 0;
 //   - '&' and '|' instead of '&&' and '||', 0/1 factors instead of bool blends on
 //     loop-invariant flags, no byte-wide data (each of these stops GCC 12 vectorising);
 //   - divisions and square roots share one slow unit (per object: 4 divisions, 2 roots):
@@ -23,20 +23,19 @@ namespace {
 
 constexpr double kDegPerRad = 180.0 / std::numbers::pi;
 constexpr double kMaxFinite = std::numeric_limits<double>::max();
+constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // |x| <= max is false for NaN and +-inf, and vectorises (std::isfinite may not).
 [[gnu::always_inline]] inline bool finite(double x) { return std::fabs(x) <= kMaxFinite; }
 
 }  // namespace
 
-// The clones: baseline x86-64 (SSE2) for any CPU, x86-64-v3 (AVX2, FMA) and x86-64-v4
-// (AVX-512) where present. Dispatch happens once, at load time, through an ifunc (glibc).
-// -DGAZELOD_NO_CLONES builds the baseline only (to test it on a machine with AVX).
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GAZELOD_NO_CLONES)
-__attribute__((target_clones("default", "arch=x86-64-v3", "arch=x86-64-v4")))
-#endif
-void select_kernel_geometry(const KernelFrame& f, const KernelInput& in, std::size_t begin,
-                            std::size_t count, KernelBlock& out) {
+// The loop, twice: with the diagnostics (E, v^2, alpha) stored, and without (fewer blends
+// and stores, for callers that ask only for decisions).
+template <bool kDiagnostics>
+[[gnu::always_inline]] inline void geometry_loop(const KernelFrame& f, const KernelInput& in,
+                                                 std::size_t begin, std::size_t count,
+                                                 KernelBlock& out) {
   const double* __restrict cx = in.center_x_m + begin;
   const double* __restrict cy = in.center_y_m + begin;
   const double* __restrict cz = in.center_z_m + begin;
@@ -129,14 +128,28 @@ void select_kernel_geometry(const KernelFrame& f, const KernelInput& in, std::si
     // d = 0: inv_d2 = +inf, so p_error^2 = +inf (no level), as q = 0 in the unsquared rule.
     constexpr double kErrFactor = 360.0 / std::numbers::pi;
     const double p2_err = (kErrFactor * kErrFactor) * inv_d2;
-    out.ecc_deg[i] = ok ? ecc_deg : 0.0;
-    out.vel2_dps2[i] = ok ? vel2 : 0.0;
-    out.alpha_deg[i] = ok ? alpha_deg : 0.0;
-    out.p2_cycles[i] = ok ? 4.0 * alpha_deg * alpha_deg : -1.0;
-    out.p2_error[i] = ok ? p2_err : 0.0;
+    if constexpr (kDiagnostics) {
+      out.ecc_deg[i] = ok ? ecc_deg : 0.0;
+      out.vel2_dps2[i] = ok ? vel2 : 0.0;
+      out.alpha_deg[i] = ok ? alpha_deg : 0.0;
+    }
+    out.p2_cycles[i] = ok ? 4.0 * alpha_deg * alpha_deg : kInf;
+    out.p2_error[i] = ok ? p2_err : kInf;
     out.inv_m[i] = inv_m;
     out.g_cpd[i] = g;
   }
+}
+
+// The clones: baseline x86-64 (SSE2) for any CPU, x86-64-v3 (AVX2, FMA) and x86-64-v4
+// (AVX-512) where present. Dispatch happens once, at load time, through an ifunc (glibc).
+// -DGAZELOD_NO_CLONES builds the baseline only (to test it on a machine with AVX).
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GAZELOD_NO_CLONES)
+__attribute__((target_clones("default", "arch=x86-64-v3", "arch=x86-64-v4")))
+#endif
+void select_kernel_geometry(const KernelFrame& f, const KernelInput& in, std::size_t begin,
+                            std::size_t count, KernelBlock& out) {
+  if (f.diagnostics) geometry_loop<true>(f, in, begin, count, out);
+  else geometry_loop<false>(f, in, begin, count, out);
 }
 
 }  // namespace gazelod::lod::detail

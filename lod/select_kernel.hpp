@@ -41,6 +41,7 @@ struct KernelFrame {
   double vel_zero_dps;       // where G reaches 0
   double acuity_static_cpd;  // s min(60, xi): size alone
   bool use_size, use_eccentricity, use_velocity;
+  bool diagnostics;  // phase 1 stores ecc_deg, vel2_dps2 and alpha_deg (else unspecified)
 };
 
 // Structure-of-arrays input, indexed [begin, begin + count). vel_* all null: static objects.
@@ -51,25 +52,25 @@ struct KernelInput {
 
 struct KernelBlock {
   // Phase 1 (geometry). An object with non-finite data or a negative radius has
-  // p2_cycles = -1 (the flag phase 2 tests: no level, Criterion::invalid_input), ecc_deg,
-  // vel2_dps2, alpha_deg and p2_error 0, and inv_m and g_cpd unspecified (unused).
+  // p2_cycles = p2_error = +inf (every threshold +inf: no level; p2_cycles = +inf is the flag
+  // for Criterion::invalid_input, never a valid value), ecc_deg, vel2_dps2 and alpha_deg 0,
+  // and inv_m and g_cpd unspecified (unused).
   double ecc_deg[kSelectBlock];       // nearest point's eccentricity minus tracker error, >= 0
   double vel2_dps2[kSelectBlock];     // retinal velocity squared, >= 0 (may be +inf)
   double alpha_deg[kSelectBlock];     // angular radius, [0, 90]
-  double p2_cycles[kSelectBlock];     // (2 alpha_deg)^2
+  double p2_cycles[kSelectBlock];     // (2 alpha_deg)^2, <= 180^2
   double p2_error[kSelectBlock];      // (360 / (pi d))^2, +inf at d = 0
   double inv_m[kSelectBlock];         // 1 / M(E) >= 1 (1 with eccentricity switched off)
   double g_cpd[kSelectBlock];         // G(v) in [0, 60] (60 with velocity switched off)
   // Filled before phase 2 (select_kernel_rows_regular or select.cpp): non-zero for a
-  // geometric-error chain, else 0; row k - 1 holds each object's w_k^2, 0 past the end of its
-  // chain (0 is never above a threshold).
+  // geometric-error chain, else 0; row k - 1 holds each object's w_k^2 rounded to float, 0
+  // past the end of its chain (0 is never above a threshold).
   double kind_error[kSelectBlock];
-  double weight[kRowLevels][kSelectBlock];
-  // Phase 2 (levels), before it writes them as bytes: counts of allowed coarser levels (0
-  // for a switched-off criterion) and the Criterion value of the combined choice, as doubles
-  // (exact small integers).
-  double n_size[kSelectBlock], n_ecc[kSelectBlock], n_vel[kSelectBlock], n_comb[kSelectBlock];
-  double why[kSelectBlock];
+  float weight[kRowLevels][kSelectBlock];
+  // Phase 2 (levels): each criterion's squared threshold A^2 p^2 rounded to float (NaN or
+  // +inf where nothing is allowed), and 1 for an invalid object, else 0.
+  float t_size[kSelectBlock], t_ecc[kSelectBlock], t_vel[kSelectBlock], t_comb[kSelectBlock];
+  float invalid[kSelectBlock];
 };
 
 // Phase 1 for objects [begin, begin + count) into out[0, count); count <= kSelectBlock.

@@ -13,7 +13,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <numbers>
 #include <sstream>
 
@@ -21,7 +20,6 @@ namespace gazelod::lod {
 namespace {
 
 constexpr double kDegPerRad = 180.0 / std::numbers::pi;
-constexpr double kMaxP2 = std::numeric_limits<double>::max();
 
 bool finite3(const glm::dvec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
@@ -59,23 +57,12 @@ void write_diagnostics(const detail::KernelBlock& b, std::size_t m, std::size_t 
       out.angular_radius_deg[base + j] = static_cast<float>(b.alpha_deg[j]);
 }
 
-// The same rule as select_kernel_levels, scalar, for a chain longer than the rows hold.
+// The same counts as select_kernel_levels, scalar, for a chain longer than the rows hold,
+// against the thresholds phase 1 computed (its rows hold the chain's first levels).
 void decide_long_chain(const detail::KernelFrame& f, const detail::KernelBlock& b, std::size_t j,
                        std::span<const double> w, const Decisions& out, std::size_t i) {
-  if (!(b.p2_cycles[j] <= kMaxP2)) return;  // invalid geometry: phase 2 has marked it
-  const double a0 = f.acuity_static_cpd, s = f.scale, xi = f.xi_cpd;
-  const double p2 = b.kind_error[j] > 0.5 ? b.p2_error[j] : b.p2_cycles[j];
-  const double floor_per_w = (1.0 + 4e-15) / a0;
-  const double w1_2 = static_cast<float>(w[1] * w[1]);  // as the rows hold it
-  const double p2_floor = w1_2 * floor_per_w * floor_per_w;
-  const double p2_off = p2 > p2_floor ? p2 : p2_floor;
-  const double g = b.g_cpd[j], m = 1.0 / b.inv_m[j];
-  const double av = s * std::min(g, xi), ae = s * std::min(kAcuityMaxCpd * m, xi),
-               ac = s * std::min(g * m, xi);
-  // Thresholds and weights compared in float, as select_kernel_levels does.
-  const float ts = static_cast<float>(a0 * a0 * p2), te = static_cast<float>(ae * ae * p2_off),
-              tv = static_cast<float>(av * av * p2_off),
-              tc = static_cast<float>(ac * ac * (f.use_size ? p2 : p2_off));
+  if (b.invalid[j] > 0.5f) return;  // invalid geometry: phase 2 has marked it
+  const float ts = b.t_size[j], te = b.t_ecc[j], tv = b.t_vel[j], tc = b.t_comb[j];
   unsigned ls = 0, le = 0, lv = 0, lc = 0;
   for (std::size_t k = 1; k < w.size(); ++k) {
     const float w2 = static_cast<float>(w[k] * w[k]);
@@ -173,7 +160,7 @@ std::string select_lods(const Viewer& viewer, const ObjectSet& o, const Decision
   const double* w_all = o.level_weight.data();
   const detail::ChainInput chains{o.lod_first.data(), o.lod_count.data(), o.detail_kind.data(),
                                   w_all, n_weights};
-  detail::KernelBlock blk;  // about 21 KiB, reused per block
+  detail::KernelBlock blk;  // about 13 KiB, reused per block
   std::uint32_t first_b[detail::kSelectBlock];
   std::uint16_t count_b[detail::kSelectBlock];  // levels in the fast path (1 = none coarser)
   std::uint16_t bad[detail::kSelectBlock], slow[detail::kSelectBlock];
@@ -186,11 +173,11 @@ std::string select_lods(const Viewer& viewer, const ObjectSet& o, const Decision
       if (f0 < f1 && f1 <= n_weights)
         for (std::size_t off = f0; off < f1; off += 8) __builtin_prefetch(w_all + off);
     }
-    detail::select_kernel_geometry(kf, in, base, m, blk);
 
     // Kinds and the chains' weights as rows: in bulk for back-to-back chains of one length,
-    // else object by object. Chains out of range or too long for the rows run with one
-    // level (no coarser level) and are overwritten below.
+    // else object by object. Chains out of range run with one level (no coarser level) and
+    // are overwritten below; chains too long for the rows fill them with their first levels
+    // (row 0 feeds the size-off floor) and are recounted below.
     std::size_t n_bad = 0, n_slow = 0;
     std::size_t rows = detail::select_kernel_rows_regular(chains, base, m, blk);
     const bool regular = rows > 0;
@@ -203,7 +190,7 @@ std::string select_lods(const Viewer& viewer, const ObjectSet& o, const Decision
       if (!ok) [[unlikely]] bad[n_bad++] = static_cast<std::uint16_t>(j);
       else if (!fits) [[unlikely]] slow[n_slow++] = static_cast<std::uint16_t>(j);
       first_b[j] = static_cast<std::uint32_t>(first);
-      count_b[j] = static_cast<std::uint16_t>(ok && fits ? count : 1);
+      count_b[j] = static_cast<std::uint16_t>(!ok ? 1 : fits ? count : detail::kRowLevels + 1);
       rows = std::max<std::size_t>(rows, count_b[j] - 1u);
       blk.kind_error[j] = o.detail_kind[i] != DetailKind::removed_cycles_per_diameter ? 1.0 : 0.0;
     }
@@ -213,6 +200,7 @@ std::string select_lods(const Viewer& viewer, const ObjectSet& o, const Decision
         blk.weight[k][j] = static_cast<float>(w * w);
       }
     }
+    detail::select_kernel_geometry(kf, in, base, m, blk);
     detail::select_kernel_levels(kf, m, rows, blk,
                                  {out.lod.data() + base, out.limited_by.data() + base,
                                   out.lod_size_only.data() + base,

@@ -1,14 +1,14 @@
 // Phase 1 of the selection (see select_kernel.hpp): straight-line, branch-free arithmetic per
 // object so that GCC vectorises the loop (check with -fopt-info-vec). Conventions:
 //   - every "if" is a ternary (a blend), every helper is inlined (fast_math.hpp);
-//   - invalid objects are not skipped: their NaNs flow through and are replaced by 0 at
-//     the end, with p2_cycles = +inf telling phase 2 to give them level 0;
+//   - invalid objects are not skipped: their NaNs flow through and are replaced at the
+//     end by +inf thresholds (no level) and the invalid flag;
 //   - '&' and '|' instead of '&&' and '||', 0/1 factors instead of bool blends on
 //     loop-invariant flags, no byte-wide data (each of these stops GCC 12 vectorising);
-//   - divisions and square roots share one slow unit (per object: 4 divisions, 2 roots):
-//     one reciprocal 1 / d^2 is reused, d and v stay squared, the eccentricity phi - alpha
-//     is a single atan2 of the rotated (cos, sin) pair, M(E) is kept as 1 / M, and the
-//     levels compare squares against A^2 p^2 instead of dividing.
+//   - few divisions and square roots (per object: 5 divisions, 2 roots, on a unit of their
+//     own): one reciprocal 1 / d^2 is reused, d and v stay squared, the eccentricity
+//     phi - alpha is a single atan2 of the rotated (cos, sin) pair, and the levels compare
+//     squares against A^2 p^2 instead of dividing.
 #include "lod/select_kernel.hpp"
 
 #include "lod/acuity.hpp"
@@ -32,7 +32,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // The loop, twice: with the diagnostics (E, v^2, alpha) stored, and without (fewer blends
 // and stores, for callers that ask only for decisions).
-template <bool kDiagnostics>
+template <bool kDiagnostics, bool kUseSize>
 [[gnu::always_inline]] inline void geometry_loop(const KernelFrame& f, const KernelInput& in,
                                                  std::size_t begin, std::size_t count,
                                                  KernelBlock& out) {
@@ -57,6 +57,13 @@ template <bool kDiagnostics>
   // Switches as 0/1 factors, not bool blends: a loop-invariant bool mixed with the
   // double-width masks is a mask conversion GCC 12 does not vectorise.
   const double on_e = f.use_eccentricity ? 1.0 : 0.0, on_v = f.use_velocity ? 1.0 : 0.0;
+  const double a0 = f.acuity_static_cpd, s = f.scale, xi = f.xi_cpd, a0_2 = a0 * a0;
+  // Size switched off (seed 000 section 6): the object counts as no smaller than the size at
+  // which level 1 sits exactly at the static limit a0, i.e. p >= w_1 / a0. The factor puts
+  // the floor a few ulps above, so rounding never lets level 1 pass at A = a0 by size-off
+  // alone.
+  const double floor_per_w = kSizeOffMargin / a0;  // a0 > 0 for a valid Viewer
+  const double floor2_per_w2 = floor_per_w * floor_per_w;
 
   // The inputs are the caller's arrays, the outputs a block-local struct: they never
   // overlap, but 8 x 8 runtime alias checks are more than GCC will emit, so say it here.
@@ -115,28 +122,40 @@ template <bool kDiagnostics>
     const double g_clamped = g_log < 0.0 ? 0.0 : (g_log > kAcuityMaxCpd ? kAcuityMaxCpd : g_log);
     const double g = !(vel2_on > kSeam2) ? kAcuityMaxCpd : (vel2_on >= vel_zero2 ? 0.0 : g_clamped);
 
-    // 1 / M(E) = max(1, (0.3 E + 1)^2 / 7.49) beyond the seam: no division (phase 2 moves
-    // it to the other side of the comparison).
-    const double ecc_on = ecc_deg * on_e;  // switched off: E = 0, so 1 / M = 1
+    // M(E) = min(1, 7.49 / (0.3 E + 1)^2) beyond the seam (acuity.hpp).
+    const double ecc_on = ecc_deg * on_e;  // switched off: E = 0, so M = 1
     const double mq = kMSlope * ecc_on + 1.0;
-    const double inv_m_branch = mq * mq * (1.0 / kMNumerator);
-    const double inv_m_max = inv_m_branch > 1.0 ? inv_m_branch : 1.0;
-    const double inv_m = ecc_on > kEccentricitySeamDeg ? inv_m_max : 1.0;
+    const double m_branch = kMNumerator / (mq * mq);
+    const double m_min = m_branch < 1.0 ? m_branch : 1.0;
+    const double m = ecc_on > kEccentricitySeamDeg ? m_min : 1.0;
 
+    // The threshold factor p^2 of the object's kind (select_kernel.hpp); +inf for an invalid
+    // object, so that no level passes. d = 0: inv_d2 = +inf, so p_error^2 = +inf (no level),
+    // as q = 0 in the unsquared rule.
     const double alpha_deg = alpha * kDegPerRad;
-    // Squared threshold factors of both kinds (see select_kernel.hpp); phase 2 picks by kind.
-    // d = 0: inv_d2 = +inf, so p_error^2 = +inf (no level), as q = 0 in the unsquared rule.
     constexpr double kErrFactor = 360.0 / std::numbers::pi;
-    const double p2_err = (kErrFactor * kErrFactor) * inv_d2;
+    const double p2_kind = out.kind_error[i] > 0.5 ? (kErrFactor * kErrFactor) * inv_d2
+                                                   : 4.0 * alpha_deg * alpha_deg;
+    const double p2 = ok ? p2_kind : kInf;
+    // Size switched off: p no smaller than where level 1 sits at the static limit a0.
+    const double p2_floor = static_cast<double>(out.weight[0][i]) * floor2_per_w2;
+    const double p2_off = p2 > p2_floor ? p2 : p2_floor;
+    const double gm = g * m, em = kAcuityMaxCpd * m;
+    const double av = s * (g < xi ? g : xi);
+    const double ae = s * (em < xi ? em : xi);
+    const double ac = s * (gm < xi ? gm : xi);
+    // Rounded to float once (phase 2 compares in float); +inf stays +inf, and A = 0 with
+    // p = +inf gives NaN: no level either way.
+    out.t_size[i] = static_cast<float>(a0_2 * p2);
+    out.t_ecc[i] = static_cast<float>(ae * ae * p2_off);
+    out.t_vel[i] = static_cast<float>(av * av * p2_off);
+    out.t_comb[i] = static_cast<float>(ac * ac * (kUseSize ? p2 : p2_off));
+    out.invalid[i] = ok ? 0.0f : 1.0f;
     if constexpr (kDiagnostics) {
       out.ecc_deg[i] = ok ? ecc_deg : 0.0;
       out.vel2_dps2[i] = ok ? vel2 : 0.0;
       out.alpha_deg[i] = ok ? alpha_deg : 0.0;
     }
-    out.p2_cycles[i] = ok ? 4.0 * alpha_deg * alpha_deg : kInf;
-    out.p2_error[i] = ok ? p2_err : kInf;
-    out.inv_m[i] = inv_m;
-    out.g_cpd[i] = g;
   }
 }
 
@@ -148,8 +167,13 @@ __attribute__((target_clones("default", "arch=x86-64-v3", "arch=x86-64-v4")))
 #endif
 void select_kernel_geometry(const KernelFrame& f, const KernelInput& in, std::size_t begin,
                             std::size_t count, KernelBlock& out) {
-  if (f.diagnostics) geometry_loop<true>(f, in, begin, count, out);
-  else geometry_loop<false>(f, in, begin, count, out);
+  if (f.diagnostics) {
+    if (f.use_size) geometry_loop<true, true>(f, in, begin, count, out);
+    else geometry_loop<true, false>(f, in, begin, count, out);
+  } else {
+    if (f.use_size) geometry_loop<false, true>(f, in, begin, count, out);
+    else geometry_loop<false, false>(f, in, begin, count, out);
+  }
 }
 
 }  // namespace gazelod::lod::detail

@@ -1,12 +1,14 @@
 // The vectorised parts of select_lods (lod/select.cpp), per block of objects, on
 // block-local arrays:
-//   phase 1, select_kernel_geometry: E, v^2, alpha, the threshold factors p^2, 1 / M(E)
-//            and G(v) of every object (straight-line arithmetic, no branch);
+//   rows,    select_kernel_rows_regular (or select.cpp, object by object, for other
+//            layouts): each object's kind and its levels' squared weights, as rows;
+//   phase 1, select_kernel_geometry: E, v, alpha, G(v), M(E), the threshold factor p^2 of
+//            the object's kind, and each criterion's squared threshold A^2 p^2 (straight-line
+//            arithmetic in double, no branch);
 //   phase 2, select_kernel_levels: per object and criterion, how many coarser levels
-//            clear the acuity limit, and which criterion limits the combined choice.
-// Between the two, select_kernel_rows_regular (or select.cpp, object by object, for other
-// layouts) gathers the levels' squared weights into rows; select.cpp handles what the fast
-// path leaves out (chains out of range, chains longer than kRowLevels + 1 levels).
+//            clear the threshold, and which criterion limits the combined choice.
+// select.cpp handles what the fast path leaves out (chains out of range, chains longer than
+// kRowLevels + 1 levels).
 //
 // Why split: a data-dependent trip count, gathers and byte-wide data keep GCC from
 // vectorising; the phases avoid all three. Each is compiled for baseline x86-64, x86-64-v3
@@ -17,9 +19,11 @@
 // limit A when f_k = w_k / p > A, i.e. w_k > A p, with p = 1 / q the degrees per cycle per
 // unit weight: p = 2 alpha_deg (removed cycles per diameter) or 360 / (pi d) (geometric
 // error; +inf at d = 0, where no level is ever allowed). Both sides are >= 0, so the
-// comparison is done squared, w_k^2 > A^2 p^2: p^2 = 1 / d^2 needs no square root. For the
-// limits that contain M(E) both sides are multiplied by 1 / M: A / M = s min(G, xi / M).
-// No division per object or level after phase 1.
+// comparison is done squared, w_k^2 > A^2 p^2: p^2 = 1 / d^2 needs no square root, and no
+// division is left per level. Phase 2 compares in float: w_k^2 and A^2 p^2 are each rounded
+// to float once, and rounding is monotone, so float(a) > float(b) implies a > b; where the
+// two lie within float rounding (6e-8 relative) the float comparison may keep a finer level
+// than the exact rule, never a coarser one.
 #pragma once
 
 #include "lod/lod_chain.hpp"
@@ -50,30 +54,31 @@ struct KernelInput {
   const double *vel_x_m_s, *vel_y_m_s, *vel_z_m_s;
 };
 
+// Size switched off (seed 000 section 6): the object counts as no smaller than the size at
+// which level 1 sits exactly at the static limit a0, i.e. p >= w_1 / a0. The factor puts the
+// floor a few ulps above, so rounding never lets level 1 pass at A = a0 by size-off alone.
+inline constexpr double kSizeOffMargin = 1.0 + 4e-15;
+
 struct KernelBlock {
-  // Phase 1 (geometry). An object with non-finite data or a negative radius has
-  // p2_cycles = p2_error = +inf (every threshold +inf: no level; p2_cycles = +inf is the flag
-  // for Criterion::invalid_input, never a valid value), ecc_deg, vel2_dps2 and alpha_deg 0,
-  // and inv_m and g_cpd unspecified (unused).
-  double ecc_deg[kSelectBlock];       // nearest point's eccentricity minus tracker error, >= 0
-  double vel2_dps2[kSelectBlock];     // retinal velocity squared, >= 0 (may be +inf)
-  double alpha_deg[kSelectBlock];     // angular radius, [0, 90]
-  double p2_cycles[kSelectBlock];     // (2 alpha_deg)^2, <= 180^2
-  double p2_error[kSelectBlock];      // (360 / (pi d))^2, +inf at d = 0
-  double inv_m[kSelectBlock];         // 1 / M(E) >= 1 (1 with eccentricity switched off)
-  double g_cpd[kSelectBlock];         // G(v) in [0, 60] (60 with velocity switched off)
-  // Filled before phase 2 (select_kernel_rows_regular or select.cpp): non-zero for a
-  // geometric-error chain, else 0; row k - 1 holds each object's w_k^2 rounded to float, 0
-  // past the end of its chain (0 is never above a threshold).
+  // Rows, filled first (select_kernel_rows_regular or select.cpp): kind_error is non-zero
+  // for a geometric-error chain, else 0; row k - 1 holds each object's w_k^2 rounded to
+  // float, 0 past the end of its chain (0 is never above a threshold). Row 0 is always
+  // filled (phase 1 reads w_1^2 for the size-off floor).
   double kind_error[kSelectBlock];
   float weight[kRowLevels][kSelectBlock];
-  // Phase 2 (levels): each criterion's squared threshold A^2 p^2 rounded to float (NaN or
-  // +inf where nothing is allowed), and 1 for an invalid object, else 0.
+  // Phase 1: each criterion's squared threshold A^2 p^2 rounded to float (+inf, or NaN where
+  // A = 0 and p = +inf: nothing passes either way), and 1 for an invalid object (non-finite
+  // data or a negative radius: thresholds +inf, Criterion::invalid_input), else 0.
   float t_size[kSelectBlock], t_ecc[kSelectBlock], t_vel[kSelectBlock], t_comb[kSelectBlock];
   float invalid[kSelectBlock];
+  // Phase 1, only with KernelFrame::diagnostics (else unspecified); 0 for an invalid object.
+  double ecc_deg[kSelectBlock];    // nearest point's eccentricity minus tracker error, >= 0
+  double vel2_dps2[kSelectBlock];  // retinal velocity squared, >= 0 (may be +inf)
+  double alpha_deg[kSelectBlock];  // angular radius, [0, 90]
 };
 
 // Phase 1 for objects [begin, begin + count) into out[0, count); count <= kSelectBlock.
+// The rows (kind_error, weight[0]) must be filled first.
 void select_kernel_geometry(const KernelFrame& frame, const KernelInput& in, std::size_t begin,
                             std::size_t count, KernelBlock& out);
 
@@ -98,9 +103,8 @@ struct LevelOutput {
   std::uint8_t *lod, *limited_by, *size_only, *eccentricity_only, *velocity_only;
 };
 
-// Phase 2 over blk[0, count), rows 0 .. rows - 1 of weight (1 <= rows <= kRowLevels; row 0
-// is read even where no chain has a coarser level, so it must be filled).
+// Phase 2 over blk[0, count), rows 0 .. rows - 1 of weight (1 <= rows <= kRowLevels).
 void select_kernel_levels(const KernelFrame& frame, std::size_t count, std::size_t rows,
-                          KernelBlock& blk, const LevelOutput& out);
+                          const KernelBlock& blk, const LevelOutput& out);
 
 }  // namespace gazelod::lod::detail

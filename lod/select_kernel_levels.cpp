@@ -1,8 +1,7 @@
-// Phase 2 of the selection (see select_kernel.hpp): per object, the squared threshold
-// A^2 p^2 of each criterion, the count of rows with w_k^2 > A^2 p^2, and which criterion
-// limits the combined choice: thresholds in double, comparisons and counts in float (exact
-// small integers), each loop of one element width so that GCC vectorises it without mask
-// conversions.
+// Filling the rows (before phase 1), and phase 2 of the selection (see select_kernel.hpp):
+// per object, the count of rows with w_k^2 above each criterion's threshold A^2 p^2, and
+// which criterion limits the combined choice; comparisons and counts in float (exact small
+// integers), so that GCC vectorises the loop 16 objects wide without mask conversions.
 #include "lod/select_kernel.hpp"
 
 #include "lod/acuity.hpp"
@@ -12,41 +11,6 @@
 
 namespace gazelod::lod::detail {
 namespace {
-
-// Size switched off (seed 000 section 6): the object counts as no smaller than the size at
-// which level 1 sits exactly at the static limit a0, i.e. p >= w_1 / a0. The factor puts the
-// floor a few ulps above, so rounding never lets level 1 pass at A = a0 by size-off alone.
-constexpr double kSizeOffMargin = 1.0 + 4e-15;
-
-// The squared thresholds of the four criteria, in double, rounded to float once.
-template <bool kUseSize>
-[[gnu::always_inline]] inline void thresholds(const KernelFrame& f, std::size_t count,
-                                              KernelBlock& b) {
-  const double a0 = f.acuity_static_cpd, s = f.scale, xi = f.xi_cpd;
-  const double a0_2 = a0 * a0;
-  const double floor_per_w = kSizeOffMargin / a0;  // a0 > 0 for a valid Viewer
-  const double floor2_per_w2 = floor_per_w * floor_per_w;
-  constexpr double kInf = std::numeric_limits<double>::infinity();
-  for (std::size_t j = 0; j < count; ++j) {
-    const double p2 = b.kind_error[j] > 0.5 ? b.p2_error[j] : b.p2_cycles[j];
-    const double p2_floor = static_cast<double>(b.weight[0][j]) * floor2_per_w2;
-    const double p2_off = p2 > p2_floor ? p2 : p2_floor;
-    // M(E) itself (one division per object, on the otherwise idle divider): every threshold
-    // is then compared with w^2 directly.
-    const double g = b.g_cpd[j], m = 1.0 / b.inv_m[j];
-    const double gm = g * m, em = kAcuityMaxCpd * m;
-    const double av = s * (g < xi ? g : xi);
-    const double ae = s * (em < xi ? em : xi);
-    const double ac = s * (gm < xi ? gm : xi);
-    // An invalid object has p2 = +inf: every threshold is +inf (or NaN where A = 0), so no
-    // level.
-    b.t_size[j] = static_cast<float>(a0_2 * p2);
-    b.t_ecc[j] = static_cast<float>(ae * ae * p2_off);
-    b.t_vel[j] = static_cast<float>(av * av * p2_off);
-    b.t_comb[j] = static_cast<float>(ac * ac * (kUseSize ? p2 : p2_off));
-    b.invalid[j] = b.p2_cycles[j] == kInf ? 1.0f : 0.0f;
-  }
-}
 
 // Counts of rows with w_k^2 > threshold, in float: 16 objects per AVX-512 vector. Rounding
 // both sides to float is monotone, so float(a) > float(b) implies a > b: a float comparison
@@ -154,10 +118,8 @@ std::size_t select_kernel_rows_regular(const ChainInput& in, std::size_t begin, 
 __attribute__((target_clones("default", "arch=x86-64-v3", "arch=x86-64-v4")))
 #endif
 void select_kernel_levels(const KernelFrame& frame, std::size_t count, std::size_t rows,
-                          KernelBlock& blk, const LevelOutput& out) {
+                          const KernelBlock& blk, const LevelOutput& out) {
   static_assert(kRowLevels == 7, "the switch below lists rows 1..kRowLevels");
-  if (frame.use_size) thresholds<true>(frame, count, blk);
-  else thresholds<false>(frame, count, blk);
   switch (rows) {
 #define GAZELOD_ROWS(R) \
   case R: count_levels<R>(frame, count, blk, out); break;

@@ -3,7 +3,7 @@
 // ternaries only (no early return, no data-dependent branch) so that GCC vectorises the loops
 // that inline them. Both keep relative precision near zero (an angle of 1e-7 rad stays
 // 1e-7 rad), unlike acos of a dot product.
-// Accuracy: atan2 within 2e-10 rad, log10 within 1e-12 (tests/lod/fast_math_test.cpp).
+// Accuracy: atan within 1e-10 rad, log10 within 1e-12 (tests/lod/fast_math_test.cpp).
 #pragma once
 
 #include <bit>
@@ -26,28 +26,26 @@ namespace gazelod::lod::fast {
   return u + u * x * q;
 }
 
-// atan2(y, x) for y >= 0 and x >= 0 (an angular radius from r and h), in [0, pi/2]; 0 when
-// both are 0. One division: with num <= den (octant folding), atan(num/den) is reduced by
-// atan(t) = pi/4 + atan((t-1)/(t+1)) = pi/4 + atan((num-den)/(num+den)) for t > tan(pi/8).
-[[gnu::always_inline]] inline double atan2_first_quadrant(double y, double x) {
+// atan(num / den) for 0 <= num <= den, den > 0 (NaN at den = 0): in [0, pi/4]. One
+// division: above tan(pi/8) the ratio t is reduced by atan t = pi/4 + atan((t-1)/(t+1)),
+// formed from num and den before dividing.
+[[gnu::always_inline]] inline double atan_unit_ratio(double num, double den) {
   constexpr double kTanPi8 = 0.41421356237309503;
-  const bool steep = y > x;
-  const double num = steep ? x : y;
-  const double den = steep ? y : x;
   // As a 0/1 factor, not a blend of the operands: GCC would otherwise push the blend past
   // the division and divide twice.
   const double big = num > kTanPi8 * den ? 1.0 : 0.0;
-  // den == 0 implies num == 0 (num <= den): 0 / 1 gives angle 0 without a 0/0.
   const double top = num - big * den;
-  const double bottom = (den > 0.0 ? den : 1.0) + big * num;
-  const double a = big * (std::numbers::pi / 4) + atan_small(top / bottom);
-  return steep ? std::numbers::pi / 2 - a : a;
+  const double bottom = den + big * num;
+  return big * (std::numbers::pi / 4) + atan_small(top / bottom);
 }
 
-// atan2(y, x) for y >= 0 (a sine from a cross product's length), in [0, pi].
-[[gnu::always_inline]] inline double atan2_nonneg(double y, double x) {
-  const double a = atan2_first_quadrant(y, x < 0.0 ? -x : x);
-  return x < 0.0 ? std::numbers::pi - a : a;
+// atan2(y, x) for y >= 0 when the length n = |(x, y)| is known: by the half-angle formula
+// atan2(y, x) = 2 atan(y / (n + x)) for x >= 0 and pi - 2 atan(y / (n - x)) for x < 0, both
+// ratios in [0, 1] and both sums free of cancellation, so no octant swap is needed. In
+// [0, pi]; NaN when n = 0. Keeps relative precision near zero (1e-7 rad stays 1e-7 rad).
+[[gnu::always_inline]] inline double atan2_with_norm(double y, double x, double n) {
+  const double half = atan_unit_ratio(y, n + (x < 0.0 ? -x : x));
+  return x < 0.0 ? std::numbers::pi - 2.0 * half : 2.0 * half;
 }
 
 // log10(x) for a positive, normal, finite x (callers clamp: the selection calls it on

@@ -61,8 +61,9 @@ void write_diagnostics(const detail::KernelBlock& b, std::size_t m, std::size_t 
 // against the thresholds phase 1 computed (its rows hold the chain's first levels).
 void decide_long_chain(const detail::KernelFrame& f, const detail::KernelBlock& b, std::size_t j,
                        std::span<const double> w, const Decisions& out, std::size_t i) {
-  if (b.invalid[j] > 0.5f) return;  // invalid geometry: phase 2 has marked it
-  const float ts = b.t_size[j], te = b.t_ecc[j], tv = b.t_vel[j], tc = b.t_comb[j];
+  if (b.invalid[j] > 0.5) return;  // invalid geometry: phase 2 has marked it
+  const float ts = static_cast<float>(b.t_size[j]), te = static_cast<float>(b.t_ecc[j]),
+              tv = static_cast<float>(b.t_vel[j]), tc = static_cast<float>(b.t_comb[j]);
   unsigned ls = 0, le = 0, lv = 0, lc = 0;
   for (std::size_t k = 1; k < w.size(); ++k) {
     const float w2 = static_cast<float>(w[k] * w[k]);
@@ -198,6 +199,7 @@ std::string select_lods(const Viewer& viewer, const ObjectSet& o, const Decision
       for (std::size_t j = 0; j < m; ++j) {
         const double w = k + 1 < count_b[j] ? w_all[first_b[j] + k + 1] : 0.0;
         blk.weight[k][j] = static_cast<float>(w * w);
+        if (k == 0) blk.w1_sq[j] = w * w;
       }
     }
     detail::select_kernel_geometry(kf, in, base, m, blk);

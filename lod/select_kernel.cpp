@@ -5,7 +5,7 @@
 //     end by +inf thresholds (no level) and the invalid flag;
 //   - '&' and '|' instead of '&&' and '||', 0/1 factors instead of bool blends on
 //     loop-invariant flags, no byte-wide data (each of these stops GCC 12 vectorising);
-//   - few divisions and square roots (per object: 5 divisions, 2 roots, on a unit of their
+//   - few divisions and square roots (per object: 5 divisions, 3 roots, on a unit of their
 //     own): one reciprocal 1 / d^2 is reused, d and v stay squared, the eccentricity
 //     phi - alpha is a single atan2 of the rotated (cos, sin) pair, and the levels compare
 //     squares against A^2 p^2 instead of dividing.
@@ -78,26 +78,26 @@ template <bool kDiagnostics, bool kUseSize>
     // x * 0 is NaN exactly when x is not finite, so one comparison checks all three velocity
     // components (and the radius) at once.
     const bool ok = (d2 <= kMaxFinite) & (r >= 0.0) & (r * 0.0 + ovx * 0.0 + ovy * 0.0 + ovz * 0.0 == 0.0);
-    // No sqrt for d itself: only h needs one (d^2 - r^2 by an FMA is as exact as (d-r)(d+r)
-    // with a rounded d).
     const double r2 = r * r;
     const bool inside = !(d2 > r2);
 
-    // Angular radius alpha = atan2(r, h), h = sqrt(d^2 - r^2).
+    // Angular radius alpha = atan2(r, h), h = sqrt(d^2 - r^2) (by an FMA, as exact as
+    // (d-r)(d+r)), by the half-angle form with the length d: 2 atan(r / (d + h)), a ratio in
+    // [0, 1] (fast_math.hpp).
     const double h = std::sqrt(inside ? 0.0 : d2 - r2);
-    const double alpha = inside ? std::numbers::pi / 2 : fast::atan2_first_quadrant(r, h);
+    const double d = std::sqrt(d2);
+    const double alpha = inside ? std::numbers::pi / 2 : 2.0 * fast::atan_unit_ratio(r, d + h);
 
     // Gaze-to-centre angle phi: sin phi = |g x c| / d, cos phi = g.c / d. With sin alpha =
     // r / d and cos alpha = h / d, phi - alpha = atan2(sp h - cp r, cp h + sp r) (all times
-    // d^2): one atan2, still exact for tiny angles. Negative sine: the gaze ray passes
-    // through the sphere (E = 0).
+    // d^2, so the pair's length is d^2): one atan2, still exact for tiny angles. Negative
+    // sine: the gaze ray passes through the sphere (E = 0); sine 0 with a negative cosine is
+    // a point straight behind the eye (pi).
     const double kx = gy * c_z - gz * c_y, ky = gz * c_x - gx * c_z, kz = gx * c_y - gy * c_x;
     const double sp = std::sqrt(kx * kx + ky * ky + kz * kz);
     const double cp = gx * c_x + gy * c_y + gz * c_z;
     const double sin_e = sp * h - cp * r, cos_e = cp * h + sp * r;
-    // sin_e = 0 with cos_e < 0 is phi - alpha = pi (a point straight behind the eye).
-    const bool off_ray = (sin_e > 0.0) | ((sin_e == 0.0) & (cos_e < 0.0));
-    const double ecc_rad = off_ray ? fast::atan2_nonneg(sin_e, cos_e) - err : 0.0;
+    const double ecc_rad = sin_e >= 0.0 ? fast::atan2_with_norm(sin_e, cos_e, d2) - err : 0.0;
     const double ecc_deg = (!inside & (ecc_rad > 0.0)) ? ecc_rad * kDegPerRad : 0.0;
 
     // Retinal velocity: w = c x (v_obj - v_eye) / d^2 - w_gaze, speed^2 = |w x c|^2 / d^2
@@ -138,19 +138,18 @@ template <bool kDiagnostics, bool kUseSize>
                                                    : 4.0 * alpha_deg * alpha_deg;
     const double p2 = ok ? p2_kind : kInf;
     // Size switched off: p no smaller than where level 1 sits at the static limit a0.
-    const double p2_floor = static_cast<double>(out.weight[0][i]) * floor2_per_w2;
+    const double p2_floor = out.w1_sq[i] * floor2_per_w2;
     const double p2_off = p2 > p2_floor ? p2 : p2_floor;
     const double gm = g * m, em = kAcuityMaxCpd * m;
     const double av = s * (g < xi ? g : xi);
     const double ae = s * (em < xi ? em : xi);
     const double ac = s * (gm < xi ? gm : xi);
-    // Rounded to float once (phase 2 compares in float); +inf stays +inf, and A = 0 with
-    // p = +inf gives NaN: no level either way.
-    out.t_size[i] = static_cast<float>(a0_2 * p2);
-    out.t_ecc[i] = static_cast<float>(ae * ae * p2_off);
-    out.t_vel[i] = static_cast<float>(av * av * p2_off);
-    out.t_comb[i] = static_cast<float>(ac * ac * (kUseSize ? p2 : p2_off));
-    out.invalid[i] = ok ? 0.0f : 1.0f;
+    // +inf stays +inf, and A = 0 with p = +inf gives NaN: no level either way.
+    out.t_size[i] = a0_2 * p2;
+    out.t_ecc[i] = ae * ae * p2_off;
+    out.t_vel[i] = av * av * p2_off;
+    out.t_comb[i] = ac * ac * (kUseSize ? p2 : p2_off);
+    out.invalid[i] = ok ? 0.0 : 1.0;
     if constexpr (kDiagnostics) {
       out.ecc_deg[i] = ok ? ecc_deg : 0.0;
       out.vel2_dps2[i] = ok ? vel2 : 0.0;

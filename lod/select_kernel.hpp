@@ -61,16 +61,19 @@ inline constexpr double kSizeOffMargin = 1.0 + 4e-15;
 
 struct KernelBlock {
   // Rows, filled first (select_kernel_rows_regular or select.cpp): kind_error is non-zero
-  // for a geometric-error chain, else 0; row k - 1 holds each object's w_k^2 rounded to
-  // float, 0 past the end of its chain (0 is never above a threshold). Row 0 is always
-  // filled (phase 1 reads w_1^2 for the size-off floor).
+  // for a geometric-error chain, else 0; w1_sq is w_1^2 (0 without a coarser level), for
+  // phase 1's size-off floor; row k - 1 holds each object's w_k^2 rounded to float, 0 past
+  // the end of its chain (0 is never above a threshold).
   double kind_error[kSelectBlock];
+  double w1_sq[kSelectBlock];
   float weight[kRowLevels][kSelectBlock];
-  // Phase 1: each criterion's squared threshold A^2 p^2 rounded to float (+inf, or NaN where
-  // A = 0 and p = +inf: nothing passes either way), and 1 for an invalid object (non-finite
-  // data or a negative radius: thresholds +inf, Criterion::invalid_input), else 0.
-  float t_size[kSelectBlock], t_ecc[kSelectBlock], t_vel[kSelectBlock], t_comb[kSelectBlock];
-  float invalid[kSelectBlock];
+  // Phase 1: each criterion's squared threshold A^2 p^2 (+inf, or NaN where A = 0 and
+  // p = +inf: nothing passes either way; phase 2 rounds them to float), and 1 for an invalid
+  // object (non-finite data or a negative radius: thresholds +inf,
+  // Criterion::invalid_input), else 0. Doubles, so that phase 1 has one element width (a
+  // float output would make GCC run it 16 objects wide, in twice the registers).
+  double t_size[kSelectBlock], t_ecc[kSelectBlock], t_vel[kSelectBlock], t_comb[kSelectBlock];
+  double invalid[kSelectBlock];
   // Phase 1, only with KernelFrame::diagnostics (else unspecified); 0 for an invalid object.
   double ecc_deg[kSelectBlock];    // nearest point's eccentricity minus tracker error, >= 0
   double vel2_dps2[kSelectBlock];  // retinal velocity squared, >= 0 (may be +inf)
@@ -78,7 +81,7 @@ struct KernelBlock {
 };
 
 // Phase 1 for objects [begin, begin + count) into out[0, count); count <= kSelectBlock.
-// The rows (kind_error, weight[0]) must be filled first.
+// The rows (kind_error, w1_sq) must be filled first.
 void select_kernel_geometry(const KernelFrame& frame, const KernelInput& in, std::size_t begin,
                             std::size_t count, KernelBlock& out);
 

@@ -30,7 +30,8 @@ template <std::size_t kRows>
   std::uint8_t* only_v = out.velocity_only;
 #pragma GCC ivdep
   for (std::size_t j = 0; j < count; ++j) {
-    const float ts = b.t_size[j], te = b.t_ecc[j], tv = b.t_vel[j], tc = b.t_comb[j];
+    const float ts = static_cast<float>(b.t_size[j]), te = static_cast<float>(b.t_ecc[j]),
+                tv = static_cast<float>(b.t_vel[j]), tc = static_cast<float>(b.t_comb[j]);
     // Comparisons are false for NaN thresholds (A = 0 with p = inf): no level, as w * 0 > 0.
     float ns = 0.0f, ne = 0.0f, nv = 0.0f, nc = 0.0f;
     for (std::size_t k = 0; k < kRows; ++k) {
@@ -49,7 +50,7 @@ template <std::size_t kRows>
     why = nc == ne ? 2.0f : why;
     why = nc == ns ? 1.0f : why;
     why = nc == 0.0f ? 0.0f : why;
-    why = b.invalid[j] > 0.5f ? 5.0f : why;  // Criterion::invalid_input
+    why = b.invalid[j] > 0.5 ? 5.0f : why;  // Criterion::invalid_input
     // Exact small integers: float -> int32 -> uint8.
     lod[j] = static_cast<std::uint8_t>(static_cast<std::int32_t>(nc));
     limited[j] = static_cast<std::uint8_t>(static_cast<std::int32_t>(why));
@@ -64,11 +65,13 @@ template <std::size_t kRows>
 template <std::size_t kLen>
 [[gnu::always_inline]] inline void fill_rows(const double* w, std::size_t count, KernelBlock& blk) {
   static_assert(kLen >= 2 && kLen <= kRowLevels + 1);
-  for (std::size_t j = 0; j < count; ++j)
+  for (std::size_t j = 0; j < count; ++j) {
+    blk.w1_sq[j] = w[j * kLen + 1] * w[j * kLen + 1];
     for (std::size_t k = 1; k < kLen; ++k) {
       const double wk = w[j * kLen + k];
       blk.weight[k - 1][j] = static_cast<float>(wk * wk);
     }
+  }
 }
 
 }  // namespace
@@ -108,7 +111,7 @@ std::size_t select_kernel_rows_regular(const ChainInput& in, std::size_t begin, 
     case 7: fill_rows<7>(w, count, blk); break;
     case 8: fill_rows<8>(w, count, blk); break;
     default:  // one level: no coarser one, row 0 all zero
-      for (std::size_t j = 0; j < count; ++j) blk.weight[0][j] = 0.0f;
+      for (std::size_t j = 0; j < count; ++j) blk.weight[0][j] = 0.0f, blk.w1_sq[j] = 0.0;
       return 1;
   }
   return len - 1;

@@ -13,6 +13,12 @@ double level_weight(const LodLevel& level) {
                                                                       : 1.0 / level.detail;
 }
 
+float level_weight_f(const LodLevel& level) {
+  const double w = level_weight(level);
+  const float f = static_cast<float>(w);
+  return static_cast<double>(f) > w ? std::nextafter(f, 0.0f) : f;
+}
+
 std::string validate_chain(std::span<const LodLevel> levels) {
   std::ostringstream m;
   if (levels.empty() || levels.size() > 255) {
@@ -27,6 +33,11 @@ std::string validate_chain(std::span<const LodLevel> levels) {
     }
     if (!std::isfinite(l.detail) || !(l.detail > 0.0)) {
       m << "level " << k << ": detail must be finite and > 0, got " << l.detail;
+      return m.str();
+    }
+    if (const double w = level_weight(l); !(w >= kMinLevelWeight && w <= kMaxLevelWeight)) {
+      m << "level " << k << ": detail " << l.detail << " gives a weight of " << w
+        << ", outside [" << kMinLevelWeight << ", " << kMaxLevelWeight << "]";
       return m.str();
     }
     if (k >= 2 && level_weight(l) > level_weight(levels[k - 1])) {
@@ -99,7 +110,7 @@ std::uint32_t ObjectStore::add(const glm::dvec3& c, double radius_m, const glm::
   kind_.push_back(levels[0].detail_kind);
   first_.push_back(static_cast<std::uint32_t>(weight_.size()));
   count_.push_back(static_cast<std::uint8_t>(levels.size()));
-  for (const LodLevel& l : levels) weight_.push_back(level_weight(l));
+  for (const LodLevel& l : levels) weight_.push_back(level_weight_f(l));
   return id;
 }
 

@@ -24,21 +24,29 @@ struct ObjectSet {
   std::span<const std::uint32_t> lod_first;  // per object, index into level_weight
   std::span<const std::uint8_t> lod_count;   // per object, levels in the chain (1..255)
   // Per level: removed cycles per object diameter, or 1 / geometric error (1/m); level 0's
-  // entry is ignored (full detail is always allowed). Non-increasing along a chain.
-  std::span<const double> level_weight;
+  // entry is ignored (full detail is always allowed). Non-increasing along a chain. Float:
+  // half the memory traffic of the selection's largest array; ObjectStore rounds towards
+  // zero (level_weight_f), so a stored weight never allows a coarser level than the exact one.
+  std::span<const float> level_weight;
 
   std::size_t size() const { return radius_m.size(); }
 };
 
 // The weight a level contributes (see ObjectSet::level_weight); 0 for a zero detail.
 double level_weight(const LodLevel& level);
+// The same, as stored: rounded towards zero to float.
+float level_weight_f(const LodLevel& level);
+
+// Weights a chain may have (validate_chain): well inside float's normal range.
+inline constexpr double kMinLevelWeight = 1e-30, kMaxLevelWeight = 1e30;
 
 // "" when the set is consistent (span sizes, finite non-negative numbers, chains in range
 // and ordered), else a message naming the first bad object and field.
 std::string validate_objects(const ObjectSet& objects);
 
-// "" for a valid chain: 1..255 levels, one kind, detail finite and > 0 from level 1 on,
-// removed cycles non-increasing / geometric error non-decreasing towards coarser levels.
+// "" for a valid chain: 1..255 levels, one kind, detail finite and > 0 from level 1 on with a
+// weight in [kMinLevelWeight, kMaxLevelWeight], removed cycles non-increasing / geometric
+// error non-decreasing towards coarser levels.
 std::string validate_chain(std::span<const LodLevel> levels);
 
 // Owns the arrays behind an ObjectSet. add() throws std::invalid_argument with the reason.
@@ -52,7 +60,8 @@ class ObjectStore {
   ObjectSet view() const;
 
  private:
-  std::vector<double> cx_, cy_, cz_, radius_, vx_, vy_, vz_, weight_;
+  std::vector<double> cx_, cy_, cz_, radius_, vx_, vy_, vz_;
+  std::vector<float> weight_;
   std::vector<DetailKind> kind_;
   std::vector<std::uint32_t> first_;
   std::vector<std::uint8_t> count_;

@@ -60,13 +60,13 @@ void write_diagnostics(const detail::KernelBlock& b, std::size_t m, std::size_t 
 // The same counts as select_kernel_levels, scalar, for a chain longer than the rows hold,
 // against the thresholds phase 1 computed (its rows hold the chain's first levels).
 void decide_long_chain(const detail::KernelFrame& f, const detail::KernelBlock& b, std::size_t j,
-                       std::span<const double> w, const Decisions& out, std::size_t i) {
+                       std::span<const float> w, const Decisions& out, std::size_t i) {
   if (b.invalid[j] > 0.5) return;  // invalid geometry: phase 2 has marked it
   const float ts = static_cast<float>(b.t_size[j]), te = static_cast<float>(b.t_ecc[j]),
               tv = static_cast<float>(b.t_vel[j]), tc = static_cast<float>(b.t_comb[j]);
   unsigned ls = 0, le = 0, lv = 0, lc = 0;
   for (std::size_t k = 1; k < w.size(); ++k) {
-    const float w2 = static_cast<float>(w[k] * w[k]);
+    const float w2 = w[k] * w[k];
     ls += w2 > ts;
     le += w2 > te;
     lv += w2 > tv;
@@ -158,7 +158,7 @@ std::string select_lods(const Viewer& viewer, const ObjectSet& o, const Decision
                                moving ? o.vel_y_m_s.data() : nullptr,
                                moving ? o.vel_z_m_s.data() : nullptr};
   const std::size_t n_weights = o.level_weight.size();
-  const double* w_all = o.level_weight.data();
+  const float* w_all = o.level_weight.data();
   const detail::ChainInput chains{o.lod_first.data(), o.lod_count.data(), o.detail_kind.data(),
                                   w_all, n_weights};
   detail::KernelBlock blk;  // about 13 KiB, reused per block
@@ -172,7 +172,7 @@ std::string select_lods(const Viewer& viewer, const ObjectSet& o, const Decision
       const std::size_t nb = base + m, mb = std::min(detail::kSelectBlock, n - nb);
       const std::size_t f0 = o.lod_first[nb], f1 = o.lod_first[nb + mb - 1] + o.lod_count[nb + mb - 1];
       if (f0 < f1 && f1 <= n_weights)
-        for (std::size_t off = f0; off < f1; off += 8) __builtin_prefetch(w_all + off);
+        for (std::size_t off = f0; off < f1; off += 16) __builtin_prefetch(w_all + off);
     }
 
     // Kinds and the chains' weights as rows: in bulk for back-to-back chains of one length,
@@ -197,9 +197,9 @@ std::string select_lods(const Viewer& viewer, const ObjectSet& o, const Decision
     }
     for (std::size_t k = 0; k < rows && !regular; ++k) {  // row k: w_{k+1}^2
       for (std::size_t j = 0; j < m; ++j) {
-        const double w = k + 1 < count_b[j] ? w_all[first_b[j] + k + 1] : 0.0;
-        blk.weight[k][j] = static_cast<float>(w * w);
-        if (k == 0) blk.w1_sq[j] = w * w;
+        const float w = k + 1 < count_b[j] ? w_all[first_b[j] + k + 1] : 0.0f;
+        blk.weight[k][j] = w * w;
+        if (k == 0) blk.w1_sq[j] = static_cast<double>(w) * w;
       }
     }
     detail::select_kernel_geometry(kf, in, base, m, blk);

@@ -90,7 +90,7 @@ struct ChainInput {
   const std::uint32_t* lod_first;
   const std::uint8_t* lod_count;
   const DetailKind* detail_kind;
-  const double* level_weight;
+  const float* level_weight;
   std::size_t n_weights;
 };
 

@@ -63,14 +63,17 @@ template <std::size_t kRows>
 // Rows (squared weights) from back-to-back chains of kLen levels: a compile-time stride, so
 // the loads vectorise (or at least unroll) instead of a gather per weight.
 template <std::size_t kLen>
-[[gnu::always_inline]] inline void fill_rows(const double* w, std::size_t count, KernelBlock& blk) {
+[[gnu::always_inline]] inline void fill_rows(const float* w, std::size_t count, KernelBlock& blk) {
   static_assert(kLen >= 2 && kLen <= kRowLevels + 1);
-  for (std::size_t j = 0; j < count; ++j) {
-    blk.w1_sq[j] = w[j * kLen + 1] * w[j * kLen + 1];
+  // A float product is rounded once from the exact one, as double-then-float would be.
+  for (std::size_t j = 0; j < count; ++j)
     for (std::size_t k = 1; k < kLen; ++k) {
-      const double wk = w[j * kLen + k];
-      blk.weight[k - 1][j] = static_cast<float>(wk * wk);
+      const float wk = w[j * kLen + k];
+      blk.weight[k - 1][j] = wk * wk;
     }
+  for (std::size_t j = 0; j < count; ++j) {
+    const double w1 = w[j * kLen + 1];
+    blk.w1_sq[j] = w1 * w1;  // exact
   }
 }
 
@@ -101,7 +104,7 @@ std::size_t select_kernel_rows_regular(const ChainInput& in, std::size_t begin, 
   // select.cpp's object-by-object path). A conversion, not a compare: it vectorises.
   static_assert(static_cast<int>(DetailKind::removed_cycles_per_diameter) == 0);
   for (std::size_t j = 0; j < count; ++j) blk.kind_error[j] = static_cast<double>(kind[j]);
-  const double* w = in.level_weight + first0;
+  const float* w = in.level_weight + first0;
   switch (len) {
     case 2: fill_rows<2>(w, count, blk); break;
     case 3: fill_rows<3>(w, count, blk); break;

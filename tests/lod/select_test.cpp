@@ -408,7 +408,7 @@ TEST(SelectPaths, LayoutOfWeightsDoesNotChangeDecisions) {
   // reverse order (object-by-object path): identical bytes.
   const Scene sc = random_scene(1000, 12);
   const ObjectSet a = sc.store.view();
-  std::vector<double> weights;
+  std::vector<float> weights;
   std::vector<std::uint32_t> first(a.size());
   for (std::size_t i = a.size(); i-- > 0;) {
     first[i] = static_cast<std::uint32_t>(weights.size());

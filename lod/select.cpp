@@ -36,7 +36,6 @@ detail::KernelFrame kernel_frame(const FrameConstants& f) {
   kf.tracker_error_rad = f.tracker_error_rad;
   kf.xi_cpd = f.xi_cpd;
   kf.scale = f.scale;
-  kf.vel_zero_dps = velocity_zero_dps();
   kf.acuity_static_cpd = f.acuity_static_cpd;
   kf.use_size = f.use_size;
   kf.use_eccentricity = f.use_eccentricity;

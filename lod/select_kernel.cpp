@@ -14,6 +14,7 @@
 #include "lod/acuity.hpp"
 #include "lod/fast_math.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -53,7 +54,6 @@ template <bool kDiagnostics, bool kUseSize>
   const double gx = f.gaze_unit[0], gy = f.gaze_unit[1], gz = f.gaze_unit[2];
   const double ox = f.gaze_omega_rad_s[0], oy = f.gaze_omega_rad_s[1], oz = f.gaze_omega_rad_s[2];
   const double err = f.tracker_error_rad;
-  const double vel_zero2 = f.vel_zero_dps * f.vel_zero_dps;
   // Switches as 0/1 factors, not bool blends: a loop-invariant bool mixed with the
   // double-width masks is a mask conversion GCC 12 does not vectorise.
   const double on_e = f.use_eccentricity ? 1.0 : 0.0, on_v = f.use_velocity ? 1.0 : 0.0;
@@ -112,15 +112,15 @@ template <bool kDiagnostics, bool kUseSize>
     // d = 0 or overflow gives NaN: 0 keeps detail (as the scalar criteria do at r = 0).
     const double vel2 = vel2_raw >= 0.0 ? vel2_raw : 0.0;
 
-    // G(v) on v^2 clamped into the log branch's range (log10 v = log10(v^2) / 2), then the
-    // two flat pieces by blends.
+    // G(v) on v^2 clamped into the log branch's range (log10 v = log10(v^2) / 2) and into
+    // [0, 60] (0 from v0 = velocity_zero_dps() on, where the log branch crosses 0), then the
+    // flat piece below the seam by a blend. Switched off: v = 0 (seed 000 section 6), G = 60.
     constexpr double kSeam2 = kVelocitySeamDps * kVelocitySeamDps, kCap2 = 200.0 * 200.0;
-    // Switched off: v = 0 (seed 000 section 6), so G = 60.
-    const double vel2_on = vel2 * on_v;
-    const double v2_log = vel2 < kSeam2 ? kSeam2 : (vel2 > kCap2 ? kCap2 : vel2);
+    const double vel2_on = vel2 * on_v;  // NaN for inf * 0: the blend below gives 60
+    const double v2_log = std::min(std::max(vel2, kSeam2), kCap2);
     const double g_log = kGIntercept - (0.5 * kGSlope) * fast::log10_normal(v2_log);
-    const double g_clamped = g_log < 0.0 ? 0.0 : (g_log > kAcuityMaxCpd ? kAcuityMaxCpd : g_log);
-    const double g = !(vel2_on > kSeam2) ? kAcuityMaxCpd : (vel2_on >= vel_zero2 ? 0.0 : g_clamped);
+    const double g_clamped = std::min(std::max(g_log, 0.0), kAcuityMaxCpd);
+    const double g = vel2_on > kSeam2 ? g_clamped : kAcuityMaxCpd;
 
     // M(E) = min(1, 7.49 / (0.3 E + 1)^2) beyond the seam (acuity.hpp).
     const double ecc_on = ecc_deg * on_e;  // switched off: E = 0, so M = 1

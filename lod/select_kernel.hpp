@@ -42,7 +42,6 @@ struct KernelFrame {
   double eye_m[3], eye_vel_m_s[3], gaze_unit[3], gaze_omega_rad_s[3];
   double tracker_error_rad;
   double xi_cpd, scale;
-  double vel_zero_dps;       // where G reaches 0
   double acuity_static_cpd;  // s min(60, xi): size alone
   bool use_size, use_eccentricity, use_velocity;
   bool diagnostics;  // phase 1 stores ecc_deg, vel2_dps2 and alpha_deg (else unspecified)

@@ -198,7 +198,7 @@ std::string select_lods(const Viewer& viewer, const ObjectSet& o, const Decision
       for (std::size_t j = 0; j < m; ++j) {
         const float w = k + 1 < count_b[j] ? w_all[first_b[j] + k + 1] : 0.0f;
         blk.weight[k][j] = w * w;
-        if (k == 0) blk.w1_sq[j] = static_cast<double>(w) * w;
+        if (k == 0) blk.w1_sq[j] = detail::size_off_w1_sq(w);
       }
     }
     detail::select_kernel_geometry(kf, in, base, m, blk);

@@ -14,7 +14,10 @@
 // and may be used when f_k > A = s * min(G(v) M(E), xi). E is the nearest point's eccentricity
 // minus the tracker's error, v the retinal velocity (lod/criteria.hpp). The vectorised kernels
 // (lod/select_kernel*.cpp) evaluate the same rule on squared quantities to avoid roots and
-// divisions per level; the tests compare them with a direct reference.
+// divisions per level, and make the last comparison w_k^2 > (A p)^2 in float with each side
+// rounded once: where the two sides lie within 6e-8 of each other that can keep a finer
+// level than the exact rule, never a coarser one. The tests compare them with a direct
+// reference in double.
 // Switching a criterion off zeroes its input (seed 000 section 6): E = 0, v = 0, and for size
 // the object counts as no smaller than the size at which level 1 sits exactly at the foveal,
 // static limit s * min(60, xi) (so size alone never drops a level). Switching off never lowers

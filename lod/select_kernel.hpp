@@ -58,6 +58,14 @@ struct KernelInput {
 // floor a few ulps above, so rounding never lets level 1 pass at A = a0 by size-off alone.
 inline constexpr double kSizeOffMargin = 1.0 + 4e-15;
 
+// w_1^2 for the size-off floor, from the stored (rounded-down) float weight w_1: taken one
+// float step up, so that it is never below the exact w_1^2 and the floor never lower than
+// the exact one (a lower floor could let a level pass that the exact rule keeps).
+inline double size_off_w1_sq(float w1) {
+  const double up = static_cast<double>(w1) * (1.0 + 0x1p-23);  // exact in double
+  return up * up;
+}
+
 struct KernelBlock {
   // Rows, filled first (select_kernel_rows_regular or select.cpp): kind_error is non-zero
   // for a geometric-error chain, else 0; w1_sq is w_1^2 (0 without a coarser level), for

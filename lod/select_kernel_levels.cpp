@@ -71,10 +71,7 @@ template <std::size_t kLen>
       const float wk = w[j * kLen + k];
       blk.weight[k - 1][j] = wk * wk;
     }
-  for (std::size_t j = 0; j < count; ++j) {
-    const double w1 = w[j * kLen + 1];
-    blk.w1_sq[j] = w1 * w1;  // exact
-  }
+  for (std::size_t j = 0; j < count; ++j) blk.w1_sq[j] = size_off_w1_sq(w[j * kLen + 1]);
 }
 
 }  // namespace

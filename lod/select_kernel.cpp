@@ -58,10 +58,7 @@ template <bool kDiagnostics, bool kUseSize>
   // double-width masks is a mask conversion GCC 12 does not vectorise.
   const double on_e = f.use_eccentricity ? 1.0 : 0.0, on_v = f.use_velocity ? 1.0 : 0.0;
   const double a0 = f.acuity_static_cpd, s = f.scale, xi = f.xi_cpd, a0_2 = a0 * a0;
-  // Size switched off (seed 000 section 6): the object counts as no smaller than the size at
-  // which level 1 sits exactly at the static limit a0, i.e. p >= w_1 / a0. The factor puts
-  // the floor a few ulps above, so rounding never lets level 1 pass at A = a0 by size-off
-  // alone.
+  // Size switched off: p^2 >= w_1^2 floor2_per_w2 (kSizeOffMargin, select_kernel.hpp).
   const double floor_per_w = kSizeOffMargin / a0;  // a0 > 0 for a valid Viewer
   const double floor2_per_w2 = floor_per_w * floor_per_w;
 

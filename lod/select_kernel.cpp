@@ -108,6 +108,20 @@ template <bool kDiagnostics, bool kUseSize>
     const double vel2_raw = (tx * tx + ty * ty + tz * tz) * inv_d2 * (kDegPerRad * kDegPerRad);
     // d = 0 or overflow gives NaN: 0 keeps detail (as the scalar criteria do at r = 0).
     const double vel2 = vel2_raw >= 0.0 ? vel2_raw : 0.0;
+    out.ecc_deg[i] = ecc_deg;
+    out.vel2_dps2[i] = vel2;
+    out.alpha_deg[i] = alpha * kDegPerRad;
+    out.inv_d2[i] = inv_d2;
+    out.invalid[i] = ok ? 0.0 : 1.0;
+  }
+
+  // Second loop: the acuity terms and thresholds (split so that neither loop runs out of
+  // vector registers).
+#pragma GCC ivdep
+  for (std::size_t i = 0; i < count; ++i) {
+    const double ecc_deg = out.ecc_deg[i], vel2 = out.vel2_dps2[i], alpha_deg = out.alpha_deg[i];
+    const double inv_d2 = out.inv_d2[i];
+    const bool ok = out.invalid[i] < 0.5;
 
     // G(v) on v^2 clamped into the log branch's range (log10 v = log10(v^2) / 2) and into
     // [0, 60] (0 from v0 = velocity_zero_dps() on, where the log branch crosses 0), then the
@@ -129,7 +143,6 @@ template <bool kDiagnostics, bool kUseSize>
     // The threshold factor p^2 of the object's kind (select_kernel.hpp); +inf for an invalid
     // object, so that no level passes. d = 0: inv_d2 = +inf, so p_error^2 = +inf (no level),
     // as q = 0 in the unsquared rule.
-    const double alpha_deg = alpha * kDegPerRad;
     constexpr double kErrFactor = 360.0 / std::numbers::pi;
     const double p2_kind = out.kind_error[i] > 0.5 ? (kErrFactor * kErrFactor) * inv_d2
                                                    : 4.0 * alpha_deg * alpha_deg;
@@ -146,7 +159,6 @@ template <bool kDiagnostics, bool kUseSize>
     out.t_ecc[i] = ae * ae * p2_off;
     out.t_vel[i] = av * av * p2_off;
     out.t_comb[i] = ac * ac * (kUseSize ? p2 : p2_off);
-    out.invalid[i] = ok ? 0.0 : 1.0;
     if constexpr (kDiagnostics) {
       out.ecc_deg[i] = ok ? ecc_deg : 0.0;
       out.vel2_dps2[i] = ok ? vel2 : 0.0;

@@ -81,6 +81,7 @@ struct KernelBlock {
   // float output would make GCC run it 16 objects wide, in twice the registers).
   double t_size[kSelectBlock], t_ecc[kSelectBlock], t_vel[kSelectBlock], t_comb[kSelectBlock];
   double invalid[kSelectBlock];
+  double inv_d2[kSelectBlock];  // phase 1's scratch between its two loops
   // Phase 1, only with KernelFrame::diagnostics (else unspecified); 0 for an invalid object.
   double ecc_deg[kSelectBlock];    // nearest point's eccentricity minus tracker error, >= 0
   double vel2_dps2[kSelectBlock];  // retinal velocity squared, >= 0 (may be +inf)

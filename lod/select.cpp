@@ -172,6 +172,12 @@ std::string select_lods(const Viewer& viewer, const ObjectSet& o, const Decision
       const std::size_t f0 = o.lod_first[nb], f1 = o.lod_first[nb + mb - 1] + o.lod_count[nb + mb - 1];
       if (f0 < f1 && f1 <= n_weights)
         for (std::size_t off = f0; off < f1; off += 16) __builtin_prefetch(w_all + off);
+      // and its chain indices, which select_kernel_rows_regular reads first.
+      for (std::size_t off = 0; off < mb; off += 16) __builtin_prefetch(o.lod_first.data() + nb + off);
+      for (std::size_t off = 0; off < mb; off += 64) {
+        __builtin_prefetch(o.lod_count.data() + nb + off);
+        __builtin_prefetch(o.detail_kind.data() + nb + off);
+      }
     }
 
     // Kinds and the chains' weights as rows: in bulk for back-to-back chains of one length,

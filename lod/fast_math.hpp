@@ -49,7 +49,7 @@ namespace gazelod::lod::fast {
 }
 
 // log10(x) for a positive, normal, finite x (callers clamp: the selection calls it on
-// v^2 clamped to [0.825^2, 200^2]). x = 2^e m with m in [sqrt(1/2), sqrt(2)], and
+// v^2 clamped to [0.825^2, 200^2]). x = 2^e m with m in [sqrt(1/2), sqrt(2)), and
 // ln m = 2 y S(y^2), y = (m - 1) / (m + 1), S(z) = atanh(y) / y = 1 + z/3 + z^2/5 + ...
 // replaced by a degree-4 polynomial interpolating it at the Chebyshev nodes of
 // [0, ((sqrt2 - 1) / (sqrt2 + 1))^2] (|error in log10| < 7e-13; scripts/fit_fast_math.py).
@@ -61,9 +61,10 @@ namespace gazelod::lod::fast {
   const double e_raw =
       std::bit_cast<double>((bits >> 52) | 0x4330000000000000ULL) - (4503599627370496.0 + 1023.0);
   const double m_raw = std::bit_cast<double>((bits & 0x000fffffffffffffULL) | 0x3ff0000000000000ULL);
-  const bool fold = m_raw > std::numbers::sqrt2;
-  const double m = fold ? m_raw * 0.5 : m_raw;
-  const double e = fold ? e_raw + 1.0 : e_raw;
+  // x = 2^(e + 1/2) (m_raw / sqrt2): m in [sqrt(1/2), sqrt(2)) without a comparison (a
+  // fold by a blend makes GCC run the series twice, once per side).
+  const double m = m_raw * (1.0 / std::numbers::sqrt2);
+  const double e = e_raw + 0.5;
   const double y = (m - 1.0) / (m + 1.0);
   // 2 S(z) / ln 10 by Estrin's scheme (a short dependency chain).
   constexpr double k = 2.0 / std::numbers::ln10;

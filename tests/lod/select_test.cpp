@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <random>
 #include <vector>
@@ -90,7 +91,9 @@ struct Scene {
   std::vector<std::vector<LodLevel>> chains;
 };
 
-Scene random_scene(std::size_t n, std::uint64_t seed) {
+// Random objects; chain_for(i) gives object i's chain (default: cycles and error alternating).
+Scene random_scene(std::size_t n, std::uint64_t seed,
+                   const std::function<std::vector<LodLevel>(std::size_t)>& chain_for = {}) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u(-1, 1);
   Scene s;
@@ -98,7 +101,7 @@ Scene random_scene(std::size_t n, std::uint64_t seed) {
     const glm::dvec3 c{u(rng) * 50, u(rng) * 20, u(rng) * 50};
     const double r = std::pow(10.0, 1.5 * u(rng) - 0.5);
     const glm::dvec3 v{u(rng) * 5, u(rng) * 5, u(rng) * 5};
-    auto chain = (i % 2) ? cycles_chain() : error_chain();
+    auto chain = chain_for ? chain_for(i) : (i % 2) ? cycles_chain() : error_chain();
     s.store.add(c, r, v, chain);
     s.c.push_back(c), s.v.push_back(v), s.r.push_back(r), s.chains.push_back(chain);
   }
@@ -411,18 +414,9 @@ std::vector<LodLevel> chain_of(std::size_t levels, bool cycles) {
 }
 
 Scene mixed_chain_scene(std::size_t n, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(-1, 1);
-  Scene s;
-  for (std::size_t i = 0; i < n; ++i) {
-    const glm::dvec3 c{u(rng) * 50, u(rng) * 20, u(rng) * 50};
-    const double r = std::pow(10.0, 1.5 * u(rng) - 0.5);
-    const glm::dvec3 v{u(rng) * 5, u(rng) * 5, u(rng) * 5};
-    auto chain = chain_of(1 + (i * 7) % 12, i % 3 != 0);  // 1 .. 12 levels
-    s.store.add(c, r, v, chain);
-    s.c.push_back(c), s.v.push_back(v), s.r.push_back(r), s.chains.push_back(chain);
-  }
-  return s;
+  return random_scene(n, seed, [](std::size_t i) {
+    return chain_of(1 + (i * 7) % 12, i % 3 != 0);  // 1 .. 12 levels
+  });
 }
 
 TEST(SelectPaths, MixedAndLongChainsMatchReference) {

@@ -26,8 +26,6 @@ constexpr double kDegPerRad = 180.0 / std::numbers::pi;
 constexpr double kMaxFinite = std::numeric_limits<double>::max();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// |x| <= max is false for NaN and +-inf, and vectorises (std::isfinite may not).
-[[gnu::always_inline]] inline bool finite(double x) { return std::fabs(x) <= kMaxFinite; }
 
 }  // namespace
 
@@ -62,9 +60,7 @@ template <bool kDiagnostics, bool kUseSize>
   const double floor_per_w = kSizeOffMargin / a0;  // a0 > 0 for a valid Viewer
   const double floor2_per_w2 = floor_per_w * floor_per_w;
 
-  // The inputs are the caller's arrays, the outputs a block-local struct: they never
-  // overlap, but 8 x 8 runtime alias checks are more than GCC will emit, so say it here.
-#pragma GCC ivdep
+GAZELOD_IVDEP  // no overlap (select_kernel.hpp)
   for (std::size_t i = 0; i < count; ++i) {
     const double c_x = cx[i] - ex, c_y = cy[i] - ey, c_z = cz[i] - ez;
     const double r = rad[i];
@@ -117,7 +113,7 @@ template <bool kDiagnostics, bool kUseSize>
 
   // Second loop: the acuity terms and thresholds (split so that neither loop runs out of
   // vector registers).
-#pragma GCC ivdep
+GAZELOD_IVDEP
   for (std::size_t i = 0; i < count; ++i) {
     const double ecc_deg = out.ecc_deg[i], vel2 = out.vel2_dps2[i], alpha_deg = out.alpha_deg[i];
     const double inv_d2 = out.inv_d2[i];

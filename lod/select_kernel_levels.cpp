@@ -28,7 +28,7 @@ template <std::size_t kRows>
   std::uint8_t* only_s = out.size_only;
   std::uint8_t* only_e = out.eccentricity_only;
   std::uint8_t* only_v = out.velocity_only;
-#pragma GCC ivdep
+GAZELOD_IVDEP
   for (std::size_t j = 0; j < count; ++j) {
     const float ts = static_cast<float>(b.t_size[j]), te = static_cast<float>(b.t_ecc[j]),
                 tv = static_cast<float>(b.t_vel[j]), tc = static_cast<float>(b.t_comb[j]);

@@ -30,15 +30,21 @@ std::vector<EvalRun> layouts(const EvalOptions& o, ReddyScenario sc, const std::
   return runs;
 }
 
+// Seed 000's scene with n objects at the options' size scale, simulated at rate_hz.
+ReddyScenario scenario(const EvalOptions& o, int n, double rate_hz) {
+  ReddyScenario sc;
+  sc.objects = n;
+  sc.radius_scale = o.radius_scale;
+  sc.frame_rate_hz = rate_hz;
+  return sc;
+}
+
 }  // namespace
 
 std::vector<Figure5Row> run_figure5(const EvalOptions& o, const Progress& progress) {
   std::vector<Figure5Row> rows;
   for (int n : o.counts) {
-    ReddyScenario sc;
-    sc.objects = n;
-    sc.radius_scale = o.radius_scale;
-    sc.frame_rate_hz = o.render_rate_hz;
+    const ReddyScenario sc = scenario(o, n, o.render_rate_hz);
     const std::string label = "figure5 " + std::to_string(n) + " objects";
     Figure5Row row;
     row.objects = n;
@@ -52,10 +58,7 @@ std::vector<Figure5Row> run_figure5(const EvalOptions& o, const Progress& progre
 std::vector<Figure6Row> run_figure6(const EvalOptions& o, const Progress& progress) {
   std::vector<Figure6Row> rows;
   for (int n : o.counts) {
-    ReddyScenario sc;
-    sc.objects = n;
-    sc.radius_scale = o.radius_scale;
-    sc.frame_rate_hz = o.headless_rate_hz;
+    const ReddyScenario sc = scenario(o, n, o.headless_rate_hz);
     const std::string label = "figure6 " + std::to_string(n) + " objects";
     Figure6Row row;
     row.objects = n;
@@ -69,10 +72,7 @@ std::vector<Figure6Row> run_figure6(const EvalOptions& o, const Progress& progre
 std::vector<HeadTurnRow> run_head_turns(const EvalOptions& o, const Progress& progress) {
   std::vector<HeadTurnRow> rows;
   for (double rate : o.head_turn_deg_s) {
-    ReddyScenario sc;
-    sc.objects = o.head_turn_objects;
-    sc.radius_scale = o.radius_scale;
-    sc.frame_rate_hz = o.headless_rate_hz;
+    ReddyScenario sc = scenario(o, o.head_turn_objects, o.headless_rate_hz);
     sc.head_turn_deg_s = rate;
     sc.surround = true;
     char label[64];

@@ -1,4 +1,4 @@
-// Geometric error -> removed detail, the stand-in for Reddy's rendered measure (seed 000 3.3).
+// Geometric error -> removed detail, the stand-in for Reddy's rendered measure (Reddy 1998, 3.3).
 // An error e on an object of diameter D removes features narrower than about 2e: one cycle
 // needs two samples (a bright and a dark half, 000 section 3.4), so the finest detail left is
 // about D / (2e) cycles per diameter. Coarser levels (larger e) remove lower frequencies.

@@ -1,11 +1,12 @@
 // Rendering the chain from the view sphere and reducing the differences (profile_render.hpp).
 #include "bake/profile_render.hpp"
+#include "lod/angles.hpp"
 
 #include "bake/profile_spectrum.hpp"
-#include "plugin/render/camera.hpp"
-#include "plugin/render/frame_renderer.hpp"
-#include "plugin/render/mesh_library.hpp"
-#include "plugin/render/offscreen_target.hpp"
+#include "render/camera.hpp"
+#include "render/frame_renderer.hpp"
+#include "render/mesh_library.hpp"
+#include "render/offscreen_target.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -20,7 +21,7 @@
 namespace gazelod::bake {
 namespace {
 
-double deg_to_rad(double d) { return d * std::numbers::pi / 180.0; }
+double deg_to_rad(double d) { return d * lod::kRadPerDeg; }
 
 // Eye on the view sphere at `dir` * distance, looking at the origin, +y up (+z when looking
 // along y). The sphere of radius 1 then just fills the square view.

@@ -1,4 +1,4 @@
-// Reddy's perceptual profile of an LOD chain (seed 000 sections 3.2-3.3, Figure 1): render the
+// Reddy's perceptual profile of an LOD chain (Reddy 1998 sections 3.2-3.3, Figure 1): render the
 // full model and every level offscreen (Vulkan, lavapipe) from 6 or 18 viewpoints on the view
 // sphere, all looking at the centre; per level and viewpoint, the frequency of the difference
 // image against the full model (profile_spectrum.hpp), in cycles per object diameter.
@@ -10,7 +10,7 @@
 // as the geometric errors are made non-decreasing.
 #pragma once
 
-#include "plugin/render/device_context.hpp"
+#include "render/device_context.hpp"
 
 #include <glm/vec3.hpp>
 
@@ -22,7 +22,7 @@
 namespace gazelod::bake {
 
 struct ProfileOptions {
-  int viewpoints = 6;           // 6 (cube faces) or 18 (faces + edges), seed 000 Figure 1
+  int viewpoints = 6;           // 6 (cube faces) or 18 (faces + edges), Reddy 1998 Figure 1
   std::uint32_t image_px = 256; // square; power of two in [16, 1024]
   double half_fov_deg = 5.0;    // narrow perspective whose view just encloses the bounding sphere
 };

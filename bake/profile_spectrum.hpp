@@ -1,5 +1,5 @@
 // The spatial frequency of a difference image (a level's render minus the full model's), the
-// FFT stand-in for Reddy's feature analysis (seed 000 section 3.3: region growing, then the
+// FFT stand-in for Reddy's feature analysis (Reddy 1998 section 3.3: region growing, then the
 // length of each feature; a feature w pixels wide is half a cycle, 1 / (2 w) cycles/pixel).
 // Why not "the highest frequency with any energy": rasterised edges put energy up to Nyquist
 // in every difference, so that figure is the same for every level. Instead: the radial

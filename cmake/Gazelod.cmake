@@ -1,6 +1,15 @@
 # Small helpers shared by the folders' CMakeLists. Each folder globs its own sources so that
 # adding a file needs no edit elsewhere; a sub-folder with its own CMakeLists.txt is added
 # when it exists.
+include(GNUInstallDirs)
+
+# Include directories of a gazelod library: the repository root in the build tree; once
+# installed (cmake/GazelodInstall.cmake), both <prefix>/include (for <gazelod/gazelod.hpp>) and
+# <prefix>/include/gazelod (headers include each other from the root: "lod/cone.hpp").
+set(GAZELOD_INCLUDE_DIRS
+  $<BUILD_INTERFACE:${GAZELOD_ROOT}>
+  $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>
+  $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/gazelod>)
 
 # gazelod_library(NAME DIR [TYPE STATIC|SHARED|OBJECT] [LIBS ...]): all *.cpp directly in DIR.
 function(gazelod_library name)
@@ -11,12 +20,12 @@ function(gazelod_library name)
   file(GLOB srcs CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.cpp)
   if(NOT srcs)  # headers only (so far)
     add_library(${name} INTERFACE)
-    target_include_directories(${name} INTERFACE ${GAZELOD_ROOT})
+    target_include_directories(${name} INTERFACE ${GAZELOD_INCLUDE_DIRS})
     target_link_libraries(${name} INTERFACE ${A_LIBS})
     return()
   endif()
   add_library(${name} ${A_TYPE} ${srcs})
-  target_include_directories(${name} PUBLIC ${GAZELOD_ROOT})
+  target_include_directories(${name} PUBLIC ${GAZELOD_INCLUDE_DIRS})
   target_link_libraries(${name} PUBLIC ${A_LIBS})
 endfunction()
 

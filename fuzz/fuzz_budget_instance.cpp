@@ -4,10 +4,9 @@
 // capacity when the cheapest choice fits.
 #include "fuzz/fuzz_entry.hpp"
 
-#include "lod/knapsack.hpp"
-#include "lod/mckp.hpp"
-#include "plugin/cli/budget_instance.hpp"
-#include "plugin/cli/command.hpp"
+#include "budget/knapsack.hpp"
+#include "budget/mckp.hpp"
+#include "budget/budget_instance.hpp"
 
 
 #include <cmath>
@@ -29,10 +28,10 @@ int budget_instance(const std::uint8_t* data, std::size_t size) {
     std::ofstream out(path, std::ios::binary | std::ios::trunc);
     out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
   }
-  lod::MckpInstance inst;
+  budget::MckpInstance inst;
   try {
-    inst = cli::read_budget_instance(path);
-  } catch (const cli::UsageError&) {
+    inst = budget::read_budget_instance(path);
+  } catch (const budget::InstanceError&) {
     std::remove(path.c_str());
     return 0;  // the documented rejection (names the file and the JSON path)
   }
@@ -43,19 +42,19 @@ int budget_instance(const std::uint8_t* data, std::size_t size) {
         "subset offsets do not cover the items");
   for (std::size_t k = 0; k + 1 < inst.subset_offsets.size(); ++k)
     check(inst.subset_offsets[k] <= inst.subset_offsets[k + 1], "subset offsets decrease");
-  for (const lod::MckpItem& item : inst.items) {
+  for (const budget::MckpItem& item : inst.items) {
     check(std::isfinite(item.cost) && item.cost >= 0.0, "item cost not finite and >= 0");
     check(std::isfinite(item.profit), "item profit not finite");
   }
   // Small instances go through every solver (as `gazelod budget` would); bounded so one input
   // stays fast (the exact solver is exponential).
   if (inst.items.size() > 64) return 0;
-  for (std::string_view name : lod::solver_names()) {
-    const auto kind = lod::solver_from_name(name);
+  for (std::string_view name : budget::solver_names()) {
+    const auto kind = budget::solver_from_name(name);
     check(kind.has_value(), "solver_names() lists a name solver_from_name rejects");
     if (name == "exact" && inst.items.size() > 20) continue;
     try {
-      const lod::MckpSolution sol = lod::solve(*kind, inst);
+      const budget::MckpSolution sol = budget::solve(*kind, inst);
       check(std::isfinite(sol.profit) && std::isfinite(sol.cost), "solution not finite");
       if (sol.feasible)
         check(sol.cost <= inst.capacity * (1.0 + 1e-9) + 1e-12,

@@ -1,6 +1,8 @@
-// Small angle helpers (atan2 throughout: no acos of a dot product, which loses all precision
-// for the tiny angles between successive gaze samples).
+// Gaze-layer angle helpers on top of lod/angles.hpp (units, angle_between_rad): tangent bases,
+// angular offsets and slerp of gaze directions. atan2 throughout, never acos.
 #pragma once
+
+#include "lod/angles.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
@@ -11,12 +13,9 @@
 
 namespace gazelod::gaze {
 
-inline constexpr double kDegPerRad = 180.0 / std::numbers::pi;
-
-// Angle between two directions (need not be unit), radians in [0, pi].
-inline double angle_between_rad(const glm::dvec3& a, const glm::dvec3& b) {
-  return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
-}
+using lod::angle_between_rad;
+using lod::kDegPerRad;
+using lod::kRadPerDeg;
 
 // Two unit vectors perpendicular to unit `c` (any; stable for every direction).
 inline void tangent_basis(const glm::dvec3& c, glm::dvec3& e1, glm::dvec3& e2) {

@@ -23,8 +23,6 @@ class GazeSource {
 
   // One line saying why the source is unavailable (or "ok"), for the fallback report.
   virtual std::string status() const { return "ok"; }
-
-  bool available_at(std::int64_t t_ns) { return sample_at(t_ns).has_value(); }
 };
 
 }  // namespace gazelod::gaze

@@ -1,5 +1,6 @@
 #include "gaze/trace_reader.hpp"
 
+#include "gaze/angles.hpp"
 #include "gaze/trace_format.hpp"
 
 #include <glm/geometric.hpp>
@@ -37,8 +38,7 @@ int parse_version(const CsvCursor& c) {
 }  // namespace
 
 glm::dvec3 direction_from_yaw_pitch_deg(double yaw_deg, double pitch_deg) {
-  constexpr double kRad = std::numbers::pi / 180.0;
-  const double y = yaw_deg * kRad, p = pitch_deg * kRad;
+  const double y = yaw_deg * kRadPerDeg, p = pitch_deg * kRadPerDeg;
   return {std::cos(p) * std::sin(y), std::sin(p), -std::cos(p) * std::cos(y)};
 }
 

@@ -1,8 +1,8 @@
-// Reddy's spatiotemporal acuity model (seed 000, section 3.4, equations 1-5): the highest
+// Reddy's spatiotemporal acuity model (Reddy 1998, section 3.4, equations 1-5): the highest
 // spatial frequency (cycles/deg) a viewer resolves at retinal velocity v and eccentricity E,
 // limited by the display (xi) and scaled by the fixed-frame-rate factor s (section 6).
 //
-// The raw formulas are repaired where they break physical sense (docs/perceptual-model.md 1):
+// The raw formulas are repaired where they break physical sense (docs/perceptual-model.md, 1.2):
 //   G(v) = clamp(-27.78 log10 v + 57.69, 0, 60) for v > 0.825, else 60. The clamp at 60 removes
 //        the upward jump at the seam (raw G is 60.0109 just above 0.825), the clamp at 0 the
 //        negative branch past v = 119.31 deg/s.
@@ -26,7 +26,7 @@ inline constexpr double kMSlope = 0.3;
 
 // Velocity where the log branch reaches 0 (10^(57.69/27.78) = 119.31 deg/s): G is 0 beyond.
 double velocity_zero_dps();
-// Velocity where the log branch equals 60 (0.82587 deg/s): the repaired seam of G.
+// Velocity where the log branch equals 60 (0.82575 deg/s): the repaired seam of G.
 double velocity_seam_repaired_dps();
 
 // G(v) in cycles/deg, in [0, 60], non-increasing in v.
@@ -40,7 +40,7 @@ double spatiotemporal_acuity_cpd(double vel_dps, double ecc_deg);
 // (NaN s counts as 1). Result in [0, 60].
 double acuity_cpd(double vel_dps, double ecc_deg, double xi_cpd, double scale = 1.0);
 
-// Inverses (seed 000 Figures 2 and 3): the smallest eccentricity / velocity beyond which the
+// Inverses (Reddy 1998 Figures 2 and 3): the smallest eccentricity / velocity beyond which the
 // viewer resolves less than freq_cpd, i.e. H first falls below freq_cpd.
 //   0 when H is below freq_cpd already at 0; +inf when it never falls below (freq_cpd <= 0).
 // With freq_cpd = xi these are the thresholds where LOD can start to drop on that criterion.

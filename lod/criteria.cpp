@@ -8,16 +8,6 @@
 #include <numbers>
 
 namespace gazelod::lod {
-namespace {
-constexpr double kDegPerRad = 180.0 / std::numbers::pi;
-}
-
-double angle_between_rad(const glm::dvec3& a, const glm::dvec3& b) {
-  const double s = glm::length(glm::cross(a, b));
-  const double c = glm::dot(a, b);
-  if (s == 0.0 && c == 0.0) return 0.0;
-  return std::atan2(s, c);
-}
 
 double angular_radius_rad(double dist_m, double radius_m) {
   if (!(radius_m > 0.0)) return 0.0;

@@ -1,15 +1,14 @@
-// The per-object quantities the acuity model needs (seed 000 section 3.2): angular size,
+// The per-object quantities the acuity model needs (Reddy 1998 section 3.2): angular size,
 // eccentricity of the bounding sphere's nearest point to the gaze ray, retinal velocity.
 // Exact scalar forms with libm (atan2, never acos of a dot product); lod/select.cpp computes
 // the same quantities inline for whole arrays and is tested against these.
 #pragma once
 
+#include "lod/angles.hpp"
+
 #include <glm/vec3.hpp>
 
 namespace gazelod::lod {
-
-// Angle between two vectors in [0, pi] as atan2(|a x b|, a . b); 0 if either is zero.
-double angle_between_rad(const glm::dvec3& a, const glm::dvec3& b);
 
 // Angular radius of a sphere of radius_m whose centre is dist_m away: asin(r / d) written as
 // atan2(r, sqrt(d^2 - r^2)); pi/2 when the eye is inside or on the sphere (d <= r).

@@ -1,4 +1,5 @@
-// xi per view and per display (seed 000 equation 4) and display validation.
+// xi per view and per display (Reddy 1998 equation 4) and display validation.
+#include "lod/angles.hpp"
 #include "lod/display.hpp"
 
 #include <algorithm>
@@ -9,7 +10,6 @@
 namespace gazelod::lod {
 namespace {
 
-constexpr double kDegPerRad = 180.0 / std::numbers::pi;
 
 // pixels / (2 fov): one pixel is half a contrast cycle. 0 for an invalid axis, never NaN/inf.
 double half_cycles_per_deg(int pixels, double fov_deg) {

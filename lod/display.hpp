@@ -1,6 +1,6 @@
 // Displays as the acuity model sees them: per-view pixels and asymmetric field of view, as
 // OpenXR reports them (XrFovf angleLeft/Right/Up/Down, radians, left and down negative),
-// the highest spatial frequency a view can show (xi, seed 000 section 3.4), and named presets.
+// the highest spatial frequency a view can show (xi, Reddy 1998 section 3.4), and named presets.
 #pragma once
 
 #include <span>
@@ -34,14 +34,14 @@ struct DisplaySpec {
   double eye_tracking_hz = 0.0;             // 0: no eye tracker
   double eye_tracking_accuracy_deg = 0.0;   // typical angular error of its tracker, 0 if none
   std::string source;        // where the figures come from
-  // Extension (gazelod, not seed 000): pixels per degree at the lens centre where the maker
+  // Extension (gazelod, not Reddy 1998): pixels per degree at the lens centre where the maker
   // states it (lenses concentrate pixels there), 0 if unknown. xi_cpd() stays Reddy's
   // whole-view average; xi_center_cpd() gives the centre figure.
   double center_ppd = 0.0;
 };
 
 // xi: the highest displayable frequency in cycles/deg, per axis and combined
-// (xi = max(hpix / (2 hfov), vpix / (2 vfov)), seed 000 section 3.4). Implemented in display.cpp.
+// (xi = max(hpix / (2 hfov), vpix / (2 vfov)), Reddy 1998 section 3.4). Implemented in display.cpp.
 double xi_h_cpd(const ViewSpec& view);
 double xi_v_cpd(const ViewSpec& view);
 double xi_cpd(const ViewSpec& view);

@@ -3,6 +3,7 @@
 // source string says. Figures marked "assumed" are not published; they are placeholders the
 // caller may override (the runtime's xrLocateViews FOV always wins in the plugin).
 #include "lod/display.hpp"
+#include "lod/angles.hpp"
 
 #include <array>
 #include <cmath>
@@ -27,18 +28,18 @@ DisplaySpec make(const char* name, const char* label, int w, int h, double fov_h
   return d;
 }
 
-// 40 x 30 cm screen seen from 40 cm: FOV = 2 atan(half size / distance) (seed 003 note 3).
+// 40 x 30 cm screen seen from 40 cm: FOV = 2 atan(half size / distance) (Reddy 1995, footnote 3).
 double desktop_fov_deg(double size_cm) {
-  return 2.0 * std::atan(size_cm / 2.0 / 40.0) * 180.0 / std::numbers::pi;
+  return 2.0 * std::atan(size_cm / 2.0 / 40.0) * kDegPerRad;
 }
 
 const std::array<DisplaySpec, 10>& presets() {
   static const std::array<DisplaySpec, 10> all = {
       make("desktop", "Desktop monitor 40x30 cm at 40 cm (Reddy 1998)", 1280, 1024,
            desktop_fov_deg(40.0), desktop_fov_deg(30.0), 1, 60.0, 0.0, 0.0, 0.0,
-           "Reddy 1998 (seed 000) section 4.1: 1280x1024, 53.1x41.1 deg; 60 Hz assumed"),
+           "Reddy 1998 section 4.1: 1280x1024, 53.1x41.1 deg; 60 Hz assumed"),
       make("iglasses", "Virtual i-O i-glasses! (Reddy 1998)", 263, 230, 30.0, 24.0, 2, 60.0, 0.0,
-           0.0, 0.0, "Reddy 1998 (seed 000) section 4.2: 263x230, 30x24 deg; 60 Hz assumed"),
+           0.0, 0.0, "Reddy 1998 section 4.2: 263x230, 30x24 deg; 60 Hz assumed"),
       make("quest3", "Meta Quest 3", 2064, 2208, 110.0, 96.0, 2, 120.0, 0.0, 0.0, 25.0,
            "Meta Quest 3 tech specs (meta.com, 2023): 2064x2208 per eye, 110 H x 96 V deg "
            "(total, applied per eye), 72/90/120 Hz, 25 PPD centre; no eye tracking"),

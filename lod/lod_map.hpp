@@ -1,4 +1,4 @@
-// Seed 004's LOD map (acuity map + saliency map), as an alternative selection policy to
+// The LOD-map thesis's policy (an acuity map plus a saliency map), an alternative to
 // Reddy's thresholds (lod/select.hpp). Each object gets a detail value in [0, 1] from a weighted
 // sum of criterion scores, each score in [0, 1] (1 = wants full detail):
 //   size          projected angular radius / size_full_deg, clamped (thesis 3.2.2: the radius

@@ -4,6 +4,7 @@
 // the levels each criterion allows and writes the decisions; both phases are vectorised
 // (AVX2 / AVX-512 where the CPU has them). This file validates, drives the blocks and handles
 // the rare objects the vector path leaves out. bench/lod/bench_select.cpp measures it.
+#include "lod/angles.hpp"
 #include "lod/select.hpp"
 
 #include "lod/acuity.hpp"
@@ -19,7 +20,6 @@
 namespace gazelod::lod {
 namespace {
 
-constexpr double kDegPerRad = 180.0 / std::numbers::pi;
 
 bool finite3(const glm::dvec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
@@ -74,11 +74,7 @@ void decide_long_chain(const detail::KernelFrame& f, const detail::KernelBlock& 
   ls = f.use_size ? ls : 0;
   le = f.use_eccentricity ? le : 0;
   lv = f.use_velocity ? lv : 0;
-  const Criterion why = lc == 0    ? Criterion::none
-                        : lc == ls ? Criterion::size
-                        : lc == le ? Criterion::eccentricity
-                        : lc == lv ? Criterion::velocity
-                                   : Criterion::combined;
+  const auto why = static_cast<Criterion>(limiting_criterion(lc, ls, le, lv));
   out.lod[i] = static_cast<std::uint8_t>(lc);
   out.lod_size_only[i] = static_cast<std::uint8_t>(ls);
   out.lod_eccentricity_only[i] = static_cast<std::uint8_t>(le);

@@ -1,4 +1,4 @@
-// Per-object LOD selection with Reddy's acuity model (seed 000 sections 3.2, 3.4, 6): for each
+// Per-object LOD selection with Reddy's acuity model (Reddy 1998 sections 3.2, 3.4, 6): for each
 // object, the least detailed level whose removed detail lies above the acuity limit.
 //
 // API (plain data in, caller-owned arrays out, no allocation):
@@ -18,7 +18,7 @@
 // rounded once: where the two sides lie within 6e-8 of each other that can keep a finer
 // level than the exact rule, never a coarser one. The tests compare them with a direct
 // reference in double.
-// Switching a criterion off zeroes its input (seed 000 section 6): E = 0, v = 0, and for size
+// Switching a criterion off zeroes its input (Reddy 1998 section 6): E = 0, v = 0, and for size
 // the object counts as no smaller than the size at which level 1 sits exactly at the foveal,
 // static limit s * min(60, xi) (so size alone never drops a level). Switching off never lowers
 // detail. Per object the output says the chosen level, which criterion set it, and the level
@@ -28,6 +28,7 @@
 // level 0 and Criterion::invalid_input; no NaN and no out-of-range level ever leaves.
 #pragma once
 
+#include "lod/criterion.hpp"
 #include "lod/object_set.hpp"
 
 #include <glm/vec3.hpp>
@@ -38,15 +39,6 @@
 
 namespace gazelod::lod {
 
-enum class Criterion : std::uint8_t {
-  none = 0,          // level 0: nothing allows a coarser level
-  size = 1,          // size alone allows the chosen level
-  eccentricity = 2,  // eccentricity alone allows it
-  velocity = 3,      // velocity alone allows it
-  combined = 4,      // only the product G(v) M(E) (with size) allows it
-  invalid_input = 5, // object data not finite / chain out of range: level 0 kept
-};
-const char* to_string(Criterion c);
 
 struct Viewer {
   glm::dvec3 eye_position_m{0.0};

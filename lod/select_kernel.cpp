@@ -9,6 +9,7 @@
 //     own): one reciprocal 1 / d^2 is reused, d and v stay squared, the eccentricity
 //     phi - alpha is a single atan2 of the rotated (cos, sin) pair, and the levels compare
 //     squares against A^2 p^2 instead of dividing.
+#include "lod/angles.hpp"
 #include "lod/select_kernel.hpp"
 
 #include "lod/acuity.hpp"
@@ -22,7 +23,6 @@
 namespace gazelod::lod::detail {
 namespace {
 
-constexpr double kDegPerRad = 180.0 / std::numbers::pi;
 constexpr double kMaxFinite = std::numeric_limits<double>::max();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
@@ -121,7 +121,7 @@ GAZELOD_IVDEP
 
     // G(v) on v^2 clamped into the log branch's range (log10 v = log10(v^2) / 2) and into
     // [0, 60] (0 from v0 = velocity_zero_dps() on, where the log branch crosses 0), then the
-    // flat piece below the seam by a blend. Switched off: v = 0 (seed 000 section 6), G = 60.
+    // flat piece below the seam by a blend. Switched off: v = 0 (Reddy 1998 section 6), G = 60.
     constexpr double kSeam2 = kVelocitySeamDps * kVelocitySeamDps, kCap2 = 200.0 * 200.0;
     const double vel2_on = vel2 * on_v;  // NaN for inf * 0: the blend below gives 60
     const double v2_log = std::min(std::max(vel2, kSeam2), kCap2);

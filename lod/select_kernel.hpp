@@ -62,7 +62,7 @@ struct KernelInput {
   const double *vel_x_m_s, *vel_y_m_s, *vel_z_m_s;
 };
 
-// Size switched off (seed 000 section 6): the object counts as no smaller than the size at
+// Size switched off (Reddy 1998 section 6): the object counts as no smaller than the size at
 // which level 1 sits exactly at the static limit a0, i.e. p >= w_1 / a0. The factor puts the
 // floor a few ulps above, so rounding never lets level 1 pass at A = a0 by size-off alone.
 inline constexpr double kSizeOffMargin = 1.0 + 4e-15;

@@ -4,6 +4,7 @@
 // integers), so that GCC vectorises the loop 16 objects wide without mask conversions.
 #include "lod/select_kernel.hpp"
 
+#include "lod/criterion.hpp"
 #include "lod/acuity.hpp"
 
 #include <cstdint>
@@ -42,15 +43,9 @@ GAZELOD_IVDEP
       nc += w2 > tc ? 1.0f : 0.0f;
     }
     ns *= on_s, ne *= on_e, nv *= on_v;
-    // Criterion values (select.hpp): none 0, size 1, eccentricity 2, velocity 3, combined 4.
     // A switched-off count is 0, so it can only equal nc when nc is 0 (already "none").
-    // Innermost choice first: one two-way blend per step (a nested ?: chain is a phi GCC
-    // 12 cannot if-convert).
-    float why = nc == nv ? 3.0f : 4.0f;
-    why = nc == ne ? 2.0f : why;
-    why = nc == ns ? 1.0f : why;
-    why = nc == 0.0f ? 0.0f : why;
-    why = b.invalid[j] > 0.5 ? 5.0f : why;  // Criterion::invalid_input
+    float why = limiting_criterion(nc, ns, ne, nv);
+    why = b.invalid[j] > 0.5 ? float(Criterion::invalid_input) : why;
     // Exact small integers: float -> int32 -> uint8.
     lod[j] = static_cast<std::uint8_t>(static_cast<std::int32_t>(nc));
     limited[j] = static_cast<std::uint8_t>(static_cast<std::int32_t>(why));

@@ -22,7 +22,7 @@ std::string seconds(std::int64_t ns) { return std::to_string(static_cast<double>
 GazeArbiter::GazeArbiter(gaze::GazeSource* primary, gaze::GazeSource* secondary, ArbiterConfig config)
     : primary_(primary), secondary_(secondary), config_(config) {}
 
-void GazeArbiter::switch_to(ArbitratedSource s, const std::string& why, bool force_report) {
+void GazeArbiter::switch_to(GazeSourceKind s, const std::string& why, bool force_report) {
   if (s == current_ && reported_initial_ && !force_report) return;
   current_ = s;
   reported_initial_ = true;
@@ -37,15 +37,15 @@ ArbiterResult GazeArbiter::update(std::int64_t t_ns) {
   ArbiterResult result;
   bool newly_distrusted = false;  // reported even if the active source stays the same
   // Reasons are only spelled out when a change is reported: no allocation in a steady frame.
-  auto must_report = [&](ArbitratedSource s) { return s != current_ || !reported_initial_ || newly_distrusted; };
+  auto must_report = [&](GazeSourceKind s) { return s != current_ || !reported_initial_ || newly_distrusted; };
 
   if (primary_ && !primary_distrusted_) {
     if (auto s = usable(primary_->sample_at(t_ns))) {
       primary_ever_ = true;
-      result.source = ArbitratedSource::primary;
+      result.source = GazeSourceKind::openxr;
       result.sample = *s;
       if (must_report(result.source))
-        switch_to(ArbitratedSource::primary, primary_->name() + " eye gaze delivered", false);
+        switch_to(GazeSourceKind::openxr, primary_->name() + " eye gaze delivered", false);
       return result;
     }
     // Never delivered within the timeout: the runtime advertises gaze it does not have.
@@ -58,7 +58,7 @@ ArbiterResult GazeArbiter::update(std::int64_t t_ns) {
   const std::optional<gaze::GazeSample> second = secondary_ ? usable(secondary_->sample_at(t_ns)) : std::nullopt;
   // Short gaps of a trusted primary (blinks) are bridged by the source's own hold; beyond
   // that the head-fixed fallback keeps detail with a widened cone.
-  result.source = second ? ArbitratedSource::secondary : ArbitratedSource::head_fixed;
+  result.source = second ? GazeSourceKind::external : GazeSourceKind::head_fixed;
   if (second) result.sample = *second;
   if (!must_report(result.source)) return result;
 

@@ -4,14 +4,13 @@
 #pragma once
 
 #include "gaze/gaze_source.hpp"
+#include "plugin/gaze_source_kind.hpp"
 
 #include <cstdint>
 #include <functional>
 #include <string>
 
 namespace gazelod::plugin {
-
-enum class ArbitratedSource : std::uint8_t { primary, secondary, head_fixed };
 
 struct ArbiterConfig {
   // Until the primary source has delivered once, it is given this long from the first
@@ -21,15 +20,16 @@ struct ArbiterConfig {
 };
 
 struct ArbiterResult {
-  ArbitratedSource source = ArbitratedSource::head_fixed;
+  GazeSourceKind source = GazeSourceKind::head_fixed;
   gaze::GazeSample sample;  // valid only when source != head_fixed
 };
 
 class GazeArbiter {
  public:
-  using Changed = std::function<void(ArbitratedSource now, const std::string& why)>;
+  using Changed = std::function<void(GazeSourceKind now, const std::string& why)>;
 
-  // Either source may be null. The arbiter does not own them.
+  // Either source may be null (primary: the runtime's eye gaze, GazeSourceKind::openxr;
+  // secondary: the external source). The arbiter does not own them.
   GazeArbiter(gaze::GazeSource* primary, gaze::GazeSource* secondary, ArbiterConfig config = {});
 
   void on_change(Changed callback) { changed_ = std::move(callback); }
@@ -38,18 +38,17 @@ class GazeArbiter {
   // change of source, and once more when the primary is distrusted.
   ArbiterResult update(std::int64_t t_ns);
 
-  ArbitratedSource current() const { return current_; }
   // True once the primary source was judged silent (advertised but never delivered).
   bool primary_distrusted() const { return primary_distrusted_; }
 
  private:
-  void switch_to(ArbitratedSource s, const std::string& why, bool force_report);
+  void switch_to(GazeSourceKind s, const std::string& why, bool force_report);
 
   gaze::GazeSource* primary_;
   gaze::GazeSource* secondary_;
   ArbiterConfig config_;
   Changed changed_;
-  ArbitratedSource current_ = ArbitratedSource::head_fixed;
+  GazeSourceKind current_ = GazeSourceKind::head_fixed;
   bool started_ = false;
   bool reported_initial_ = false;
   std::int64_t first_t_ns_ = 0;

@@ -35,7 +35,6 @@ HeadMotion HeadTracker::locate(XrTime time) {
   const double dt_s = have_previous_ ? static_cast<double>(time - previous_time_) * 1e-9 : 0.0;
   if (velocity.velocityFlags & XR_SPACE_VELOCITY_ANGULAR_VALID_BIT) {
     m.angular_velocity_rad_s = {velocity.angularVelocity.x, velocity.angularVelocity.y, velocity.angularVelocity.z};
-    m.velocity_from_runtime = true;
   } else if (have_previous_) {
     m.angular_velocity_rad_s = angular_velocity_from_poses(previous_orientation_, m.orientation, dt_s);
   }

@@ -17,7 +17,6 @@ struct HeadMotion {
   glm::dvec3 position_m{0.0};
   glm::dvec3 angular_velocity_rad_s{0.0};       // base-space axes
   glm::dvec3 linear_velocity_m_s{0.0};
-  bool velocity_from_runtime = false;
 };
 
 // Angular velocity (rad/s, axes of the frame both orientations are in) that turns q0 into

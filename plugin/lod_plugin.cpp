@@ -1,15 +1,20 @@
 // The plugin: a thin adapter from OpenXR (head, views, eye gaze) to the core's selection.
 #include "plugin/gazelod.hpp"
 
+#include "budget/frame_budget.hpp"
+#include "lod/acuity.hpp"
+#include "lod/angles.hpp"
 #include "lod/display.hpp"
 #include "lod/object_set.hpp"
 #include "lod/select.hpp"
 #include "plugin/gaze_arbiter.hpp"
 #include "plugin/head_motion.hpp"
 #include "plugin/openxr_gaze_source.hpp"
+#include "plugin/xr_check.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 namespace gazelod {
@@ -25,20 +30,9 @@ const char* to_string(GazeSourceKind kind) {
 
 namespace {
 
-constexpr double kDegPerRad = 57.29577951308232;
+using lod::kDegPerRad;
 
-void check(XrResult r, const char* call) {
-  if (XR_FAILED(r)) throw std::runtime_error(std::string("gazelod plugin: ") + call + " failed (" + std::to_string(r) + ")");
-}
-
-GazeSourceKind kind_of(plugin::ArbitratedSource s) {
-  switch (s) {
-    case plugin::ArbitratedSource::primary: return GazeSourceKind::openxr;
-    case plugin::ArbitratedSource::secondary: return GazeSourceKind::external;
-    case plugin::ArbitratedSource::head_fixed: break;
-  }
-  return GazeSourceKind::head_fixed;
-}
+void check(XrResult r, const char* call) { xr_check(r, call, "gazelod plugin: "); }
 
 class LodPluginImpl final : public LodPlugin {
  public:
@@ -57,8 +51,8 @@ class LodPluginImpl final : public LodPlugin {
     plugin::ArbiterConfig ac;
     ac.silence_timeout_ns = static_cast<std::int64_t>(config_.gaze_silence_timeout_s * 1e9);
     arbiter_ = std::make_unique<plugin::GazeArbiter>(xr_gaze_.get(), config_.external_source.get(), ac);
-    arbiter_->on_change([this](plugin::ArbitratedSource s, const std::string& why) {
-      active_ = kind_of(s);
+    arbiter_->on_change([this](GazeSourceKind s, const std::string& why) {
+      active_ = s;
       if (changed_) changed_(active_, why);
     });
 
@@ -111,9 +105,9 @@ class LodPluginImpl final : public LodPlugin {
 
     glm::dvec3 gaze_head(0.0, 0.0, -1.0);
     double error_deg = config_.head_fixed_cone_deg;
-    if (gaze.source != plugin::ArbitratedSource::head_fixed) {
+    if (gaze.source != GazeSourceKind::head_fixed) {
       gaze_head = gaze.sample.direction;
-      error_deg = gaze.source == plugin::ArbitratedSource::primary ? config_.openxr_gaze_error_deg
+      error_deg = gaze.source == GazeSourceKind::openxr ? config_.openxr_gaze_error_deg
                                                                    : config_.external_gaze_error_deg;
       // Eye-in-head rotation from successive samples of the same source (pursuit keeps
       // detail); none across a source change or a gap.
@@ -154,20 +148,24 @@ class LodPluginImpl final : public LodPlugin {
 
     apply_budget();
 
-    frame_.gaze_source = kind_of(gaze.source);
-    frame_.gaze_valid = gaze.source != plugin::ArbitratedSource::head_fixed;
-    frame_.gaze_direction_world = v.gaze_direction;
-    frame_.gaze_direction_head = gaze_head;
-    frame_.eye_position_world = v.eye_position_m;
-    frame_.head_angular_velocity_rad_s = v.head_angular_velocity_rad_s;
-    frame_.cone_inflation_deg = error_deg;
-    frame_.xi_cpd = xi_cpd_;
-    frame_.head_valid = head.valid;
+    frame_.gaze_source = gaze.source;
+    frame_.gaze_valid = gaze.source != GazeSourceKind::head_fixed;
+    diag_.gaze_direction_world = v.gaze_direction;
+    diag_.gaze_direction_head = gaze_head;
+    diag_.eye_position_world = v.eye_position_m;
+    diag_.head_angular_velocity_rad_s = v.head_angular_velocity_rad_s;
+    diag_.gaze_error_deg = error_deg;
+    // Reddy 1995's foveal cone: out to where M(E) leaves 1 (the fovea), widened by the error.
+    diag_.foveal_cone = lod::make_foveal_cone(v.eye_position_m, v.gaze_direction,
+                                              lod::kEccentricitySeamDeg, error_deg);
+    diag_.xi_cpd = xi_cpd_;
+    diag_.head_valid = head.valid;
     return frame_;
   }
 
+  const FrameDiagnostics& diagnostics() const override { return diag_; }
+
   void end_frame(double measured_frame_ms) override {
-    last_frame_ms_ = measured_frame_ms;
     if (budget_) budget_->observe(measured_frame_ms);
   }
 
@@ -178,19 +176,19 @@ class LodPluginImpl final : public LodPlugin {
   // The budget pass: the perceptual levels are the finest worth drawing; the solver coarsens
   // them until the predicted frame time fits. Benefit grows with projected area (pixels).
   void apply_budget() {
-    frame_.predicted_ms = 0.0;
-    frame_.budget_infeasible = false;
+    diag_.predicted_ms = 0.0;
+    diag_.budget_infeasible = false;
     if (!(config_.budget_ms > 0.0) || store_.size() == 0) return;
-    if (!budget_) budget_ = std::make_unique<FrameBudget>(chains_, config_.budget_ms, config_.budget);
+    if (!budget_) budget_ = std::make_unique<budget::FrameBudget>(chains_, config_.budget_ms, config_.budget);
     const double px_per_deg = 2.0 * xi_cpd_;  // xi = pixels / (2 * FOV)
     for (std::size_t i = 0; i < store_.size(); ++i) {
       const double r_px = static_cast<double>(angular_radius_deg_[i]) * px_per_deg;
-      budget_view_[i].size_px = std::isfinite(r_px) ? 3.14159265358979 * r_px * r_px : 0.0;
+      budget_view_[i].size_px = std::isfinite(r_px) ? std::numbers::pi * r_px * r_px : 0.0;
       budget_view_[i].importance = std::clamp(importance_[i], 0.0, 1.0);
     }
     try {
-      frame_.budget_infeasible = !budget_->choose(lod_, budget_view_, budget_lod_);
-      frame_.predicted_ms = budget_->predicted_ms();
+      diag_.budget_infeasible = !budget_->choose(lod_, budget_view_, budget_lod_);
+      diag_.predicted_ms = budget_->predicted_ms();
     } catch (const std::exception&) {
       // Inputs the solver refuses: draw the perceptual choice rather than guess.
       std::copy(lod_.begin(), lod_.end(), budget_lod_.begin());
@@ -250,14 +248,14 @@ class LodPluginImpl final : public LodPlugin {
     breakdown_se_out_ = {se_, scratch_a_, scratch_b_, scratch_c_, scratch_d_, {}, {}, {}};
     breakdown_sv_out_ = {sv_, scratch_a_, scratch_b_, scratch_c_, scratch_d_, {}, {}, {}};
     frame_.lod = budget ? std::span<const std::uint8_t>(budget_lod_) : std::span<const std::uint8_t>(lod_);
-    frame_.lod_perceptual = lod_;
     frame_.limited_by = limited_;
-    frame_.lod_size_only = size_only_;
-    frame_.lod_eccentricity_only = ecc_only_;
-    frame_.lod_velocity_only = vel_only_;
+    diag_.lod_perceptual = lod_;
+    diag_.lod_size_only = size_only_;
+    diag_.lod_eccentricity_only = ecc_only_;
+    diag_.lod_velocity_only = vel_only_;
     if (config_.compute_breakdown) {
-      frame_.lod_size_eccentricity = se_;
-      frame_.lod_size_velocity = sv_;
+      diag_.lod_size_eccentricity = se_;
+      diag_.lod_size_velocity = sv_;
     }
   }
 
@@ -278,6 +276,7 @@ class LodPluginImpl final : public LodPlugin {
   std::vector<std::uint8_t> scratch_a_, scratch_b_, scratch_c_, scratch_d_;
   lod::Decisions decisions_out_, breakdown_se_out_, breakdown_sv_out_;
   FrameDecisions frame_;
+  FrameDiagnostics diag_;
 
   double xi_cpd_ = 30.0;
   bool xi_fixed_ = false;
@@ -288,15 +287,14 @@ class LodPluginImpl final : public LodPlugin {
   bool have_prev_gaze_ = false;
   glm::dvec3 prev_gaze_head_{0.0, 0.0, -1.0};
   std::int64_t prev_gaze_t_ns_ = 0;
-  plugin::ArbitratedSource prev_gaze_source_ = plugin::ArbitratedSource::head_fixed;
-  double last_frame_ms_ = 0.0;
+  GazeSourceKind prev_gaze_source_ = GazeSourceKind::head_fixed;
 
   std::vector<std::vector<lod::LodLevel>> chains_;
   std::vector<double> importance_;
   std::vector<float> angular_radius_deg_;
   std::vector<std::uint8_t> budget_lod_;
-  std::vector<BudgetObjectView> budget_view_;
-  std::unique_ptr<FrameBudget> budget_;
+  std::vector<budget::BudgetObjectView> budget_view_;
+  std::unique_ptr<budget::FrameBudget> budget_;
 };
 
 }  // namespace

@@ -1,5 +1,7 @@
 #include "plugin/openxr_gaze_source.hpp"
 
+#include "plugin/xr_check.hpp"
+
 #include <glm/gtc/quaternion.hpp>
 
 #include <cmath>
@@ -9,17 +11,11 @@
 namespace gazelod::plugin {
 namespace {
 
-void check(XrInstance instance, XrResult r, const char* call) {
-  if (XR_SUCCEEDED(r)) return;
-  char name[XR_MAX_RESULT_STRING_SIZE] = "";
-  if (instance == XR_NULL_HANDLE || XR_FAILED(xrResultToString(instance, r, name)))
-    std::snprintf(name, sizeof name, "%d", static_cast<int>(r));
-  throw std::runtime_error(std::string("OpenXR eye gaze: ") + call + " failed: " + name);
-}
+void check(XrResult r, const char* call) { xr_check(r, call, "OpenXR eye gaze: "); }
 
 XrPath path(XrInstance instance, const char* s) {
   XrPath p = XR_NULL_PATH;
-  check(instance, xrStringToPath(instance, s, &p), "xrStringToPath");
+  check(xrStringToPath(instance, s, &p), "xrStringToPath");
   return p;
 }
 
@@ -38,26 +34,26 @@ OpenXrGazeSource::OpenXrGazeSource(XrInstance instance, XrSession session)
   XrActionSetCreateInfo set_info{XR_TYPE_ACTION_SET_CREATE_INFO};
   std::strncpy(set_info.actionSetName, "gazelod_eye_gaze", XR_MAX_ACTION_SET_NAME_SIZE - 1);
   std::strncpy(set_info.localizedActionSetName, "gazelod eye gaze", XR_MAX_LOCALIZED_ACTION_SET_NAME_SIZE - 1);
-  check(instance_, xrCreateActionSet(instance_, &set_info, &action_set_), "xrCreateActionSet");
+  check(xrCreateActionSet(instance_, &set_info, &action_set_), "xrCreateActionSet");
 
   XrActionCreateInfo action_info{XR_TYPE_ACTION_CREATE_INFO};
   action_info.actionType = XR_ACTION_TYPE_POSE_INPUT;
   std::strncpy(action_info.actionName, "eye_gaze", XR_MAX_ACTION_NAME_SIZE - 1);
   std::strncpy(action_info.localizedActionName, "Eye gaze", XR_MAX_LOCALIZED_ACTION_NAME_SIZE - 1);
-  check(instance_, xrCreateAction(action_set_, &action_info, &gaze_action_), "xrCreateAction");
+  check(xrCreateAction(action_set_, &action_info, &gaze_action_), "xrCreateAction");
 
   XrActionSuggestedBinding binding{gaze_action_, path(instance_, "/user/eyes_ext/input/gaze_ext/pose")};
   XrInteractionProfileSuggestedBinding suggested{XR_TYPE_INTERACTION_PROFILE_SUGGESTED_BINDING};
   suggested.interactionProfile = path(instance_, "/interaction_profiles/ext/eye_gaze_interaction");
   suggested.countSuggestedBindings = 1;
   suggested.suggestedBindings = &binding;
-  check(instance_, xrSuggestInteractionProfileBindings(instance_, &suggested),
+  check(xrSuggestInteractionProfileBindings(instance_, &suggested),
         "xrSuggestInteractionProfileBindings");
 
   XrReferenceSpaceCreateInfo view_info{XR_TYPE_REFERENCE_SPACE_CREATE_INFO};
   view_info.referenceSpaceType = XR_REFERENCE_SPACE_TYPE_VIEW;
   view_info.poseInReferenceSpace.orientation.w = 1.0f;
-  check(instance_, xrCreateReferenceSpace(session_, &view_info, &view_space_), "xrCreateReferenceSpace(VIEW)");
+  check(xrCreateReferenceSpace(session_, &view_info, &view_space_), "xrCreateReferenceSpace(VIEW)");
 }
 
 OpenXrGazeSource::~OpenXrGazeSource() {
@@ -71,7 +67,7 @@ void OpenXrGazeSource::create_space() {
   XrActionSpaceCreateInfo info{XR_TYPE_ACTION_SPACE_CREATE_INFO};
   info.action = gaze_action_;
   info.poseInActionSpace.orientation.w = 1.0f;
-  check(instance_, xrCreateActionSpace(session_, &info, &gaze_space_), "xrCreateActionSpace");
+  check(xrCreateActionSpace(session_, &info, &gaze_space_), "xrCreateActionSpace");
   status_ = "waiting for the first gaze pose";
 }
 
@@ -81,7 +77,7 @@ void OpenXrGazeSource::attach_and_own_sync() {
   XrSessionActionSetsAttachInfo attach{XR_TYPE_SESSION_ACTION_SETS_ATTACH_INFO};
   attach.countActionSets = 1;
   attach.actionSets = &action_set_;
-  check(instance_, xrAttachSessionActionSets(session_, &attach), "xrAttachSessionActionSets");
+  check(xrAttachSessionActionSets(session_, &attach), "xrAttachSessionActionSets");
   own_sync_ = true;
   create_space();
 }
@@ -133,7 +129,7 @@ std::optional<gaze::GazeSample> OpenXrGazeSource::sample_at(std::int64_t t_ns) {
   s.origin_m = {loc.pose.position.x, loc.pose.position.y, loc.pose.position.z};
   s.valid = true;
   s.confidence = 1.0f;
-  // Runtimes differ here (architecture.md): some give 0, some echo the requested time.
+  // Runtimes differ (docs/runtime.md, Gaze quirks): some give 0, some echo the requested time.
   if (sample_time.time == 0) {
     s.t_ns = t_ns;
     sample_time_quality_ = "zero (untrusted; using the requested time)";

@@ -38,7 +38,6 @@ class OpenXrGazeSource final : public gaze::GazeSource {
   std::string status() const override { return status_; }
 
   // True once the runtime delivered at least one valid gaze pose.
-  bool ever_delivered() const { return ever_delivered_; }
   // How the runtime fills XrEyeGazeSampleTimeEXT, as last seen: "true sample time",
   // "zero (untrusted; using the requested time)" or "requested time (untrusted)".
   const std::string& sample_time_quality() const { return sample_time_quality_; }

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Fuzz campaigns (issue 9, docs/hardening.md): builds the libFuzzer targets with clang
+# Fuzz campaigns (docs/hardening.md): builds the libFuzzer targets with clang
 # (-DGAZELOD_FUZZ=ON, ASan+UBSan) in build-fuzz/ and runs each for FUZZ_SECONDS (default 120).
 #
 #   scripts/fuzz.sh                     # every target, 120 s each

@@ -26,7 +26,7 @@ build() {  # build DIR [cmake args...] [-- target]
 case "$what" in
   run)
     build build -DGAZELOD_BUILD_TESTS=OFF -DGAZELOD_BUILD_BENCH=OFF
-    ./build/plugin/cli/gazelod run "$@"
+    ./build/apps/gazelod/gazelod run "$@"
     ;;
   test)
     build build -DGAZELOD_BUILD_TESTS=ON -DGAZELOD_BUILD_BENCH=ON

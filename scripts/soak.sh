@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Soak run (issue 9, docs/hardening.md): one simulated hour at 90 Hz (324,000 frames),
+# Soak run (docs/hardening.md): one simulated hour at 90 Hz (324,000 frames),
 # unpaced and headless, through the plugin's frame loop against the simulated runtime, with
 # resident memory sampled as it goes (tests/soak/soak_main.cpp fails on growth), then the same
 # under AddressSanitizer + LeakSanitizer, and optionally a shorter valgrind memcheck run.

@@ -3,6 +3,8 @@
 // R = Ry(yaw) * Rx(pitch) to the forward direction (0, 0, -1) (OpenXR axes).
 #pragma once
 
+#include "lod/angles.hpp"
+
 #include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>
 
@@ -11,8 +13,9 @@
 
 namespace gazelod::sim {
 
-constexpr double kDegToRad = std::numbers::pi / 180.0;
-constexpr double kRadToDeg = 180.0 / std::numbers::pi;
+using lod::angle_between_rad;
+using lod::kDegPerRad;
+using lod::kRadPerDeg;
 
 struct YawPitch {
   double yaw_rad = 0.0;
@@ -30,11 +33,6 @@ inline YawPitch yaw_pitch_of(const glm::dvec3& d) {
 
 inline glm::dquat rotation_from(YawPitch a) {
   return glm::angleAxis(a.yaw_rad, glm::dvec3(0, 1, 0)) * glm::angleAxis(a.pitch_rad, glm::dvec3(1, 0, 0));
-}
-
-// Angle between two directions, robust near 0 and pi (atan2, never acos).
-inline double angle_between_rad(const glm::dvec3& a, const glm::dvec3& b) {
-  return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
 }
 
 // Great-circle interpolation between unit vectors a and b at fraction p in [0, 1].

@@ -26,7 +26,7 @@ const lod::DisplaySpec& preset_or_fail(const std::string& name, JsonFields& f, c
 
 lod::FovRad read_fov(JsonFields& f, const std::string& key, double scale) {
   JsonFields a(*f.child(key), f.key_path(key), f.source());
-  const double lim = 90.0 / (scale == 1.0 ? kRadToDeg : 1.0);  // 90 deg in the key's unit
+  const double lim = 90.0 / (scale == 1.0 ? kDegPerRad : 1.0);  // 90 deg in the key's unit
   lod::FovRad fov;
   fov.angle_left_rad = a.required_number("left", -lim, lim) * scale;
   fov.angle_right_rad = a.required_number("right", -lim, lim) * scale;
@@ -53,7 +53,7 @@ lod::DisplaySpec read_display(const nlohmann::json& j, JsonFields& top) {
   v.height_px = static_cast<int>(f.integer("height_px", v.height_px, 1, 65536));
   const int fov_keys = f.has("fov_deg") + f.has("fov_rad") + (f.has("fov_h_deg") || f.has("fov_v_deg"));
   if (fov_keys > 1) f.fail("", "give one of fov_deg, fov_rad or fov_h_deg + fov_v_deg");
-  if (f.has("fov_deg")) v.fov = read_fov(f, "fov_deg", kDegToRad);
+  if (f.has("fov_deg")) v.fov = read_fov(f, "fov_deg", kRadPerDeg);
   else if (f.has("fov_rad")) v.fov = read_fov(f, "fov_rad", 1.0);
   else if (f.has("fov_h_deg") || f.has("fov_v_deg"))
     v.fov = lod::symmetric_fov(f.required_number("fov_h_deg", 1e-3, 179.0), f.required_number("fov_v_deg", 1e-3, 179.0));

@@ -1,4 +1,4 @@
-// The "scene" part of a scenario: explicit objects and generators (random_field: seed 000's
+// The "scene" part of a scenario: explicit objects and generators (random_field: Reddy 1998's
 // random field of objects with a forward path through it), with path-naming errors.
 #pragma once
 

@@ -26,7 +26,7 @@ struct ScenarioError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// How the simulated runtime delivers eye gaze; real runtimes differ (architecture.md).
+// How the simulated runtime delivers eye gaze; real runtimes differ (docs/runtime.md, Gaze quirks).
 enum class GazeDelivery : std::uint8_t {
   normal,                       // pose at the requested time, true sample time
   never_delivers,               // advertises the extension, pose never valid
@@ -57,7 +57,7 @@ struct EffectSpec {
 };
 
 // The observer's path before head effects: position_m(t) = start_m + velocity_m_s * t
-// (seed 000's forward walk through a random field of objects).
+// (Reddy 1998's forward walk through a random field of objects).
 struct HeadPath {
   glm::dvec3 start_m{0.0};
   glm::dvec3 velocity_m_s{0.0};
@@ -78,7 +78,7 @@ struct Scenario {
 
 Scenario load_scenario_json(std::string_view json_text, std::string_view source_name);
 Scenario load_scenario_file(const std::string& path);
-// The embedded default: a seed-000-style field of objects with four LODs, an eye-tracked HMD
+// The embedded default: a Reddy-1998-style field of objects with four LODs, an eye-tracked HMD
 // preset, head sweeps, saccades and a pursuit.
 std::string_view default_scenario_json();
 // The scenario as JSON that load_scenario_json reads back to an equal scenario (generated

@@ -1,7 +1,7 @@
 // Runs the gazelod program in-process (gazelod::cli::run) for the command-line tests.
 #pragma once
 
-#include "plugin/cli/command.hpp"
+#include "apps/gazelod/command.hpp"
 
 #include <sstream>
 #include <string>

@@ -1,4 +1,4 @@
-// The rendered perceptual profile (bake --profile, Reddy seed 000 3.3) against the plain bake:
+// The rendered perceptual profile (bake --profile, Reddy 1998 section 3.3) against the plain bake:
 // what 6 and 18 viewpoints cost, and what they change. Before the timings, main() bakes a few
 // generated meshes with 6 and 18 viewpoints and prints (1) per level the geometric figure
 // D / (2e), the rendered ones and their ratio, with the correlation of their logarithms, and

@@ -1,18 +1,18 @@
 // Synthetic frame-budget scenes for bench_budget: n objects with m levels each, triangles
 // halving per level. Cost per level (ms) is Funkhouser & Sequin's max(C1 tris + C2 verts,
-// C3 pixels); benefit is the FrameBudget form (plugin/frame_budget.hpp):
+// C3 pixels); benefit is the FrameBudget form (budget/frame_budget.hpp):
 // size_px * importance * sqrt(tris / tris_finest), concave in cost except where the fill term
 // binds (coarse levels of large objects), so the scenes are mostly, not perfectly, convex.
 #pragma once
 
-#include "lod/cost_model.hpp"
-#include "lod/knapsack.hpp"
+#include "budget/cost_model.hpp"
+#include "budget/knapsack.hpp"
 
 #include <cmath>
 #include <random>
 #include <vector>
 
-namespace gazelod::lod::bench {
+namespace gazelod::budget::bench {
 
 struct Scene {
   MckpInstance inst;
@@ -83,4 +83,4 @@ inline void drift(Scene& s, std::mt19937& rng, double sigma) {
   update_items(s);
 }
 
-}  // namespace gazelod::lod::bench
+}  // namespace gazelod::budget::bench

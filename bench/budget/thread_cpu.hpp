@@ -4,7 +4,7 @@
 
 #include <ctime>
 
-namespace gazelod::lod::bench {
+namespace gazelod::budget::bench {
 
 inline double thread_cpu_s() {
   timespec ts{};
@@ -12,4 +12,4 @@ inline double thread_cpu_s() {
   return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
 }
 
-}  // namespace gazelod::lod::bench
+}  // namespace gazelod::budget::bench

@@ -1,6 +1,6 @@
 // ns per object for the full selection (lod/select.hpp) at 1k..1M objects, beside a naive
 // per-object baseline in the same run: array of structs, acos of a dot product, asin, log10
-// and a division per level, as a first implementation of seed 000 would do it.
+// and a division per level, as a first implementation of Reddy 1998 would do it.
 // Counters: ns_per_object = this thread's CPU time / (iterations x objects), a plain number
 // in ns; speedup_vs_naive = the naive loop's ns_per_object at the same size (run first, same
 // process) over this one's. The naive benchmarks are registered first for that reason.

@@ -1,7 +1,7 @@
 // The peer: OpenSceneGraph's osg::LOD in PIXEL_SIZE_ON_SCREEN mode against gazelod's
 // select_lods over the same objects, in the same process. OSG's selection happens in the cull
 // traversal (osgUtil::CullVisitor, as osgViewer runs it each frame); each object is an
-// osg::LOD with four children whose pixel-size ranges encode seed 000's size rule
+// osg::LOD with four children whose pixel-size ranges encode Reddy 1998's size rule
 // (peer_scene.hpp). Counters: ns_per_object (CPU time / objects), triangles (what the chosen
 // levels would draw, per frame). Variants:
 //   Osg_NoCulling     cull traversal with culling off: LOD selection for every object
@@ -126,7 +126,7 @@ void gazelod_select(benchmark::State& state, bool all) {
   for (const PeerObject& o : objects) store.add({o.x, o.y, o.z}, o.radius, {0.0, 0.0, 0.0}, chain);
   lod::Viewer viewer;
   viewer.eye_velocity_m_s = {0.0, 0.0, all ? -4.36 : 0.0};
-  // xi = max(1280 / (2 * 43.6), 1024 / (2 * 33.4)) = 15.33 c/deg (seed 000 equation 4).
+  // xi = max(1280 / (2 * 43.6), 1024 / (2 * 33.4)) = 15.33 c/deg (Reddy 1998 equation 4).
   viewer.xi_cpd = std::max(kWidthPx / (2.0 * kFovHDeg), kHeightPx / (2.0 * kFovVDeg));
   viewer.use_eccentricity = all;
   viewer.use_velocity = all;

@@ -1,7 +1,7 @@
-// The objects both sides of the peer benchmark select LODs for: seed 000's test environment
+// The objects both sides of the peer benchmark select LODs for: Reddy 1998's test environment
 // (four LODs of 3928, 834, 254, 76 triangles; removed detail sqrt(triangles) / 2 cycles per
 // diameter), randomly placed ahead of a viewer on a 1280x1024, 43.6 x 33.4 deg display.
-// The same generator as `gazelod eval`'s layouts (plugin/cli/eval_scenario.cpp), inlined so
+// The same generator as `gazelod eval`'s layouts (apps/gazelod/eval_scenario.cpp), inlined so
 // the benchmark needs only gazelod_lod.
 #pragma once
 
@@ -47,7 +47,7 @@ inline std::vector<PeerObject> peer_objects(std::size_t n, std::uint64_t seed = 
 inline double removed_cycles(std::size_t level) { return std::sqrt(static_cast<double>(kTriangles[level])) / 2.0; }
 
 // The pixel diameter below which level k >= 1 is invisible for a still, foveal object by
-// seed 000's size criterion (a pixel is half a cycle, so c cycles need 2c pixels): this is
+// Reddy 1998's size criterion (a pixel is half a cycle, so c cycles need 2c pixels): this is
 // what osg::LOD's PIXEL_SIZE_ON_SCREEN ranges are set from, so both sides implement the
 // same rule and differ only in how they evaluate it.
 inline double level_max_pixels(std::size_t level) { return 2.0 * removed_cycles(level); }

@@ -1,11 +1,11 @@
-// Plugin per-frame cost for 10k objects (issue 5's target: begin_frame at most 0.5 ms on one
+// Plugin per-frame cost for 10k objects (the target: begin_frame at most 0.5 ms on one
 // core), over gazelod's simulated OpenXR runtime, unpaced. The same process also times the
 // bare selection (lod::select_lods) on the same objects, so the ratio shows what the OpenXR
 // side (gaze action, xrLocateSpace, xrLocateViews) adds.
 //   ./build/bench/plugin/bench_plugin
 #include "lod/object_set.hpp"
 #include "lod/select.hpp"
-#include "plugin/cli/xr_app.hpp"
+#include "apps/xr_host/xr_app.hpp"
 #include "plugin/gazelod.hpp"
 
 #include <benchmark/benchmark.h>
@@ -23,7 +23,7 @@ struct Field {
   std::vector<ObjectDesc> objects;
 };
 
-// Seed 000's random field: objects ahead of the viewer, four LODs of 3928/834/254/76 triangles.
+// Reddy 1998's random field: objects ahead of the viewer, four LODs of 3928/834/254/76 triangles.
 Field make_field(std::size_t n) {
   Field f;
   std::mt19937_64 rng(7);
@@ -43,7 +43,7 @@ Field make_field(std::size_t n) {
 }
 
 struct Session {
-  std::unique_ptr<cli::XrApp> app;
+  std::unique_ptr<xr_host::XrApp> app;
   std::unique_ptr<LodPlugin> plugin;
 };
 
@@ -57,7 +57,7 @@ Session& session(std::size_t n, bool breakdown) {
   ::setenv("GAZELOD_SIM_PACED", "0", 1);
   ::setenv("GAZELOD_SIM_DURATION_S", "100000", 1);
   s = std::make_unique<Session>();
-  s->app = std::make_unique<cli::XrApp>(true);
+  s->app = std::make_unique<xr_host::XrApp>(true);
   PluginConfig cfg;
   cfg.compute_breakdown = breakdown;
   s->plugin = LodPlugin::create(s->app->instance(), s->app->system(), s->app->session(),

@@ -2,11 +2,11 @@
 // drawn at full detail (baseline), LOD-reduced the way the gaze-contingent selection tends to
 // (finest near the gaze, coarser with eccentricity), and with nothing but the clear.
 // Counters: fps (frames per second) and triangles per frame.
-#include "plugin/render/device_context.hpp"
-#include "plugin/render/frame_renderer.hpp"
-#include "plugin/render/mesh_library.hpp"
-#include "plugin/render/offscreen_target.hpp"
-#include "plugin/render/render_error.hpp"
+#include "render/device_context.hpp"
+#include "render/frame_renderer.hpp"
+#include "render/mesh_library.hpp"
+#include "render/offscreen_target.hpp"
+#include "render/render_error.hpp"
 
 #include <benchmark/benchmark.h>
 #include <glm/geometric.hpp>

@@ -9,10 +9,10 @@ namespace {
 class CalibrationOffset final : public Effect {
  public:
   explicit CalibrationOffset(EffectInit& in) {
-    yaw_rad_ = in.params.number("yaw_deg", 0.0, -30.0, 30.0) * kDegToRad;
-    pitch_rad_ = in.params.number("pitch_deg", 0.0, -30.0, 30.0) * kDegToRad;
-    drift_yaw_rad_s_ = in.params.number("drift_yaw_deg_per_min", 0.0, -60.0, 60.0) * kDegToRad / 60.0;
-    drift_pitch_rad_s_ = in.params.number("drift_pitch_deg_per_min", 0.0, -60.0, 60.0) * kDegToRad / 60.0;
+    yaw_rad_ = in.params.number("yaw_deg", 0.0, -30.0, 30.0) * kRadPerDeg;
+    pitch_rad_ = in.params.number("pitch_deg", 0.0, -30.0, 30.0) * kRadPerDeg;
+    drift_yaw_rad_s_ = in.params.number("drift_yaw_deg_per_min", 0.0, -60.0, 60.0) * kRadPerDeg / 60.0;
+    drift_pitch_rad_s_ = in.params.number("drift_pitch_deg_per_min", 0.0, -60.0, 60.0) * kRadPerDeg / 60.0;
   }
   unsigned stages() const override { return kStageTrackerSample; }
   void apply_sample(gaze::GazeSample& s) const override {

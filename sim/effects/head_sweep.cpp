@@ -9,8 +9,8 @@ namespace {
 class HeadSweep final : public Effect {
  public:
   explicit HeadSweep(EffectInit& in) {
-    yaw_amp_rad_ = in.params.number("yaw_amplitude_deg", 0.0, 0.0, 180.0) * kDegToRad;
-    pitch_amp_rad_ = in.params.number("pitch_amplitude_deg", 0.0, 0.0, 90.0) * kDegToRad;
+    yaw_amp_rad_ = in.params.number("yaw_amplitude_deg", 0.0, 0.0, 180.0) * kRadPerDeg;
+    pitch_amp_rad_ = in.params.number("pitch_amplitude_deg", 0.0, 0.0, 90.0) * kRadPerDeg;
     const double yaw_period_s = in.params.number("yaw_period_s", 4.0, 0.05, 1e5);
     const double pitch_period_s = in.params.number("pitch_period_s", yaw_period_s, 0.05, 1e5);
     yaw_w_ = 2.0 * std::numbers::pi / yaw_period_s;

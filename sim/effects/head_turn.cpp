@@ -11,7 +11,7 @@ namespace {
 class HeadTurn final : public Effect {
  public:
   explicit HeadTurn(EffectInit& in) {
-    rate_rad_s_ = in.params.required_number("rate_deg_s", -300.0, 300.0) * kDegToRad;
+    rate_rad_s_ = in.params.required_number("rate_deg_s", -300.0, 300.0) * kRadPerDeg;
     const std::string axis = in.params.string("axis", "yaw");
     if (axis == "yaw") pitch_ = false;
     else if (axis == "pitch") pitch_ = true;

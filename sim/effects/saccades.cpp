@@ -26,7 +26,7 @@ class Saccades final : public Effect {
     fix_max_ms_ = in.params.number("fixation_max_ms", std::max(400.0, fix_min_ms_), fix_min_ms_, 1e5);
     amp_min_deg_ = in.params.number("amplitude_min_deg", 2.0, 0.0, 90.0);
     amp_max_deg_ = in.params.number("amplitude_max_deg", std::max(15.0, amp_min_deg_), amp_min_deg_, 90.0);
-    range_rad_ = in.params.number("range_deg", 20.0, 0.0, 60.0) * kDegToRad;
+    range_rad_ = in.params.number("range_deg", 20.0, 0.0, 60.0) * kRadPerDeg;
     window_ = read_window(in.params);
     next_start_ns_ = window_.start_ns;
     extend_to(std::min(window_.end_ns, window_.start_ns + to_ns(60.0)));
@@ -56,7 +56,7 @@ class Saccades final : public Effect {
       Segment s;
       s.fix_start_ns = next_start_ns_;
       s.sac_start_ns = s.fix_start_ns + to_ns(rng_.uniform(4 * i, fix_min_ms_, fix_max_ms_) * 1e-3);
-      const double amp_rad = rng_.uniform(4 * i + 1, amp_min_deg_, amp_max_deg_) * kDegToRad;
+      const double amp_rad = rng_.uniform(4 * i + 1, amp_min_deg_, amp_max_deg_) * kRadPerDeg;
       const double theta = rng_.uniform(4 * i + 2, 0.0, 2.0 * std::numbers::pi);
       YawPitch next{cur_.yaw_rad + amp_rad * std::cos(theta), cur_.pitch_rad + amp_rad * std::sin(theta)};
       if (std::hypot(next.yaw_rad, next.pitch_rad) > range_rad_) {  // turn back towards the centre
@@ -66,7 +66,7 @@ class Saccades final : public Effect {
       }
       s.from = direction_from(cur_);
       s.to = direction_from(next);
-      const double amp_deg = angle_between_rad(s.from, s.to) * kRadToDeg;
+      const double amp_deg = angle_between_rad(s.from, s.to) * kDegPerRad;
       s.ratio = saccade_velocity_ratio(amp_deg);
       s.sac_end_ns = s.sac_start_ns + to_ns(saccade_duration_s(amp_deg));
       segments_.push_back(s);

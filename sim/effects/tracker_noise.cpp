@@ -9,7 +9,7 @@ namespace {
 class TrackerNoise final : public Effect {
  public:
   explicit TrackerNoise(EffectInit& in) : rng_(in.rng) {
-    std_rad_ = in.params.required_number("std_deg", 0.0, 30.0) * kDegToRad;
+    std_rad_ = in.params.required_number("std_deg", 0.0, 30.0) * kRadPerDeg;
   }
   unsigned stages() const override { return kStageTrackerSample; }
   void apply_sample(gaze::GazeSample& s) const override {

@@ -1,7 +1,7 @@
 // gazelod bake through gazelod::cli::run: exit codes, progress, summary, usage errors.
 #include "tests/cli_run.hpp"
 #include "bake/baked_scene.hpp"
-#include "plugin/cli/command.hpp"
+#include "apps/gazelod/command.hpp"
 #include "tests/bake/test_meshes.hpp"
 
 #include <gtest/gtest.h>

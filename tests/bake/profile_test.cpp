@@ -6,11 +6,11 @@
 #include "bake/profile_render.hpp"
 #include "bake/profile_spectrum.hpp"
 #include "bake/simplify_chain.hpp"
-#include "plugin/cli/command.hpp"
-#include "plugin/render/frame_renderer.hpp"
-#include "plugin/render/mesh_library.hpp"
-#include "plugin/render/offscreen_target.hpp"
-#include "plugin/render/render_error.hpp"
+#include "apps/gazelod/command.hpp"
+#include "render/frame_renderer.hpp"
+#include "render/mesh_library.hpp"
+#include "render/offscreen_target.hpp"
+#include "render/render_error.hpp"
 #include "tests/bake/test_meshes.hpp"
 
 #include <glm/geometric.hpp>

@@ -1,12 +1,14 @@
 // The `gazelod budget` command: the contract's JSON output, exit codes and error messages.
-#include "plugin/cli/command.hpp"
+#include "apps/gazelod/command.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <sstream>
+#include <string_view>
 
 namespace gazelod::cli {
 namespace {
@@ -107,6 +109,129 @@ TEST(BudgetCli, HierarchyOutputsGroupChoices) {
   EXPECT_EQ(j["profit"].get<double>(), 12);
   EXPECT_EQ(j["selection"], nlohmann::json::parse("[0, 0, null, null]"));
   EXPECT_EQ(j["groups"], nlohmann::json::parse("[0, null]"));
+}
+
+// A frame-budget-like instance large enough for the incremental solvers to need many moves.
+std::string big_instance() {
+  std::mt19937 rng(4);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  nlohmann::json subsets = nlohmann::json::array();
+  double lowest = 0;
+  for (int k = 0; k < 300; ++k) {
+    nlohmann::json items = nlohmann::json::array();
+    double w = 1 + u(rng), p = 1, slope = 1 + 3 * u(rng);
+    lowest += w;
+    for (int j = 0; j < 5; ++j) {
+      items.push_back({{"profit", p}, {"cost", w}});
+      const double dw = 0.5 + 2 * u(rng);
+      w += dw;
+      p += slope * dw;
+      slope *= 0.3 + 0.6 * u(rng);
+    }
+    subsets.push_back(items);
+  }
+  return nlohmann::json{{"capacity", 2.5 * lowest}, {"subsets", subsets}}.dump();
+}
+
+struct InstanceFile {
+  explicit InstanceFile(const std::string& text)
+      : path(std::filesystem::temp_directory_path() /
+             ("gazelod_budget_det_" + std::to_string(::getpid()) + ".json")) {
+    std::ofstream(path) << text;
+  }
+  ~InstanceFile() { std::filesystem::remove(path); }
+  Result run_budget(std::vector<std::string> extra) const {
+    std::vector<std::string> args{"budget", "--instance", path.string()};
+    args.insert(args.end(), extra.begin(), extra.end());
+    std::ostringstream out, err;
+    const int code = run(args, out, err);
+    return {code, out.str(), err.str()};
+  }
+  std::filesystem::path path;
+};
+
+void expect_same_output_every_run(const InstanceFile& file,
+                                  std::initializer_list<std::string_view> solvers) {
+  for (std::string_view solver : solvers) {
+    for (const bool as_json : {false, true}) {
+      std::vector<std::string> args{"--solver", std::string(solver)};
+      if (as_json) args.push_back("--json");
+      const Result first = file.run_budget(args);
+      // Funkhouser & Sequin's greedy may answer infeasibly (exit 4, the answer still printed).
+      if (solver == "funkhouser") ASSERT_TRUE(first.code == 0 || first.code == 4) << first.err;
+      else ASSERT_EQ(first.code, 0) << solver << first.err;
+      for (int again = 0; again < 2; ++again) {
+        const Result r = file.run_budget(args);
+        EXPECT_EQ(r.code, first.code) << solver;
+        EXPECT_EQ(r.out, first.out) << solver;
+        EXPECT_EQ(r.err, first.err) << solver;
+      }
+    }
+  }
+}
+
+TEST(BudgetCli, SameInstanceFilePrintsIdenticalOutputEveryRun) {
+  // Every solver but branch and bound (too slow on this size) on a 300-object instance; then
+  // every solver on T2.
+  expect_same_output_every_run(InstanceFile(big_instance()),
+                               {"funkhouser", "funkhouser-incremental", "mason-greedy",
+                                "mason-full", "mason-incremental", "mason-hierarchical"});
+  expect_same_output_every_run(InstanceFile(kT2),
+                               {"exact", "funkhouser", "funkhouser-incremental", "mason-greedy",
+                                "mason-full", "mason-incremental", "mason-hierarchical"});
+}
+
+TEST(BudgetCli, MaxMovesTruncatesDeterministically) {
+  const InstanceFile file(big_instance());
+  const Result full = file.run_budget({"--solver", "mason-incremental", "--json"});
+  ASSERT_EQ(full.code, 0) << full.err;
+  const auto fj = nlohmann::json::parse(full.out);
+  EXPECT_FALSE(fj["truncated"].get<bool>());
+  const auto needed = fj["moves"].get<std::uint64_t>();
+  ASSERT_GT(needed, 100u);
+  const Result a = file.run_budget({"--solver", "mason-incremental", "--json", "--max-moves", "50"});
+  const Result b = file.run_budget({"--solver", "mason-incremental", "--json", "--max-moves", "50"});
+  ASSERT_EQ(a.code, 0) << a.err;
+  EXPECT_EQ(a.out, b.out);
+  const auto aj = nlohmann::json::parse(a.out);
+  EXPECT_TRUE(aj["truncated"].get<bool>());
+  EXPECT_TRUE(aj["feasible"].get<bool>());
+  EXPECT_GE(aj["moves"].get<std::uint64_t>(), 50u);
+  EXPECT_LT(aj["profit"].get<double>(), fj["profit"].get<double>());
+  for (const auto& c : aj["selection"]) EXPECT_FALSE(c.is_null());
+  // A limit at what the solve needs changes nothing.
+  const Result same = file.run_budget(
+      {"--solver", "mason-incremental", "--json", "--max-moves", std::to_string(needed)});
+  EXPECT_EQ(same.out, full.out);
+  // Text output says so too.
+  const Result text = file.run_budget({"--solver", "mason-incremental", "--max-moves", "50"});
+  EXPECT_NE(text.out.find("(truncated: stopped at its limit)"), std::string::npos) << text.out;
+}
+
+TEST(BudgetCli, LimitOptionsAreChecked) {
+  const InstanceFile file(kT2);
+  const Result greedy = file.run_budget({"--solver", "mason-greedy", "--max-moves", "5"});
+  EXPECT_EQ(greedy.code, 2);
+  EXPECT_NE(greedy.err.find("--max-moves: applies to the incremental solvers only"), std::string::npos)
+      << greedy.err;
+  for (const char* bad : {"-1", "x", "1.5", "", "99999999999999999999999"}) {
+    const Result r = file.run_budget({"--solver", "mason-incremental", "--max-moves", bad});
+    EXPECT_EQ(r.code, 2) << bad << r.out;
+  }
+  const Result none = file.run_budget({"--solver", "mason-incremental", "--json", "--max-moves", "0"});
+  ASSERT_EQ(none.code, 0) << none.err;
+  EXPECT_EQ(nlohmann::json::parse(none.out)["selection"], nlohmann::json::parse("[0,0,0]"));
+  const Result bad_time = file.run_budget({"--solver", "mason-incremental", "--time-limit-ms", "nan"});
+  EXPECT_EQ(bad_time.code, 2);
+  EXPECT_NE(bad_time.err.find("--time-limit-ms"), std::string::npos) << bad_time.err;
+  const Result neg_time = file.run_budget({"--solver", "mason-incremental", "--time-limit-ms", "-1"});
+  EXPECT_EQ(neg_time.code, 2);
+  // An explicit, generous time limit on a small instance: converges as without one.
+  const Result timed = file.run_budget({"--solver", "mason-incremental", "--json", "--time-limit-ms", "10000"});
+  ASSERT_EQ(timed.code, 0) << timed.err;
+  const auto j = nlohmann::json::parse(timed.out);
+  EXPECT_EQ(j["selection"], nlohmann::json::parse("[1,1,1]"));
+  EXPECT_FALSE(j["truncated"].get<bool>());
 }
 
 }  // namespace

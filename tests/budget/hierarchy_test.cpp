@@ -1,12 +1,12 @@
 // The hierarchical MCKP (Mason 1999 Ch. 4, 6, 7) against brute force over every valid level of
 // detail of random hierarchies built to satisfy hierarchical convexity.
-#include "lod/knapsack.hpp"
-#include "lod/knapsack_incremental.hpp"
+#include "budget/knapsack.hpp"
+#include "budget/knapsack_incremental.hpp"
 #include "mckp_test_util.hpp"
 
 #include <gtest/gtest.h>
 
-namespace gazelod::lod {
+namespace gazelod::budget {
 namespace {
 
 struct HOpt {
@@ -69,4 +69,4 @@ TEST(BudgetHierarchy, GreedyHalfOptimalAndWithinBoundOnConvexHierarchies) {
 }
 
 }  // namespace
-}  // namespace gazelod::lod
+}  // namespace gazelod::budget

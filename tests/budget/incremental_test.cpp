@@ -1,8 +1,8 @@
 // Mason's incremental algorithm (1999 Fig. 41, sec. 7.2): from any start state it reaches the
 // greedy answer under convexity; every intermediate state is a valid level of detail; time
 // truncation still yields a complete, affordable selection; a frame allocates nothing.
-#include "lod/knapsack.hpp"
-#include "lod/knapsack_incremental.hpp"
+#include "budget/knapsack.hpp"
+#include "budget/knapsack_incremental.hpp"
 #include "mckp_test_util.hpp"
 
 #include <gtest/gtest.h>
@@ -36,7 +36,7 @@ void operator delete[](void* p) noexcept { std::free(p); }
 void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 void operator delete[](void* p, const std::nothrow_t&) noexcept { std::free(p); }
 
-namespace gazelod::lod {
+namespace gazelod::budget {
 namespace {
 
 std::vector<std::uint32_t> random_choice(std::mt19937& rng, const MckpInstance& inst) {
@@ -59,7 +59,7 @@ TEST(BudgetIncremental, EqualsGreedyFromAnyStartUnderConvexity) {
     sched.reset(inst, opt);
     for (int start = 0; start < 6; ++start) {
       const auto prev = random_choice(rng, inst);
-      sched.step(inst, prev, {}, std::chrono::seconds(10), out);
+      sched.step(inst, prev, {}, SolveLimits{}, out);
       EXPECT_FALSE(out.truncated);
       EXPECT_EQ(out.choice, greedy.choice) << "trial " << trial << " start " << start;
       EXPECT_NEAR(out.profit, greedy.profit, 1e-9);
@@ -104,7 +104,7 @@ TEST(BudgetIncremental, CoherentFramesEqualGreedyEveryFrame) {
         inst.items[j].profit = base[j].profit * scale[k];
     }
     if (f == 60) inst.capacity *= 1.1;  // a budget change mid-run
-    sched.step(inst, prev.choice, {}, std::chrono::seconds(10), cur);
+    sched.step(inst, prev.choice, {}, SolveLimits{}, cur);
     const MckpSolution greedy = solve_mason_greedy(inst, /*fill_after_critical=*/false);
     ASSERT_FALSE(cur.truncated);
     ASSERT_EQ(cur.choice, greedy.choice) << "frame " << f;
@@ -132,7 +132,7 @@ TEST(BudgetIncremental, IdenticalLevelDoesNotBlockFreeGains) {
   MckpSolution out;
   for (std::uint32_t a = 0; a < 4; ++a)
     for (std::uint32_t b = 0; b < 3; ++b) {
-      sched.step(inst, std::vector<std::uint32_t>{a, b}, {}, std::chrono::seconds(1), out);
+      sched.step(inst, std::vector<std::uint32_t>{a, b}, {}, SolveLimits{}, out);
       EXPECT_EQ(out.choice, greedy.choice) << a << b;
     }
 }
@@ -155,7 +155,7 @@ TEST(BudgetIncremental, HierarchicalEqualsGreedyFromEveryValidStart) {
         const HmckpNode& nd = sched.tree().nodes[n];
         (nd.subset != kNoItem ? start.choice[nd.subset] : start.group_choice[nd.group]) = nd.index;
       }
-      sched.step(inst, start.choice, start.group_choice, std::chrono::seconds(10), out);
+      sched.step(inst, start.choice, start.group_choice, SolveLimits{}, out);
       EXPECT_EQ(out.choice, greedy.choice) << "trial " << trial;
       EXPECT_EQ(out.group_choice, greedy.group_choice) << "trial " << trial;
       ++compared;
@@ -185,7 +185,7 @@ TEST(BudgetIncremental, EveryIntermediateStateIsAValidLod) {
     const MckpInstance inst = trial % 2 ? test::random_hierarchical(rng) : test::random_general(rng);
     sched.reset(inst);
     sched.step(inst, trial % 2 ? std::vector<std::uint32_t>{} : random_choice(rng, inst), {},
-               std::chrono::seconds(10), out);
+               SolveLimits{}, out);
   }
   EXPECT_GT(watch.calls, 1000);
   EXPECT_EQ(watch.invalid, 0);
@@ -209,7 +209,8 @@ TEST(BudgetIncremental, TruncatedFrameIsStillCompleteAndAffordable) {
   IncrementalScheduler sched;
   sched.reset(inst);
   MckpSolution out;
-  sched.step(inst, {}, {}, std::chrono::nanoseconds(0), out);  // stop at the first check
+  const SolveLimits no_time{.wall_clock_limit = std::chrono::nanoseconds(0)};  // the outer option
+  sched.step(inst, {}, {}, no_time, out);  // stop at the first check
   EXPECT_TRUE(out.truncated);
   EXPECT_TRUE(out.feasible);
   EXPECT_LE(out.cost, inst.capacity);
@@ -217,10 +218,10 @@ TEST(BudgetIncremental, TruncatedFrameIsStillCompleteAndAffordable) {
   // The next frames continue from there and converge (the skipped work is repaid).
   MckpSolution next;
   for (int f = 0; f < 200 && (f == 0 || next.truncated); ++f) {
-    sched.step(inst, out.choice, {}, std::chrono::nanoseconds(0), next);
+    sched.step(inst, out.choice, {}, no_time, next);
     out = next;
   }
-  sched.step(inst, out.choice, {}, std::chrono::seconds(10), next);
+  sched.step(inst, out.choice, {}, SolveLimits{}, next);
   EXPECT_FALSE(next.truncated);
   EXPECT_NEAR(next.profit, solve_mason_greedy(inst, false).profit, 1e-6 * next.profit);
 }
@@ -230,7 +231,7 @@ TEST(BudgetIncremental, LowestLevelOverCapacityIsReportedInfeasible) {
   IncrementalScheduler sched;
   sched.reset(inst);
   MckpSolution out;
-  sched.step(inst, {}, {}, std::chrono::seconds(1), out);
+  sched.step(inst, {}, {}, SolveLimits{}, out);
   EXPECT_FALSE(out.feasible);
   EXPECT_EQ(out.choice, (std::vector<std::uint32_t>{0, 0}));
 }
@@ -252,17 +253,17 @@ TEST(BudgetIncremental, AFrameAllocatesNothingAfterSetup) {
   IncrementalScheduler sched;
   sched.reset(inst);
   MckpSolution out, next;
-  sched.step(inst, {}, {}, std::chrono::seconds(1), out);  // first frame sizes `out`
+  sched.step(inst, {}, {}, SolveLimits{}, out);  // first frame sizes `out`
   next = out;
   std::normal_distribution<double> noise(0.0, 0.02);
   for (MckpItem& it : inst.items) it.profit *= 1.0 + noise(rng);
   g_allocations = 0;
   g_count_allocations = true;
-  for (int f = 0; f < 10; ++f) sched.step(inst, out.choice, {}, std::chrono::seconds(1), next);
+  for (int f = 0; f < 10; ++f) sched.step(inst, out.choice, {}, SolveLimits{}, next);
   g_count_allocations = false;
   EXPECT_EQ(g_allocations.load(), 0);
   EXPECT_TRUE(next.feasible);
 }
 
 }  // namespace
-}  // namespace gazelod::lod
+}  // namespace gazelod::budget

@@ -1,8 +1,8 @@
 // Helpers for the budget tests: instance builders, brute-force optima, random generators.
 #pragma once
 
-#include "lod/mckp.hpp"
-#include "lod/mckp_hierarchy.hpp"
+#include "budget/mckp.hpp"
+#include "budget/mckp_hierarchy.hpp"
 
 #include <algorithm>
 #include <functional>
@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-namespace gazelod::lod::test {
+namespace gazelod::budget::test {
 
 using Pairs = std::vector<std::vector<std::pair<double, double>>>;  // {profit, cost}
 
@@ -223,4 +223,4 @@ inline MckpInstance random_hierarchical(std::mt19937& rng) {
   return inst;
 }
 
-}  // namespace gazelod::lod::test
+}  // namespace gazelod::budget::test

@@ -1,12 +1,12 @@
 // Property tests against brute force on random instances (Mason 1999 Thms 2.1, 3.x, 6.x):
 // every answer feasible, exact equals brute force, Mason's algorithms at least half the
 // optimum and within their a-posteriori bound p_s - p_t of it.
-#include "lod/knapsack.hpp"
+#include "budget/knapsack.hpp"
 #include "mckp_test_util.hpp"
 
 #include <gtest/gtest.h>
 
-namespace gazelod::lod {
+namespace gazelod::budget {
 namespace {
 
 constexpr double kEps = 1e-9;
@@ -96,4 +96,4 @@ TEST(BudgetProperty, SelectionIndicesReferToTheInputOrder) {
 }
 
 }  // namespace
-}  // namespace gazelod::lod
+}  // namespace gazelod::budget

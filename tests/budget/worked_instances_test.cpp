@@ -1,11 +1,11 @@
 // Mason's (1999) worked instances (digest sec. 6): counterexamples 1 and 2, Figures 21, 23, 27.
-#include "lod/knapsack.hpp"
-#include "lod/knapsack_incremental.hpp"
+#include "budget/knapsack.hpp"
+#include "budget/knapsack_incremental.hpp"
 #include "mckp_test_util.hpp"
 
 #include <gtest/gtest.h>
 
-namespace gazelod::lod {
+namespace gazelod::budget {
 namespace {
 
 using test::make_instance;
@@ -67,7 +67,7 @@ TEST(BudgetWorked, T2IncrementalFromEveryStartState) {
     for (std::uint32_t b = 0; b < 2; ++b)
       for (std::uint32_t c = 0; c < 2; ++c) {
         const Sel prev{a, b, c};
-        sched.step(t2(), prev, {}, std::chrono::seconds(10), out);
+        sched.step(t2(), prev, {}, SolveLimits{}, out);
         EXPECT_DOUBLE_EQ(out.profit, 1900) << a << b << c;
         EXPECT_EQ(out.choice, (Sel{1, 1, 1}));
         ++starts;
@@ -117,7 +117,7 @@ TEST(BudgetWorked, TiesGoToTheLowerStableId) {
   sched.reset(inst);
   MckpSolution out;
   for (const Sel& start : {Sel{0, 1}, Sel{1, 1}, Sel{0, 0}, Sel{1, 0}}) {
-    sched.step(inst, start, {}, std::chrono::seconds(1), out);
+    sched.step(inst, start, {}, SolveLimits{}, out);
     EXPECT_FALSE(out.truncated);
     EXPECT_EQ(out.choice, (Sel{1, 0})) << start[0] << start[1];
   }
@@ -173,4 +173,4 @@ TEST(BudgetWorked, T5HierarchicalSolversPickTheBestAffordableLevel) {
 }
 
 }  // namespace
-}  // namespace gazelod::lod
+}  // namespace gazelod::budget

@@ -1,4 +1,4 @@
-#include "plugin/cli/run_report.hpp"
+#include "apps/gazelod/run_report.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

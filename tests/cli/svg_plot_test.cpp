@@ -1,4 +1,4 @@
-#include "plugin/cli/svg_plot.hpp"
+#include "apps/gazelod/svg_plot.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // gazelod compare end to end on the simulated runtime (headless), and its parsing of a run's
 // summary: the JSON contract, no criterion ever adding triangles, errors for bad input.
 #include "lod/display.hpp"
-#include "plugin/cli/command.hpp"
-#include "plugin/cli/compare_runs.hpp"
+#include "apps/gazelod/command.hpp"
+#include "apps/gazelod/compare_runs.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -67,7 +67,7 @@ TEST(Compare, JsonShapeAndNoCriterionAddsTriangles) {
   for (const auto& h : doc["hmds"]) {
     const std::string name = h.at("hmd");
     // xi from the preset's pixels and FOV (lod/display.hpp), e.g. the i-glasses' 4.79 c/deg
-    // of perceptual-model.md's table.
+    // of docs/perceptual-model.md's table.
     EXPECT_NEAR(h.at("xi_cpd").get<double>(), lod::xi_cpd(*lod::find_display_preset(name)), 1e-9);
     if (name == "iglasses") {
       EXPECT_NEAR(h["xi_cpd"].get<double>(), 4.79, 0.01);

@@ -1,6 +1,6 @@
-// The seed 000 scenarios `gazelod eval` writes: valid for the simulator, the paper's figures,
+// The Reddy 1998 scenarios `gazelod eval` writes: valid for the simulator, the paper's figures,
 // reproducible layouts.
-#include "plugin/cli/eval_scenario.hpp"
+#include "apps/gazelod/eval_scenario.hpp"
 #include "sim/simulator.hpp"
 
 #include <glm/geometric.hpp>

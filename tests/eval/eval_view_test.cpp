@@ -1,6 +1,6 @@
 // The evaluation's helpers: the frustum test behind the "in view" figures, and the bar chart.
-#include "plugin/cli/compare_svg.hpp"
-#include "plugin/cli/eval_lod_map.hpp"
+#include "apps/gazelod/compare_svg.hpp"
+#include "apps/gazelod/eval_lod_map.hpp"
 
 #include <glm/gtc/quaternion.hpp>
 #include <gtest/gtest.h>
@@ -13,7 +13,7 @@ namespace {
 
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
-// Symmetric 43.6 x 33.4 deg (seed 000's display).
+// Symmetric 43.6 x 33.4 deg (Reddy 1998's display).
 lod::FovRad reddy_fov() {
   return {-21.8 * kDeg, 21.8 * kDeg, 16.7 * kDeg, -16.7 * kDeg};
 }

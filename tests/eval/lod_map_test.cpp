@@ -1,5 +1,5 @@
-// Seed 004's LOD map: hand-computed scores, the published weights, colour salience, the level
-// mapping and its guards.
+// The LOD-map thesis's policy: hand-computed scores, the published weights, colour salience,
+// the level mapping and its guards.
 #include "lod/lod_map.hpp"
 
 #include <gtest/gtest.h>

@@ -64,9 +64,9 @@ gaze::GazeSample sample(std::int64_t t_ns, glm::dvec3 dir, bool valid = true) {
 }
 
 struct Changes {
-  std::vector<std::pair<ArbitratedSource, std::string>> seen;
+  std::vector<std::pair<GazeSourceKind, std::string>> seen;
   GazeArbiter::Changed sink() {
-    return [this](ArbitratedSource s, const std::string& why) { seen.emplace_back(s, why); };
+    return [this](GazeSourceKind s, const std::string& why) { seen.emplace_back(s, why); };
   }
 };
 
@@ -80,19 +80,19 @@ TEST(ArbiterFaults, NanGazeFromTheRuntimeFallsBackInsteadOfReachingTheDecision) 
   a.on_change(c.sink());
   xr.next = sample(0, kAhead);
   hid.next = sample(0, glm::normalize(glm::dvec3(0.1, 0.0, -1.0)));
-  EXPECT_EQ(a.update(0).source, ArbitratedSource::primary);
+  EXPECT_EQ(a.update(0).source, GazeSourceKind::openxr);
   for (const glm::dvec3 bad : {glm::dvec3(kNaN, 0.0, -1.0), glm::dvec3(0.0),
                                glm::dvec3(std::numeric_limits<double>::infinity(), 0.0, 0.0)}) {
     xr.next = sample(10 * kMs, bad);
     const ArbiterResult r = a.update(10 * kMs);
-    EXPECT_EQ(r.source, ArbitratedSource::secondary);
+    EXPECT_EQ(r.source, GazeSourceKind::external);
     EXPECT_TRUE(std::isfinite(r.sample.direction.x) && std::isfinite(r.sample.direction.z));
   }
   // Good gaze again: back to the runtime. Changes: primary, secondary, primary.
   xr.next = sample(20 * kMs, kAhead);
-  EXPECT_EQ(a.update(20 * kMs).source, ArbitratedSource::primary);
+  EXPECT_EQ(a.update(20 * kMs).source, GazeSourceKind::openxr);
   ASSERT_EQ(c.seen.size(), 3u);
-  EXPECT_EQ(c.seen[1].first, ArbitratedSource::secondary);
+  EXPECT_EQ(c.seen[1].first, GazeSourceKind::external);
   EXPECT_NE(c.seen[1].second.find("openxr gaze unavailable"), std::string::npos) << c.seen[1].second;
 }
 
@@ -100,7 +100,7 @@ TEST(ArbiterFaults, SamplesMarkedInvalidCountAsNoGaze) {
   ScriptedSource xr("openxr");
   GazeArbiter a(&xr, nullptr);
   xr.next = sample(0, kAhead, /*valid=*/false);
-  EXPECT_EQ(a.update(0).source, ArbitratedSource::head_fixed);
+  EXPECT_EQ(a.update(0).source, GazeSourceKind::head_fixed);
   EXPECT_FALSE(a.primary_distrusted());
 }
 
@@ -115,7 +115,7 @@ TEST(ArbiterFaults, ARuntimeDeliveringOnlyNanIsDistrustedAfterTheTimeout) {
   a.update(600 * kMs);
   EXPECT_TRUE(a.primary_distrusted());
   xr.next = sample(700 * kMs, kAhead);  // good gaze after distrust is not taken any more
-  EXPECT_EQ(a.update(700 * kMs).source, ArbitratedSource::head_fixed);
+  EXPECT_EQ(a.update(700 * kMs).source, GazeSourceKind::head_fixed);
   ASSERT_EQ(c.seen.size(), 2u);  // head-fixed at start, then the distrust (reported again)
   EXPECT_NE(c.seen[1].second.find("delivered none"), std::string::npos) << c.seen[1].second;
 }
@@ -130,7 +130,7 @@ TEST(ArbiterFaults, FrozenTrackerKeepsItsSourceAndReportsNoChange) {
   xr.next = sample(5 * kMs, kAhead);
   for (int i = 0; i < 100; ++i) {
     const ArbiterResult r = a.update(5 * kMs + i * 11 * kMs);
-    EXPECT_EQ(r.source, ArbitratedSource::primary);
+    EXPECT_EQ(r.source, GazeSourceKind::openxr);
     EXPECT_EQ(r.sample.t_ns, 5 * kMs);
   }
   EXPECT_EQ(c.seen.size(), 1u);
@@ -153,7 +153,7 @@ TEST(ArbiterFaults, UnplugAndReplugOfTheExternalTrackerAreEachReportedOnce) {
   GazeArbiter a(&xr, &hid, ArbiterConfig{100 * kMs});
   Changes c;
   a.on_change(c.sink());
-  std::vector<ArbitratedSource> per_frame;
+  std::vector<GazeSourceKind> per_frame;
   for (int f = 0; f < 90; ++f) {
     const std::int64_t t = f * 11 * kMs;
     const bool plugged = f < 30 || f >= 60;  // unplugged for frames 30..59
@@ -162,16 +162,16 @@ TEST(ArbiterFaults, UnplugAndReplugOfTheExternalTrackerAreEachReportedOnce) {
     per_frame.push_back(a.update(t).source);
   }
   EXPECT_TRUE(a.primary_distrusted());  // the runtime never delivered
-  EXPECT_EQ(per_frame[29], ArbitratedSource::secondary);
-  EXPECT_EQ(per_frame[30], ArbitratedSource::head_fixed);
-  EXPECT_EQ(per_frame[59], ArbitratedSource::head_fixed);
-  EXPECT_EQ(per_frame[60], ArbitratedSource::secondary);
+  EXPECT_EQ(per_frame[29], GazeSourceKind::external);
+  EXPECT_EQ(per_frame[30], GazeSourceKind::head_fixed);
+  EXPECT_EQ(per_frame[59], GazeSourceKind::head_fixed);
+  EXPECT_EQ(per_frame[60], GazeSourceKind::external);
   // secondary (first frame), distrust of openxr (frame 10, re-reported), head-fixed, secondary.
   ASSERT_EQ(c.seen.size(), 4u);
-  EXPECT_EQ(c.seen[2].first, ArbitratedSource::head_fixed);
+  EXPECT_EQ(c.seen[2].first, GazeSourceKind::head_fixed);
   EXPECT_NE(c.seen[2].second.find("hid unavailable (hid: unplugged)"), std::string::npos)
       << c.seen[2].second;
-  EXPECT_EQ(c.seen[3].first, ArbitratedSource::secondary);
+  EXPECT_EQ(c.seen[3].first, GazeSourceKind::external);
 }
 
 // The plugin promises no allocation per frame after the first (plugin/gazelod.hpp): the
@@ -190,19 +190,19 @@ TEST(ArbiterFaults, SteadyFramesAllocateNothingInAnyState) {
   a.on_change(c.sink());
   c.seen.reserve(16);
   std::int64_t t = 0;
-  auto steady = [&](ArbitratedSource expected) {
+  auto steady = [&](GazeSourceKind expected) {
     a.update(t += 11 * kMs);  // may report (and allocate) a change
     const long before = g_allocations.load();
     for (int i = 0; i < 500; ++i) EXPECT_EQ(a.update(t += 11 * kMs).source, expected);
     return g_allocations.load() - before;
   };
   xr.next = sample(0, kAhead);
-  EXPECT_EQ(steady(ArbitratedSource::primary), 0);
+  EXPECT_EQ(steady(GazeSourceKind::openxr), 0);
   xr.next.reset();
   hid.next = sample(0, kAhead);
-  EXPECT_EQ(steady(ArbitratedSource::secondary), 0);
+  EXPECT_EQ(steady(GazeSourceKind::external), 0);
   hid.next.reset();
-  EXPECT_EQ(steady(ArbitratedSource::head_fixed), 0);
+  EXPECT_EQ(steady(GazeSourceKind::head_fixed), 0);
   EXPECT_EQ(c.seen.size(), 3u);
 }
 

@@ -1,8 +1,8 @@
 // A frame that takes ten times its budget, and measured times that are no time at all (NaN,
-// infinite, negative), fed to the frame-budget scheduler (plugin/frame_budget.hpp): the next
+// infinite, negative), fed to the frame-budget scheduler (budget/frame_budget.hpp): the next
 // frames are still chosen, coarser or equal, under the budget by prediction, with finite
 // coefficients; bad measurements are refused and change nothing.
-#include "plugin/frame_budget.hpp"
+#include "budget/frame_budget.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@
 #include <limits>
 #include <numeric>
 
-namespace gazelod {
+namespace gazelod::budget {
 namespace {
 
 lod::LodLevel level(std::uint32_t tris) {
@@ -27,7 +27,7 @@ std::vector<std::vector<lod::LodLevel>> chains(std::size_t objects) {
 
 int total(const std::vector<std::uint8_t>& lods) { return std::accumulate(lods.begin(), lods.end(), 0); }
 
-bool finite(const lod::CostCoefficients& c) {
+bool finite(const budget::CostCoefficients& c) {
   return std::isfinite(c.c0_s) && std::isfinite(c.c1_s_per_tri) && std::isfinite(c.c2_s_per_vert) &&
          std::isfinite(c.c3_s_per_px);
 }
@@ -72,7 +72,7 @@ TEST(BudgetFaults, NonTimesAreRefusedAndChangeNothing) {
   std::vector<std::uint8_t> lods(n);
   EXPECT_FALSE(fb.observe(5.0));  // before any choose()
   fb.choose(perceptual, view, lods);
-  const lod::CostCoefficients before = fb.coefficients();
+  const budget::CostCoefficients before = fb.coefficients();
   for (double bad : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
                      -std::numeric_limits<double>::infinity(), -1.0})
     EXPECT_FALSE(fb.observe(bad)) << bad;
@@ -80,5 +80,30 @@ TEST(BudgetFaults, NonTimesAreRefusedAndChangeNothing) {
   EXPECT_EQ(fb.coefficients().c0_s, before.c0_s);
 }
 
+// The same faults replayed give the same frames: the choice depends on the inputs only (a move
+// limit, no wall clock), so a hitch can be reproduced exactly.
+TEST(BudgetFaults, ReplayingTheSameFaultsGivesTheSameFrames) {
+  const std::size_t n = 50;
+  auto replay = [&] {
+    FrameBudget fb(chains(n), 11.1);
+    std::vector<std::uint8_t> perceptual(n, 0);
+    std::vector<BudgetObjectView> view(n, BudgetObjectView{5000.0, 1.0});
+    std::vector<std::uint8_t> lods(n);
+    std::vector<std::vector<std::uint8_t>> frames;
+    for (int i = 0; i < 120; ++i) {
+      view[static_cast<std::size_t>(i) % n].size_px *= 1.5;
+      perceptual[static_cast<std::size_t>(i * 7) % n] ^= 1;
+      fb.choose(perceptual, view, lods);
+      frames.push_back(lods);
+      const double measured = i % 40 == 20 ? 10.0 * 11.1                               // a hitch
+                              : i % 40 == 30 ? std::numeric_limits<double>::quiet_NaN()  // refused
+                                             : fb.predicted_ms() * 1.1;
+      fb.observe(measured);
+    }
+    return frames;
+  };
+  EXPECT_EQ(replay(), replay());
+}
+
 }  // namespace
-}  // namespace gazelod
+}  // namespace gazelod::budget

@@ -74,8 +74,8 @@ TEST_F(HidFaults, UnpluggedAndReplugedMidRunFallsBackAndReturns) {
   plug_tracker();
   hid::HidGazeSource source(config(log, log_mutex));
   plugin::GazeArbiter arbiter(nullptr, &source);
-  std::vector<std::pair<plugin::ArbitratedSource, std::string>> changes;
-  arbiter.on_change([&](plugin::ArbitratedSource s, const std::string& why) { changes.emplace_back(s, why); });
+  std::vector<std::pair<GazeSourceKind, std::string>> changes;
+  arbiter.on_change([&](GazeSourceKind s, const std::string& why) { changes.emplace_back(s, why); });
   ASSERT_TRUE(wait_until([&] { return source.tracker().connected(); }));
 
   std::uint64_t t_us = 1000;
@@ -85,16 +85,16 @@ TEST_F(HidFaults, UnpluggedAndReplugedMidRunFallsBackAndReturns) {
     EXPECT_TRUE(wait_until([&] { return source.tracker().counters().samples > before; }));
     return arbiter.update(now_ns());
   };
-  EXPECT_EQ(frame_with_fresh_sample().source, plugin::ArbitratedSource::secondary);
+  EXPECT_EQ(frame_with_fresh_sample().source, GazeSourceKind::external);
 
   fake_hid::unplug(kPath);
   ASSERT_TRUE(wait_until([&] { return !source.tracker().connected(); }));
-  EXPECT_EQ(arbiter.update(now_ns()).source, plugin::ArbitratedSource::head_fixed);
+  EXPECT_EQ(arbiter.update(now_ns()).source, GazeSourceKind::head_fixed);
   for (int i = 0; i < 20; ++i) arbiter.update(now_ns());  // frames go on while unplugged
 
   plug_tracker();
   ASSERT_TRUE(wait_until([&] { return source.tracker().connected(); }));
-  EXPECT_EQ(frame_with_fresh_sample().source, plugin::ArbitratedSource::secondary);
+  EXPECT_EQ(frame_with_fresh_sample().source, GazeSourceKind::external);
   ASSERT_EQ(changes.size(), 3u);
   EXPECT_NE(changes[1].second.find("unplugged"), std::string::npos) << changes[1].second;
   EXPECT_EQ(source.tracker().counters().disconnects, 1u);

@@ -1,6 +1,6 @@
 // The `gazelod trace` command-line contract, through gazelod::cli::run.
 #include "gaze/trace_writer.hpp"
-#include "plugin/cli/command.hpp"
+#include "apps/gazelod/command.hpp"
 #include "tests/gaze/synth.hpp"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // gazelod hid list / record, run through the command registry against the fake hidapi.
-#include "plugin/cli/command.hpp"
+#include "apps/gazelod/command.hpp"
 #include "tests/hid/fake_hidapi.hpp"
 #include "tests/hid/report_bytes.hpp"
 

@@ -1,5 +1,5 @@
-// Reddy's acuity model: the reference table of docs/perceptual-model.md, the hard cases of
-// issue 2 and monotonicity over dense grids that include the seams.
+// Reddy's acuity model: the reference table of docs/perceptual-model.md, the hard inputs (0,
+// denormals, seams, inf, NaN) and monotonicity over dense grids that include the seams.
 #include "lod/acuity.hpp"
 #include "lod/display.hpp"
 

@@ -1,4 +1,5 @@
-// Per-object criteria: the geometric hard cases of issue 2 and retinal velocity.
+// Per-object criteria: the geometric hard cases (gaze through the centre, eye inside the
+// sphere, object behind the eye, tiny angles) and retinal velocity.
 #include "lod/criteria.hpp"
 
 #include <glm/geometric.hpp>

@@ -30,13 +30,13 @@ class ScriptedSource : public gaze::GazeSource {
 constexpr std::int64_t kMs = 1'000'000;
 
 struct Log {
-  std::vector<ArbitratedSource> sources;
+  std::vector<GazeSourceKind> sources;
   std::vector<std::string> reasons;
 };
 
 GazeArbiter make(gaze::GazeSource* p, gaze::GazeSource* s, Log& log) {
   GazeArbiter a(p, s, {1000 * kMs});
-  a.on_change([&log](ArbitratedSource now, const std::string& why) {
+  a.on_change([&log](GazeSourceKind now, const std::string& why) {
     log.sources.push_back(now);
     log.reasons.push_back(why);
   });
@@ -47,7 +47,7 @@ TEST(GazeArbiter, UsesPrimaryWhenItDelivers) {
   ScriptedSource primary("openxr", [](std::int64_t) { return true; });
   Log log;
   auto a = make(&primary, nullptr, log);
-  for (int i = 0; i < 10; ++i) EXPECT_EQ(a.update(i * 11 * kMs).source, ArbitratedSource::primary);
+  for (int i = 0; i < 10; ++i) EXPECT_EQ(a.update(i * 11 * kMs).source, GazeSourceKind::openxr);
   ASSERT_EQ(log.sources.size(), 1u);  // reported once
 }
 
@@ -56,13 +56,13 @@ TEST(GazeArbiter, DistrustsARuntimeThatAdvertisesButNeverDelivers) {
   ScriptedSource hid("hid", [](std::int64_t) { return true; });
   Log log;
   auto a = make(&silent, &hid, log);
-  EXPECT_EQ(a.update(0).source, ArbitratedSource::secondary);
+  EXPECT_EQ(a.update(0).source, GazeSourceKind::external);
   EXPECT_FALSE(a.primary_distrusted());
   a.update(1500 * kMs);
   EXPECT_TRUE(a.primary_distrusted());
   ASSERT_GE(log.reasons.size(), 2u);
   EXPECT_NE(log.reasons.back().find("advertised eye gaze but delivered none"), std::string::npos);
-  EXPECT_EQ(log.sources.back(), ArbitratedSource::secondary);
+  EXPECT_EQ(log.sources.back(), GazeSourceKind::external);
 }
 
 TEST(GazeArbiter, FallsBackDuringGapsAndReturns) {
@@ -70,10 +70,10 @@ TEST(GazeArbiter, FallsBackDuringGapsAndReturns) {
   ScriptedSource primary("openxr", [](std::int64_t t) { return t < 100 * kMs || t >= 200 * kMs; });
   Log log;
   auto a = make(&primary, nullptr, log);
-  EXPECT_EQ(a.update(0).source, ArbitratedSource::primary);
-  EXPECT_EQ(a.update(150 * kMs).source, ArbitratedSource::head_fixed);
-  EXPECT_EQ(a.update(160 * kMs).source, ArbitratedSource::head_fixed);
-  EXPECT_EQ(a.update(250 * kMs).source, ArbitratedSource::primary);
+  EXPECT_EQ(a.update(0).source, GazeSourceKind::openxr);
+  EXPECT_EQ(a.update(150 * kMs).source, GazeSourceKind::head_fixed);
+  EXPECT_EQ(a.update(160 * kMs).source, GazeSourceKind::head_fixed);
+  EXPECT_EQ(a.update(250 * kMs).source, GazeSourceKind::openxr);
   ASSERT_EQ(log.sources.size(), 3u);  // primary, head-fixed, primary: one report per change
   EXPECT_NE(log.reasons[1].find("scripted gap"), std::string::npos);
   EXPECT_FALSE(a.primary_distrusted());  // it had delivered: a gap is not distrust
@@ -82,7 +82,7 @@ TEST(GazeArbiter, FallsBackDuringGapsAndReturns) {
 TEST(GazeArbiter, HeadFixedWithoutAnySource) {
   Log log;
   auto a = make(nullptr, nullptr, log);
-  EXPECT_EQ(a.update(0).source, ArbitratedSource::head_fixed);
+  EXPECT_EQ(a.update(0).source, GazeSourceKind::head_fixed);
   ASSERT_EQ(log.sources.size(), 1u);
   EXPECT_NE(log.reasons[0].find("head-fixed"), std::string::npos);
 }
@@ -91,8 +91,8 @@ TEST(GazeArbiter, SecondaryUnpluggedMidRunFallsToHeadFixed) {
   ScriptedSource hid("hid", [](std::int64_t t) { return t < 50 * kMs; });
   Log log;
   auto a = make(nullptr, &hid, log);
-  EXPECT_EQ(a.update(0).source, ArbitratedSource::secondary);
-  EXPECT_EQ(a.update(60 * kMs).source, ArbitratedSource::head_fixed);
+  EXPECT_EQ(a.update(0).source, GazeSourceKind::external);
+  EXPECT_EQ(a.update(60 * kMs).source, GazeSourceKind::head_fixed);
   EXPECT_NE(log.reasons.back().find("hid unavailable"), std::string::npos);
 }
 

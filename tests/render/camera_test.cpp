@@ -1,7 +1,7 @@
 // View and projection against hand-computed values (OpenXR's XrFovf convention, Vulkan clip
 // space with y down and depth 0..1).
-#include "plugin/render/camera.hpp"
-#include "plugin/render/render_error.hpp"
+#include "render/camera.hpp"
+#include "render/render_error.hpp"
 
 #include <glm/gtc/quaternion.hpp>
 #include <gtest/gtest.h>

@@ -1,12 +1,12 @@
 // The foveal circle of the debug view: dots at the requested angle around the gaze, and where
 // they land in a rendered frame.
-#include "plugin/render/device_context.hpp"
-#include "plugin/render/foveal_marker.hpp"
-#include "plugin/render/frame_renderer.hpp"
-#include "plugin/render/lod_palette.hpp"
-#include "plugin/render/mesh_library.hpp"
-#include "plugin/render/offscreen_target.hpp"
-#include "plugin/render/render_error.hpp"
+#include "render/device_context.hpp"
+#include "render/foveal_marker.hpp"
+#include "render/frame_renderer.hpp"
+#include "render/lod_palette.hpp"
+#include "render/mesh_library.hpp"
+#include "render/offscreen_target.hpp"
+#include "render/render_error.hpp"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // LOD tints: distinct per level, distinct from the background, readable back from pixels.
-#include "plugin/render/lod_palette.hpp"
+#include "render/lod_palette.hpp"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>

@@ -1,13 +1,13 @@
 // Offscreen rendering on lavapipe: an object lands where the hand-computed projection says,
 // in its LOD tint, with depth, in every supported target format. Without a Vulkan device
 // every case skips with the reason (never passes silently).
-#include "plugin/render/device_context.hpp"
-#include "plugin/render/frame_renderer.hpp"
-#include "plugin/render/lod_palette.hpp"
-#include "plugin/render/mesh_library.hpp"
-#include "plugin/render/offscreen_target.hpp"
-#include "plugin/render/png_io.hpp"
-#include "plugin/render/render_error.hpp"
+#include "render/device_context.hpp"
+#include "render/frame_renderer.hpp"
+#include "render/lod_palette.hpp"
+#include "render/mesh_library.hpp"
+#include "render/offscreen_target.hpp"
+#include "render/png_io.hpp"
+#include "render/render_error.hpp"
 
 #include <gtest/gtest.h>
 

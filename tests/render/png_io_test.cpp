@@ -1,6 +1,6 @@
 // PNG round trip and errors that name the file.
-#include "plugin/render/png_io.hpp"
-#include "plugin/render/render_error.hpp"
+#include "render/png_io.hpp"
+#include "render/render_error.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // The stand-in LOD meshes: triangle counts near the requested ones, closed, outward-facing.
-#include "plugin/render/sphere_mesh.hpp"
+#include "render/sphere_mesh.hpp"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>

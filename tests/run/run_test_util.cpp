@@ -1,6 +1,6 @@
 #include "run_test_util.hpp"
 
-#include "plugin/cli/command.hpp"
+#include "apps/gazelod/command.hpp"
 
 #include <gtest/gtest.h>
 

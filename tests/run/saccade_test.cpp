@@ -12,7 +12,7 @@
 // under 0.02 deg since the previous frame (1.8 deg/s at 90 Hz: G(1.8) = 50 c/deg, no limit).
 #include "run_test_util.hpp"
 
-#include "plugin/cli/xr_app.hpp"
+#include "apps/xr_host/xr_app.hpp"
 #include "plugin/gazelod.hpp"
 #include "sim/simulator.hpp"
 
@@ -78,7 +78,7 @@ TEST(PluginSaccade, FoveaFollowsTheGazeWithinOneFrame) {
   use_simulated_runtime(file.string());
   sim::Simulator simulator(sim::load_scenario_file(file.string()));
 
-  cli::XrApp app(true);
+  xr_host::XrApp app(true);
   ASSERT_TRUE(app.eye_gaze_enabled());
   PluginConfig cfg;
   auto plugin = LodPlugin::create(app.instance(), app.system(), app.session(), app.local_space(), cfg);
@@ -96,16 +96,17 @@ TEST(PluginSaccade, FoveaFollowsTheGazeWithinOneFrame) {
     app.begin_frame();
     if (base == 0) base = app.scenario_time_base();
     const FrameDecisions& d = plugin->begin_frame(fs.predictedDisplayTime);
+    const FrameDiagnostics& diag = plugin->diagnostics();
     Frame f;
     f.lod.assign(d.lod.begin(), d.lod.end());
-    f.lod_size_only.assign(d.lod_size_only.begin(), d.lod_size_only.end());
-    f.gaze_world = d.gaze_direction_world;
+    f.lod_size_only.assign(diag.lod_size_only.begin(), diag.lod_size_only.end());
+    f.gaze_world = diag.gaze_direction_world;
     f.gaze_valid = d.gaze_valid;
     // The gaze the plugin used is the tracker sample the simulator gives for that time
     // (still head: head space = world).
     const gaze::GazeSample truth = simulator.tracker_at(fs.predictedDisplayTime - base);
     if (f.gaze_valid) {
-      EXPECT_LT(angle_deg(truth.direction, d.gaze_direction_head), 0.01) << "frame " << frames.size();
+      EXPECT_LT(angle_deg(truth.direction, diag.gaze_direction_head), 0.01) << "frame " << frames.size();
     }
     frames.push_back(std::move(f));
     app.end_frame(fs.predictedDisplayTime, {});

@@ -1,4 +1,4 @@
-// `gazelod bake` then `gazelod run --scene`: LOD comes from the baked chains (issue 7).
+// `gazelod bake` then `gazelod run --scene`: LOD comes from the baked chains.
 #include "run_test_util.hpp"
 
 #include "bake/baked_scene.hpp"

@@ -1,4 +1,4 @@
-// The scenario's gaze-delivery quirks (architecture.md, "Testing against real clients"): a
+// The scenario's gaze-delivery quirks (docs/runtime.md, "Gaze quirks"): a
 // runtime that never delivers, one that reports sample time 0, one that echoes the requested
 // time, and a system without eye gaze; and bad scenarios / variables refused at
 // xrCreateInstance with XR_ERROR_INITIALIZATION_FAILED.

@@ -1,6 +1,6 @@
 // `gazelod scenario validate | print | record`: exit codes and messages.
 #include "tests/cli_run.hpp"
-#include "plugin/cli/command.hpp"
+#include "apps/gazelod/command.hpp"
 #include "sim/simulator.hpp"
 
 #include <gmock/gmock.h>

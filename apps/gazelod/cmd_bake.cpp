@@ -1,0 +1,107 @@
+// gazelod bake IN.gltf|IN.glb -o OUT.glb [--levels N | --ratios r1,r2,...] [--target-error E]
+// [--lock-borders] [--profile 6|18]:
+// an MSFT_lod chain per mesh node (bake/bake.hpp). Progress on stderr, the summary on stdout.
+// --profile renders every level from 6 or 18 viewpoints (Reddy's perceptual profile, Vulkan on
+// lavapipe, bake/profile_render.hpp) and stores extras.gazelod_lod.rendered_cycles_per_diameter;
+// off by default so a plain bake stays fast.
+#include "bake/bake.hpp"
+#include "bake/bake_error.hpp"
+#include "bake/summary.hpp"
+#include "render/render_error.hpp"
+#include "apps/gazelod/command.hpp"
+
+#include <charconv>
+#include <cstdio>
+#include <cmath>
+#include <memory>
+#include <ostream>
+#include <string>
+
+namespace gazelod::cli {
+namespace {
+
+struct Options {
+  std::string input, output, ratios, target_error;
+  int levels = 0;
+  int profile = 0;
+  bool lock_borders = false;
+};
+
+std::vector<double> parse_ratios(const std::string& text) {
+  std::vector<double> r;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = text.find(',', start);
+    r.push_back(parse_number("--ratios", text.substr(start, comma - start)));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return r;
+}
+
+// Rendered against geometric figure per level, when the bake profiled.
+void print_profile(const bake::BakeReport& report, std::ostream& out) {
+  out << "perceptual profile (removed cycles per diameter): mesh level geometric rendered\n";
+  char line[160];
+  for (const bake::MeshReport& m : report.meshes) {
+    for (std::size_t k = 1; k < m.levels.size(); ++k) {
+      std::snprintf(line, sizeof line, "  %4d %5zu %12.3f %10.3f\n", m.mesh, k,
+                    m.levels[k].detail_cycles_per_diameter, m.levels[k].rendered_cycles_per_diameter);
+      out << line;
+    }
+    std::snprintf(line, sizeof line, "  mesh %d profile: %.3f s\n", m.mesh, m.profile_seconds);
+    out << line;
+  }
+}
+
+int run_bake(const Options& o, Io io) {
+  if (o.profile != 0 && o.profile != 6 && o.profile != 18)
+    throw UsageError("--profile: must be 6 or 18 viewpoints, got " + std::to_string(o.profile));
+  if (o.levels != 0 && !o.ratios.empty()) throw UsageError("--levels: give either --levels or --ratios, not both");
+  bake::BakeOptions opts;
+  if (o.levels != 0) {
+    if (o.levels < 2 || o.levels > 16) throw UsageError("--levels: must be in [2, 16], got " + std::to_string(o.levels));
+    opts.chain.ratios = bake::ratios_for_levels(o.levels);
+  } else if (!o.ratios.empty()) {
+    opts.chain.ratios = parse_ratios(o.ratios);
+  }
+  if (!o.target_error.empty()) opts.chain.target_error_rel = parse_number("--target-error", o.target_error);
+  if (std::string e = bake::validate_chain_options(opts.chain); !e.empty())
+    throw UsageError((o.target_error.empty() ? "--ratios: " : "--ratios/--target-error: ") + e);
+  opts.chain.lock_borders = o.lock_borders;
+  opts.profile_viewpoints = o.profile;
+  opts.progress = [&io](const std::string& line) { io.err << line << '\n' << std::flush; };
+  try {
+    const bake::BakeReport report = bake::bake_file(o.input, o.output, opts);
+    io.out << bake::format_summary(report);
+    if (o.profile != 0) print_profile(report, io.out);
+  } catch (const bake::OutputError& e) {
+    throw UsageError(e.what(), 1);  // the input was fine: "other failure"
+  } catch (const bake::BakeError& e) {
+    throw UsageError(e.what(), 2);  // bad input file
+  } catch (const render::RenderError& e) {  // --profile without Vulkan (NoVulkanDevice) or a render failure
+    throw UsageError(std::string("--profile: ") + e.what(), 1);
+  }
+  return 0;
+}
+
+const Registrar reg(
+    "bake", "Bake glTF LOD chains (MSFT_lod) with meshoptimizer",
+    [](CLI::App& app) -> Action {
+      auto o = std::make_shared<Options>();
+      app.add_option("input", o->input, "input .gltf or .glb")->required();
+      app.add_option("-o,--output", o->output, "output .glb (written atomically)")->required();
+      app.add_option("--levels", o->levels, "levels in all, each with 1/4 of the previous triangles (default 4)");
+      app.add_option("--ratios", o->ratios, "triangle ratios of the coarser levels, e.g. 0.5,0.2,0.05");
+      app.add_option("--target-error", o->target_error,
+                     "largest error per level relative to the mesh extent (default 1 = no limit)");
+      app.add_flag("--lock-borders", o->lock_borders,
+                   "keep open borders in place (no cracks between a mesh's primitives)");
+      app.add_option("--profile", o->profile,
+                     "render each level from 6 or 18 viewpoints and store Reddy's rendered "
+                     "figure (Vulkan; off by default)");
+      return [o](Io io) { return run_bake(*o, io); };
+    });
+
+}  // namespace
+}  // namespace gazelod::cli

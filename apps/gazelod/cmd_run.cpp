@@ -1,0 +1,66 @@
+// gazelod run: the main job. One OpenXR session (gazelod's simulated runtime unless
+// --runtime system), the plugin choosing every object's LOD each frame from head pose and eye
+// gaze, each eye drawn with Vulkan, and a report (summary.json, frames.csv, frames.svg,
+// frame.png) in --out.
+#include "apps/gazelod/command.hpp"
+#include "apps/gazelod/run_session.hpp"
+
+#include <memory>
+#include <sstream>
+#include <string>
+
+namespace gazelod::cli {
+namespace {
+
+EnabledCriteria parse_criteria(const std::string& text) {
+  EnabledCriteria c{false, false, false};
+  if (text == "none") return c;
+  if (text == "all") return EnabledCriteria{};
+  std::istringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    if (item == "size") c.size = true;
+    else if (item == "eccentricity") c.eccentricity = true;
+    else if (item == "velocity") c.velocity = true;
+    else
+      throw UsageError("--criteria: unknown criterion '" + item +
+                       "' (use all, none or a comma list of size, eccentricity, velocity)");
+  }
+  return c;
+}
+
+const Registrar reg("run", "Run an OpenXR session with gaze-contingent LOD and write a report",
+                    [](CLI::App& app) -> Action {
+  auto opt = std::make_shared<RunOptions>();
+  auto criteria = std::make_shared<std::string>("all");
+  auto out = std::make_shared<std::string>("gazelod-out");
+  auto no_render = std::make_shared<bool>(false);
+  auto no_eye_gaze = std::make_shared<bool>(false);
+  app.add_option("--scenario", opt->scenario_path, "Scenario JSON (default: the embedded scenario)");
+  app.add_option("--scene", opt->scene_path, "A .glb baked by `gazelod bake`: its objects and LOD chains replace the scenario's");
+  app.add_option("--hmd", opt->hmd, "Display preset replacing the scenario's (see gazelod hmds)");
+  app.add_option("--frames", opt->frames, "Frames to run (default: the scenario's duration)")
+      ->check(CLI::Range(std::int64_t{1}, std::int64_t{10'000'000}));
+  app.add_option("--criteria", *criteria, "all, none, or a comma list of size,eccentricity,velocity");
+  app.add_option("--out", *out, "Folder for summary.json, frames.csv, frames.svg, frame.png");
+  app.add_option("--runtime", opt->runtime, "sim (gazelod's simulated runtime) or system (the active OpenXR runtime)");
+  app.add_option("--budget-ms", opt->budget_ms, "Frame-time budget to report against (ms)")
+      ->check(CLI::Range(0.0, 1000.0));
+  app.add_flag("--paced", opt->paced, "Run at the display rate instead of as fast as possible");
+  app.add_flag("--no-render", *no_render, "Select LODs only; draw nothing");
+  app.add_flag("--no-eye-gaze", *no_eye_gaze, "Ignore the runtime's eye gaze (head-fixed fallback)");
+  app.add_option("--trace", opt->trace_path, "Replay this gazelod gaze trace as the gaze source");
+  app.add_option("--capture-frame", opt->capture_frame, "Frame saved as frame.png (default: the middle one)");
+  app.add_flag("--quiet", opt->quiet, "No progress lines");
+  return [=](Io io) {
+    RunOptions o = *opt;
+    o.criteria = parse_criteria(*criteria);
+    o.out_dir = *out;
+    o.render = !*no_render;
+    o.eye_gaze = !*no_eye_gaze;
+    return run_session(o, io);
+  };
+});
+
+}  // namespace
+}  // namespace gazelod::cli

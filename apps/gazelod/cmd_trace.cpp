@@ -1,0 +1,143 @@
+// gazelod trace stats FILE / gazelod trace convert IN OUT: gaze traces in gazelod's format or
+// an imported layout (GazeBaseVR, Pupil Labs). Malformed files exit non-zero naming
+// file:line:column; --lenient skips bad lines and reports every one of them.
+#include "gaze/trace_open.hpp"
+#include "gaze/trace_stats.hpp"
+#include "gaze/trace_writer.hpp"
+#include "apps/gazelod/command.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <memory>
+#include <string>
+
+namespace gazelod::cli {
+namespace {
+
+struct Options {
+  std::string file, out_file, format = "gazelod", time_unit = "ns";
+  bool json = false, lenient = false;
+};
+
+gaze::TraceFormat format_of(const Options& o) {
+  const auto f = gaze::parse_trace_format(o.format);
+  if (!f) throw UsageError("--format: expected gazelod, gazebasevr or pupil, got '" + o.format + "'");
+  return *f;
+}
+
+// Lenient mode never drops silently: the count and the first lines go to stderr.
+void report_skipped(const gaze::SkipReport& s, std::ostream& err) {
+  if (s.skipped == 0) return;
+  err << "warning: skipped " << s.skipped << " bad line(s):\n";
+  for (const auto& issue : s.first) err << "  " << issue.to_string() << "\n";
+  if (s.skipped > s.first.size()) err << "  ... and " << s.skipped - s.first.size() << " more\n";
+}
+
+int run_stats(const Options& o, Io io) {
+  gaze::TraceStats st;
+  std::unique_ptr<gaze::RecordStream> stream;
+  try {
+    stream = gaze::open_trace(o.file, format_of(o), {.lenient = o.lenient});
+    st = gaze::compute_trace_stats(*stream);
+  } catch (const gaze::TraceError& e) {
+    throw UsageError(e.what());
+  }
+  report_skipped(stream->skipped(), io.err);
+  if (o.json) {
+    nlohmann::json j;
+    j["file"] = o.file;
+    j["format"] = o.format;
+    j["samples"] = st.samples;
+    j["duration_s"] = st.duration_s;
+    j["rate_hz"] = st.rate_hz;
+    j["invalid_fraction"] = st.invalid_fraction;
+    j["saccades"] = st.saccades;
+    j["fixations"] = st.fixations;
+    j["mean_saccade_amplitude_deg"] = st.mean_saccade_amplitude_deg;
+    j["max_saccade_peak_velocity_deg_s"] = st.max_saccade_peak_velocity_deg_s;
+    j["samples_with_head"] = st.with_head;
+    j["skipped_lines"] = stream->skipped().skipped;
+    nlohmann::json skipped = nlohmann::json::array();
+    for (const auto& issue : stream->skipped().first)
+      skipped.push_back({{"line", issue.line}, {"column", issue.column}, {"message", issue.message}});
+    j["skipped"] = skipped;
+    io.out << j.dump(2) << "\n";
+    return 0;
+  }
+  io.out << std::fixed << std::setprecision(3) << "file              " << o.file << " (" << o.format
+         << ")\n"
+         << "samples           " << st.samples << "\n"
+         << "duration          " << st.duration_s << " s\n"
+         << "rate              " << st.rate_hz << " Hz\n"
+         << "invalid           " << st.invalid_fraction * 100.0 << " %\n"
+         << "saccades          " << st.saccades << " (mean amplitude "
+         << st.mean_saccade_amplitude_deg << " deg)\n"
+         << "fixations         " << st.fixations << "\n"
+         << "with head pose    " << st.with_head << "\n"
+         << "skipped lines     " << stream->skipped().skipped << "\n";
+  return 0;
+}
+
+int run_convert(const Options& o, Io io) {
+  namespace fs = std::filesystem;
+  if (o.time_unit != "ns" && o.time_unit != "s")
+    throw UsageError("--time: expected ns or s, got '" + o.time_unit + "'");
+  std::error_code ec;
+  if (fs::exists(o.out_file, ec) && fs::equivalent(o.file, o.out_file, ec))
+    throw UsageError("OUT must not be the input file");
+  // Written to OUT.part and renamed at the end: a failure never leaves a truncated OUT.
+  const std::string part = o.out_file + ".part";
+  std::size_t n = 0;
+  std::unique_ptr<gaze::RecordStream> stream;
+  try {
+    stream = gaze::open_trace(o.file, format_of(o), {.lenient = o.lenient});
+    std::ofstream out(part, std::ios::binary | std::ios::trunc);
+    if (!out) throw UsageError(o.out_file + ": cannot open for writing");
+    gaze::TraceWriter writer(out, {.time_in_ns = o.time_unit == "ns", .write_head = stream->has_head()});
+    gaze::TraceRecord r;
+    while (stream->next(r)) {
+      writer.write(r);
+      ++n;
+    }
+    out.close();
+    if (!out) throw UsageError(o.out_file + ": write failed");
+  } catch (const gaze::TraceError& e) {
+    fs::remove(part, ec);
+    throw UsageError(e.what());
+  } catch (...) {
+    fs::remove(part, ec);
+    throw;
+  }
+  fs::rename(part, o.out_file, ec);
+  if (ec) throw UsageError(o.out_file + ": cannot rename from " + part + ": " + ec.message());
+  report_skipped(stream->skipped(), io.err);
+  io.out << "wrote " << n << " samples to " << o.out_file << "\n";
+  return 0;
+}
+
+const Registrar registrar{
+    "trace", "Gaze traces: statistics and conversion to gazelod's format (docs/gaze.md)",
+    [](CLI::App& sub) -> Action {
+      auto o = std::make_shared<Options>();
+      sub.require_subcommand(1);
+      const std::string fmt_help = "input layout: gazelod (default), gazebasevr, pupil";
+      CLI::App* stats = sub.add_subcommand("stats", "samples, duration, rate, invalid fraction, saccades, fixations");
+      stats->add_option("FILE", o->file, "trace file")->required();
+      stats->add_option("--format", o->format, fmt_help);
+      stats->add_flag("--json", o->json, "print one JSON object");
+      stats->add_flag("--lenient", o->lenient, "skip bad lines (each is reported on stderr)");
+      CLI::App* convert = sub.add_subcommand("convert", "convert a trace to gazelod's CSV format");
+      convert->add_option("IN", o->file, "input trace")->required();
+      convert->add_option("OUT", o->out_file, "output file (gazelod format)")->required();
+      convert->add_option("--format", o->format, fmt_help);
+      convert->add_option("--time", o->time_unit, "time column: ns (t_ns, default) or s (t_s)");
+      convert->add_flag("--lenient", o->lenient, "skip bad lines (each is reported on stderr)");
+      return [o, stats](Io io) { return stats->parsed() ? run_stats(*o, io) : run_convert(*o, io); };
+    }};
+
+}  // namespace
+}  // namespace gazelod::cli

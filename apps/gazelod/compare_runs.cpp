@@ -1,0 +1,104 @@
+#include "apps/gazelod/compare_runs.hpp"
+
+#include "lod/acuity.hpp"
+#include "lod/display.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <sstream>
+
+namespace gazelod::cli {
+namespace {
+
+const nlohmann::json& at(const nlohmann::json& j, const std::string& key, const std::string& path,
+                         const std::string& source) {
+  if (!j.is_object() || !j.contains(key))
+    throw UsageError(source + ": " + path + key + ": missing (was it written by this gazelod?)", 1);
+  return j.at(key);
+}
+
+double number(const nlohmann::json& j, const std::string& key, const std::string& path,
+              const std::string& source) {
+  const nlohmann::json& v = at(j, key, path, source);
+  if (!v.is_number()) throw UsageError(source + ": " + path + key + ": must be a number", 1);
+  return v.get<double>();
+}
+
+SetResult set_from(const nlohmann::json& j, const std::string& path, const std::string& source) {
+  SetResult r;
+  const double t = number(j, "triangles", path, source);
+  if (t < 0.0) throw UsageError(source + ": " + path + "triangles: negative", 1);
+  r.triangles = static_cast<std::uint64_t>(t);
+  r.average_lod = number(j, "average_lod", path, source);
+  return r;
+}
+
+double ratio(double num, double den) { return den > 0.0 ? num / den : 0.0; }
+
+}  // namespace
+
+void check_hmd(const std::string& hmd) {
+  if (lod::find_display_preset(hmd) == nullptr)
+    throw UsageError("--hmd: unknown display preset '" + hmd + "' (see gazelod hmds)");
+}
+
+HmdComparison comparison_from_summary(const std::string& hmd, const nlohmann::json& summary,
+                                      const std::string& source) {
+  check_hmd(hmd);
+  HmdComparison c;
+  c.hmd = hmd;
+  const lod::DisplaySpec& display = *lod::find_display_preset(hmd);
+  c.xi_cpd = lod::xi_cpd(display);
+  c.eccentricity_threshold_deg = lod::eccentricity_threshold_deg(c.xi_cpd);
+  c.velocity_threshold_dps = lod::velocity_threshold_dps(c.xi_cpd);
+  c.frames = static_cast<std::int64_t>(number(summary, "frames", "", source));
+  const nlohmann::json& criteria_json = at(summary, "criteria", "", source);
+  if (!criteria_json.is_string()) throw UsageError(source + ": criteria: must be a string", 1);
+  const std::string criteria = criteria_json.get<std::string>();
+  if (criteria != "size,eccentricity,velocity")
+    throw UsageError(source + ": criteria: the run must use every criterion, got '" + criteria + "'", 1);
+  const nlohmann::json& sets = at(summary, "criteria_sets", "", source);
+  for (std::size_t i = 0; i + 1 < kCriteriaSets.size(); ++i)
+    c.sets[i] = set_from(at(sets, kCriteriaSets[i], "criteria_sets.", source),
+                         std::string("criteria_sets.") + kCriteriaSets[i] + ".", source);
+  c.sets.back() = set_from(at(sets, "drawn", "criteria_sets.", source), "criteria_sets.drawn.", source);
+  c.lod_map = set_from(at(summary, "lod_map", "", source), "lod_map.", source);
+
+  const double none = static_cast<double>(c.sets[0].triangles);
+  const double all = static_cast<double>(c.sets[4].triangles);
+  const double reduction = none - all;
+  c.share_size = ratio(none - static_cast<double>(c.sets[1].triangles), reduction);
+  c.share_eccentricity = ratio(static_cast<double>(c.sets[3].triangles) - all, reduction);
+  c.share_velocity = ratio(static_cast<double>(c.sets[2].triangles) - all, reduction);
+  c.share_interaction = reduction > 0.0 ? 1.0 - c.share_size - c.share_eccentricity - c.share_velocity : 0.0;
+  return c;
+}
+
+HmdComparison run_comparison(const std::string& hmd, const CompareOptions& o) {
+  check_hmd(hmd);
+  const std::filesystem::path dir = o.out_dir / hmd;
+  std::vector<std::string> args{"run", "--hmd", hmd, "--criteria", "all", "--out", dir.string(), "--quiet"};
+  if (!o.scenario_path.empty()) args.insert(args.end(), {"--scenario", o.scenario_path});
+  if (o.frames > 0) args.insert(args.end(), {"--frames", std::to_string(o.frames)});
+  if (!o.render) args.push_back("--no-render");
+  std::ostringstream out, err;
+  const int rc = run(args, out, err);
+  if (rc != 0) {
+    std::string msg = err.str();
+    while (!msg.empty() && msg.back() == '\n') msg.pop_back();
+    throw UsageError("run for --hmd " + hmd + " failed (exit " + std::to_string(rc) + "): " + msg, rc);
+  }
+  const auto path = dir / "summary.json";
+  std::ifstream in(path);
+  if (!in) throw UsageError("cannot read " + path.string(), 1);
+  nlohmann::json summary;
+  try {
+    summary = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw UsageError(path.string() + ": " + e.what(), 1);
+  }
+  return comparison_from_summary(hmd, summary, path.string());
+}
+
+}  // namespace gazelod::cli

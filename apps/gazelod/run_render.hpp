@@ -1,0 +1,59 @@
+// `gazelod run`'s drawing: each eye's swapchain image gets every object as a stand-in sphere
+// at the LOD the plugin chose, tinted by level (render/). Thin adapter from XrApp's
+// Vulkan objects and swapchains and the plugin's decisions to render::FrameRenderer.
+#pragma once
+
+#include "apps/xr_host/xr_app.hpp"
+#include "plugin/gazelod.hpp"
+#include "render/frame_renderer.hpp"
+#include "render/mesh_library.hpp"
+
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <span>
+#include <vector>
+
+namespace gazelod::cli {
+
+class RunRenderer {
+ public:
+  // One mesh per (object, level), from the level's triangle count; one renderer per
+  // swapchain. Throws render::RenderError (unsupported swapchain format, Vulkan failure).
+  RunRenderer(xr_host::XrApp& app, const std::vector<std::vector<lod::LodLevel>>& chains);
+  ~RunRenderer();
+  RunRenderer(const RunRenderer&) = delete;
+  RunRenderer& operator=(const RunRenderer&) = delete;
+
+  // Draws into swapchains()[eye].images[image_index] (acquired and waited on by the caller)
+  // and waits for the GPU, so the image can be released right after. positions_m/radii_m are
+  // bounding spheres in LOCAL space; decisions.lod[i] is object i's level (clamped to its chain).
+  void render_eye(std::size_t eye, std::uint32_t image_index, const XrView& view,
+                  std::span<const glm::dvec3> positions_m, std::span<const double> radii_m,
+                  const FrameDecisions& decisions, const FrameDiagnostics& diagnostics);
+
+  // The image last drawn by render_eye as a PNG; call before releasing it. Throws
+  // render::RenderError naming the file.
+  void save_png(std::size_t eye, std::uint32_t image_index, const std::filesystem::path& file);
+
+  // The debug view's foveal circle (render/foveal_marker.hpp) around the gaze, in white;
+  // on by default.
+  void set_foveal_circle(bool on) { foveal_circle_ = on; }
+
+  // Scene triangles submitted for the last render_eye of `eye`.
+  std::uint64_t triangles_drawn(std::size_t eye) const;
+
+ private:
+  render::FrameRenderer& renderer(std::size_t eye) const;
+
+  render::MeshLibrary meshes_;
+  std::vector<std::vector<std::uint32_t>> mesh_ids_;  // [object][level] -> MeshLibrary id
+  std::vector<std::unique_ptr<render::FrameRenderer>> eyes_;
+  std::vector<render::DrawItem> items_;               // reused each frame: no allocation
+  std::uint32_t marker_mesh_ = 0;
+  bool foveal_circle_ = true;
+};
+
+}  // namespace gazelod::cli

@@ -1,0 +1,228 @@
+#include "apps/gazelod/run_report.hpp"
+
+#include "apps/gazelod/svg_plot.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <stdexcept>
+
+namespace gazelod::cli {
+namespace {
+
+double safe_ratio(double num, double den) { return den > 0.0 ? num / den : 0.0; }
+
+std::ofstream open_out(const std::filesystem::path& p) {
+  std::ofstream f(p);
+  if (!f) throw std::runtime_error("cannot write " + p.string());
+  return f;
+}
+
+void close_checked(std::ofstream& f, const std::filesystem::path& p) {
+  f.close();
+  if (!f) throw std::runtime_error("error while writing " + p.string());
+}
+
+}  // namespace
+
+RunSummary summarize(const std::vector<FrameRecord>& frames, double budget_ms) {
+  RunSummary s;
+  s.frames = static_cast<std::int64_t>(frames.size());
+  if (frames.empty()) return s;
+  std::vector<double> ms;
+  ms.reserve(frames.size());
+  double r_size = 0, r_se = 0, r_sv = 0, r_all = 0;
+  std::uint64_t lods_drawn = 0, lods_size = 0, lods_se = 0, lods_sv = 0, lods_map = 0;
+  double object_frames = 0.0, view_object_frames = 0.0;
+  std::array<std::uint64_t, 6> view_lods{};
+  for (const FrameRecord& f : frames) {
+    ms.push_back(f.frame_ms);
+    s.mean_frame_ms += f.frame_ms;
+    s.mean_select_ms += f.select_ms;
+    s.triangles_drawn += f.triangles_drawn;
+    s.triangles_full += f.triangles_full;
+    for (int i = 0; i < kMaxReportedLods; ++i) s.lod_histogram[i] += f.lod_histogram[i];
+    const double full = static_cast<double>(f.triangles_full);
+    r_all += full - static_cast<double>(f.triangles_drawn);
+    r_size += full - static_cast<double>(f.triangles_size_only);
+    r_se += full - static_cast<double>(f.triangles_size_eccentricity);
+    r_sv += full - static_cast<double>(f.triangles_size_velocity);
+    s.set_size.triangles += f.triangles_size_only;
+    s.set_size_eccentricity.triangles += f.triangles_size_eccentricity;
+    s.set_size_velocity.triangles += f.triangles_size_velocity;
+    s.set_lod_map.triangles += f.triangles_lod_map;
+    lods_drawn += f.lod_sum_drawn;
+    lods_size += f.lod_sum_size_only;
+    lods_se += f.lod_sum_size_eccentricity;
+    lods_sv += f.lod_sum_size_velocity;
+    lods_map += f.lod_sum_lod_map;
+    object_frames += static_cast<double>(std::max<std::int64_t>(f.objects, 0));
+    view_object_frames += static_cast<double>(std::max<std::int64_t>(f.objects_in_view, 0));
+    for (std::size_t k = 0; k < s.in_view.size(); ++k) {
+      s.in_view[k].triangles += f.in_view_triangles[k];
+      view_lods[k] += f.in_view_lod_sum[k];
+    }
+    if (budget_ms > 0.0 && f.frame_ms > budget_ms) ++s.frames_over_budget;
+    if (f.gaze_valid) ++s.gaze_valid_frames;
+    if (f.saccade) ++s.saccades;
+  }
+  const double n = static_cast<double>(frames.size());
+  s.mean_frame_ms /= n;
+  s.mean_select_ms /= n;
+  std::sort(ms.begin(), ms.end());
+  // Nearest-rank 95th percentile.
+  const size_t rank = static_cast<size_t>(std::ceil(0.95 * n));
+  s.p95_frame_ms = ms[std::clamp<size_t>(rank, 1, ms.size()) - 1];
+  s.max_frame_ms = ms.back();
+  s.set_none.triangles = s.triangles_full;
+  s.set_drawn.triangles = s.triangles_drawn;
+  s.set_drawn.average_lod = safe_ratio(static_cast<double>(lods_drawn), object_frames);
+  s.set_size.average_lod = safe_ratio(static_cast<double>(lods_size), object_frames);
+  s.set_size_eccentricity.average_lod = safe_ratio(static_cast<double>(lods_se), object_frames);
+  s.set_size_velocity.average_lod = safe_ratio(static_cast<double>(lods_sv), object_frames);
+  s.set_lod_map.average_lod = safe_ratio(static_cast<double>(lods_map), object_frames);
+  for (std::size_t k = 0; k < s.in_view.size(); ++k)
+    s.in_view[k].average_lod = safe_ratio(static_cast<double>(view_lods[k]), view_object_frames);
+  s.objects_in_view_mean = view_object_frames / n;
+  s.shares.size = safe_ratio(r_size, r_all);
+  s.shares.eccentricity = safe_ratio(r_all - r_sv, r_all);
+  s.shares.velocity = safe_ratio(r_all - r_se, r_all);
+  s.shares.interaction =
+      r_all > 0.0 ? 1.0 - s.shares.size - s.shares.eccentricity - s.shares.velocity : 0.0;
+  return s;
+}
+
+void print_summary(const RunInfo& info, const RunSummary& s, std::ostream& out) {
+  char line[256];
+  out << "\n== gazelod run: " << info.scenario << " ==\n";
+  out << "hmd " << info.hmd << ", runtime " << info.runtime << ", device " << info.device
+      << ", criteria " << info.criteria << "\n";
+  std::snprintf(line, sizeof line, "frames          %lld\n", static_cast<long long>(s.frames));
+  out << line;
+  std::snprintf(line, sizeof line, "frame time      mean %.3f ms, p95 %.3f ms, max %.3f ms (selection mean %.3f ms)\n",
+                s.mean_frame_ms, s.p95_frame_ms, s.max_frame_ms, s.mean_select_ms);
+  out << line;
+  const double drawn_pct = 100.0 * safe_ratio(static_cast<double>(s.triangles_drawn),
+                                              static_cast<double>(s.triangles_full));
+  std::snprintf(line, sizeof line, "triangles       %llu drawn of %llu at full detail (%.1f%%, per eye)\n",
+                static_cast<unsigned long long>(s.triangles_drawn),
+                static_cast<unsigned long long>(s.triangles_full), drawn_pct);
+  out << line;
+  std::uint64_t total = 0;
+  for (auto c : s.lod_histogram) total += c;
+  out << "LOD histogram   ";
+  for (int i = 0; i < kMaxReportedLods; ++i) {
+    if (s.lod_histogram[i] == 0 && i > 3) continue;
+    std::snprintf(line, sizeof line, "L%d %.1f%%  ", i,
+                  100.0 * safe_ratio(static_cast<double>(s.lod_histogram[i]), static_cast<double>(total)));
+    out << line;
+  }
+  out << "\n";
+  std::snprintf(line, sizeof line,
+                "reduction owed  size %.1f%%, eccentricity %.1f%%, velocity %.1f%%, interaction %.1f%%\n",
+                100 * s.shares.size, 100 * s.shares.eccentricity, 100 * s.shares.velocity,
+                100 * s.shares.interaction);
+  out << line;
+  std::snprintf(line, sizeof line, "gaze            valid in %.1f%% of frames, %lld saccades\n",
+                100.0 * safe_ratio(static_cast<double>(s.gaze_valid_frames), static_cast<double>(s.frames)),
+                static_cast<long long>(s.saccades));
+  out << line;
+  if (info.budget_ms > 0.0) {
+    std::snprintf(line, sizeof line, "budget          %.3f ms, exceeded in %lld frames (%.1f%%)\n",
+                  info.budget_ms, static_cast<long long>(s.frames_over_budget),
+                  100.0 * safe_ratio(static_cast<double>(s.frames_over_budget), static_cast<double>(s.frames)));
+    out << line;
+  }
+}
+
+void write_report_files(const std::filesystem::path& dir, const RunInfo& info,
+                        const RunSummary& s, const std::vector<FrameRecord>& frames) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw std::runtime_error("cannot create output folder " + dir.string() + ": " + ec.message());
+
+  nlohmann::json j;
+  j["scenario"] = info.scenario;
+  j["hmd"] = info.hmd;
+  j["runtime"] = info.runtime;
+  j["device"] = info.device;
+  j["criteria"] = info.criteria;
+  j["frames"] = s.frames;
+  j["triangles_drawn"] = s.triangles_drawn;
+  j["triangles_full"] = s.triangles_full;
+  j["frame_time_ms"] = {{"mean", s.mean_frame_ms}, {"p95", s.p95_frame_ms}, {"max", s.max_frame_ms}};
+  j["selection_time_ms"] = {{"mean", s.mean_select_ms}};
+  j["lod_histogram"] = s.lod_histogram;
+  j["shares"] = {{"size", s.shares.size},
+                 {"eccentricity", s.shares.eccentricity},
+                 {"velocity", s.shares.velocity},
+                 {"interaction", s.shares.interaction}};
+  const auto set_json = [](const SetTotals& t) {
+    return nlohmann::json{{"triangles", t.triangles}, {"average_lod", t.average_lod}};
+  };
+  j["criteria_sets"] = {{"none", set_json(s.set_none)},
+                        {"size", set_json(s.set_size)},
+                        {"size+eccentricity", set_json(s.set_size_eccentricity)},
+                        {"size+velocity", set_json(s.set_size_velocity)},
+                        {"drawn", set_json(s.set_drawn)}};
+  j["lod_map"] = set_json(s.set_lod_map);
+  j["in_view"] = {{"objects_per_frame", s.objects_in_view_mean}};
+  static const char* view_names[] = {"none", "size", "size+eccentricity", "size+velocity", "drawn", "lod_map"};
+  for (std::size_t k = 0; k < s.in_view.size(); ++k) j["in_view"][view_names[k]] = set_json(s.in_view[k]);
+  j["gaze_valid_frames"] = s.gaze_valid_frames;
+  j["saccades"] = s.saccades;
+  if (info.budget_ms > 0.0) {
+    j["budget_ms"] = info.budget_ms;
+    j["frames_over_budget"] = s.frames_over_budget;
+  }
+  const auto summary_path = dir / "summary.json";
+  auto summary = open_out(summary_path);
+  summary << j.dump(2) << "\n";
+  close_checked(summary, summary_path);
+
+  const auto csv_path = dir / "frames.csv";
+  auto csv = open_out(csv_path);
+  csv << "frame,t_s,frame_ms,select_ms,predicted_ms,triangles_drawn,triangles_full,"
+         "triangles_size_only,triangles_size_eccentricity,triangles_size_velocity,"
+         "gaze_source,gaze_valid,saccade,head_speed_dps";
+  for (int i = 0; i < kMaxReportedLods; ++i) csv << ",lod" << i;
+  csv << "\n";
+  for (const FrameRecord& f : frames) {
+    csv << f.index << ',' << f.t_s << ',' << f.frame_ms << ',' << f.select_ms << ',' << f.predicted_ms
+        << ',' << f.triangles_drawn << ',' << f.triangles_full << ',' << f.triangles_size_only << ','
+        << f.triangles_size_eccentricity << ',' << f.triangles_size_velocity << ',' << f.gaze_source
+        << ',' << (f.gaze_valid ? 1 : 0) << ',' << (f.saccade ? 1 : 0) << ',' << f.head_speed_dps;
+    for (auto c : f.lod_histogram) csv << ',' << c;
+    csv << "\n";
+  }
+  close_checked(csv, csv_path);
+
+  Plot plot;
+  plot.title = "gazelod run: " + info.scenario + " on " + info.hmd;
+  plot.x_label = "time (s)";
+  PlotSeries drawn{"drawn", "#d62728", {}}, full{"full detail", "#1f77b4", {}};
+  PlotSeries frame{"frame", "#2ca02c", {}}, select{"selection", "#9467bd", {}};
+  PlotSeries head{"head speed", "#ff7f0e", {}};
+  for (const FrameRecord& f : frames) {
+    plot.x.push_back(f.t_s);
+    drawn.y.push_back(static_cast<double>(f.triangles_drawn));
+    full.y.push_back(static_cast<double>(f.triangles_full));
+    frame.y.push_back(f.frame_ms);
+    select.y.push_back(f.select_ms);
+    head.y.push_back(f.head_speed_dps);
+    if (f.saccade) plot.markers.push_back({f.t_s, "#7f7f7f"});
+  }
+  plot.panels.push_back({"triangles per eye", {drawn, full}});
+  plot.panels.push_back({"time (ms)", {frame, select}});
+  plot.panels.push_back({"head speed (deg/s)", {head}});
+  plot.marker_legend = "saccade";
+  const auto svg_path = dir / "frames.svg";
+  auto svg = open_out(svg_path);
+  write_svg(plot, svg);
+  close_checked(svg, svg_path);
+}
+
+}  // namespace gazelod::cli

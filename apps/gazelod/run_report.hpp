@@ -1,0 +1,104 @@
+// What `gazelod run` reports: per-frame records in, a terminal summary, summary.json,
+// frames.csv and an SVG plot (triangles and frame time over the run, gaze events marked) out.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace gazelod::cli {
+
+inline constexpr int kMaxReportedLods = 8;
+
+struct FrameRecord {
+  std::int64_t index = 0;
+  double t_s = 0.0;                 // scenario time of the frame's predicted display time
+  double frame_ms = 0.0;            // measured: selection + rendering both eyes + submit
+  double select_ms = 0.0;           // measured: plugin begin_frame (gaze, head, selection)
+  double predicted_ms = 0.0;        // budget's predicted frame time (0 when no budget)
+  std::uint64_t triangles_drawn = 0;     // per eye
+  std::uint64_t triangles_full = 0;      // every object at LOD 0
+  std::uint64_t triangles_size_only = 0;           // criteria sets, for the shares
+  std::uint64_t triangles_size_eccentricity = 0;
+  std::uint64_t triangles_size_velocity = 0;
+  std::array<std::uint32_t, kMaxReportedLods> lod_histogram{};
+  std::string gaze_source;          // "openxr", "hid", "trace", "head-fixed"
+  bool gaze_valid = false;
+  bool saccade = false;             // a saccade began at this frame (for the plot)
+  double head_speed_dps = 0.0;
+  // For the evaluation (gazelod compare / eval): the object count, the summed levels of each
+  // criteria set (average LOD = sum / objects), and the thesis's LOD map evaluated offline on
+  // the same frame (apps/gazelod/eval_lod_map.hpp; nothing it picks is drawn).
+  std::int64_t objects = 0;
+  std::uint64_t lod_sum_drawn = 0;
+  std::uint64_t lod_sum_size_only = 0;
+  std::uint64_t lod_sum_size_eccentricity = 0;
+  std::uint64_t lod_sum_size_velocity = 0;
+  std::uint64_t triangles_lod_map = 0;
+  std::uint64_t lod_sum_lod_map = 0;
+  // The same restricted to the objects in the view frustum this frame, per set in the order
+  // none, size, size+eccentricity, size+velocity, drawn, lod map.
+  std::int64_t objects_in_view = 0;
+  std::array<std::uint64_t, 6> in_view_triangles{};
+  std::array<std::uint64_t, 6> in_view_lod_sum{};
+};
+
+struct RunInfo {
+  std::string scenario;
+  std::string hmd;
+  std::string runtime;
+  std::string device;               // Vulkan device name
+  std::string criteria;             // "size,eccentricity,velocity"
+  double budget_ms = 0.0;
+};
+
+// Shares of the triangle reduction owed to each criterion, over the whole run:
+// size = R(size) / R(all); eccentricity = (R(all) - R(size+velocity)) / R(all);
+// velocity = (R(all) - R(size+eccentricity)) / R(all); the rest is their interaction.
+struct ReductionShares {
+  double size = 0.0;
+  double eccentricity = 0.0;
+  double velocity = 0.0;
+  double interaction = 0.0;
+};
+
+// One criteria set over a run: triangles summed over frames (per eye) and the mean level
+// over every object of every frame.
+struct SetTotals {
+  std::uint64_t triangles = 0;
+  double average_lod = 0.0;
+};
+
+struct RunSummary {
+  std::int64_t frames = 0;
+  double mean_frame_ms = 0.0;
+  double p95_frame_ms = 0.0;
+  double max_frame_ms = 0.0;
+  double mean_select_ms = 0.0;
+  std::uint64_t triangles_drawn = 0;   // summed over frames, per eye
+  std::uint64_t triangles_full = 0;
+  std::array<std::uint64_t, kMaxReportedLods> lod_histogram{};
+  ReductionShares shares;
+  std::int64_t frames_over_budget = 0;
+  std::int64_t gaze_valid_frames = 0;
+  std::int64_t saccades = 0;
+  // Criteria sets ("none" = every object at level 0; "drawn" = the run's own --criteria).
+  SetTotals set_none, set_size, set_size_eccentricity, set_size_velocity, set_drawn, set_lod_map;
+  // Over the objects in view only (FrameRecord::in_view_*), same order; average_lod per
+  // object in view.
+  std::array<SetTotals, 6> in_view{};
+  double objects_in_view_mean = 0.0;
+};
+
+RunSummary summarize(const std::vector<FrameRecord>& frames, double budget_ms);
+
+void print_summary(const RunInfo& info, const RunSummary& s, std::ostream& out);
+// Writes summary.json, frames.csv and frames.svg into `dir` (created if missing).
+// Throws std::runtime_error naming the file that could not be written.
+void write_report_files(const std::filesystem::path& dir, const RunInfo& info,
+                        const RunSummary& s, const std::vector<FrameRecord>& frames);
+
+}  // namespace gazelod::cli

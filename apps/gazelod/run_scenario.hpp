@@ -1,0 +1,33 @@
+// The scenario of a `gazelod run`: loaded (file or embedded default), adjusted by the
+// command line (--hmd, --frames, --paced), written to the output folder for the simulated
+// runtime, and the environment that points the OpenXR loader at that runtime.
+#pragma once
+
+#include "gaze/gaze_source.hpp"
+#include "apps/gazelod/run_session.hpp"
+#include "sim/simulator.hpp"
+
+#include <filesystem>
+#include <memory>
+#include <string>
+
+namespace gazelod::cli {
+
+struct PreparedScenario {
+  sim::Scenario scenario;
+  std::string label;                  // "default" or the file name
+  std::filesystem::path file;         // the effective scenario as the runtime reads it
+  double duration_s = 0.0;
+};
+
+// Throws UsageError naming the scenario file / JSON path, or the output folder.
+PreparedScenario prepare_scenario(const RunOptions& options);
+
+// Sets XR_RUNTIME_JSON (the simulated runtime built with this program, unless the caller
+// set it), GAZELOD_SIM_SCENARIO, GAZELOD_SIM_DURATION_S and GAZELOD_SIM_PACED.
+void point_loader_at_simulator(const PreparedScenario& prepared, const RunOptions& options);
+
+// The external gaze source from the options (a trace replay), or null.
+std::shared_ptr<gaze::GazeSource> make_external_source(const RunOptions& options);
+
+}  // namespace gazelod::cli

@@ -1,0 +1,246 @@
+#include "apps/gazelod/run_session.hpp"
+#include "lod/angles.hpp"
+
+#include "apps/gazelod/eval_lod_map.hpp"
+#include "apps/gazelod/run_render.hpp"
+#include "apps/gazelod/run_report.hpp"
+#include "apps/gazelod/run_scenario.hpp"
+#include "apps/xr_host/xr_app.hpp"
+#include "sim/simulator.hpp"
+
+#include <glm/geometric.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <optional>
+
+namespace gazelod::cli {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double ms_since(Clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+std::string criteria_text(const EnabledCriteria& c) {
+  std::string s;
+  auto add = [&](bool on, const char* name) {
+    if (!on) return;
+    if (!s.empty()) s += ",";
+    s += name;
+  };
+  add(c.size, "size");
+  add(c.eccentricity, "eccentricity");
+  add(c.velocity, "velocity");
+  return s.empty() ? "none" : s;
+}
+
+std::uint64_t triangles(const std::vector<std::vector<lod::LodLevel>>& chains, std::span<const std::uint8_t> lods) {
+  std::uint64_t n = 0;
+  for (std::size_t i = 0; i < chains.size() && i < lods.size(); ++i)
+    n += chains[i][std::min<std::size_t>(lods[i], chains[i].size() - 1)].triangles;
+  return n;
+}
+
+// Saccade onsets for the plot: the gaze turning faster than 100 deg/s between two frames
+// after a frame that did not (a frame-rate I-VT; the trace tools classify properly).
+class SaccadeMarker {
+ public:
+  bool update(bool valid, const glm::dvec3& dir_head, double t_s) {
+    bool onset = false;
+    if (valid && have_ && t_s > t_s_) {
+      const double angle = std::atan2(glm::length(glm::cross(prev_, dir_head)), glm::dot(prev_, dir_head));
+      const bool fast = angle * lod::kDegPerRad / (t_s - t_s_) > 100.0;
+      onset = fast && !in_saccade_;
+      in_saccade_ = fast;
+    }
+    have_ = valid;
+    prev_ = dir_head;
+    t_s_ = t_s;
+    return onset;
+  }
+
+ private:
+  bool have_ = false, in_saccade_ = false;
+  glm::dvec3 prev_{0.0, 0.0, -1.0};
+  double t_s_ = 0.0;
+};
+
+}  // namespace
+
+int run_session(const RunOptions& opt, Io io) {
+  // The scenario: the runtime serves it; this process also steps it for object motion.
+  const PreparedScenario prepared = prepare_scenario(opt);
+  sim::Simulator simulator(prepared.scenario);
+  const sim::Scenario& scenario = simulator.scenario();
+  if (opt.runtime == "sim") point_loader_at_simulator(prepared, opt);
+  else if (opt.runtime != "system") throw UsageError("--runtime: must be 'sim' or 'system', got '" + opt.runtime + "'");
+
+  std::optional<xr_host::XrApp> app;
+  try {
+    app.emplace(opt.eye_gaze);
+  } catch (const xr_host::XrAppError& e) {
+    io.err << "gazelod run: " << e.what() << "\n";
+    return 1;
+  }
+
+  PluginConfig config;
+  config.use_openxr_eye_gaze = opt.eye_gaze && app->eye_gaze_enabled();
+  config.criteria = opt.criteria;
+  config.compute_breakdown = true;
+  config.budget_ms = opt.budget_ms;
+  // Plan with a margin: the cost fit is unbiased, so without one about half the frames would
+  // land above their prediction.
+  config.budget.headroom = 0.15;
+  config.hmd_override = opt.hmd;
+  config.external_source = make_external_source(opt);
+  auto plugin = LodPlugin::create(app->instance(), app->system(), app->session(), app->local_space(), config);
+  plugin->on_source_changed([&io, &opt](GazeSourceKind now, const std::string& why) {
+    if (!opt.quiet) io.err << "gazelod run: gaze source " << to_string(now) << ": " << why << "\n";
+  });
+  std::vector<std::vector<lod::LodLevel>> chains;
+  std::vector<double> radii;
+  for (const sim::SceneObject& o : scenario.objects) {
+    ObjectDesc d;
+    d.center_m = o.position_m;
+    d.radius_m = o.radius_m;
+    d.velocity_m_s = o.velocity_m_s;
+    d.lods = o.lods;
+    d.importance = o.importance;
+    plugin->add_object(d);
+    chains.push_back(o.lods);
+    radii.push_back(o.radius_m);
+  }
+
+  const std::vector<std::uint8_t> full_detail(chains.size(), 0);
+  const std::uint64_t triangles_full = triangles(chains, full_detail);
+  std::optional<RunRenderer> renderer;
+  if (opt.render) renderer.emplace(*app, chains);
+
+  const double rate = scenario.frame_rate_hz > 0 ? scenario.frame_rate_hz : 90.0;
+  const std::int64_t planned = opt.frames > 0 ? opt.frames : static_cast<std::int64_t>(std::llround(scenario.duration_s * rate));
+  const std::int64_t capture = opt.capture_frame >= 0 ? opt.capture_frame : planned / 2;
+  std::vector<FrameRecord> frames;
+  frames.reserve(static_cast<std::size_t>(planned));
+  std::vector<glm::dvec3> positions(scenario.objects.size());
+  std::vector<XrView> views;
+  SaccadeMarker saccades;
+  XrTime time_base = 0;
+  bool exit_requested = false;
+  auto last_progress = Clock::now();
+  const auto started = Clock::now();
+
+  for (;;) {
+    const bool keep_going = app->poll_events([&](XrSessionState s, XrTime t) {
+      plugin->on_session_state(s, t);
+      if (s == XR_SESSION_STATE_LOSS_PENDING)  // never end silently: say why the run stops
+        io.err << "gazelod run: the runtime is losing the session (XR_SESSION_STATE_LOSS_PENDING); ending after "
+               << frames.size() << " frames\n";
+    });
+    if (!keep_going) break;
+    if (!app->session_running()) continue;
+    if (static_cast<std::int64_t>(frames.size()) >= planned && !exit_requested) {
+      xrRequestExitSession(app->session());
+      exit_requested = true;
+    }
+
+    const XrFrameState fs = app->wait_frame();
+    const auto t0 = Clock::now();
+    app->begin_frame();
+    if (time_base == 0) {
+      time_base = app->scenario_time_base();
+      if (time_base == 0) time_base = fs.predictedDisplayTime - fs.predictedDisplayPeriod;
+    }
+    const double t_s = static_cast<double>(fs.predictedDisplayTime - time_base) * 1e-9;
+    const auto objects = simulator.objects_at(fs.predictedDisplayTime - time_base);
+    for (std::size_t i = 0; i < objects.size() && i < positions.size(); ++i) {
+      plugin->set_object_motion(static_cast<std::uint32_t>(i), objects[i].position_m, objects[i].velocity_m_s);
+      positions[i] = objects[i].position_m;
+    }
+    const FrameDecisions& d = plugin->begin_frame(fs.predictedDisplayTime);
+    const FrameDiagnostics& diag = plugin->diagnostics();
+    const double select_ms = ms_since(t0);
+
+    std::vector<XrView>* submitted = nullptr;
+    const bool counting = !exit_requested && static_cast<std::int64_t>(frames.size()) < planned;
+    if (fs.shouldRender && app->locate_views(fs.predictedDisplayTime, views)) {
+      if (renderer) {
+        const bool save = counting && static_cast<std::int64_t>(frames.size()) == capture;
+        for (std::size_t eye = 0; eye < views.size(); ++eye) {
+          const std::uint32_t index = app->acquire(eye);
+          renderer->render_eye(eye, index, views[eye], positions, radii, d, diag);
+          if (save && eye == 0) renderer->save_png(eye, index, opt.out_dir / "frame.png");
+          app->release(eye);
+        }
+        submitted = &views;
+      }
+    }
+    app->end_frame(fs.predictedDisplayTime, submitted ? *submitted : std::vector<XrView>{});
+    const double frame_ms = ms_since(t0);
+    plugin->end_frame(frame_ms);
+    if (!counting) continue;
+
+    FrameRecord r;
+    r.index = static_cast<std::int64_t>(frames.size());
+    r.t_s = t_s;
+    r.frame_ms = frame_ms;
+    r.select_ms = select_ms;
+    r.predicted_ms = diag.predicted_ms;
+    r.triangles_drawn = triangles(chains, d.lod);
+    r.triangles_full = triangles_full;
+    r.triangles_size_only = triangles(chains, diag.lod_size_only);
+    r.triangles_size_eccentricity = triangles(chains, diag.lod_size_eccentricity);
+    r.triangles_size_velocity = triangles(chains, diag.lod_size_velocity);
+    for (std::uint8_t l : d.lod) ++r.lod_histogram[std::min<int>(l, kMaxReportedLods - 1)];
+    r.objects = static_cast<std::int64_t>(chains.size());
+    r.lod_sum_drawn = lod_sum(d.lod);
+    r.lod_sum_size_only = lod_sum(diag.lod_size_only);
+    r.lod_sum_size_eccentricity = lod_sum(diag.lod_size_eccentricity);
+    r.lod_sum_size_velocity = lod_sum(diag.lod_size_velocity);
+    const LodMapFrame lod_map = lod_map_frame(chains, objects, radii, diag,
+                                              simulator.head_at(fs.predictedDisplayTime - time_base).linear_velocity_m_s);
+    r.triangles_lod_map = lod_map.triangles;
+    r.lod_sum_lod_map = lod_map.lod_sum;
+    const sim::HeadState head = simulator.head_at(fs.predictedDisplayTime - time_base);
+    const InViewFrame view = in_view_frame(chains, objects, radii, d, diag, lod_map.levels, head.position_m,
+                                           head.orientation, scenario.display.views[0].fov);
+    r.objects_in_view = view.objects;
+    r.in_view_triangles = view.triangles;
+    r.in_view_lod_sum = view.lod_sum;
+    r.gaze_source = to_string(d.gaze_source);
+    r.gaze_valid = d.gaze_valid;
+    r.head_speed_dps = glm::length(diag.head_angular_velocity_rad_s) * lod::kDegPerRad;
+    // Eye-in-head movement: head turns are not saccades.
+    r.saccade = saccades.update(d.gaze_valid, diag.gaze_direction_head, t_s);
+    frames.push_back(std::move(r));
+
+    if (!opt.quiet && (ms_since(last_progress) > 1000.0 || static_cast<std::int64_t>(frames.size()) == planned)) {
+      last_progress = Clock::now();
+      io.err << "gazelod run: frame " << frames.size() << "/" << planned << " ("
+             << (100 * static_cast<std::int64_t>(frames.size())) / std::max<std::int64_t>(planned, 1) << "%), "
+             << static_cast<int>(ms_since(started) / 1000.0) << " s elapsed\n";
+    }
+  }
+
+  RunInfo info;
+  info.scenario = prepared.label;
+  info.hmd = opt.hmd.empty() ? scenario.display.name : opt.hmd;
+  info.runtime = app->runtime_name();
+  info.device = opt.render ? app->vk_device_name() : "none (--no-render)";
+  info.criteria = criteria_text(opt.criteria);
+  info.budget_ms = opt.budget_ms;
+  const RunSummary summary = summarize(frames, opt.budget_ms);
+  print_summary(info, summary, io.out);
+  write_report_files(opt.out_dir, info, summary, frames);
+  io.out << "files: " << (opt.out_dir / "summary.json").string() << ", frames.csv, frames.svg"
+         << (opt.render ? ", frame.png" : "") << "\n";
+  if (frames.empty()) {
+    io.err << "gazelod run: the session ended before any frame was rendered\n";
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace gazelod::cli

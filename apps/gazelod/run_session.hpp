@@ -1,0 +1,34 @@
+// `gazelod run`: one session through the OpenXR loader (the simulated runtime by default),
+// the plugin choosing LODs each frame, every eye rendered with Vulkan, and a report.
+#pragma once
+
+#include "apps/gazelod/command.hpp"
+#include "plugin/gazelod.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+namespace gazelod::cli {
+
+struct RunOptions {
+  std::int64_t frames = 0;             // 0: the scenario's whole duration
+  std::string scenario_path;           // "" = the embedded default scenario
+  std::string scene_path;              // a glb from `gazelod bake`: its objects replace the scenario's
+  std::string hmd;                     // preset overriding the scenario's display
+  EnabledCriteria criteria;
+  std::filesystem::path out_dir = "gazelod-out";
+  std::string runtime = "sim";         // "sim" or "system"
+  double budget_ms = 0.0;              // 0: no frame budget
+  bool paced = false;                  // sleep to the display rate (default: as fast as possible)
+  bool render = true;                  // false: select only, no Vulkan drawing
+  bool eye_gaze = true;                // false: ignore the runtime's eye gaze (fallback test)
+  std::string trace_path;              // an external gaze source: a gazelod trace to replay
+  std::int64_t capture_frame = -1;     // frame saved as PNG in out_dir (-1: the middle one)
+  bool quiet = false;                  // no progress lines
+};
+
+// Returns the process exit status; throws UsageError for bad options or input.
+int run_session(const RunOptions& options, Io io);
+
+}  // namespace gazelod::cli

@@ -1,0 +1,111 @@
+#include "budget/budget_instance.hpp"
+
+#include "budget/mckp_hierarchy.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+
+namespace gazelod::budget {
+namespace {
+
+using nlohmann::json;
+
+[[noreturn]] void fail(const std::string& where, const std::string& path, const std::string& why) {
+  throw InstanceError(where + ": " + path + ": " + why);
+}
+
+double number(const json& v, const std::string& where, const std::string& path, bool non_negative) {
+  const char* why = non_negative ? "must be a finite number >= 0" : "must be a finite number";
+  if (!v.is_number()) fail(where, path, why);
+  const double d = v.get<double>();
+  if (!std::isfinite(d) || (non_negative && d < 0.0)) fail(where, path, why);
+  return d;
+}
+
+std::uint32_t index(const json& v, std::size_t bound, const std::string& where,
+                    const std::string& path, const char* what) {
+  if (!v.is_number_integer() || v.get<long long>() < 0 ||
+      static_cast<unsigned long long>(v.get<long long>()) >= bound)
+    fail(where, path, std::string("must be ") + what + " index in [0, " + std::to_string(bound) + ")");
+  return static_cast<std::uint32_t>(v.get<long long>());
+}
+
+budget::MckpItem item(const json& v, const std::string& where, const std::string& path) {
+  if (!v.is_object()) fail(where, path, "must be an object {\"profit\": p, \"cost\": w}");
+  for (auto it = v.begin(); it != v.end(); ++it)
+    if (it.key() != "profit" && it.key() != "cost") fail(where, path + "." + it.key(), "unknown key");
+  if (!v.contains("profit")) fail(where, path + ".profit", "missing");
+  if (!v.contains("cost")) fail(where, path + ".cost", "missing");
+  return {number(v["profit"], where, path + ".profit", false), number(v["cost"], where, path + ".cost", true)};
+}
+
+}  // namespace
+
+budget::MckpInstance parse_budget_instance(const json& doc, const std::string& where) {
+  if (!doc.is_object()) fail(where, "(top level)", "must be an object with \"capacity\" and \"subsets\"");
+  for (auto it = doc.begin(); it != doc.end(); ++it)
+    if (it.key() != "capacity" && it.key() != "subsets" && it.key() != "groups")
+      fail(where, it.key(), "unknown key (expected capacity, subsets, groups)");
+  if (!doc.contains("capacity")) fail(where, "capacity", "missing");
+  if (!doc.contains("subsets")) fail(where, "subsets", "missing");
+  budget::MckpInstance inst;
+  inst.capacity = number(doc["capacity"], where, "capacity", true);
+  const json& subsets = doc["subsets"];
+  if (!subsets.is_array() || subsets.empty()) fail(where, "subsets", "must be a non-empty array of arrays");
+  if (subsets.size() >= std::numeric_limits<std::uint32_t>::max() / 2) fail(where, "subsets", "too many");
+  std::vector<budget::MckpItem> items;
+  for (std::size_t k = 0; k < subsets.size(); ++k) {
+    const std::string path = "subsets[" + std::to_string(k) + "]";
+    const json& s = subsets[k];
+    if (!s.is_array() || s.empty()) fail(where, path, "must be a non-empty array of items");
+    items.clear();
+    for (std::size_t j = 0; j < s.size(); ++j)
+      items.push_back(item(s[j], where, path + "[" + std::to_string(j) + "]"));
+    inst.add_subset(items);
+  }
+  if (inst.items.size() >= std::numeric_limits<std::uint32_t>::max() / 2) fail(where, "subsets", "too many items");
+  if (doc.contains("groups")) {
+    const json& groups = doc["groups"];
+    if (!groups.is_array()) fail(where, "groups", "must be an array of groups");
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+      const std::string path = "groups[" + std::to_string(g) + "]";
+      const json& gj = groups[g];
+      if (!gj.is_object()) fail(where, path, "must be an object {\"subsets\", \"groups\", \"impostors\"}");
+      budget::MckpGroup grp;
+      for (auto it = gj.begin(); it != gj.end(); ++it) {
+        const std::string key = it.key();
+        const std::string kp = path + "." + key;
+        if (key != "subsets" && key != "groups" && key != "impostors")
+          fail(where, kp, "unknown key (expected subsets, groups, impostors)");
+        if (!it->is_array()) fail(where, kp, "must be an array");
+        for (std::size_t a = 0; a < it->size(); ++a) {
+          const std::string ap = kp + "[" + std::to_string(a) + "]";
+          if (key == "subsets") grp.subsets.push_back(index((*it)[a], inst.subset_count(), where, ap, "a subset"));
+          else if (key == "groups") grp.groups.push_back(index((*it)[a], groups.size(), where, ap, "a group"));
+          else grp.impostors.push_back(item((*it)[a], where, ap));
+        }
+      }
+      inst.groups.push_back(std::move(grp));
+    }
+    const std::string problem = budget::check_hierarchy(inst);
+    if (!problem.empty()) throw InstanceError(where + ": " + problem);
+  }
+  return inst;
+}
+
+budget::MckpInstance read_budget_instance(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InstanceError("--instance: cannot open " + path);
+  json doc;
+  try {
+    doc = json::parse(in);
+  } catch (const json::parse_error& e) {
+    throw InstanceError(path + ": JSON parse error at byte " + std::to_string(e.byte) + ": " + e.what());
+  } catch (const json::exception& e) {  // e.g. out_of_range: a number too large for a double
+    throw InstanceError(path + ": JSON error: " + e.what());
+  }
+  return parse_budget_instance(doc, path);
+}
+
+}  // namespace gazelod::budget

@@ -1,0 +1,164 @@
+# `cmake --install`: the plugin's libraries and public headers, an exported CMake package
+# (find_package(gazelod CONFIG) -> gazelod::plugin, gazelod::lod, gazelod::budget,
+# gazelod::gaze), a pkg-config file, the simulated OpenXR runtime with an installed manifest,
+# and the gazelod program. Layout (GNUInstallDirs; <libdir> is lib or lib/<multiarch>):
+#
+#   include/gazelod/gazelod.hpp            plugin/gazelod.hpp: #include <gazelod/gazelod.hpp>
+#   include/gazelod/plugin/*.hpp           the other plugin headers gazelod.hpp includes
+#   include/gazelod/{lod,budget,gaze}/     all lod/*.hpp; the budget/ and gaze/ headers they need
+#   <libdir>/libgazelod_{plugin,budget,gaze,lod}.a
+#   <libdir>/cmake/gazelod/                gazelodConfig.cmake, ConfigVersion, Targets
+#   <libdir>/pkgconfig/gazelod.pc
+#   <libdir>/gazelod/libgazelod_xr_runtime.so       the simulated OpenXR runtime
+#   share/openxr/1/gazelod_xr_runtime.json          its manifest (XR_RUNTIME_JSON=<this file>)
+#   bin/gazelod
+#
+# Components: dev (libraries, headers, CMake and pkg-config files), xr_runtime, program.
+# Both include/ and include/gazelod/ are include directories of the exported targets (see
+# GAZELOD_INCLUDE_DIRS in cmake/Gazelod.cmake): the headers include each other from the
+# repository root ("lod/cone.hpp"). tests/install/ installs into a scratch prefix and builds a
+# consumer against it.
+include(GNUInstallDirs)
+include(CMakePackageConfigHelpers)
+
+set(GAZELOD_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/gazelod)
+set(GAZELOD_INSTALL_HEADERDIR ${CMAKE_INSTALL_INCLUDEDIR}/gazelod)
+set(GAZELOD_XR_RUNTIME_INSTALL_LIBDIR ${CMAKE_INSTALL_LIBDIR}/gazelod)
+set(GAZELOD_XR_RUNTIME_INSTALL_MANIFEST ${CMAKE_INSTALL_DATADIR}/openxr/1/gazelod_xr_runtime.json)
+
+# ---- libraries: gazelod_plugin and what it links, exported as gazelod::<name> -------------
+set(gazelod_exported plugin lod budget gaze)
+set(gazelod_installed_targets)
+foreach(short ${gazelod_exported})
+  set_target_properties(gazelod_${short} PROPERTIES EXPORT_NAME ${short})
+  # The public headers need C++20 (std::span); the tree already builds as C++20.
+  target_compile_features(gazelod_${short} PUBLIC cxx_std_20)
+  # The same names in the build tree (a project that adds gazelod with add_subdirectory).
+  add_library(gazelod::${short} ALIAS gazelod_${short})
+  list(APPEND gazelod_installed_targets gazelod_${short})
+endforeach()
+install(TARGETS ${gazelod_installed_targets} EXPORT gazelodTargets
+  ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT dev
+  LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT dev)
+
+# ---- public headers: plugin/gazelod.hpp, all of lod/, and every header they include ------
+# The closure of `#include "..."` from those headers is computed here (each header read is a
+# configure dependency, so a new include re-runs CMake and is installed).
+function(gazelod_header_closure out)
+  set(todo ${ARGN})
+  set(seen)
+  while(todo)
+    list(POP_FRONT todo rel)
+    if(rel IN_LIST seen)
+      continue()
+    endif()
+    list(APPEND seen ${rel})
+    set_property(DIRECTORY ${GAZELOD_ROOT} APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${GAZELOD_ROOT}/${rel})
+    file(STRINGS ${GAZELOD_ROOT}/${rel} lines REGEX "^[ \t]*#[ \t]*include[ \t]*\"")
+    foreach(line ${lines})
+      string(REGEX REPLACE "^[ \t]*#[ \t]*include[ \t]*\"([^\"]+)\".*" "\\1" inc "${line}")
+      if(EXISTS ${GAZELOD_ROOT}/${inc})
+        list(APPEND todo ${inc})
+      else()
+        message(FATAL_ERROR "${rel}: includes \"${inc}\", which is not a path from the repository root")
+      endif()
+    endforeach()
+  endwhile()
+  set(${out} ${seen} PARENT_SCOPE)
+endfunction()
+
+file(GLOB gazelod_lod_headers CONFIGURE_DEPENDS RELATIVE ${GAZELOD_ROOT} ${GAZELOD_ROOT}/lod/*.hpp)
+gazelod_header_closure(gazelod_public_headers plugin/gazelod.hpp ${gazelod_lod_headers})
+foreach(rel ${gazelod_public_headers})
+  if(rel STREQUAL "plugin/gazelod.hpp")
+    set(dest ${GAZELOD_INSTALL_HEADERDIR})  # <gazelod/gazelod.hpp>
+  else()
+    get_filename_component(dir ${rel} DIRECTORY)
+    set(dest ${GAZELOD_INSTALL_HEADERDIR}/${dir})
+  endif()
+  install(FILES ${GAZELOD_ROOT}/${rel} DESTINATION ${dest} COMPONENT dev)
+endforeach()
+
+# ---- CMake package -------------------------------------------------------------------------
+install(EXPORT gazelodTargets NAMESPACE gazelod:: FILE gazelodTargets.cmake
+  DESTINATION ${GAZELOD_INSTALL_CMAKEDIR} COMPONENT dev)
+set(gazelod_pkg_dir ${CMAKE_BINARY_DIR}/gazelod-package)
+configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/gazelodConfig.cmake.in
+  ${gazelod_pkg_dir}/gazelodConfig.cmake
+  INSTALL_DESTINATION ${GAZELOD_INSTALL_CMAKEDIR}
+  PATH_VARS GAZELOD_XR_RUNTIME_INSTALL_MANIFEST)
+# 0.x: a new minor version may break the API.
+write_basic_package_version_file(${gazelod_pkg_dir}/gazelodConfigVersion.cmake
+  VERSION ${PROJECT_VERSION} COMPATIBILITY SameMinorVersion)
+install(FILES ${gazelod_pkg_dir}/gazelodConfig.cmake ${gazelod_pkg_dir}/gazelodConfigVersion.cmake
+  DESTINATION ${GAZELOD_INSTALL_CMAKEDIR} COMPONENT dev)
+
+# ---- pkg-config ------------------------------------------------------------------------------
+# Relocatable: prefix is found from the .pc file's own folder (works with --prefix and DESTDIR).
+if(IS_ABSOLUTE "${CMAKE_INSTALL_LIBDIR}")
+  set(GAZELOD_PC_PREFIX "${CMAKE_INSTALL_PREFIX}")
+else()
+  file(RELATIVE_PATH gazelod_pc_up /_prefix/${CMAKE_INSTALL_LIBDIR}/pkgconfig /_prefix)
+  string(REGEX REPLACE "/$" "" gazelod_pc_up "${gazelod_pc_up}")
+  set(GAZELOD_PC_PREFIX "\${pcfiledir}/${gazelod_pc_up}")
+endif()
+foreach(var LIBDIR INCLUDEDIR)
+  if(IS_ABSOLUTE "${CMAKE_INSTALL_${var}}")
+    set(GAZELOD_PC_${var} "${CMAKE_INSTALL_${var}}")
+  else()
+    set(GAZELOD_PC_${var} "\${prefix}/${CMAKE_INSTALL_${var}}")
+  endif()
+endforeach()
+if(IS_ABSOLUTE "${GAZELOD_XR_RUNTIME_INSTALL_MANIFEST}")
+  set(GAZELOD_PC_XR_RUNTIME_JSON "${GAZELOD_XR_RUNTIME_INSTALL_MANIFEST}")
+else()
+  set(GAZELOD_PC_XR_RUNTIME_JSON "\${prefix}/${GAZELOD_XR_RUNTIME_INSTALL_MANIFEST}")
+endif()
+configure_file(${CMAKE_CURRENT_LIST_DIR}/gazelod.pc.in ${gazelod_pkg_dir}/gazelod.pc @ONLY)
+install(FILES ${gazelod_pkg_dir}/gazelod.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig COMPONENT dev)
+
+# ---- the simulated OpenXR runtime ------------------------------------------------------------
+# The installed manifest's library_path is relative to the manifest's folder (the Khronos
+# loader resolves it from there, also through a symlink such as active_runtime.json), so it
+# points at the installed library whatever --prefix or DESTDIR says. The build tree keeps its
+# own manifest (GAZELOD_XR_RUNTIME_JSON, sim/runtime/CMakeLists.txt).
+if(TARGET gazelod_xr_runtime)
+  install(TARGETS gazelod_xr_runtime
+    LIBRARY DESTINATION ${GAZELOD_XR_RUNTIME_INSTALL_LIBDIR} COMPONENT xr_runtime)
+  get_filename_component(manifest_dir ${GAZELOD_XR_RUNTIME_INSTALL_MANIFEST} DIRECTORY)
+  if(IS_ABSOLUTE "${GAZELOD_XR_RUNTIME_INSTALL_LIBDIR}" OR IS_ABSOLUTE "${manifest_dir}")
+    set(lib_dir_from_manifest ${GAZELOD_XR_RUNTIME_INSTALL_LIBDIR})
+    if(NOT IS_ABSOLUTE "${lib_dir_from_manifest}")
+      set(lib_dir_from_manifest ${CMAKE_INSTALL_PREFIX}/${lib_dir_from_manifest})
+    endif()
+  else()
+    file(RELATIVE_PATH lib_dir_from_manifest /_prefix/${manifest_dir} /_prefix/${GAZELOD_XR_RUNTIME_INSTALL_LIBDIR})
+  endif()
+  set(installed_manifest ${gazelod_pkg_dir}/gazelod_xr_runtime.json)
+  file(GENERATE OUTPUT ${installed_manifest} CONTENT "{
+    \"file_format_version\": \"1.0.0\",
+    \"runtime\": {
+        \"name\": \"gazelod simulated runtime\",
+        \"library_path\": \"${lib_dir_from_manifest}/$<TARGET_FILE_NAME:gazelod_xr_runtime>\"
+    }
+}
+")
+  get_filename_component(manifest_name ${GAZELOD_XR_RUNTIME_INSTALL_MANIFEST} NAME)
+  install(FILES ${installed_manifest} DESTINATION ${manifest_dir} RENAME ${manifest_name}
+    COMPONENT xr_runtime)
+endif()
+
+# ---- the gazelod program ---------------------------------------------------------------------
+if(TARGET gazelod)
+  install(TARGETS gazelod RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT program)
+endif()
+
+# Everything `cmake --install` copies, in one target:
+#   cmake --build build --target gazelod_install_targets && cmake --install build --prefix P
+add_custom_target(gazelod_install_targets)
+add_dependencies(gazelod_install_targets ${gazelod_installed_targets})
+foreach(t gazelod_xr_runtime gazelod)
+  if(TARGET ${t})
+    add_dependencies(gazelod_install_targets ${t})
+  endif()
+endforeach()

@@ -1,0 +1,56 @@
+// What the plugin returns each frame: the levels to draw (FrameDecisions) and, for reports
+// and debugging, how it got there (FrameDiagnostics). Spans are indexed by object id and stay
+// valid until the next begin_frame.
+#pragma once
+
+#include "lod/cone.hpp"
+#include "lod/criterion.hpp"
+#include "plugin/gaze_source_kind.hpp"
+
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <span>
+
+namespace gazelod {
+
+struct FrameDecisions {
+  // The level to draw (0 = full detail), after the frame budget if one is set.
+  std::span<const std::uint8_t> lod;
+  // Why the perceptual level is what it is: a lod::Criterion value (lod/criterion.hpp):
+  //   0 none          level 0, no criterion allows a coarser one
+  //   1 size          the object's angular size alone allows the level
+  //   2 eccentricity  eccentricity (with size) allows it
+  //   3 velocity      retinal velocity (with size) allows it
+  //   4 combined      only velocity and eccentricity together allow it
+  //   5 invalid_input the object's data were not finite: level 0 kept
+  // A frame budget may draw coarser than this level (FrameDiagnostics::lod_perceptual).
+  std::span<const std::uint8_t> limited_by;
+  GazeSourceKind gaze_source = GazeSourceKind::head_fixed;
+  bool gaze_valid = false;  // false: head-fixed gaze with the widened cone
+};
+
+struct FrameDiagnostics {
+  std::span<const std::uint8_t> lod_perceptual;  // the perceptual choice before the budget
+  std::span<const std::uint8_t> lod_size_only;   // what each criterion (with size) allows
+  std::span<const std::uint8_t> lod_eccentricity_only;
+  std::span<const std::uint8_t> lod_velocity_only;
+  std::span<const std::uint8_t> lod_size_eccentricity;  // empty unless compute_breakdown
+  std::span<const std::uint8_t> lod_size_velocity;      // empty unless compute_breakdown
+  glm::dvec3 gaze_direction_world{0.0, 0.0, -1.0};
+  glm::dvec3 gaze_direction_head{0.0, 0.0, -1.0};  // as the source gave it (head space)
+  glm::dvec3 eye_position_world{0.0};
+  glm::dvec3 head_angular_velocity_rad_s{0.0};  // base space
+  bool head_valid = false;
+  // The gaze's assumed angular error (deg) and the foveal cone it widens (Reddy 1995): apex at
+  // the eye, along the gaze, half-angle the foveal eccentricity plus the error.
+  double gaze_error_deg = 0.0;
+  lod::Cone foveal_cone;
+  double xi_cpd = 0.0;  // the display limit used this frame (lod/display.hpp)
+  // With a frame budget: the frame time the cost model predicts for FrameDecisions::lod, and
+  // whether even the coarsest levels were predicted over the budget.
+  double predicted_ms = 0.0;
+  bool budget_infeasible = false;
+};
+
+}  // namespace gazelod

@@ -1,0 +1,52 @@
+// What an application configures when it creates the plugin (gazelod.hpp). Plain data.
+#pragma once
+
+#include "budget/frame_budget_options.hpp"
+#include "gaze/gaze_source.hpp"
+
+#include <memory>
+#include <string>
+
+namespace gazelod {
+
+// Which of Reddy's (1998) criteria may coarsen a level; all three by default.
+struct EnabledCriteria {
+  bool size = true;
+  bool eccentricity = true;
+  bool velocity = true;
+};
+
+struct PluginConfig {
+  // Try the runtime's XR_EXT_eye_gaze_interaction first (the instance must have enabled it).
+  bool use_openxr_eye_gaze = true;
+  // Set when the application attaches action sets of its own: it must then include
+  // action_set() in its xrAttachSessionActionSets and xrSyncActions calls and call
+  // action_sets_attached(). Otherwise the plugin attaches and syncs its own set.
+  bool application_attaches_action_sets = false;
+  // A further source tried when the runtime gives no gaze (a HID tracker, a trace replay).
+  std::shared_ptr<gaze::GazeSource> external_source;
+  // Display preset name overriding what the runtime reports ("" = from xrLocateViews and
+  // the swapchain size).
+  std::string hmd_override;
+  EnabledCriteria criteria;
+  // A runtime that advertises eye gaze but has delivered nothing this long after the
+  // session became focused is not trusted any more (seconds).
+  double gaze_silence_timeout_s = 1.0;
+  // Angular error assumed for each source; widens the foveal cone (degrees).
+  double openxr_gaze_error_deg = 1.5;
+  double external_gaze_error_deg = 2.0;
+  // Without eye tracking gaze is head-fixed (straight ahead) and the cone is widened to
+  // cover where the eyes usually are relative to the head (degrees).
+  double head_fixed_cone_deg = 20.0;
+  // Also select with the criteria sets size+eccentricity and size+velocity each frame, so a
+  // report can split the reduction between the criteria (two more selections per frame;
+  // FrameDiagnostics::lod_size_eccentricity and lod_size_velocity).
+  bool compute_breakdown = false;
+  // Frame budget (ms, 0 = none): after the perceptual selection, Mason's (1999) incremental
+  // solver coarsens levels so the predicted frame time (a cost model fit online from
+  // end_frame's measured times) stays under the budget. Never finer than the perceptual choice.
+  double budget_ms = 0.0;
+  budget::FrameBudgetOptions budget;
+};
+
+}  // namespace gazelod

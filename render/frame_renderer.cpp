@@ -1,0 +1,217 @@
+#include "render/frame_renderer.hpp"
+
+#include "render/lod_palette.hpp"
+#include "render/render_error.hpp"
+
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <string>
+
+namespace gazelod::render {
+namespace {
+
+glm::vec3 to_target(const glm::vec3& srgb, bool target_is_srgb) {
+  // An sRGB image encodes on write, so it is given linear values; a UNORM image stores
+  // what it is given.
+  if (!target_is_srgb) return srgb;
+  return {srgb_to_linear(srgb.r), srgb_to_linear(srgb.g), srgb_to_linear(srgb.b)};
+}
+
+VkImageMemoryBarrier colour_barrier(VkImage image, VkImageLayout from, VkImageLayout to, VkAccessFlags src,
+                                    VkAccessFlags dst) {
+  VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+  b.srcAccessMask = src;
+  b.dstAccessMask = dst;
+  b.oldLayout = from;
+  b.newLayout = to;
+  b.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  b.image = image;
+  b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+  return b;
+}
+
+}  // namespace
+
+FrameRenderer::FrameRenderer(const DeviceContext& ctx, const MeshLibrary& meshes, RenderTarget target)
+    : ctx_(ctx), meshes_(meshes), target_(std::move(target)) {
+  switch (target_.format) {
+    case VK_FORMAT_R8G8B8A8_UNORM: break;
+    case VK_FORMAT_R8G8B8A8_SRGB: srgb_ = true; break;
+    case VK_FORMAT_B8G8R8A8_UNORM: bgra_ = true; break;
+    case VK_FORMAT_B8G8R8A8_SRGB: srgb_ = bgra_ = true; break;
+    default:
+      throw RenderError("renderer: unsupported target format " + std::to_string(target_.format) +
+                        " (need R8G8B8A8 or B8G8R8A8, UNORM or SRGB)");
+  }
+  if (target_.images.empty() || target_.width == 0 || target_.height == 0)
+    throw RenderError("renderer: empty target (" + std::to_string(target_.images.size()) + " images, " +
+                      std::to_string(target_.width) + "x" + std::to_string(target_.height) + ")");
+  if (!meshes_.uploaded()) throw RenderError("renderer: the mesh library is not uploaded");
+  try {
+    const VkFormat depth_format = pick_depth_format(ctx_.physical);
+    pipeline_ = create_pipeline(ctx_.device, target_.format, depth_format, target_.width, target_.height);
+    depth_ = DeviceImage(ctx_, target_.width, target_.height, depth_format,
+                         VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, VK_IMAGE_ASPECT_DEPTH_BIT);
+    for (VkImage image : target_.images) {
+      views_.push_back(create_image_view(ctx_.device, image, target_.format, VK_IMAGE_ASPECT_COLOR_BIT));
+      const std::array<VkImageView, 2> attachments{views_.back(), depth_.view()};
+      VkFramebufferCreateInfo fci{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
+      fci.renderPass = pipeline_.render_pass;
+      fci.attachmentCount = static_cast<std::uint32_t>(attachments.size());
+      fci.pAttachments = attachments.data();
+      fci.width = target_.width;
+      fci.height = target_.height;
+      fci.layers = 1;
+      VkFramebuffer fb = VK_NULL_HANDLE;
+      vk_check(vkCreateFramebuffer(ctx_.device, &fci, nullptr, &fb), "vkCreateFramebuffer");
+      framebuffers_.push_back(fb);
+    }
+    drawn_.assign(target_.images.size(), false);
+    VkCommandPoolCreateInfo pci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    pci.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+    pci.queueFamilyIndex = ctx_.queue_family;
+    vk_check(vkCreateCommandPool(ctx_.device, &pci, nullptr, &pool_), "vkCreateCommandPool");
+    VkCommandBufferAllocateInfo cai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    cai.commandPool = pool_;
+    cai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    cai.commandBufferCount = 1;
+    vk_check(vkAllocateCommandBuffers(ctx_.device, &cai, &cmd_), "vkAllocateCommandBuffers");
+    VkFenceCreateInfo fci{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    vk_check(vkCreateFence(ctx_.device, &fci, nullptr, &fence_), "vkCreateFence");
+  } catch (...) {
+    destroy();
+    throw;
+  }
+}
+
+FrameRenderer::~FrameRenderer() { destroy(); }
+
+void FrameRenderer::destroy() {
+  if (fence_) vkDestroyFence(ctx_.device, fence_, nullptr);
+  if (pool_) vkDestroyCommandPool(ctx_.device, pool_, nullptr);  // frees cmd_
+  for (VkFramebuffer fb : framebuffers_) vkDestroyFramebuffer(ctx_.device, fb, nullptr);
+  for (VkImageView v : views_) vkDestroyImageView(ctx_.device, v, nullptr);
+  destroy_pipeline(ctx_.device, pipeline_);
+  fence_ = VK_NULL_HANDLE;
+  pool_ = VK_NULL_HANDLE;
+  cmd_ = VK_NULL_HANDLE;
+  framebuffers_.clear();
+  views_.clear();
+}
+
+void FrameRenderer::submit_and_wait() {
+  VkSubmitInfo si{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+  si.commandBufferCount = 1;
+  si.pCommandBuffers = &cmd_;
+  vk_check(vkQueueSubmit(ctx_.queue, 1, &si, fence_), "vkQueueSubmit");
+  vk_check(vkWaitForFences(ctx_.device, 1, &fence_, VK_TRUE, UINT64_MAX), "vkWaitForFences");
+  vk_check(vkResetFences(ctx_.device, 1, &fence_), "vkResetFences");
+}
+
+void FrameRenderer::draw(std::uint32_t image_index, const EyeView& view, std::span<const DrawItem> items) {
+  if (image_index >= framebuffers_.size())
+    throw RenderError("renderer: image index " + std::to_string(image_index) + " out of range (" +
+                      std::to_string(framebuffers_.size()) + " images)");
+  for (const DrawItem& item : items)
+    if (item.mesh >= meshes_.size())
+      throw RenderError("renderer: mesh id " + std::to_string(item.mesh) + " out of range (" +
+                        std::to_string(meshes_.size()) + " meshes)");
+  const glm::mat4 view_proj =
+      glm::mat4(projection_matrix(view.fov, view.near_m, view.far_m) * view_matrix(view.pose));
+  const glm::vec4 eye(glm::vec3(view.pose.position_m), 1.0f);
+
+  vk_check(vkResetCommandBuffer(cmd_, 0), "vkResetCommandBuffer");
+  VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  vk_check(vkBeginCommandBuffer(cmd_, &bi), "vkBeginCommandBuffer");
+
+  const glm::vec3 bg = to_target(background_colour(), srgb_);
+  std::array<VkClearValue, 2> clear{};
+  clear[0].color = {{bg.r, bg.g, bg.b, 1.0f}};
+  clear[1].depthStencil = {1.0f, 0};
+  VkRenderPassBeginInfo rbi{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+  rbi.renderPass = pipeline_.render_pass;
+  rbi.framebuffer = framebuffers_[image_index];
+  rbi.renderArea = {{0, 0}, {target_.width, target_.height}};
+  rbi.clearValueCount = static_cast<std::uint32_t>(clear.size());
+  rbi.pClearValues = clear.data();
+  vkCmdBeginRenderPass(cmd_, &rbi, VK_SUBPASS_CONTENTS_INLINE);
+  vkCmdBindPipeline(cmd_, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.pipeline);
+  const VkBuffer vb = meshes_.vertex_buffer();
+  const VkDeviceSize offset = 0;
+  vkCmdBindVertexBuffers(cmd_, 0, 1, &vb, &offset);
+  vkCmdBindIndexBuffer(cmd_, meshes_.index_buffer(), 0, VK_INDEX_TYPE_UINT32);
+
+  const ViewCuller culler(view);
+  std::uint64_t triangles = 0;
+  DrawConstants dc{};
+  dc.view_proj = view_proj;
+  dc.eye_position = eye;
+  for (const DrawItem& item : items) {
+    const bool finite = std::isfinite(item.center_m.x) && std::isfinite(item.center_m.y) &&
+                        std::isfinite(item.center_m.z) && std::isfinite(item.radius_m);
+    if (!finite || !(item.radius_m > 0.0f) || !culler.visible(glm::dvec3(item.center_m), item.radius_m)) continue;
+    const MeshRange& mesh = meshes_.range(item.mesh);
+    dc.center_radius = glm::vec4(item.center_m, item.radius_m);
+    dc.colour = glm::vec4(to_target(lod_colour(item.lod_level), srgb_), 1.0f);
+    vkCmdPushConstants(cmd_, pipeline_.layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                       sizeof dc, &dc);
+    vkCmdDrawIndexed(cmd_, mesh.index_count, 1, mesh.first_index, mesh.vertex_offset, 0);
+    if (item.lod_level != kMarkerLevel) triangles += mesh.triangles();
+  }
+  vkCmdEndRenderPass(cmd_);
+  vk_check(vkEndCommandBuffer(cmd_), "vkEndCommandBuffer");
+  submit_and_wait();
+  drawn_[image_index] = true;
+  triangles_last_frame_ = triangles;
+}
+
+RgbaImage FrameRenderer::read_back(std::uint32_t image_index) {
+  if (image_index >= framebuffers_.size() || !drawn_[image_index])
+    throw RenderError("renderer: read_back of image " + std::to_string(image_index) + " that was not drawn");
+  const VkDeviceSize bytes = static_cast<VkDeviceSize>(target_.width) * target_.height * 4u;
+  if (readback_.buffer() == VK_NULL_HANDLE) readback_ = HostBuffer(ctx_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+  VkImage image = target_.images[image_index];
+
+  vk_check(vkResetCommandBuffer(cmd_, 0), "vkResetCommandBuffer");
+  VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  vk_check(vkBeginCommandBuffer(cmd_, &bi), "vkBeginCommandBuffer");
+  const auto to_src = colour_barrier(image, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                                     VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
+                                     VK_ACCESS_TRANSFER_READ_BIT);
+  vkCmdPipelineBarrier(cmd_, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0,
+                       nullptr, 0, nullptr, 1, &to_src);
+  VkBufferImageCopy region{};
+  region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  region.imageExtent = {target_.width, target_.height, 1};
+  vkCmdCopyImageToBuffer(cmd_, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback_.buffer(), 1, &region);
+  const auto back = colour_barrier(image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                                   VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, 0,
+                                   VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+  VkBufferMemoryBarrier host{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER};
+  host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+  host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+  host.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  host.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  host.buffer = readback_.buffer();
+  host.size = VK_WHOLE_SIZE;
+  vkCmdPipelineBarrier(cmd_, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                       VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_HOST_BIT, 0, 0, nullptr, 1,
+                       &host, 1, &back);
+  vk_check(vkEndCommandBuffer(cmd_), "vkEndCommandBuffer");
+  submit_and_wait();
+
+  RgbaImage out;
+  out.width = target_.width;
+  out.height = target_.height;
+  out.pixels.resize(bytes);
+  std::memcpy(out.pixels.data(), readback_.data(), bytes);
+  if (bgra_)
+    for (std::size_t i = 0; i + 3 < out.pixels.size(); i += 4) std::swap(out.pixels[i], out.pixels[i + 2]);
+  return out;
+}
+
+}  // namespace gazelod::render

@@ -1,0 +1,71 @@
+#include "render/mesh_library.hpp"
+
+#include "render/render_error.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <string>
+
+namespace gazelod::render {
+
+std::uint32_t MeshLibrary::add_sphere(std::uint32_t target_triangles) {
+  if (uploaded()) throw RenderError("MeshLibrary::add_sphere after upload()");
+  const SphereResolution res = sphere_resolution(target_triangles);
+  const auto key = std::make_pair(res.stacks, res.slices);
+  if (auto it = by_resolution_.find(key); it != by_resolution_.end()) return it->second;
+
+  const MeshData mesh = make_sphere(res);
+  MeshRange range;
+  range.first_index = static_cast<std::uint32_t>(indices_cpu_.size());
+  range.index_count = static_cast<std::uint32_t>(mesh.indices.size());
+  range.vertex_offset = static_cast<std::int32_t>(positions_.size());
+  positions_.insert(positions_.end(), mesh.positions.begin(), mesh.positions.end());
+  indices_cpu_.insert(indices_cpu_.end(), mesh.indices.begin(), mesh.indices.end());
+  const auto id = static_cast<std::uint32_t>(ranges_.size());
+  ranges_.push_back(range);
+  by_resolution_.emplace(key, id);
+  return id;
+}
+
+std::uint32_t MeshLibrary::add_mesh(std::span<const glm::vec3> positions_unit,
+                                    std::span<const std::uint32_t> indices) {
+  if (uploaded()) throw RenderError("MeshLibrary::add_mesh after upload()");
+  if (indices.size() % 3 != 0)
+    throw RenderError("MeshLibrary::add_mesh: index count " + std::to_string(indices.size()) +
+                      " is not a multiple of 3");
+  for (std::size_t i = 0; i < indices.size(); ++i)
+    if (indices[i] >= positions_unit.size())
+      throw RenderError("MeshLibrary::add_mesh: index " + std::to_string(i) + " = " +
+                        std::to_string(indices[i]) + " is out of range (" +
+                        std::to_string(positions_unit.size()) + " vertices)");
+  for (std::size_t v = 0; v < positions_unit.size(); ++v)
+    if (!std::isfinite(positions_unit[v].x) || !std::isfinite(positions_unit[v].y) ||
+        !std::isfinite(positions_unit[v].z))
+      throw RenderError("MeshLibrary::add_mesh: position " + std::to_string(v) + " is not finite");
+  if (positions_.size() + positions_unit.size() > static_cast<std::size_t>(INT32_MAX))
+    throw RenderError("MeshLibrary::add_mesh: too many vertices for one library");
+  MeshRange range;
+  range.first_index = static_cast<std::uint32_t>(indices_cpu_.size());
+  range.index_count = static_cast<std::uint32_t>(indices.size());
+  range.vertex_offset = static_cast<std::int32_t>(positions_.size());
+  positions_.insert(positions_.end(), positions_unit.begin(), positions_unit.end());
+  indices_cpu_.insert(indices_cpu_.end(), indices.begin(), indices.end());
+  ranges_.push_back(range);
+  return static_cast<std::uint32_t>(ranges_.size() - 1);
+}
+
+void MeshLibrary::upload(const DeviceContext& ctx) {
+  if (uploaded()) throw RenderError("MeshLibrary::upload called twice");
+  const VkDeviceSize vbytes = positions_.size() * sizeof(glm::vec3);
+  const VkDeviceSize ibytes = indices_cpu_.size() * sizeof(std::uint32_t);
+  vertices_ = HostBuffer(ctx, vbytes, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+  indices_ = HostBuffer(ctx, ibytes, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+  if (vbytes) std::memcpy(vertices_.data(), positions_.data(), vbytes);
+  if (ibytes) std::memcpy(indices_.data(), indices_cpu_.data(), ibytes);
+  // The GPU copy is all that is needed from now on.
+  positions_ = {};
+  indices_cpu_ = {};
+}
+
+}  // namespace gazelod::render

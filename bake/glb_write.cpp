@@ -43,10 +43,9 @@ void write_glb_atomic(const tinygltf::Model& model, const std::string& path) {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
     if (!out) throw OutputError(path + ": cannot write (" + std::strerror(errno) + ")");
     out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    out.flush();
+    out.close();  // checked: a full disk may only show at close
     if (!out) {
       const std::string why = std::strerror(errno);
-      out.close();
       fs::remove(tmp, ec);
       throw OutputError(path + ": write failed (" + why + ")");
     }

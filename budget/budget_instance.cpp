@@ -2,6 +2,7 @@
 
 #include "budget/mckp_hierarchy.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -37,7 +38,29 @@ budget::MckpItem item(const json& v, const std::string& where, const std::string
     if (it.key() != "profit" && it.key() != "cost") fail(where, path + "." + it.key(), "unknown key");
   if (!v.contains("profit")) fail(where, path + ".profit", "missing");
   if (!v.contains("cost")) fail(where, path + ".cost", "missing");
-  return {number(v["profit"], where, path + ".profit", false), number(v["cost"], where, path + ".cost", true)};
+  return {number(v["profit"], where, path + ".profit", true), number(v["cost"], where, path + ".cost", true)};
+}
+
+// The largest profit and cost any answer can add up to: the sum over subsets (and groups'
+// impostors) of their largest item. Both must stay finite, or a solver's sums overflow to
+// infinity (an answer with "profit": inf).
+void check_sums(const budget::MckpInstance& inst, const std::string& where) {
+  double profit = 0.0, cost = 0.0;
+  auto add_max = [&](std::span<const budget::MckpItem> items) {
+    double p = 0.0, c = 0.0;
+    for (const budget::MckpItem& it : items) p = std::max(p, it.profit), c = std::max(c, it.cost);
+    profit += p;
+    cost += c;
+  };
+  for (std::size_t k = 0; k < inst.subset_count(); ++k) add_max(inst.subset(k));
+  for (const budget::MckpGroup& g : inst.groups) add_max(g.impostors);
+  const char* limit = "the largest double, 1.8e308";
+  if (!std::isfinite(profit))
+    fail(where, "subsets", std::string("the largest profits of the subsets (and impostors) must add up to at most ") +
+                               limit + ", got an overflow; scale the profits down");
+  if (!std::isfinite(cost))
+    fail(where, "subsets", std::string("the largest costs of the subsets (and impostors) must add up to at most ") +
+                               limit + ", got an overflow; scale the costs and the capacity down");
 }
 
 }  // namespace
@@ -91,6 +114,7 @@ budget::MckpInstance parse_budget_instance(const json& doc, const std::string& w
     const std::string problem = budget::check_hierarchy(inst);
     if (!problem.empty()) throw InstanceError(where + ": " + problem);
   }
+  check_sums(inst, where);
   return inst;
 }
 

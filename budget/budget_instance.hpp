@@ -1,6 +1,7 @@
 // Reads frame-budget knapsack instances (docs/budget.md): {"capacity": c, "subsets":
 // [[{"profit": p, "cost": w}, ...], ...], "groups": [...] optional}. Every error names the
-// JSON path and why ("subsets[3][1].cost: must be a finite number >= 0").
+// JSON path and why ("subsets[3][1].cost: must be a finite number >= 0"). Profits and costs
+// are finite and >= 0, and the largest total any answer can reach must not overflow a double.
 #pragma once
 
 #include "budget/mckp.hpp"

@@ -30,11 +30,48 @@ std::string quoted(std::string_view s) {
 
 CsvCursor::CsvCursor(std::istream& in, std::string file) : in_(in), file_(std::move(file)) {}
 
+bool CsvCursor::read_line() {
+  buffer_.clear();
+  std::streambuf* sb = in_.rdbuf();
+  if (sb == nullptr || !in_.good()) return false;
+  ++line_;
+  bool any = false;
+  for (;;) {
+    const int c = sb->sbumpc();
+    if (c == std::char_traits<char>::eof()) {
+      in_.setstate(std::ios::eofbit);
+      if (!any) --line_;
+      return any;
+    }
+    any = true;
+    ++bytes_;
+    if (c == '\n') break;
+    if (buffer_.size() == kMaxLineBytes)
+      fail(kMaxLineBytes + 1, "line longer than " + std::to_string(kMaxLineBytes) +
+                                  " bytes: not a CSV text trace (binary data, or a file without line ends)");
+    buffer_.push_back(static_cast<char>(c));
+  }
+  return true;
+}
+
+void CsvCursor::fail_no_header() const {
+  if (bytes_ == 0) throw TraceError({file_, 0, 0, "empty file (0 bytes): no header row"});
+  throw TraceError({file_, 0, 0,
+                    "no header row: the file's " + std::to_string(line_) + " line(s) are all blank or comments"});
+}
+
 bool CsvCursor::next_row() {
   comments_.clear();
-  while (std::getline(in_, buffer_)) {
-    ++line_;
+  while (read_line()) {
     std::string_view view(buffer_);
+    // A NUL byte: binary data. A carriage return before the end: CR-only (classic Mac) line
+    // ends, the whole file read as one line. Both stop the reading, lenient or not.
+    if (const auto nul = view.find('\0'); nul != std::string_view::npos)
+      fail(nul + 1, "NUL byte: binary data, not a CSV text trace");
+    std::string_view body = view;
+    while (!body.empty() && body.back() == '\r') body.remove_suffix(1);  // CRLF line ends
+    if (const auto cr = body.find('\r'); cr != std::string_view::npos)
+      fail(cr + 1, "carriage return (CR) inside a line: the file has CR-only line ends; convert them to LF");
     if (line_ == 1 && view.substr(0, 3) == "\xEF\xBB\xBF") view.remove_prefix(3);  // UTF-8 BOM
     std::size_t lead = 0;
     std::string_view t = trim(view, lead);

@@ -23,11 +23,18 @@ struct CsvField {
 
 class CsvCursor {
  public:
+  // The longest line read (bytes, without the line end): a longer one is not a trace row (a
+  // binary file, a file without line ends) and ends the reading with an error.
+  static constexpr std::size_t kMaxLineBytes = std::size_t{1} << 16;
+
   CsvCursor(std::istream& in, std::string file);
 
   // Advances to the next line that is neither blank nor a '#' comment and splits it.
-  // Returns false at end of input. Comment lines are passed to `on_comment` if set.
+  // Returns false at end of input. Throws TraceError (in lenient mode too) for a line longer
+  // than kMaxLineBytes, a NUL byte, or a carriage return inside a line (CR-only line ends).
   bool next_row();
+  // Throws the readers' "no header row" error: an empty file, or one of blank / comment lines only.
+  [[noreturn]] void fail_no_header() const;
 
   const std::vector<CsvField>& fields() const { return fields_; }
   std::size_t line() const { return line_; }
@@ -55,7 +62,10 @@ class CsvCursor {
   std::vector<CsvField> fields_;
   std::vector<std::string> comments_;
   std::size_t line_ = 0;
+  std::uint64_t bytes_ = 0;  // read so far
   bool seen_row_ = false;
+  // One line into buffer_ (without '\n'), at most kMaxLineBytes; false at end of input.
+  bool read_line();
 };
 
 // Column name -> index, built from a header row. Names are matched exactly (after trimming).

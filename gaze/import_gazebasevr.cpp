@@ -9,7 +9,7 @@ namespace gazelod::gaze {
 
 GazeBaseVrReader::GazeBaseVrReader(std::istream& in, std::string file, ReadOptions options)
     : CsvRecordStream(in, std::move(file), options) {
-  if (!cursor_.next_row()) throw TraceError({cursor_.file(), 0, 0, "empty file: no header row"});
+  if (!cursor_.next_row()) cursor_.fail_no_header();
   const CsvHeader h(cursor_);
   fields_ = h.size();
   std::string missing;

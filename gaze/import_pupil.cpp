@@ -21,7 +21,7 @@ glm::dvec3 pupil_camera_to_openxr_m(const glm::dvec3& p_mm) {
 PupilReader::PupilReader(std::istream& in, std::string file, ReadOptions options,
                          PupilImportOptions pupil)
     : CsvRecordStream(in, std::move(file), options), pupil_(pupil) {
-  if (!cursor_.next_row()) throw TraceError({cursor_.file(), 0, 0, "empty file: no header row"});
+  if (!cursor_.next_row()) cursor_.fail_no_header();
   const CsvHeader h(cursor_);
   fields_ = h.size();
   std::string missing;

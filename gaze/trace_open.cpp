@@ -4,6 +4,10 @@
 #include "gaze/import_pupil.hpp"
 #include "gaze/trace_reader.hpp"
 
+#include <sys/stat.h>
+
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 
 namespace gazelod::gaze {
@@ -44,8 +48,18 @@ std::string_view trace_format_name(TraceFormat format) {
 
 std::unique_ptr<RecordStream> open_trace(const std::string& path, TraceFormat format,
                                          ReadOptions options) {
+  // What is at `path` first: a directory or a device opens, then reads as nothing (a
+  // directory) or forever (/dev/zero). A pipe is read as a stream (lines are bounded).
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0)
+    throw TraceError({path, 0, 0, std::string("cannot open file for reading: ") + std::strerror(errno)});
+  if (S_ISDIR(st.st_mode)) throw TraceError({path, 0, 0, "is a directory, not a trace file"});
+  if (S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode))
+    throw TraceError({path, 0, 0, "is a device, not a trace file (give a regular file or a pipe)"});
+  if (S_ISSOCK(st.st_mode)) throw TraceError({path, 0, 0, "is a socket, not a trace file"});
   auto file = std::make_unique<std::ifstream>(path, std::ios::binary);
-  if (!*file) throw TraceError({path, 0, 0, "cannot open file for reading"});
+  if (!*file)
+    throw TraceError({path, 0, 0, std::string("cannot open file for reading: ") + std::strerror(errno)});
   switch (format) {
     case TraceFormat::gazelod:
       return std::make_unique<OwningStream<TraceReader>>(std::move(file), path, options);

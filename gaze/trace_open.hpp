@@ -15,7 +15,9 @@ enum class TraceFormat { gazelod, gazebasevr, pupil };
 std::optional<TraceFormat> parse_trace_format(std::string_view name);  // "gazelod", ...
 std::string_view trace_format_name(TraceFormat format);
 
-// Opens `path`; throws TraceError (file unreadable, bad header) naming the file.
+// Opens `path` (a regular file or a pipe); throws TraceError naming the file: missing or
+// unreadable (with the system's reason), a directory, a device or a socket, a bad header.
+// Reading is streamed, one line of at most CsvCursor::kMaxLineBytes at a time.
 std::unique_ptr<RecordStream> open_trace(const std::string& path, TraceFormat format,
                                          ReadOptions options = {});
 

@@ -45,7 +45,7 @@ glm::dvec3 direction_from_yaw_pitch_deg(double yaw_deg, double pitch_deg) {
 TraceReader::TraceReader(std::istream& in, std::string file, ReadOptions options)
     : CsvRecordStream(in, std::move(file), options) {
   if (!cursor_.next_row())
-    throw TraceError({cursor_.file(), 0, 0, "empty file: no header row"});
+    cursor_.fail_no_header();
   version_ = parse_version(cursor_);
   const CsvHeader h(cursor_);
   header_fields_ = h.size();

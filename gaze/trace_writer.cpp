@@ -85,4 +85,7 @@ void TraceWriter::write(const TraceRecord& record) {
   out_ << line;
 }
 
+TraceFileWriter::TraceFileWriter(const std::string& path, TraceWriterOptions options, AtomicFileFaults faults)
+    : file_(path, faults), writer_(file_.stream(), options) {}
+
 }  // namespace gazelod::gaze

@@ -81,6 +81,19 @@ std::string validate_view(const ViewSpec& view) {
   return {};
 }
 
+std::string validate_described_view(const ViewSpec& view) {
+  if (view.width_px <= 0 || view.height_px <= 0) return validate_view(view);
+  std::ostringstream m;
+  for (auto [axis, deg] : {std::pair{"horizontal", fov_h_deg(view)}, std::pair{"vertical", fov_v_deg(view)}}) {
+    // A relative 1e-12: degrees -> radians -> degrees must not move a limit outside itself.
+    if (!(deg >= kMinFovDeg * (1.0 - 1e-12) && deg <= kMaxFovDeg * (1.0 + 1e-12))) {
+      m << axis << " FOV must be in [" << kMinFovDeg << ", " << kMaxFovDeg << "] deg, got " << deg;
+      return m.str();
+    }
+  }
+  return validate_view(view);
+}
+
 std::string validate_display(const DisplaySpec& display) {
   std::ostringstream m;
   if (display.view_count < 1 || display.view_count > 2) {

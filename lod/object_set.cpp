@@ -19,36 +19,43 @@ float level_weight_f(const LodLevel& level) {
   return static_cast<double>(f) > w ? std::nextafter(f, 0.0f) : f;
 }
 
-std::string validate_chain(std::span<const LodLevel> levels) {
+std::optional<ChainProblem> find_chain_problem(std::span<const LodLevel> levels) {
   std::ostringstream m;
-  if (levels.empty() || levels.size() > 255) {
-    m << "a chain needs 1 to 255 levels, got " << levels.size();
-    return m.str();
+  if (levels.empty() || levels.size() > kMaxChainLevels) {
+    m << "a chain needs 1 to " << kMaxChainLevels << " levels, got " << levels.size();
+    return ChainProblem{levels.size(), m.str()};
   }
   for (std::size_t k = 1; k < levels.size(); ++k) {
     const LodLevel& l = levels[k];
     if (l.detail_kind != levels[0].detail_kind) {
-      m << "level " << k << ": detail kind differs from level 0 (one kind per chain)";
-      return m.str();
+      m << "detail kind differs from level 0 (one kind per chain)";
+      return ChainProblem{k, m.str()};
     }
     if (!std::isfinite(l.detail) || !(l.detail > 0.0)) {
-      m << "level " << k << ": detail must be finite and > 0, got " << l.detail;
-      return m.str();
+      m << "detail must be finite and > 0, got " << l.detail;
+      return ChainProblem{k, m.str()};
     }
     if (const double w = level_weight(l); !(w >= kMinLevelWeight && w <= kMaxLevelWeight)) {
-      m << "level " << k << ": detail " << l.detail << " gives a weight of " << w
-        << ", outside [" << kMinLevelWeight << ", " << kMaxLevelWeight << "]";
-      return m.str();
+      m << "detail " << l.detail << " gives a weight of " << w << ", outside [" << kMinLevelWeight << ", "
+        << kMaxLevelWeight << "]";
+      return ChainProblem{k, m.str()};
     }
     if (k >= 2 && level_weight(l) > level_weight(levels[k - 1])) {
-      m << "level " << k << ": must remove no finer detail than level " << k - 1
+      m << "must remove no finer detail than level " << k - 1
         << (l.detail_kind == DetailKind::removed_cycles_per_diameter
                 ? " (removed cycles per diameter must not increase)"
                 : " (geometric error must not decrease)");
-      return m.str();
+      return ChainProblem{k, m.str()};
     }
   }
-  return {};
+  return std::nullopt;
+}
+
+std::string validate_chain(std::span<const LodLevel> levels) {
+  const std::optional<ChainProblem> p = find_chain_problem(levels);
+  if (!p) return {};
+  if (p->level >= levels.size()) return p->message;  // the count
+  return "level " + std::to_string(p->level) + ": " + p->message;
 }
 
 std::string validate_objects(const ObjectSet& o) {

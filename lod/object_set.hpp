@@ -8,7 +8,9 @@
 
 #include <glm/vec3.hpp>
 
+#include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -44,10 +46,22 @@ inline constexpr double kMinLevelWeight = 1e-30, kMaxLevelWeight = 1e30;
 // and ordered), else a message naming the first bad object and field.
 std::string validate_objects(const ObjectSet& objects);
 
+// Levels a chain may have (ObjectSet::lod_count is a uint8).
+inline constexpr std::size_t kMaxChainLevels = 255;
+
 // "" for a valid chain: 1..255 levels, one kind, detail finite and > 0 from level 1 on with a
 // weight in [kMinLevelWeight, kMaxLevelWeight], removed cycles non-increasing / geometric
 // error non-decreasing towards coarser levels.
 std::string validate_chain(std::span<const LodLevel> levels);
+
+// The same check, for readers that name the bad level themselves (a scenario's JSON path):
+// nullopt for a valid chain, else the level at fault (levels.size() when the count is wrong)
+// and the message without validate_chain's "level k: " prefix.
+struct ChainProblem {
+  std::size_t level = 0;
+  std::string message;
+};
+std::optional<ChainProblem> find_chain_problem(std::span<const LodLevel> levels);
 
 // Owns the arrays behind an ObjectSet. add() throws std::invalid_argument with the reason.
 class ObjectStore {

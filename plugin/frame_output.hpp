@@ -3,8 +3,10 @@
 // valid until the next begin_frame.
 #pragma once
 
+#include "gaze/gaze_conditioner.hpp"
 #include "lod/cone.hpp"
 #include "lod/criterion.hpp"
+#include "lod/switch_policy.hpp"
 #include "plugin/gaze_source_kind.hpp"
 
 #include <glm/vec3.hpp>
@@ -26,12 +28,17 @@ struct FrameDecisions {
   //   5 invalid_input the object's data were not finite: level 0 kept
   // A frame budget may draw coarser than this level (FrameDiagnostics::lod_perceptual).
   std::span<const std::uint8_t> limited_by;
+  // Why a finer level than the perceptual one is still drawn: a lod::HoldReason value
+  // (lod/switch_policy.hpp): 0 none, 1 hold_time (the coarser level is not yet allowed
+  // for the hold time), 2 awaiting_suppression (waiting for a saccade or blink, at most the
+  // maximum deferral), 3 no_time (the frame's time was not usable). Empty without the policy.
+  std::span<const std::uint8_t> held;
   GazeSourceKind gaze_source = GazeSourceKind::head_fixed;
   bool gaze_valid = false;  // false: head-fixed gaze with the widened cone
 };
 
 struct FrameDiagnostics {
-  std::span<const std::uint8_t> lod_perceptual;  // the perceptual choice before the budget
+  std::span<const std::uint8_t> lod_perceptual;  // this frame's perceptual choice (before the switch policy and the budget)
   std::span<const std::uint8_t> lod_size_only;   // what each criterion (with size) allows
   std::span<const std::uint8_t> lod_eccentricity_only;
   std::span<const std::uint8_t> lod_velocity_only;
@@ -42,8 +49,13 @@ struct FrameDiagnostics {
   glm::dvec3 eye_position_world{0.0};
   glm::dvec3 head_angular_velocity_rad_s{0.0};  // base space
   bool head_valid = false;
-  // The gaze's assumed angular error (deg) and the foveal cone it widens (Reddy 1995): apex at
-  // the eye, along the gaze, half-angle the foveal eccentricity plus the error.
+  // The conditioned gaze: how the eye moves (loss without a usable source) and whether vision
+  // is suppressed now (saccade, blink, shortly after a saccade), which releases coarsening.
+  gaze::EyeMotion eye_motion = gaze::EyeMotion::loss;
+  bool gaze_suppressed = false;
+  // The gaze's angular uncertainty (deg: the source's accuracy, grown with the sample's age
+  // and the eye's speed) and the foveal cone it widens (Reddy 1995): apex at the eye, along
+  // the gaze, half-angle the foveal eccentricity plus the uncertainty.
   double gaze_error_deg = 0.0;
   lod::Cone foveal_cone;
   double xi_cpd = 0.0;  // the display limit used this frame (lod/display.hpp)

@@ -29,6 +29,12 @@ void GazeArbiter::switch_to(GazeSourceKind s, const std::string& why, bool force
   if (changed_) changed_(s, why);
 }
 
+void GazeArbiter::session_state(bool focused, std::int64_t t_ns) {
+  states_reported_ = true;
+  if (focused && !focused_) focused_t_ns_ = t_ns;
+  focused_ = focused;
+}
+
 ArbiterResult GazeArbiter::update(std::int64_t t_ns) {
   if (!started_) {
     started_ = true;
@@ -49,7 +55,9 @@ ArbiterResult GazeArbiter::update(std::int64_t t_ns) {
       return result;
     }
     // Never delivered within the timeout: the runtime advertises gaze it does not have.
-    if (!primary_ever_ && t_ns - first_t_ns_ > config_.silence_timeout_ns) {
+    const bool timing = states_reported_ ? focused_ : true;
+    const std::int64_t since = states_reported_ ? focused_t_ns_ : first_t_ns_;
+    if (!primary_ever_ && timing && t_ns - since > config_.silence_timeout_ns) {
       primary_distrusted_ = true;
       newly_distrusted = true;
     }

@@ -13,8 +13,9 @@
 namespace gazelod::plugin {
 
 struct ArbiterConfig {
-  // Until the primary source has delivered once, it is given this long from the first
-  // frame before it is distrusted for the rest of the session (ns). Gaps after it has
+  // Until the primary source has delivered once, it is given this long from the moment the
+  // session became focused (from the first update when the application reports no session
+  // states) before it is distrusted for the rest of the session (ns). Gaps after it has
   // delivered (blinks, lost tracking) fall back only while they last.
   std::int64_t silence_timeout_ns = 1'000'000'000;
 };
@@ -38,6 +39,10 @@ class GazeArbiter {
   // change of source, and once more when the primary is distrusted.
   ArbiterResult update(std::int64_t t_ns);
 
+  // A session state change from the application's event loop: once any is reported, the
+  // silence timer runs only while the session is focused, from when it became focused.
+  void session_state(bool focused, std::int64_t t_ns);
+
   // True once the primary source was judged silent (advertised but never delivered).
   bool primary_distrusted() const { return primary_distrusted_; }
 
@@ -52,6 +57,9 @@ class GazeArbiter {
   bool started_ = false;
   bool reported_initial_ = false;
   std::int64_t first_t_ns_ = 0;
+  bool states_reported_ = false;
+  bool focused_ = false;
+  std::int64_t focused_t_ns_ = 0;
   bool primary_ever_ = false;
   bool primary_distrusted_ = false;
 };

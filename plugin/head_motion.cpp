@@ -17,6 +17,16 @@ glm::dvec3 angular_velocity_from_poses(const glm::dquat& q0, const glm::dquat& q
   return rotvec / dt_s;
 }
 
+std::optional<glm::dquat> HeadTracker::orientation_at(XrTime time) const {
+  XrSpaceLocation loc{XR_TYPE_SPACE_LOCATION};
+  if (XR_FAILED(xrLocateSpace(view_, base_, time, &loc))) return std::nullopt;
+  if (!(loc.locationFlags & XR_SPACE_LOCATION_ORIENTATION_VALID_BIT)) return std::nullopt;
+  const auto& q = loc.pose.orientation;
+  const glm::dquat r = glm::normalize(glm::dquat(q.w, q.x, q.y, q.z));
+  if (!std::isfinite(r.w) || !std::isfinite(r.x) || !std::isfinite(r.y) || !std::isfinite(r.z)) return std::nullopt;
+  return r;
+}
+
 HeadMotion HeadTracker::locate(XrTime time) {
   XrSpaceVelocity velocity{XR_TYPE_SPACE_VELOCITY};
   XrSpaceLocation loc{XR_TYPE_SPACE_LOCATION};

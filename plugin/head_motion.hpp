@@ -8,6 +8,7 @@
 #include <openxr/openxr.h>
 
 #include <cstdint>
+#include <optional>
 
 namespace gazelod::plugin {
 
@@ -29,6 +30,9 @@ class HeadTracker {
   // Locates the head at `time`. On failure returns an invalid HeadMotion (the previous
   // pose is kept for the next difference).
   HeadMotion locate(XrTime time);
+  // The head's orientation at another time (an eye-tracker sample's), without touching the
+  // velocity state; nullopt when the runtime cannot locate it then.
+  std::optional<glm::dquat> orientation_at(XrTime time) const;
 
  private:
   XrSpace view_;

@@ -7,6 +7,7 @@
 #include "lod/display.hpp"
 #include "lod/object_set.hpp"
 #include "lod/select.hpp"
+#include "gaze/gaze_conditioner.hpp"
 #include "plugin/gaze_arbiter.hpp"
 #include "plugin/head_motion.hpp"
 #include "plugin/openxr_gaze_source.hpp"
@@ -43,6 +44,11 @@ class LodPluginImpl final : public LodPlugin {
     view_info.poseInReferenceSpace.orientation.w = 1.0f;
     check(xrCreateReferenceSpace(session_, &view_info, &view_space_), "xrCreateReferenceSpace(VIEW)");
     head_ = std::make_unique<plugin::HeadTracker>(view_space_, base_);
+    gaze::ConditionerConfig cc = config_.conditioning;
+    cc.accuracy_deg = config_.openxr_gaze_error_deg;
+    openxr_conditioner_ = gaze::GazeConditioner(cc);
+    cc.accuracy_deg = config_.external_gaze_error_deg;
+    external_conditioner_ = gaze::GazeConditioner(cc);
 
     if (config_.use_openxr_eye_gaze && plugin::system_supports_eye_gaze(instance_, system_)) {
       xr_gaze_ = std::make_unique<plugin::OpenXrGazeSource>(instance_, session_);
@@ -82,7 +88,9 @@ class LodPluginImpl final : public LodPlugin {
   }
   std::size_t object_count() const override { return store_.size(); }
 
-  void on_session_state(XrSessionState, XrTime) override {}
+  void on_session_state(XrSessionState state, XrTime time) override {
+    arbiter_->session_state(state == XR_SESSION_STATE_FOCUSED, static_cast<std::int64_t>(time));
+  }
 
   const FrameDecisions& begin_frame(XrTime t) override {
     const plugin::HeadMotion head = head_->locate(t);
@@ -103,32 +111,40 @@ class LodPluginImpl final : public LodPlugin {
     v.eye_velocity_m_s = head.valid ? head.linear_velocity_m_s : glm::dvec3(0.0);
     v.head_angular_velocity_rad_s = head.valid ? head.angular_velocity_rad_s : glm::dvec3(0.0);
 
+    // The gaze at the display time, conditioned per source (gaze/gaze_conditioner.hpp):
+    // classified in the world, smoothed in fixations, predicted to t; its uncertainty widens
+    // the foveal cone, and only a classified pursuit moves the gaze in the world.
     glm::dvec3 gaze_head(0.0, 0.0, -1.0);
+    glm::dvec3 gaze_world = q * gaze_head;
+    glm::dvec3 gaze_omega_world(0.0);
     double error_deg = config_.head_fixed_cone_deg;
+    bool gaze_suppressed = false;
+    diag_.eye_motion = gaze::EyeMotion::loss;
+    GazeSourceKind used = GazeSourceKind::head_fixed;
     if (gaze.source != GazeSourceKind::head_fixed) {
-      gaze_head = gaze.sample.direction;
-      error_deg = gaze.source == GazeSourceKind::openxr ? config_.openxr_gaze_error_deg
-                                                                   : config_.external_gaze_error_deg;
-      // Eye-in-head rotation from successive samples of the same source (pursuit keeps
-      // detail); none across a source change or a gap.
-      if (have_prev_gaze_ && prev_gaze_source_ == gaze.source && gaze.sample.t_ns > prev_gaze_t_ns_) {
-        const double dt = static_cast<double>(gaze.sample.t_ns - prev_gaze_t_ns_) * 1e-9;
-        const glm::dvec3 omega_head = glm::cross(prev_gaze_head_, gaze_head) / dt;
-        v.gaze_angular_velocity_in_head_rad_s = q * omega_head;
+      gaze::GazeConditioner& c = gaze.source == GazeSourceKind::openxr ? openxr_conditioner_ : external_conditioner_;
+      if (gaze.source != conditioned_source_) c.reset();  // a new source: no history across it
+      conditioned_source_ = gaze.source;
+      const glm::dquat q_sample = head_->orientation_at(static_cast<XrTime>(gaze.sample.t_ns)).value_or(q);
+      c.push(gaze.sample, q_sample);
+      const gaze::ConditionedGaze cg = c.at(static_cast<std::int64_t>(t), q);
+      if (cg.valid) {
+        used = gaze.source;
+        gaze_head = cg.direction_head;
+        gaze_world = cg.direction_world;
+        gaze_omega_world = cg.angular_velocity_world_rad_s;
+        error_deg = cg.uncertainty_deg;
+        gaze_suppressed = cg.suppressed;
+        diag_.eye_motion = cg.motion;
       }
-      have_prev_gaze_ = true;
-      prev_gaze_head_ = gaze_head;
-      prev_gaze_t_ns_ = gaze.sample.t_ns;
-      prev_gaze_source_ = gaze.source;
     } else {
-      have_prev_gaze_ = false;
+      conditioned_source_ = GazeSourceKind::head_fixed;
     }
-    // A saccade's eye speed would read as pursuit; cap it at a pursuit-like 100 deg/s.
-    const double w = glm::length(v.gaze_angular_velocity_in_head_rad_s);
-    const double w_max = 100.0 / kDegPerRad;
-    if (!(w <= w_max)) v.gaze_angular_velocity_in_head_rad_s *= std::isfinite(w) && w > 0 ? w_max / w : 0.0;
-
-    v.gaze_direction = q * gaze_head;
+    // The selection takes the eye-in-head rotation: the eye's rotation in the world minus the
+    // head's (a fixation held through a head turn counter-rotates the eye).
+    v.gaze_angular_velocity_in_head_rad_s = gaze_omega_world - v.head_angular_velocity_rad_s;
+    if (used == GazeSourceKind::head_fixed) v.gaze_angular_velocity_in_head_rad_s = glm::dvec3(0.0);
+    v.gaze_direction = gaze_world;
     v.tracker_error_deg = error_deg;
 
     const std::string err = lod::select_lods(v, store_.view(), decisions_out_);
@@ -146,10 +162,12 @@ class LodPluginImpl final : public LodPlugin {
       lod::select_lods(sv, store_.view(), breakdown_sv_out_);
     }
 
+    apply_switch_policy(t, gaze_suppressed);
     apply_budget();
 
-    frame_.gaze_source = gaze.source;
-    frame_.gaze_valid = gaze.source != GazeSourceKind::head_fixed;
+    frame_.gaze_source = used;
+    frame_.gaze_valid = used != GazeSourceKind::head_fixed;
+    diag_.gaze_suppressed = gaze_suppressed;
     diag_.gaze_direction_world = v.gaze_direction;
     diag_.gaze_direction_head = gaze_head;
     diag_.eye_position_world = v.eye_position_m;
@@ -173,6 +191,31 @@ class LodPluginImpl final : public LodPlugin {
   void on_source_changed(SourceChanged cb) override { changed_ = std::move(cb); }
 
  private:
+  // Refinement at once, coarsening after the hold and preferably while vision is suppressed.
+  void apply_switch_policy(XrTime t, bool suppressed) {
+    if (!config_.switch_policy) return;
+    if (!have_t0_) {
+      have_t0_ = true;
+      t0_ = t;
+    }
+    const double t_s = static_cast<double>(t - t0_) * 1e-9;
+    // An object's first frame draws its perceptual level: nothing was drawn before, so there is
+    // no switch to hide.
+    for (std::size_t i = switch_started_; i < lod_.size(); ++i) switch_drawn_[i] = lod_[i];
+    switch_started_ = lod_.size();
+    const lod::SwitchState state{switch_drawn_, switch_finest_, switch_window_s_};
+    if (!lod::apply_switch_policy(config_.switching, t_s, suppressed, lod_, state, held_).empty()) {
+      // Refused (it validates sizes and the configuration): draw the perceptual choice.
+      std::copy(lod_.begin(), lod_.end(), switch_drawn_.begin());
+      std::fill(held_.begin(), held_.end(), 0);
+    }
+  }
+
+  // The levels the policy passes on (the perceptual ones without it).
+  std::span<const std::uint8_t> policy_lod() const {
+    return config_.switch_policy ? std::span<const std::uint8_t>(switch_drawn_) : std::span<const std::uint8_t>(lod_);
+  }
+
   // The budget pass: the perceptual levels are the finest worth drawing; the solver coarsens
   // them until the predicted frame time fits. Benefit grows with projected area (pixels).
   void apply_budget() {
@@ -187,11 +230,11 @@ class LodPluginImpl final : public LodPlugin {
       budget_view_[i].importance = std::clamp(importance_[i], 0.0, 1.0);
     }
     try {
-      diag_.budget_infeasible = !budget_->choose(lod_, budget_view_, budget_lod_);
+      diag_.budget_infeasible = !budget_->choose(policy_lod(), budget_view_, budget_lod_);
       diag_.predicted_ms = budget_->predicted_ms();
     } catch (const std::exception&) {
       // Inputs the solver refuses: draw the perceptual choice rather than guess.
-      std::copy(lod_.begin(), lod_.end(), budget_lod_.begin());
+      std::copy(policy_lod().begin(), policy_lod().end(), budget_lod_.begin());
     }
   }
 
@@ -240,6 +283,11 @@ class LodPluginImpl final : public LodPlugin {
     for (auto* v : {&lod_, &limited_, &size_only_, &ecc_only_, &vel_only_, &se_, &sv_, &scratch_a_, &scratch_b_, &scratch_c_, &scratch_d_})
       v->resize(n);
     angular_radius_deg_.resize(n);
+    // New objects start at full detail with no coarsening window open.
+    switch_drawn_.resize(n, 0);
+    switch_finest_.resize(n, 0);
+    switch_window_s_.resize(n, lod::kNoSwitchWindow);
+    held_.resize(n, 0);
     budget_lod_.resize(n);
     budget_view_.resize(n);
     const bool budget = config_.budget_ms > 0.0;
@@ -247,7 +295,8 @@ class LodPluginImpl final : public LodPlugin {
                       budget ? std::span<float>(angular_radius_deg_) : std::span<float>()};
     breakdown_se_out_ = {se_, scratch_a_, scratch_b_, scratch_c_, scratch_d_, {}, {}, {}};
     breakdown_sv_out_ = {sv_, scratch_a_, scratch_b_, scratch_c_, scratch_d_, {}, {}, {}};
-    frame_.lod = budget ? std::span<const std::uint8_t>(budget_lod_) : std::span<const std::uint8_t>(lod_);
+    frame_.lod = budget ? std::span<const std::uint8_t>(budget_lod_) : policy_lod();
+    frame_.held = config_.switch_policy ? std::span<const std::uint8_t>(held_) : std::span<const std::uint8_t>();
     frame_.limited_by = limited_;
     diag_.lod_perceptual = lod_;
     diag_.lod_size_only = size_only_;
@@ -284,14 +333,17 @@ class LodPluginImpl final : public LodPlugin {
   std::vector<XrView> views_;
   glm::dquat last_head_orientation_{1.0, 0.0, 0.0, 0.0};
   glm::dvec3 last_head_position_{0.0};
-  bool have_prev_gaze_ = false;
-  glm::dvec3 prev_gaze_head_{0.0, 0.0, -1.0};
-  std::int64_t prev_gaze_t_ns_ = 0;
-  GazeSourceKind prev_gaze_source_ = GazeSourceKind::head_fixed;
+  gaze::GazeConditioner openxr_conditioner_, external_conditioner_;
+  GazeSourceKind conditioned_source_ = GazeSourceKind::head_fixed;
 
   std::vector<std::vector<lod::LodLevel>> chains_;
   std::vector<double> importance_;
   std::vector<float> angular_radius_deg_;
+  std::vector<std::uint8_t> switch_drawn_, switch_finest_, held_;
+  std::vector<double> switch_window_s_;
+  std::size_t switch_started_ = 0;  // objects [0, this) have had their first frame
+  bool have_t0_ = false;
+  XrTime t0_ = 0;
   std::vector<std::uint8_t> budget_lod_;
   std::vector<budget::BudgetObjectView> budget_view_;
   std::unique_ptr<budget::FrameBudget> budget_;

@@ -2,7 +2,9 @@
 #pragma once
 
 #include "budget/frame_budget_options.hpp"
+#include "gaze/gaze_conditioner.hpp"
 #include "gaze/gaze_source.hpp"
+#include "lod/switch_policy.hpp"
 
 #include <memory>
 #include <string>
@@ -32,9 +34,14 @@ struct PluginConfig {
   // A runtime that advertises eye gaze but has delivered nothing this long after the
   // session became focused is not trusted any more (seconds).
   double gaze_silence_timeout_s = 1.0;
-  // Angular error assumed for each source; widens the foveal cone (degrees).
+  // Angular error (accuracy) assumed for each source (degrees): the floor of the gaze's
+  // uncertainty, which widens the foveal cone (ConditionerConfig::accuracy_deg per source).
   double openxr_gaze_error_deg = 1.5;
   double external_gaze_error_deg = 2.0;
+  // How each source's samples are classified, smoothed, predicted to the display time and
+  // given an uncertainty (gaze/gaze_conditioner.hpp has the defaults and their sources);
+  // accuracy_deg is replaced by the source's error above.
+  gaze::ConditionerConfig conditioning;
   // Without eye tracking gaze is head-fixed (straight ahead) and the cone is widened to
   // cover where the eyes usually are relative to the head (degrees).
   double head_fixed_cone_deg = 20.0;
@@ -42,6 +49,12 @@ struct PluginConfig {
   // report can split the reduction between the criteria (two more selections per frame;
   // FrameDiagnostics::lod_size_eccentricity and lod_size_velocity).
   bool compute_breakdown = false;
+  // Between the perceptual choice and what is drawn: refinement at once, coarsening only
+  // after the coarser level has been allowed for a hold time, preferably inside a saccade or
+  // blink (lod/switch_policy.hpp has the defaults and their sources). Off: draw each frame's
+  // perceptual choice (levels then flip with the tracker's noise).
+  bool switch_policy = true;
+  lod::SwitchPolicyConfig switching;
   // Frame budget (ms, 0 = none): after the perceptual selection, Mason's (1999) incremental
   // solver coarsens levels so the predicted frame time (a cost model fit online from
   // end_frame's measured times) stays under the budget. Never finer than the perceptual choice.

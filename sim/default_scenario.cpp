@@ -1,7 +1,8 @@
 // The embedded default scenario (what `gazelod run` and the simulated runtime use when no file
 // is given): Meta Quest Pro (eye-tracked), 20 s at 90 Hz, Reddy 1998's random field of 200
-// objects with four LODs walked through at 1.4 m/s, head sweeps and a fast turn, saccades, a
-// pursuit of a moving object, and a realistic tracker (90 Hz, latency, noise, blinks).
+// objects with four LODs walked through at 1.4 m/s, head sweeps and a fast turn, saccades with
+// the vestibulo-ocular reflex holding fixations in the world, a pursuit of a moving object, and
+// a realistic tracker (90 Hz, latency, noise, blinks).
 #include "sim/simulator.hpp"
 
 namespace gazelod::sim {
@@ -33,6 +34,7 @@ std::string_view default_scenario_json() {
     { "type": "head_turn", "rate_deg_s": 120, "start_s": 16.5, "duration_s": 0.5 },
     { "type": "saccades", "fixation_min_ms": 180, "fixation_max_ms": 450, "amplitude_min_deg": 2,
       "amplitude_max_deg": 15, "range_deg": 20 },
+    { "type": "vor" },
     { "type": "smooth_pursuit", "object": "drone", "gain": 0.9, "start_s": 10, "end_s": 14 },
     { "type": "tracker_rate", "rate_hz": 90 },
     { "type": "tracker_latency", "latency_ms": 12 },

@@ -64,6 +64,9 @@ class Effect {
   // `sample.t_ns` is when the sample was taken.
   virtual void apply_sample(gaze::GazeSample& /*sample*/) const {}
   virtual void apply_object(std::size_t /*index*/, std::int64_t /*t_ns*/, ObjectState& /*object*/) const {}
+  // Ground truth (Simulator::eye_truth_at), never seen by a tracker: every effect is asked in
+  // list order, whatever its stages; an effect that moves the eye sets what it owns at t.
+  virtual void apply_truth(std::int64_t /*t_ns*/, const EffectContext& /*ctx*/, EyeTruth& /*truth*/) const {}
 };
 
 // What an effect is made from: the scenario (names, duration), its parameters (the effect's

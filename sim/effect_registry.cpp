@@ -16,11 +16,12 @@ struct Entry {
   Maker make;
 };
 
-constexpr std::array<Entry, 12> kEffects{{
+constexpr std::array<Entry, 13> kEffects{{
     {"head_sweep", effects::make_head_sweep},
     {"head_turn", effects::make_head_turn},
     {"head_track", effects::make_head_track},
     {"saccades", effects::make_saccades},
+    {"vor", effects::make_vor},
     {"smooth_pursuit", effects::make_smooth_pursuit},
     {"tracker_noise", effects::make_tracker_noise},
     {"tracker_latency", effects::make_tracker_latency},
@@ -82,6 +83,18 @@ std::size_t object_index(const Scenario& scenario, JsonFields& params, const std
   for (std::size_t i = 0; i < scenario.objects.size(); ++i)
     if (scenario.objects[i].name == name) return i;
   params.fail(key, "no scene object named \"" + name + "\"");
+}
+
+std::vector<std::unique_ptr<Effect>> make_gaze_effects_before(const EffectInit& init) {
+  // make_effect gives effect i the random stream i + 1, so the stream is the effect's place.
+  std::vector<std::unique_ptr<Effect>> out;
+  if (init.rng.stream == 0 || init.rng.stream > init.scenario.effects.size()) return out;
+  const auto index = static_cast<std::size_t>(init.rng.stream - 1);
+  for (std::size_t i = 0; i < index; ++i) {
+    std::unique_ptr<Effect> e = make_effect(init.scenario.effects[i], init.scenario, i, init.source);
+    if (e->stages() & kStageGaze) out.push_back(std::move(e));
+  }
+  return out;
 }
 }  // namespace effects
 

@@ -42,12 +42,33 @@ const nlohmann::json* JsonFields::find(const std::string& key) {
 
 const nlohmann::json* JsonFields::child(const std::string& key) { return find(key); }
 
-namespace {
-std::string range_text(double lo, double hi) {
+std::string format_number(double x) {
   std::ostringstream s;
-  s << "[" << lo << ", " << hi << "]";
-  return s.str();
+  s << x;  // 6 significant digits, as %g
+  std::string t = s.str();
+  // "1e+06" -> "1e6", "1e-05" -> "1e-5": the way the README writes limits.
+  const std::size_t e = t.find('e');
+  if (e == std::string::npos) return t;
+  std::size_t d = e + 1;
+  std::string out(t, 0, d);
+  if (d < t.size() && (t[d] == '+' || t[d] == '-')) {
+    if (t[d] == '-') out.push_back('-');
+    ++d;
+  }
+  while (d + 1 < t.size() && t[d] == '0') ++d;
+  out.append(t, d, std::string::npos);
+  return out;
 }
+
+namespace {
+// Built with append: gcc 12 warns (-Wrestrict, falsely) on "[" + std::string(...).
+std::string range_text(const std::string& lo, const std::string& hi) {
+  std::string s("[");
+  s.append(lo).append(", ").append(hi).append("]");
+  return s;
+}
+std::string range_text(double lo, double hi) { return range_text(format_number(lo), format_number(hi)); }
+std::string range_text(std::int64_t lo, std::int64_t hi) { return range_text(std::to_string(lo), std::to_string(hi)); }
 }  // namespace
 
 double JsonFields::number(const std::string& key, double fallback, double lo, double hi) {
@@ -56,9 +77,7 @@ double JsonFields::number(const std::string& key, double fallback, double lo, do
   if (!v->is_number()) fail(key, "expected a number, got " + json_type_name(*v));
   const double x = v->get<double>();
   if (!std::isfinite(x) || x < lo || x > hi) {
-    std::ostringstream s;
-    s << "must be in " << range_text(lo, hi) << ", got " << x;
-    fail(key, s.str());
+    fail(key, "must be in " + range_text(lo, hi) + ", got " + format_number(x));
   }
   return x;
 }
@@ -73,10 +92,10 @@ std::int64_t JsonFields::integer(const std::string& key, std::int64_t fallback, 
   if (!v) return fallback;
   if (!v->is_number_integer()) fail(key, "expected an integer, got " + (v->is_number() ? v->dump() : json_type_name(*v)));
   if (v->is_number_unsigned() && v->get<std::uint64_t>() > static_cast<std::uint64_t>(hi))
-    fail(key, "must be in " + range_text(static_cast<double>(lo), static_cast<double>(hi)) + ", got " + v->dump());
+    fail(key, "must be in " + range_text(lo, hi) + ", got " + v->dump());
   const std::int64_t x = v->get<std::int64_t>();
   if (x < lo || x > hi)
-    fail(key, "must be in " + range_text(static_cast<double>(lo), static_cast<double>(hi)) + ", got " + v->dump());
+    fail(key, "must be in " + range_text(lo, hi) + ", got " + v->dump());
   return x;
 }
 
@@ -118,9 +137,7 @@ glm::dvec3 JsonFields::vec3(const std::string& key, glm::dvec3 fallback, double 
     if (!e.is_number()) fail(p, "expected a number, got " + json_type_name(e));
     out[i] = e.get<double>();
     if (!std::isfinite(out[i]) || out[i] < lo || out[i] > hi) {
-      std::ostringstream s;
-      s << "must be in " << range_text(lo, hi) << ", got " << out[i];
-      fail(p, s.str());
+      fail(p, "must be in " + range_text(lo, hi) + ", got " + format_number(out[i]));
     }
   }
   return out;

@@ -49,6 +49,10 @@ class JsonFields {
   std::set<std::string> used_;
 };
 
+// A number for messages, as the README writes limits: 6 significant digits, exponents
+// without "+" or leading zeros ("1e6", "1e-5", "0.001").
+std::string format_number(double x);
+
 // "number", "string", ... for messages.
 std::string json_type_name(const nlohmann::json& v);
 

@@ -1,5 +1,6 @@
 #include "sim/record_trace.hpp"
 
+#include "gaze/atomic_file.hpp"
 #include "gaze/trace_writer.hpp"
 
 #include <cmath>
@@ -35,6 +36,13 @@ RecordStats record_trace(Simulator& sim, std::ostream& out, const RecordOptions&
     ++stats.rows;
     stats.invalid_rows += !g.valid;
   }
+  return stats;
+}
+
+RecordStats record_trace_file(Simulator& sim, const std::string& path, const RecordOptions& options) {
+  gaze::AtomicFile file(path);
+  const RecordStats stats = record_trace(sim, file.stream(), options);
+  file.commit();
   return stats;
 }
 

@@ -6,6 +6,14 @@
 #include "sim/scene_json.hpp"
 #include "sim/simulator.hpp"
 
+#include "lod/display.hpp"
+
+#include <sys/stat.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -18,10 +26,25 @@ std::string preset_names() {
   return s;
 }
 
+// gazelod's plugin (and so `gazelod run`) uses the stereo view configuration only; the simulated
+// runtime offers a one-view display as PRIMARY_MONO, which the plugin cannot use.
+const char* const kTwoViews =
+    "gazelod's plugin uses the stereo view configuration; the simulated runtime offers a one-view display as "
+    "PRIMARY_MONO only";
+
 const lod::DisplaySpec& preset_or_fail(const std::string& name, JsonFields& f, const std::string& key) {
   const lod::DisplaySpec* d = lod::find_display_preset(name);
   if (!d) f.fail(key, "unknown display preset \"" + name + "\" (known: " + preset_names() + ")");
   return *d;
+}
+
+// A preset used as it is must have two views.
+const lod::DisplaySpec& stereo_preset_or_fail(const std::string& name, JsonFields& f, const std::string& key) {
+  const lod::DisplaySpec& d = preset_or_fail(name, f, key);
+  if (d.view_count != 2)
+    f.fail(key, "the preset \"" + name + "\" has " + std::to_string(d.view_count) +
+                    " view; a scenario's display must have 2 (" + kTwoViews + ")");
+  return d;
 }
 
 lod::FovRad read_fov(JsonFields& f, const std::string& key, double scale) {
@@ -37,7 +60,7 @@ lod::FovRad read_fov(JsonFields& f, const std::string& key, double scale) {
 }
 
 lod::DisplaySpec read_display(const nlohmann::json& j, JsonFields& top) {
-  if (j.is_string()) return preset_or_fail(j.get<std::string>(), top, "display");
+  if (j.is_string()) return stereo_preset_or_fail(j.get<std::string>(), top, "display");
   JsonFields f(j, top.key_path("display"), top.source());
   lod::DisplaySpec d;
   const bool preset = f.has("preset");
@@ -46,17 +69,23 @@ lod::DisplaySpec read_display(const nlohmann::json& j, JsonFields& top) {
   d.name = f.string("name", d.name);
   d.label = f.string("label", d.label);
   d.view_count = static_cast<int>(f.integer("views", d.view_count, 1, 2));
+  if (d.view_count != 2)
+    f.fail(f.has("views") ? "views" : "preset",
+           "must be 2 (" + std::string(kTwoViews) + "), got " + std::to_string(d.view_count));
   lod::ViewSpec v = d.views[0];
   if (!preset && !f.has("width_px")) f.fail("width_px", "missing (or give a \"preset\")");
   if (!preset && !f.has("height_px")) f.fail("height_px", "missing (or give a \"preset\")");
   v.width_px = static_cast<int>(f.integer("width_px", v.width_px, 1, 65536));
   v.height_px = static_cast<int>(f.integer("height_px", v.height_px, 1, 65536));
   const int fov_keys = f.has("fov_deg") + f.has("fov_rad") + (f.has("fov_h_deg") || f.has("fov_v_deg"));
+  const std::string fov_key = f.has("fov_deg") ? "fov_deg" : f.has("fov_rad") ? "fov_rad"
+                              : f.has("fov_h_deg") ? "fov_h_deg" : f.has("fov_v_deg") ? "fov_v_deg" : "";
   if (fov_keys > 1) f.fail("", "give one of fov_deg, fov_rad or fov_h_deg + fov_v_deg");
   if (f.has("fov_deg")) v.fov = read_fov(f, "fov_deg", kRadPerDeg);
   else if (f.has("fov_rad")) v.fov = read_fov(f, "fov_rad", 1.0);
   else if (f.has("fov_h_deg") || f.has("fov_v_deg"))
-    v.fov = lod::symmetric_fov(f.required_number("fov_h_deg", 1e-3, 179.0), f.required_number("fov_v_deg", 1e-3, 179.0));
+    v.fov = lod::symmetric_fov(f.required_number("fov_h_deg", lod::kMinFovDeg, lod::kMaxFovDeg),
+                               f.required_number("fov_v_deg", lod::kMinFovDeg, lod::kMaxFovDeg));
   else if (!preset) f.fail("fov_deg", "missing (fov_deg {left, right, up, down}, fov_rad, or fov_h_deg + fov_v_deg)");
   d.views[0] = d.views[1] = v;
   d.refresh_hz = f.number("refresh_hz", d.refresh_hz, 1.0, 1000.0);
@@ -67,6 +96,8 @@ lod::DisplaySpec read_display(const nlohmann::json& j, JsonFields& top) {
   f.finish();
   const std::string problem = lod::validate_display(d);
   if (!problem.empty()) f.fail("", problem);
+  // The limits every described field of view has (also `gazelod thresholds --fov`).
+  if (std::string e = lod::validate_described_view(d.views[0]); !e.empty()) f.fail(fov_key, e);
   return d;
 }
 
@@ -97,13 +128,52 @@ std::string line_column(std::string_view text, std::size_t byte) {
   return std::to_string(line) + ":" + std::to_string(col);
 }
 
+// The trace file a head_track effect will load, resolved as the effect resolves it (relative
+// paths: from the working directory, else from the scenario file's folder); "" when unknown.
+std::string head_track_file(const nlohmann::json& e, const std::string& source) {
+  namespace fs = std::filesystem;
+  const auto file = e.find("file");
+  if (file == e.end() || !file->is_string()) return {};
+  const auto format = e.find("format");
+  if (format != e.end() && !(format->is_string() && format->get<std::string>() == "gazelod")) return {};
+  const fs::path p(file->get<std::string>());
+  std::error_code ec;
+  if (p.is_absolute()) return p.string();
+  const fs::path src(source);
+  if (fs::is_regular_file(src, ec) && !fs::exists(p, ec)) return (src.parent_path() / p).string();
+  return p.string();
+}
+
+// Estimated memory of a head_track effect: 4 bytes per byte of its trace (a row of a few dozen
+// characters becomes a 64-byte pose); 0 when the file is not a readable regular file (the
+// effect reports that itself).
+std::size_t head_track_bytes(const nlohmann::json& e, const std::string& source) {
+  const std::string path = head_track_file(e, source);
+  struct stat st {};
+  if (path.empty() || ::stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) return 0;
+  const auto size = static_cast<std::size_t>(st.st_size);
+  return size > kMaxScenarioMemoryBytes ? kMaxScenarioMemoryBytes + 1 : 4 * size;
+}
+
 }  // namespace
 
 Scenario load_scenario_json(std::string_view json_text, std::string_view source_name) {
   const std::string source(source_name);
+  if (json_text.size() > kMaxScenarioBytes)
+    throw_at(source, "", "must be at most " + bytes_text(kMaxScenarioBytes) + " of JSON, got " +
+                             bytes_text(json_text.size()));
+  // Nesting is limited while parsing: a deeply nested value would cost stack in every later
+  // pass over it (dump, destruction) without ever being a valid scenario.
+  const nlohmann::json::parser_callback_t limit_depth = [&source](int depth, nlohmann::json::parse_event_t,
+                                                                  nlohmann::json&) {
+    if (depth > kMaxJsonDepth)
+      throw ScenarioError(source + ": JSON nesting must be at most " + std::to_string(kMaxJsonDepth) +
+                          " levels of arrays and objects, got more");
+    return true;
+  };
   nlohmann::json j;
   try {
-    j = nlohmann::json::parse(json_text);
+    j = nlohmann::json::parse(json_text, limit_depth);
   } catch (const nlohmann::json::parse_error& e) {
     throw ScenarioError(source + ":" + line_column(json_text, e.byte > 0 ? e.byte - 1 : 0) +
                         ": JSON syntax error: " + e.what());
@@ -123,34 +193,78 @@ Scenario load_scenario_json(std::string_view json_text, std::string_view source_
   // The frame rate is the display's refresh rate (the runtime paces at display.refresh_hz).
   sc.frame_rate_hz = f.number("frame_rate_hz", sc.display.refresh_hz, 1.0, 1000.0);
   sc.display.refresh_hz = sc.frame_rate_hz;
+  // `gazelod run` plays round(duration x rate) frames: less than one frame would be none.
+  if (sc.duration_s * sc.frame_rate_hz < 1.0)
+    f.fail("duration_s", "must be at least one frame (1 / " + format_number(sc.frame_rate_hz) + " Hz = " +
+                             format_number(1.0 / sc.frame_rate_hz) + " s), got " + format_number(sc.duration_s));
   sc.seed = f.unsigned_integer("seed", sc.seed);
-  if (const nlohmann::json* scene = f.child("scene")) read_scene(*scene, f.key_path("scene"), source, sc);
+  ScenarioTally tally;
+  if (const nlohmann::json* scene = f.child("scene")) read_scene(*scene, f.key_path("scene"), source, sc, tally);
   if (const nlohmann::json* rt = f.child("runtime")) sc.runtime = read_runtime(*rt, f);
   if (const nlohmann::json* effects = f.child("effects")) {
     if (!effects->is_array()) f.fail("effects", "expected an array, got " + json_type_name(*effects));
+    if (effects->size() > kMaxEffects)
+      f.fail("effects", "must have at most " + std::to_string(kMaxEffects) + " effects, got " +
+                            std::to_string(effects->size()));
     for (std::size_t i = 0; i < effects->size(); ++i) {
       const nlohmann::json& e = (*effects)[i];
       EffectSpec spec;
       spec.json_path = "effects[" + std::to_string(i) + "]";
       JsonFields ef(e, spec.json_path, source);
       spec.type = ef.required_string("type");
+      if (spec.type == "head_track") {  // its trace is loaded into memory: counted before it is read
+        const std::size_t bytes = head_track_bytes(e, source);
+        if (bytes > kMaxScenarioMemoryBytes - tally.memory_bytes)
+          ef.fail("file", "must take at most " + bytes_text(kMaxScenarioMemoryBytes - tally.memory_bytes) +
+                              " (a scenario's estimated memory is at most " + bytes_text(kMaxScenarioMemoryBytes) +
+                              ", " + bytes_text(tally.memory_bytes) + " before; a trace takes 4 bytes per byte), got " +
+                              bytes_text(bytes));
+        tally.memory_bytes += bytes;
+      }
       spec.params_json = e.dump();
       sc.effects.push_back(std::move(spec));
     }
   }
   f.finish();
-  // Build every effect once so that bad parameters are reported now, with their path.
-  for (std::size_t i = 0; i < sc.effects.size(); ++i) (void)make_effect(sc.effects[i], sc, i, source);
+  // Build every effect once so that bad parameters are reported now, with their path; and
+  // add up what effects combine: the tracker latency (each <= 1000 ms, and so all together).
+  TrackerTiming timing;
+  for (std::size_t i = 0; i < sc.effects.size(); ++i) {
+    const std::unique_ptr<Effect> effect = make_effect(sc.effects[i], sc, i, source);
+    if (!(effect->stages() & kStageTrackerTiming)) continue;
+    effect->apply_timing(timing);
+    if (static_cast<double>(timing.latency_ns) > kMaxTrackerLatencyMs * 1e6)
+      throw_at(source, sc.effects[i].json_path,
+               "the tracker latency of all effects together must be <= " + format_number(kMaxTrackerLatencyMs) +
+                   " ms, got " + format_number(static_cast<double>(timing.latency_ns) * 1e-6) + " ms with this one");
+  }
   return sc;
 }
 
 Scenario load_scenario_file(const std::string& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0)
+    throw ScenarioError(path + ": cannot open the scenario file: " + std::strerror(errno));
+  if (S_ISDIR(st.st_mode)) throw ScenarioError(path + ": is a directory, not a scenario file");
+  if (!S_ISREG(st.st_mode) && !S_ISFIFO(st.st_mode))
+    throw ScenarioError(path + ": is not a regular file (a device or socket), not a scenario file");
+  if (S_ISREG(st.st_mode) && static_cast<std::uint64_t>(st.st_size) > kMaxScenarioBytes)
+    throw_at(path, "", "must be at most " + bytes_text(kMaxScenarioBytes) + " of JSON, got " +
+                           bytes_text(static_cast<std::size_t>(st.st_size)));
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw ScenarioError(path + ": cannot open the scenario file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw ScenarioError(path + ": cannot read the scenario file");
-  return load_scenario_json(text.str(), path);
+  if (!in) throw ScenarioError(path + ": cannot open the scenario file: " + std::strerror(errno));
+  // Bounded also for a pipe (or a file that grows): at most one chunk past the limit is read.
+  std::string text;
+  if (S_ISREG(st.st_mode)) text.reserve(static_cast<std::size_t>(st.st_size));
+  char chunk[1 << 16];
+  while (in && text.size() <= kMaxScenarioBytes) {
+    in.read(chunk, sizeof chunk);
+    text.append(chunk, static_cast<std::size_t>(in.gcount()));
+  }
+  if (in.bad()) throw ScenarioError(path + ": cannot read the scenario file: " + std::strerror(errno));
+  if (text.size() > kMaxScenarioBytes)
+    throw_at(path, "", "must be at most " + bytes_text(kMaxScenarioBytes) + " of JSON, got more");
+  return load_scenario_json(text, path);
 }
 
 }  // namespace gazelod::sim

@@ -73,6 +73,12 @@ struct Simulator::Impl final : EffectContext {
     return g;
   }
 
+  EyeTruth eye_truth_at(std::int64_t t_ns) const {
+    EyeTruth truth;
+    for (const auto& e : owned) e->apply_truth(t_ns, *this, truth);
+    return truth;
+  }
+
   gaze::GazeSample tracker_at(std::int64_t t_ns) const {
     std::int64_t s = t_ns - timing.latency_ns;
     if (timing.period_ns > 0) {  // newest sample k * period <= s (floor division)
@@ -101,6 +107,8 @@ std::span<const ObjectState> Simulator::objects_at(std::int64_t t_ns) {
   for (std::size_t i = 0; i < impl_->objects_buf.size(); ++i) impl_->objects_buf[i] = impl_->object_at(i, t_ns);
   return impl_->objects_buf;
 }
+
+EyeTruth Simulator::eye_truth_at(std::int64_t t_ns) { return impl_->eye_truth_at(t_ns); }
 
 std::int64_t Simulator::duration_ns() const { return to_ns(impl_->scenario.duration_s); }
 std::int64_t Simulator::first_tracker_sample_ns() const { return impl_->timing.latency_ns; }

@@ -11,6 +11,7 @@
 #include <glm/vec3.hpp>
 
 #include <cstdint>
+#include <climits>
 #include <memory>
 #include <span>
 #include <stdexcept>
@@ -99,6 +100,19 @@ struct ObjectState {
   glm::dvec3 velocity_m_s{0.0};
 };
 
+// The true state of the eye at a time (ground truth for audits; no tracker ever reports it).
+// Gaze effects that own the eye direction at t set it (later effects in the list win, as for
+// the direction): saccades (in a saccade), smooth_pursuit (the pursued object; its catch-up
+// saccades, instantaneous in the simulator, and the jumps onto and off the target count as
+// saccades ending then); blinks (the lid closed).
+struct EyeTruth {
+  bool in_saccade = false;
+  bool in_blink = false;
+  int pursuit_object = -1;  // index into Scenario::objects; -1: no pursuit
+  // When the latest saccade at or before t ended (INT64_MIN: none yet).
+  std::int64_t last_saccade_end_ns = INT64_MIN;
+};
+
 // Not thread-safe: one caller at a time (the simulated runtime holds its lock).
 class Simulator {
  public:
@@ -119,6 +133,9 @@ class Simulator {
   gaze::GazeSample true_gaze_at(std::int64_t t_ns);
   // Object positions at t, one per scenario().objects entry.
   std::span<const ObjectState> objects_at(std::int64_t t_ns);
+  // The true eye state at t (saccade, blink, pursuit); no allocation beyond the effects' own
+  // lazily drawn schedules.
+  EyeTruth eye_truth_at(std::int64_t t_ns);
 
   std::int64_t duration_ns() const;
   // When the tracker delivers its first sample (taken at 0): its latency. Before that,

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include <charconv>
+#include <cmath>
 #include <chrono>
 #include <cctype>
 #include <cstdint>
@@ -48,7 +49,7 @@ std::string names_list() {
   return s;
 }
 
-int run_budget(const Options& o, Io io) {
+int solve_and_print(const Options& o, Io io) {
   const auto kind = budget::solver_from_name(o.solver);
   if (!kind) throw UsageError("--solver: unknown solver '" + o.solver + "' (one of: " + names_list() + ")");
   budget::MckpInstance inst;
@@ -78,6 +79,9 @@ int run_budget(const Options& o, Io io) {
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("--solver ") + o.solver + ": " + e.what());
   }
+  // The reader keeps every reachable sum finite; an answer that is not is a solver's fault.
+  if (!std::isfinite(sol.profit) || !std::isfinite(sol.cost))
+    throw UsageError("--solver " + o.solver + ": the answer's profit or cost is not finite (overflow)", 1);
   const bool flat = *kind != budget::SolverKind::mason_incremental && *kind != budget::SolverKind::mason_hierarchical;
   if (!sol.feasible) {
     // Is the instance itself infeasible? Its cheapest level: every subset's cheapest item, or
@@ -147,6 +151,26 @@ int run_budget(const Options& o, Io io) {
     return 4;
   }
   return 0;
+}
+
+// With --json every error is also one JSON object on stdout, {"error": message, "exit_code":
+// n, "kind": ...}, so a script reading stdout sees why there is no answer; stderr keeps the
+// usual "gazelod budget: ..." line.
+int run_budget(const Options& o, Io io) {
+  auto report = [&](const std::string& message, int code) {
+    if (!o.json) return;
+    const char* kind = code == 2 ? "bad_input" : code == 3 ? "infeasible_instance" : "error";
+    io.out << nlohmann::json{{"error", message}, {"exit_code", code}, {"kind", kind}}.dump() << "\n";
+  };
+  try {
+    return solve_and_print(o, io);
+  } catch (const UsageError& e) {
+    report(e.what(), e.exit_code);
+    throw;
+  } catch (const std::exception& e) {
+    report(std::string("error: ") + e.what(), 1);
+    throw;
+  }
 }
 
 const Registrar registrar{

@@ -1,7 +1,7 @@
 // gazelod run: the main job. One OpenXR session (gazelod's simulated runtime unless
 // --runtime system), the plugin choosing every object's LOD each frame from head pose and eye
 // gaze, each eye drawn with Vulkan, and a report (summary.json, frames.csv, frames.svg,
-// frame.png) in --out.
+// audit.svg, frame.png) in --out, with a visibility audit against the simulator's true gaze.
 #include "apps/gazelod/command.hpp"
 #include "apps/gazelod/run_session.hpp"
 
@@ -52,12 +52,17 @@ const Registrar reg("run", "Run an OpenXR session with gaze-contingent LOD and w
   app.add_option("--trace", opt->trace_path, "Replay this gazelod gaze trace as the gaze source");
   app.add_option("--capture-frame", opt->capture_frame, "Frame saved as frame.png (default: the middle one)");
   app.add_flag("--quiet", opt->quiet, "No progress lines");
+  app.add_option("--decisions", opt->decisions_path,
+                 "Write the drawn level of every object in every frame to this CSV (frame,t_ns,<object>...)");
+  auto no_audit = std::make_shared<bool>(false);
+  app.add_flag("--no-audit", *no_audit, "Skip the visibility audit against the simulator's true gaze");
   return [=](Io io) {
     RunOptions o = *opt;
     o.criteria = parse_criteria(*criteria);
     o.out_dir = *out;
     o.render = !*no_render;
     o.eye_gaze = !*no_eye_gaze;
+    o.audit = !*no_audit;
     return run_session(o, io);
   };
 });

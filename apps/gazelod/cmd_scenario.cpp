@@ -2,10 +2,10 @@
 // with its generated objects written out), and record what a scenario simulates as a gazelod
 // gaze trace.
 #include "apps/gazelod/command.hpp"
+#include "gaze/atomic_file.hpp"
 #include "sim/record_trace.hpp"
 #include "sim/simulator.hpp"
 
-#include <fstream>
 #include <memory>
 
 namespace gazelod::cli {
@@ -52,16 +52,17 @@ int run_print(const Options& o, Io io) {
 
 int run_record(const Options& o, Io io) {
   sim::Scenario sc = load(o);
-  std::ofstream out(o.out, std::ios::binary);
-  if (!out) throw UsageError("--out " + o.out + ": cannot open for writing");
   sim::Simulator simulator(std::move(sc));
   sim::RecordOptions ro;
   ro.step_hz = o.rate_hz;
   ro.true_gaze = o.truth;
   ro.duration_s = o.duration_s;
-  const sim::RecordStats st = sim::record_trace(simulator, out, ro);
-  out.flush();
-  if (!out) throw UsageError("--out " + o.out + ": write failed", 1);
+  sim::RecordStats st;
+  try {  // written atomically: a failure leaves no file behind, partial or temporary
+    st = sim::record_trace_file(simulator, o.out, ro);
+  } catch (const gaze::WriteError& e) {
+    throw UsageError(std::string("--out: ") + e.what(), 1);
+  }
   io.out << "wrote " << st.rows << " rows (" << st.invalid_rows << " invalid) to " << o.out << "\n";
   return 0;
 }

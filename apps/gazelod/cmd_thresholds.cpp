@@ -38,11 +38,9 @@ lod::ViewSpec custom_view(const Options& o) {
                        o.pixels + "'");
   auto [fhs, fvs] = split_x("--fov", o.fov);
   const double fh = parse_number("--fov", fhs), fv = parse_number("--fov", fvs);
-  for (double f : {fh, fv})
-    if (!(f > 0.0 && f < 180.0))
-      throw UsageError("--fov: each angle must be in (0, 180) degrees, got '" + o.fov + "'");
+  // The rule scenario files follow too: each axis in [lod::kMinFovDeg, lod::kMaxFovDeg].
   lod::ViewSpec v{static_cast<int>(w), static_cast<int>(h), lod::symmetric_fov(fh, fv)};
-  if (std::string e = lod::validate_view(v); !e.empty()) throw UsageError("--fov/--pixels: " + e);
+  if (std::string e = lod::validate_described_view(v); !e.empty()) throw UsageError("--fov: " + e);
   return v;
 }
 

@@ -8,9 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iomanip>
 #include <memory>
 #include <string>
@@ -89,31 +87,24 @@ int run_convert(const Options& o, Io io) {
   std::error_code ec;
   if (fs::exists(o.out_file, ec) && fs::equivalent(o.file, o.out_file, ec))
     throw UsageError("OUT must not be the input file");
-  // Written to OUT.part and renamed at the end: a failure never leaves a truncated OUT.
-  const std::string part = o.out_file + ".part";
+  // Written atomically (gaze/atomic_file.hpp): a failure, in the input or the output, leaves
+  // neither a truncated OUT nor a temporary file.
   std::size_t n = 0;
   std::unique_ptr<gaze::RecordStream> stream;
   try {
     stream = gaze::open_trace(o.file, format_of(o), {.lenient = o.lenient});
-    std::ofstream out(part, std::ios::binary | std::ios::trunc);
-    if (!out) throw UsageError(o.out_file + ": cannot open for writing");
-    gaze::TraceWriter writer(out, {.time_in_ns = o.time_unit == "ns", .write_head = stream->has_head()});
+    gaze::TraceFileWriter writer(o.out_file, {.time_in_ns = o.time_unit == "ns", .write_head = stream->has_head()});
     gaze::TraceRecord r;
     while (stream->next(r)) {
       writer.write(r);
       ++n;
     }
-    out.close();
-    if (!out) throw UsageError(o.out_file + ": write failed");
+    writer.commit();
   } catch (const gaze::TraceError& e) {
-    fs::remove(part, ec);
     throw UsageError(e.what());
-  } catch (...) {
-    fs::remove(part, ec);
-    throw;
+  } catch (const gaze::WriteError& e) {
+    throw UsageError(e.what(), 1);
   }
-  fs::rename(part, o.out_file, ec);
-  if (ec) throw UsageError(o.out_file + ": cannot rename from " + part + ": " + ec.message());
   report_skipped(stream->skipped(), io.err);
   io.out << "wrote " << n << " samples to " << o.out_file << "\n";
   return 0;

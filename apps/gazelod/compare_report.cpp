@@ -36,7 +36,8 @@ nlohmann::json compare_json(const std::vector<HmdComparison>& results) {
                     {"shares", {{"size", c.share_size},
                                 {"eccentricity", c.share_eccentricity},
                                 {"velocity", c.share_velocity},
-                                {"interaction", c.share_interaction}}}});
+                                {"interaction", c.share_interaction}}},
+                    {"audit", audit_json(c.audit)}});
   }
   return {{"hmds", hmds}};
 }
@@ -64,6 +65,7 @@ void print_compare_table(const std::vector<HmdComparison>& results, std::ostream
                   "reduction owed to: size %.1f%%, eccentricity %.1f%%, velocity %.1f%%, interaction %.1f%%\n",
                   100 * c.share_size, 100 * c.share_eccentricity, 100 * c.share_velocity, 100 * c.share_interaction);
     out << line;
+    print_audit(c.audit, out);
   }
 }
 

@@ -1,5 +1,6 @@
 // `gazelod compare`'s output: a terminal table, the JSON document (a contract other checks
-// rely on: {"hmds": [{"hmd", "xi_cpd", "runs": {SET: {"triangles", "average_lod"}}}]}) and
+// rely on: {"hmds": [{"hmd", "xi_cpd", "runs": {SET: {"triangles", "average_lod"}}, "audit"}]},
+// "audit" as in each run's summary.json, run_audit.hpp) and
 // an SVG bar chart of triangles per criteria set and HMD.
 #pragma once
 

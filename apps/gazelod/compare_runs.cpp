@@ -36,6 +36,66 @@ SetResult set_from(const nlohmann::json& j, const std::string& path, const std::
 
 double ratio(double num, double den) { return den > 0.0 ? num / den : 0.0; }
 
+std::int64_t count(const nlohmann::json& j, const std::string& key, const std::string& path, const std::string& source) {
+  const double v = number(j, key, path, source);
+  if (v < 0.0) throw UsageError(source + ": " + path + key + ": negative", 1);
+  return static_cast<std::int64_t>(v);
+}
+
+SwitchRate rate_from(const nlohmann::json& j, const std::string& path, const std::string& source) {
+  SwitchRate r;
+  r.switches = count(j, "switches", path, source);
+  r.object_s = number(j, "object_seconds", path, source);
+  r.per_object_s = number(j, "per_object_second", path, source);
+  return r;
+}
+
+// summary.json's "audit" (run_audit.cpp's audit_json) back into its figures.
+AuditSummary audit_from(const nlohmann::json& summary, const std::string& source) {
+  AuditSummary a;
+  if (!summary.contains("audit")) {
+    a.reason = "not in the run's summary";
+    return a;
+  }
+  const nlohmann::json& j = summary.at("audit");
+  const nlohmann::json& available = at(j, "available", "audit.", source);
+  if (!available.is_boolean()) throw UsageError(source + ": audit.available: must be true or false", 1);
+  if (!available.get<bool>()) {
+    const nlohmann::json& reason = at(j, "reason", "audit.", source);
+    a.reason = reason.is_string() ? reason.get<std::string>() : "unavailable";
+    return a;
+  }
+  a.available = true;
+  a.frames = count(j, "frames", "audit.", source);
+  const nlohmann::json& w = at(j, "suppression_window", "audit.", source);
+  a.after_saccade_ms = number(w, "after_saccade_ms", "audit.suppression_window.", source);
+  a.suppressed_frames = count(w, "frames", "audit.suppression_window.", source);
+  const std::string vd = "audit.visible_degradations.";
+  const nlohmann::json& v = at(j, "visible_degradations", "audit.", source);
+  a.object_frames = count(v, "object_frames", vd, source);
+  a.degraded = count(v, "degraded", vd, source);
+  a.degraded_share = number(v, "share", vd, source);
+  a.excess_mean = number(v, "excess_levels_mean", vd, source);
+  a.excess_max = static_cast<std::uint32_t>(count(v, "excess_levels_max", vd, source));
+  const nlohmann::json& sd = at(j, "suppressed_degradations", "audit.", source);
+  a.object_frames_suppressed = count(sd, "object_frames", "audit.suppressed_degradations.", source);
+  a.degraded_suppressed = count(sd, "degraded", "audit.suppressed_degradations.", source);
+  const nlohmann::json& t = at(j, "triangles_in_view", "audit.", source);
+  a.drawn_triangles = static_cast<std::uint64_t>(count(t, "drawn", "audit.triangles_in_view.", source));
+  a.oracle_triangles = static_cast<std::uint64_t>(count(t, "oracle", "audit.triangles_in_view.", source));
+  a.triangle_ratio = number(t, "drawn_over_oracle", "audit.triangles_in_view.", source);
+  const nlohmann::json& sw = at(j, "switches", "audit.", source);
+  a.switches_fixation = rate_from(at(sw, "outside_suppression", "audit.switches.", source),
+                                  "audit.switches.outside_suppression.", source);
+  a.switches_suppressed = rate_from(at(sw, "inside_suppression", "audit.switches.", source),
+                                    "audit.switches.inside_suppression.", source);
+  const nlohmann::json& p = at(j, "pursuit", "audit.", source);
+  a.pursuit_frames = count(p, "frames", "audit.pursuit.", source);
+  a.pursuit_degraded = count(p, "degraded", "audit.pursuit.", source);
+  a.pursuit_degraded_share = number(p, "share", "audit.pursuit.", source);
+  return a;
+}
+
 }  // namespace
 
 void check_hmd(const std::string& hmd) {
@@ -72,6 +132,7 @@ HmdComparison comparison_from_summary(const std::string& hmd, const nlohmann::js
   c.share_eccentricity = ratio(static_cast<double>(c.sets[3].triangles) - all, reduction);
   c.share_velocity = ratio(static_cast<double>(c.sets[2].triangles) - all, reduction);
   c.share_interaction = reduction > 0.0 ? 1.0 - c.share_size - c.share_eccentricity - c.share_velocity : 0.0;
+  c.audit = audit_from(summary, source);
   return c;
 }
 

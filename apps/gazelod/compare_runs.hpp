@@ -5,6 +5,7 @@
 #pragma once
 
 #include "apps/gazelod/command.hpp"
+#include "apps/gazelod/run_audit.hpp"
 
 #include <nlohmann/json_fwd.hpp>
 
@@ -35,6 +36,9 @@ struct HmdComparison {
   SetResult lod_map;                                   // the LOD-map thesis's policy, same frames
   // Shares of the total reduction (none -> all three criteria), as in run_report.hpp.
   double share_size = 0.0, share_eccentricity = 0.0, share_velocity = 0.0, share_interaction = 0.0;
+  // The run's visibility audit (summary.json "audit"); not available without ground truth or
+  // in a summary from a gazelod without the audit.
+  AuditSummary audit;
 };
 
 struct CompareOptions {
@@ -48,8 +52,9 @@ struct CompareOptions {
 // Throws UsageError when `hmd` is not a display preset.
 void check_hmd(const std::string& hmd);
 
-// Fills the figures of `hmd` (a preset) and the sets from a run's summary.json. Throws
-// UsageError naming `source` and the JSON path of a missing or mistyped field.
+// Fills the figures of `hmd` (a preset), the sets and the audit from a run's summary.json.
+// Throws UsageError naming `source` and the JSON path of a missing or mistyped field (a
+// missing "audit" object only marks the audit unavailable).
 HmdComparison comparison_from_summary(const std::string& hmd, const nlohmann::json& summary,
                                       const std::string& source);
 

@@ -5,10 +5,17 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <stdexcept>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace gazelod::cli {
 namespace {
@@ -31,7 +38,10 @@ void close_checked(std::ofstream& f, const std::filesystem::path& p) {
 RunSummary summarize(const std::vector<FrameRecord>& frames, double budget_ms) {
   RunSummary s;
   s.frames = static_cast<std::int64_t>(frames.size());
-  if (frames.empty()) return s;
+  if (frames.empty()) {
+    s.audit.reason = "no frame was audited";
+    return s;
+  }
   std::vector<double> ms;
   ms.reserve(frames.size());
   double r_size = 0, r_se = 0, r_sv = 0, r_all = 0;
@@ -46,7 +56,9 @@ RunSummary summarize(const std::vector<FrameRecord>& frames, double budget_ms) {
     s.triangles_full += f.triangles_full;
     for (int i = 0; i < kMaxReportedLods; ++i) s.lod_histogram[i] += f.lod_histogram[i];
     const double full = static_cast<double>(f.triangles_full);
-    r_all += full - static_cast<double>(f.triangles_drawn);
+    // The shares compare like with like: every criteria set as the perceptual choice of the
+    // frame (before the switch policy and the budget, which apply to the drawn set only).
+    r_all += full - static_cast<double>(f.triangles_perceptual);
     r_size += full - static_cast<double>(f.triangles_size_only);
     r_se += full - static_cast<double>(f.triangles_size_eccentricity);
     r_sv += full - static_cast<double>(f.triangles_size_velocity);
@@ -92,6 +104,11 @@ RunSummary summarize(const std::vector<FrameRecord>& frames, double budget_ms) {
   s.shares.velocity = safe_ratio(r_all - r_se, r_all);
   s.shares.interaction =
       r_all > 0.0 ? 1.0 - s.shares.size - s.shares.eccentricity - s.shares.velocity : 0.0;
+  std::vector<AuditFrame> audits;
+  audits.reserve(frames.size());
+  for (const FrameRecord& f : frames) audits.push_back(f.audit);
+  s.audit = summarize_audit(audits);
+  if (!s.audit.available) s.audit.reason = "no frame was audited";
   return s;
 }
 
@@ -136,6 +153,7 @@ void print_summary(const RunInfo& info, const RunSummary& s, std::ostream& out) 
                   100.0 * safe_ratio(static_cast<double>(s.frames_over_budget), static_cast<double>(s.frames)));
     out << line;
   }
+  print_audit(s.audit, out);
 }
 
 void write_report_files(const std::filesystem::path& dir, const RunInfo& info,
@@ -178,6 +196,7 @@ void write_report_files(const std::filesystem::path& dir, const RunInfo& info,
     j["budget_ms"] = info.budget_ms;
     j["frames_over_budget"] = s.frames_over_budget;
   }
+  j["audit"] = audit_json(s.audit);
   const auto summary_path = dir / "summary.json";
   auto summary = open_out(summary_path);
   summary << j.dump(2) << "\n";
@@ -189,6 +208,9 @@ void write_report_files(const std::filesystem::path& dir, const RunInfo& info,
          "triangles_size_only,triangles_size_eccentricity,triangles_size_velocity,"
          "gaze_source,gaze_valid,saccade,head_speed_dps";
   for (int i = 0; i < kMaxReportedLods; ++i) csv << ",lod" << i;
+  // The audit's columns (empty cells without ground truth): see run_audit.hpp's AuditFrame.
+  csv << ",objects_in_view,audit_suppressed,audit_pursuit,audit_degraded,audit_excess_levels,"
+         "audit_excess_max,audit_drawn_triangles,audit_oracle_triangles,audit_switches,audit_pursued";
   csv << "\n";
   for (const FrameRecord& f : frames) {
     csv << f.index << ',' << f.t_s << ',' << f.frame_ms << ',' << f.select_ms << ',' << f.predicted_ms
@@ -196,6 +218,14 @@ void write_report_files(const std::filesystem::path& dir, const RunInfo& info,
         << f.triangles_size_eccentricity << ',' << f.triangles_size_velocity << ',' << f.gaze_source
         << ',' << (f.gaze_valid ? 1 : 0) << ',' << (f.saccade ? 1 : 0) << ',' << f.head_speed_dps;
     for (auto c : f.lod_histogram) csv << ',' << c;
+    csv << ',' << f.objects_in_view;
+    const AuditFrame& a = f.audit;
+    if (a.available)
+      csv << ',' << (a.suppressed ? 1 : 0) << ',' << (a.pursuit ? 1 : 0) << ',' << a.degraded << ','
+          << a.excess_levels << ',' << a.excess_max << ',' << a.drawn_triangles << ',' << a.oracle_triangles
+          << ',' << a.switches << ',' << a.pursued;
+    else
+      csv << ",,,,,,,,,";
     csv << "\n";
   }
   close_checked(csv, csv_path);
@@ -223,6 +253,133 @@ void write_report_files(const std::filesystem::path& dir, const RunInfo& info,
   auto svg = open_out(svg_path);
   write_svg(plot, svg);
   close_checked(svg, svg_path);
+
+  std::filesystem::remove(dir / "audit.svg", ec);  // never leave an older run's plot behind
+  if (s.audit.available) {
+    const auto audit_path = dir / "audit.svg";
+    auto audit_svg = open_out(audit_path);
+    write_svg(audit_plot(info, s.audit, frames), audit_svg);
+    close_checked(audit_svg, audit_path);
+  }
+}
+
+Plot audit_plot(const RunInfo& info, const AuditSummary& s, const std::vector<FrameRecord>& frames) {
+  Plot plot;
+  char title[160];
+  std::snprintf(title, sizeof title, " (suppression windows shaded: saccades, blinks, %.0f ms after a saccade)",
+                s.after_saccade_ms);
+  plot.title = "gazelod run audit: " + info.scenario + " on " + info.hmd + title;
+  plot.x_label = "time (s)";
+  PlotSeries degraded{"coarser than oracle", "#d62728", {}}, excess{"max excess (levels)", "#ff7f0e", {}};
+  PlotSeries switches{"LOD switches", "#1f77b4", {}};
+  PlotSeries drawn{"drawn", "#d62728", {}}, oracle{"oracle", "#2ca02c", {}};
+  const double nan = std::nan("");
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    const FrameRecord& f = frames[i];
+    const AuditFrame& a = f.audit;
+    plot.x.push_back(f.t_s);
+    degraded.y.push_back(a.available ? static_cast<double>(a.degraded) : nan);
+    excess.y.push_back(a.available ? static_cast<double>(a.excess_max) : nan);
+    switches.y.push_back(a.available ? static_cast<double>(a.switches) : nan);
+    drawn.y.push_back(a.available ? static_cast<double>(a.drawn_triangles) : nan);
+    oracle.y.push_back(a.available ? static_cast<double>(a.oracle_triangles) : nan);
+    // A window runs from its first suppressed frame to the next frame that is not.
+    if (a.available && a.suppressed && (i == 0 || !frames[i - 1].audit.suppressed)) {
+      std::size_t j = i;
+      while (j + 1 < frames.size() && frames[j + 1].audit.suppressed) ++j;
+      const double end = j + 1 < frames.size() ? frames[j + 1].t_s : frames[j].t_s;
+      plot.spans.push_back({f.t_s, end, "#7f7f7f"});
+    }
+  }
+  plot.panels.push_back({"in-view objects", {degraded, excess}});
+  plot.panels.push_back({"switches per frame", {switches}});
+  plot.panels.push_back({"triangles in view", {drawn, oracle}});
+  plot.span_legend = "suppression window";
+  return plot;
+}
+
+std::string csv_field(std::string_view text) {
+  if (text.find_first_of(",\"\r\n") == std::string_view::npos) return std::string(text);
+  std::string r = "\"";
+  for (char c : text) {
+    if (c == '"') r += '"';
+    r += c;
+  }
+  r += '"';
+  return r;
+}
+
+DecisionsFile::DecisionsFile(const std::filesystem::path& file, std::span<const std::string> object_names)
+    : file_(file) {
+  const std::filesystem::path dir = file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
+  std::string pattern = (dir / ("." + file.filename().string() + ".tmp-XXXXXX")).string();
+  const int fd = ::mkstemp(pattern.data());
+  if (fd < 0) fail("cannot create a temporary file in " + dir.string(), errno);
+  temp_ = pattern;
+  const mode_t mask = ::umask(0);  // mkstemp makes 0600; the file gets the usual permissions
+  ::umask(mask);
+  ::fchmod(fd, 0666 & ~mask);
+  f_ = ::fdopen(fd, "w");
+  if (f_ == nullptr) {
+    const int e = errno;
+    ::close(fd);
+    fail("cannot open " + temp_.string(), e);
+  }
+  row_ = "frame,t_ns";
+  for (const std::string& name : object_names) {
+    row_ += ',';
+    row_ += csv_field(name);
+  }
+  row_ += '\n';
+  if (std::fwrite(row_.data(), 1, row_.size(), f_) != row_.size()) fail("error while writing " + temp_.string(), errno);
+  row_.clear();
+  row_.reserve(48 + 4 * object_names.size());  // frame, t_ns and up to 3 digits a level: no growth per row
+}
+
+DecisionsFile::~DecisionsFile() {
+  if (committed_) return;
+  if (f_ != nullptr) std::fclose(f_);
+  if (!temp_.empty()) ::unlink(temp_.c_str());
+}
+
+void DecisionsFile::fail(const std::string& what, int error) {
+  if (f_ != nullptr) std::fclose(f_);
+  f_ = nullptr;
+  if (!temp_.empty()) ::unlink(temp_.c_str());
+  temp_.clear();
+  throw std::runtime_error("--decisions " + file_.string() + ": " + what + ": " + std::strerror(error));
+}
+
+void DecisionsFile::write(std::int64_t frame, std::int64_t t_ns, std::span<const std::uint8_t> levels) {
+  if (f_ == nullptr) throw std::runtime_error("--decisions " + file_.string() + ": written after commit");
+  char buf[24];
+  row_.clear();
+  const auto add = [&](std::int64_t v) {
+    const auto r = std::to_chars(buf, buf + sizeof buf, v);
+    row_.append(buf, r.ptr);
+  };
+  add(frame);
+  row_ += ',';
+  add(t_ns);
+  for (std::uint8_t l : levels) {
+    row_ += ',';
+    add(l);
+  }
+  row_ += '\n';
+  errno = 0;
+  if (std::fwrite(row_.data(), 1, row_.size(), f_) != row_.size())
+    fail("error while writing " + temp_.string(), errno != 0 ? errno : EIO);
+}
+
+void DecisionsFile::commit() {
+  if (f_ == nullptr) throw std::runtime_error("--decisions " + file_.string() + ": committed twice");
+  if (std::fflush(f_) != 0) fail("error while writing " + temp_.string(), errno);
+  if (::fsync(::fileno(f_)) != 0) fail("error while writing " + temp_.string(), errno);
+  const int closed = std::fclose(f_);
+  f_ = nullptr;
+  if (closed != 0) fail("error while closing " + temp_.string(), errno);
+  if (::rename(temp_.c_str(), file_.c_str()) != 0) fail("cannot rename " + temp_.string() + " to it", errno);
+  committed_ = true;
 }
 
 }  // namespace gazelod::cli

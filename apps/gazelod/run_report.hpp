@@ -2,11 +2,17 @@
 // frames.csv and an SVG plot (triangles and frame time over the run, gaze events marked) out.
 #pragma once
 
+#include "apps/gazelod/run_audit.hpp"
+#include "apps/gazelod/svg_plot.hpp"
+
 #include <array>
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <ostream>
+#include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace gazelod::cli {
@@ -21,6 +27,7 @@ struct FrameRecord {
   double predicted_ms = 0.0;        // budget's predicted frame time (0 when no budget)
   std::uint64_t triangles_drawn = 0;     // per eye
   std::uint64_t triangles_full = 0;      // every object at LOD 0
+  std::uint64_t triangles_perceptual = 0;  // all criteria, this frame's perceptual choice
   std::uint64_t triangles_size_only = 0;           // criteria sets, for the shares
   std::uint64_t triangles_size_eccentricity = 0;
   std::uint64_t triangles_size_velocity = 0;
@@ -44,6 +51,9 @@ struct FrameRecord {
   std::int64_t objects_in_view = 0;
   std::array<std::uint64_t, 6> in_view_triangles{};
   std::array<std::uint64_t, 6> in_view_lod_sum{};
+  // The visibility audit against the simulator's truth (run_audit.hpp); available = false
+  // without ground truth or with --no-audit (its frames.csv cells are then empty).
+  AuditFrame audit;
 };
 
 struct RunInfo {
@@ -57,7 +67,8 @@ struct RunInfo {
 
 // Shares of the triangle reduction owed to each criterion, over the whole run:
 // size = R(size) / R(all); eccentricity = (R(all) - R(size+velocity)) / R(all);
-// velocity = (R(all) - R(size+eccentricity)) / R(all); the rest is their interaction.
+// velocity = (R(all) - R(size+eccentricity)) / R(all); the rest is their interaction. Every R
+// is of the perceptual choice (before the switch policy and the budget).
 struct ReductionShares {
   double size = 0.0;
   double eccentricity = 0.0;
@@ -91,14 +102,49 @@ struct RunSummary {
   // object in view.
   std::array<SetTotals, 6> in_view{};
   double objects_in_view_mean = 0.0;
+  // summarize() sums the frames' audits; a caller without ground truth sets audit.reason.
+  AuditSummary audit;
 };
 
 RunSummary summarize(const std::vector<FrameRecord>& frames, double budget_ms);
 
 void print_summary(const RunInfo& info, const RunSummary& s, std::ostream& out);
-// Writes summary.json, frames.csv and frames.svg into `dir` (created if missing).
-// Throws std::runtime_error naming the file that could not be written.
+// Writes summary.json, frames.csv, frames.svg and (when the audit is available) audit.svg into
+// `dir` (created if missing). Throws std::runtime_error naming the file that could not be written.
 void write_report_files(const std::filesystem::path& dir, const RunInfo& info,
                         const RunSummary& s, const std::vector<FrameRecord>& frames);
+
+// audit.svg: in-view objects drawn coarser than the oracle (and the largest excess), LOD
+// switches and triangles in view (drawn, oracle) over time, suppression windows shaded.
+Plot audit_plot(const RunInfo& info, const AuditSummary& s, const std::vector<FrameRecord>& frames);
+
+// One CSV field as RFC 4180 wants it: quoted (quotes doubled) when it holds a comma, a quote,
+// CR or LF; as is otherwise.
+std::string csv_field(std::string_view text);
+
+// `gazelod run --decisions FILE`: the drawn level of every object in every frame, as CSV
+//   frame,t_ns,<object name>,...     (names quoted per RFC 4180 where needed)
+//   0,11111111,2,3,...               (t_ns: predicted display time, ns from the scenario's start)
+// written atomically: rows go to a temporary file in FILE's folder, renamed to FILE by
+// commit(); without commit() (an error, an exception) the temporary file is removed and FILE is
+// left as it was. Errors throw std::runtime_error with the file and the system's reason.
+class DecisionsFile {
+ public:
+  DecisionsFile(const std::filesystem::path& file, std::span<const std::string> object_names);
+  ~DecisionsFile();
+  DecisionsFile(const DecisionsFile&) = delete;
+  DecisionsFile& operator=(const DecisionsFile&) = delete;
+
+  void write(std::int64_t frame, std::int64_t t_ns, std::span<const std::uint8_t> levels);
+  void commit();
+  const std::filesystem::path& path() const { return file_; }
+
+ private:
+  [[noreturn]] void fail(const std::string& what, int error);
+  std::filesystem::path file_, temp_;
+  std::FILE* f_ = nullptr;
+  std::string row_;
+  bool committed_ = false;
+};
 
 }  // namespace gazelod::cli

@@ -2,6 +2,7 @@
 #include "lod/angles.hpp"
 
 #include "apps/gazelod/eval_lod_map.hpp"
+#include "apps/gazelod/run_audit.hpp"
 #include "apps/gazelod/run_render.hpp"
 #include "apps/gazelod/run_report.hpp"
 #include "apps/gazelod/run_scenario.hpp"
@@ -10,6 +11,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -77,6 +79,14 @@ int run_session(const RunOptions& opt, Io io) {
   const sim::Scenario& scenario = simulator.scenario();
   if (opt.runtime == "sim") point_loader_at_simulator(prepared, opt);
   else if (opt.runtime != "system") throw UsageError("--runtime: must be 'sim' or 'system', got '" + opt.runtime + "'");
+  // Opened before the session so that a bad path fails at once; committed (renamed into place)
+  // only after the last frame.
+  std::optional<DecisionsFile> decisions;
+  if (!opt.decisions_path.empty()) {
+    std::vector<std::string> names;
+    for (const sim::SceneObject& o : scenario.objects) names.push_back(o.name);
+    decisions.emplace(opt.decisions_path, names);
+  }
 
   std::optional<xr_host::XrApp> app;
   try {
@@ -128,6 +138,11 @@ int run_session(const RunOptions& opt, Io io) {
   std::vector<XrView> views;
   SaccadeMarker saccades;
   XrTime time_base = 0;
+  // The audit needs the simulator's truth on the runtime's clock: gazelod's simulated runtime.
+  bool ground_truth = false;
+  std::optional<AuditOracle> oracle;
+  std::vector<std::uint8_t> previous_lod(chains.size(), 0);
+  double previous_t_s = 0.0;
   bool exit_requested = false;
   auto last_progress = Clock::now();
   const auto started = Clock::now();
@@ -151,6 +166,8 @@ int run_session(const RunOptions& opt, Io io) {
     app->begin_frame();
     if (time_base == 0) {
       time_base = app->scenario_time_base();
+      ground_truth = opt.runtime == "sim" && time_base != 0;
+      if (ground_truth && opt.audit) oracle.emplace(scenario, opt.criteria);
       if (time_base == 0) time_base = fs.predictedDisplayTime - fs.predictedDisplayPeriod;
     }
     const double t_s = static_cast<double>(fs.predictedDisplayTime - time_base) * 1e-9;
@@ -189,6 +206,7 @@ int run_session(const RunOptions& opt, Io io) {
     r.select_ms = select_ms;
     r.predicted_ms = diag.predicted_ms;
     r.triangles_drawn = triangles(chains, d.lod);
+    r.triangles_perceptual = triangles(chains, diag.lod_perceptual);
     r.triangles_full = triangles_full;
     r.triangles_size_only = triangles(chains, diag.lod_size_only);
     r.triangles_size_eccentricity = triangles(chains, diag.lod_size_eccentricity);
@@ -214,6 +232,24 @@ int run_session(const RunOptions& opt, Io io) {
     r.head_speed_dps = glm::length(diag.head_angular_velocity_rad_s) * lod::kDegPerRad;
     // Eye-in-head movement: head turns are not saccades.
     r.saccade = saccades.update(d.gaze_valid, diag.gaze_direction_head, t_s);
+    // The audit reads the simulator only (never the plugin's inputs): the oracle at the true gaze.
+    const std::int64_t t_ns = fs.predictedDisplayTime - time_base;
+    const bool first = frames.empty();
+    if (oracle && oracle->evaluate(simulator, t_ns, diag.xi_cpd).empty()) {
+      AuditFrameInput in;
+      in.chains = &chains;
+      in.drawn = d.lod;
+      if (!first) in.previous = previous_lod;
+      in.oracle = oracle->levels();
+      in.in_view = oracle->in_view();
+      in.suppressed = oracle->suppressed();
+      in.pursuit_object = oracle->truth().pursuit_object;
+      in.frame_s = first ? 0.0 : t_s - previous_t_s;
+      r.audit = audit_frame(in);
+    }
+    std::copy_n(d.lod.begin(), std::min(d.lod.size(), previous_lod.size()), previous_lod.begin());
+    previous_t_s = t_s;
+    if (decisions) decisions->write(r.index, t_ns, d.lod);
     frames.push_back(std::move(r));
 
     if (!opt.quiet && (ms_since(last_progress) > 1000.0 || static_cast<std::int64_t>(frames.size()) == planned)) {
@@ -231,15 +267,25 @@ int run_session(const RunOptions& opt, Io io) {
   info.device = opt.render ? app->vk_device_name() : "none (--no-render)";
   info.criteria = criteria_text(opt.criteria);
   info.budget_ms = opt.budget_ms;
-  const RunSummary summary = summarize(frames, opt.budget_ms);
+  RunSummary summary = summarize(frames, opt.budget_ms);
+  if (!oracle) {
+    summary.audit = AuditSummary{};
+    summary.audit.reason = !ground_truth ? "no ground truth: not the simulated runtime" : "switched off with --no-audit";
+  }
   print_summary(info, summary, io.out);
   write_report_files(opt.out_dir, info, summary, frames);
   io.out << "files: " << (opt.out_dir / "summary.json").string() << ", frames.csv, frames.svg"
-         << (opt.render ? ", frame.png" : "") << "\n";
+         << (summary.audit.available ? ", audit.svg" : "") << (opt.render ? ", frame.png" : "");
   if (frames.empty()) {
+    io.out << "\n";
     io.err << "gazelod run: the session ended before any frame was rendered\n";
     return 1;
   }
+  if (decisions) {
+    decisions->commit();
+    io.out << ", " << decisions->path().string();
+  }
+  io.out << "\n";
   return 0;
 }
 

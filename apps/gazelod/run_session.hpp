@@ -26,6 +26,8 @@ struct RunOptions {
   std::string trace_path;              // an external gaze source: a gazelod trace to replay
   std::int64_t capture_frame = -1;     // frame saved as PNG in out_dir (-1: the middle one)
   bool quiet = false;                  // no progress lines
+  bool audit = true;                   // the visibility audit against the simulator's truth (run_audit.hpp)
+  std::string decisions_path;          // "" = none; else the drawn levels per frame (DecisionsFile, run_report.hpp)
 };
 
 // Returns the process exit status; throws UsageError for bad options or input.

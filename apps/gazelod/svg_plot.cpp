@@ -87,6 +87,14 @@ void write_svg(const Plot& plot, std::ostream& out) {
     }
     out << "<text transform=\"translate(18," << y0 + ph / 2 << ") rotate(-90)\" text-anchor=\"middle\">"
         << escape(panel.y_label) << "</text>\n";
+    for (const PlotSpan& b : plot.spans) {
+      if (!std::isfinite(b.x0) || !std::isfinite(b.x1)) continue;
+      const double x0 = std::clamp(sx(std::min(b.x0, b.x1)), left, left + pw);
+      const double x1 = std::clamp(sx(std::max(b.x0, b.x1)), left, left + pw);
+      out << "<rect class=\"span\" x=\"" << num(x0) << "\" y=\"" << y0 << "\" width=\""
+          << num(std::max(x1 - x0, 0.5)) << "\" height=\"" << ph << "\" fill=\"" << b.colour
+          << "\" fill-opacity=\"0.2\"/>\n";
+    }
     for (const PlotMarker& m : plot.markers) {
       if (!std::isfinite(m.x)) continue;
       out << "<line x1=\"" << sx(m.x) << "\" x2=\"" << sx(m.x) << "\" y1=\"" << y0 << "\" y2=\""
@@ -123,6 +131,10 @@ void write_svg(const Plot& plot, std::ostream& out) {
   if (!plot.marker_legend.empty() && !plot.markers.empty())
     out << "<text x=\"" << left + pw + 10 << "\" y=\"" << xb + 16 << "\" fill=\""
         << plot.markers.front().colour << "\">| " << escape(plot.marker_legend) << "</text>\n";
+  if (!plot.span_legend.empty() && !plot.spans.empty())
+    out << "<rect x=\"" << left + pw + 10 << "\" y=\"" << xb + 26 << "\" width=\"12\" height=\"12\" fill=\""
+        << plot.spans.front().colour << "\" fill-opacity=\"0.2\"/>\n"
+        << "<text x=\"" << left + pw + 26 << "\" y=\"" << xb + 36 << "\">" << escape(plot.span_legend) << "</text>\n";
   out << "</svg>\n";
 }
 

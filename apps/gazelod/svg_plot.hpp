@@ -24,6 +24,12 @@ struct PlotMarker {
   std::string colour;
 };
 
+// A shaded band across every panel from x0 to x1 (e.g. a time window).
+struct PlotSpan {
+  double x0 = 0.0, x1 = 0.0;
+  std::string colour;
+};
+
 struct Plot {
   std::string title;
   std::string x_label;
@@ -31,6 +37,8 @@ struct Plot {
   std::vector<PlotPanel> panels;
   std::vector<PlotMarker> markers;       // vertical lines across every panel
   std::string marker_legend;             // what the markers mean
+  std::vector<PlotSpan> spans;           // shaded bands across every panel
+  std::string span_legend;               // what the bands mean
   int width_px = 960;
   int panel_height_px = 220;
 };

@@ -16,17 +16,23 @@ class Blinks final : public Effect {
   }
   unsigned stages() const override { return kStageTrackerSample; }
   void apply_sample(gaze::GazeSample& s) const override {
-    if (s.t_ns < 0) return;
-    const std::int64_t k = s.t_ns / period_ns_;
-    const double slack_ns = static_cast<double>(period_ns_ - blink_ns_);
-    const std::int64_t start = k * period_ns_ + static_cast<std::int64_t>(rng_.uniform(static_cast<std::uint64_t>(k)) * slack_ns);
-    if (s.t_ns >= start && s.t_ns < start + blink_ns_) {
+    if (closed(s.t_ns)) {
       s.valid = false;
       s.confidence = 0.0f;
     }
   }
+  void apply_truth(std::int64_t t_ns, const EffectContext&, EyeTruth& truth) const override {
+    if (closed(t_ns)) truth.in_blink = true;
+  }
 
  private:
+  bool closed(std::int64_t t_ns) const {
+    if (t_ns < 0) return false;
+    const std::int64_t k = t_ns / period_ns_;
+    const double slack_ns = static_cast<double>(period_ns_ - blink_ns_);
+    const std::int64_t start = k * period_ns_ + static_cast<std::int64_t>(rng_.uniform(static_cast<std::uint64_t>(k)) * slack_ns);
+    return t_ns >= start && t_ns < start + blink_ns_;
+  }
   CounterRng rng_;
   std::int64_t blink_ns_ = 0, period_ns_ = 1;
 };

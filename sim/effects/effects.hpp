@@ -3,12 +3,15 @@
 
 #include "sim/effect.hpp"
 
+#include <vector>
+
 namespace gazelod::sim::effects {
 
 std::unique_ptr<Effect> make_head_sweep(EffectInit& init);
 std::unique_ptr<Effect> make_head_turn(EffectInit& init);
 std::unique_ptr<Effect> make_head_track(EffectInit& init);
 std::unique_ptr<Effect> make_saccades(EffectInit& init);
+std::unique_ptr<Effect> make_vor(EffectInit& init);
 std::unique_ptr<Effect> make_smooth_pursuit(EffectInit& init);
 std::unique_ptr<Effect> make_tracker_noise(EffectInit& init);
 std::unique_ptr<Effect> make_tracker_latency(EffectInit& init);
@@ -21,5 +24,10 @@ std::unique_ptr<Effect> make_object_motion(EffectInit& init);
 // Index of the scenario object called `name`; fails at params' key when there is none.
 std::size_t object_index(const Scenario& scenario, JsonFields& params, const std::string& key,
                          const std::string& name);
+
+// Fresh copies of the gaze-stage effects listed before the one being made (same specs, same
+// random streams, so the same values at any time), for an effect that must know the incoming
+// eye direction at other times than the one asked for (vor).
+std::vector<std::unique_ptr<Effect>> make_gaze_effects_before(const EffectInit& init);
 
 }  // namespace gazelod::sim::effects

@@ -45,6 +45,23 @@ class Saccades final : public Effect {
       dir = glm::normalize(slerp_dir(s.from, s.to, saccade_progress(tau, s.ratio)));
     }
   }
+  // In the window this effect owns the eye: in a saccade from sac_start to sac_end, and the
+  // latest saccade ended where the current fixation began. After the window the eye is left
+  // to earlier effects: a jump there, counted as a saccade ending at end_s.
+  void apply_truth(std::int64_t t_ns, const EffectContext&, EyeTruth& truth) const override {
+    if (t_ns < window_.start_ns) return;
+    if (!window_.contains(t_ns)) {
+      truth.last_saccade_end_ns = std::max(truth.last_saccade_end_ns, window_.end_ns);
+      return;
+    }
+    extend_to(t_ns);
+    auto it = std::upper_bound(segments_.begin(), segments_.end(), t_ns,
+                               [](std::int64_t t, const Segment& s) { return t < s.fix_start_ns; });
+    const Segment& s = *std::prev(it);
+    truth.in_saccade = t_ns >= s.sac_start_ns && t_ns < s.sac_end_ns;
+    truth.pursuit_object = -1;
+    if (std::prev(it) != segments_.begin()) truth.last_saccade_end_ns = s.fix_start_ns;
+  }
 
  private:
   // The schedule is drawn in order, fixation by fixation, as far as the latest time asked

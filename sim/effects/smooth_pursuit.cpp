@@ -5,6 +5,8 @@
 #include "sim/angles.hpp"
 #include "sim/effects/effects.hpp"
 
+#include <algorithm>
+
 namespace gazelod::sim::effects {
 namespace {
 
@@ -26,6 +28,20 @@ class SmoothPursuit final : public Effect {
     double dyaw = b.yaw_rad - a.yaw_rad;
     dyaw = std::remainder(dyaw, 2.0 * std::numbers::pi);  // the short way round
     dir = direction_from({a.yaw_rad + gain_ * dyaw, a.pitch_rad + gain_ * (b.pitch_rad - a.pitch_rad)});
+  }
+  // In the window the eye pursues the object; the jump onto it at start_s and each catch-up
+  // saccade (instantaneous here; none with gain 1) end a saccade. After the window the eye
+  // jumps back to what earlier effects say: a saccade ending at end_s.
+  void apply_truth(std::int64_t t_ns, const EffectContext&, EyeTruth& truth) const override {
+    if (t_ns < window_.start_ns) return;
+    if (!window_.contains(t_ns)) {
+      truth.last_saccade_end_ns = std::max(truth.last_saccade_end_ns, window_.end_ns);
+      return;
+    }
+    const std::int64_t ts = window_.start_ns + (t_ns - window_.start_ns) / interval_ns_ * interval_ns_;
+    truth.pursuit_object = static_cast<int>(index_);
+    truth.in_saccade = false;
+    truth.last_saccade_end_ns = gain_ != 1.0 ? ts : window_.start_ns;
   }
 
  private:

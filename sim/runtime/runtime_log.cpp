@@ -1,17 +1,24 @@
 // Optional runtime log (see runtime_log.hpp).
 #include "sim/runtime/runtime_log.hpp"
 
+#include "sim/runtime/scenario_source.hpp"
+
 #include <cstdarg>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <exception>
 
 namespace gazelod::xrrt {
 
 bool runtime_log_enabled() {
+  // A bad value fails xrCreateInstance (load_runtime_scenario); here it only means "off".
   static const bool enabled = [] {
-    const char* v = std::getenv("GAZELOD_SIM_LOG");
-    return v != nullptr && std::strcmp(v, "1") == 0;
+    try {
+      return env_flag("GAZELOD_SIM_LOG", false);
+    } catch (const std::exception&) {
+      return false;
+    }
   }();
   return enabled;
 }

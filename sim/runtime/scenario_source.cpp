@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 
@@ -16,7 +17,18 @@ const char* env(const char* name) {
 
 }  // namespace
 
+bool env_flag(const char* name, bool fallback) {
+  const char* v = env(name);
+  if (v == nullptr) return fallback;
+  if (std::strcmp(v, "1") == 0) return true;
+  if (std::strcmp(v, "0") == 0) return false;
+  throw std::runtime_error(std::string(name) + "=\"" + v + "\": expected 0 or 1");
+}
+
 sim::Scenario load_runtime_scenario() {
+  // Read when first logged; checked here so that a bad value fails instance creation as every
+  // other variable does.
+  (void)env_flag("GAZELOD_SIM_LOG", false);
   sim::Scenario scenario;
   if (const char* file = env("GAZELOD_SIM_SCENARIO")) {
     scenario = sim::load_scenario_file(file);
@@ -31,12 +43,7 @@ sim::Scenario load_runtime_scenario() {
                                "\": expected a number of seconds in (0, 1e6]");
     scenario.duration_s = seconds;
   }
-  if (const char* p = env("GAZELOD_SIM_PACED")) {
-    const std::string v(p);
-    if (v == "1") scenario.runtime.paced = true;
-    else if (v == "0") scenario.runtime.paced = false;
-    else throw std::runtime_error("GAZELOD_SIM_PACED=\"" + v + "\": expected 0 or 1");
-  }
+  scenario.runtime.paced = env_flag("GAZELOD_SIM_PACED", scenario.runtime.paced);
   return scenario;
 }
 
@@ -50,11 +57,7 @@ RuntimeFaults load_runtime_faults() {
                                "\": expected a frame number in [1, 1e9]");
     faults.lose_session_at_frame = frame;
   }
-  if (const char* p = env("GAZELOD_SIM_LOSE_SESSION_SILENTLY")) {
-    const std::string v(p);
-    if (v == "1") faults.lose_session_silently = true;
-    else if (v != "0") throw std::runtime_error("GAZELOD_SIM_LOSE_SESSION_SILENTLY=\"" + v + "\": expected 0 or 1");
-  }
+  faults.lose_session_silently = env_flag("GAZELOD_SIM_LOSE_SESSION_SILENTLY", false);
   return faults;
 }
 

@@ -7,8 +7,14 @@
 
 namespace gazelod::xrrt {
 
-// Throws sim::ScenarioError (or std::runtime_error for a bad environment variable).
+// Throws sim::ScenarioError (or std::runtime_error for a bad environment variable, including
+// GAZELOD_SIM_LOG).
 sim::Scenario load_runtime_scenario();
+
+// The one parser of the runtime's boolean variables (GAZELOD_SIM_PACED, GAZELOD_SIM_LOG,
+// GAZELOD_SIM_LOSE_SESSION_SILENTLY): "1" or "0"; unset or empty gives `fallback`; anything
+// else throws std::runtime_error "NAME=\"value\": expected 0 or 1".
+bool env_flag(const char* name, bool fallback);
 
 // Injected faults (docs/runtime.md, "Fault injection"), for testing applications' error paths:
 // GAZELOD_SIM_LOSE_SESSION_AT_FRAME=N loses the session after the Nth xrEndFrame: it queues

@@ -97,6 +97,63 @@ TEST(BudgetCli, ErrorsNameTheJsonPath) {
   EXPECT_NE(err.str().find("cannot open"), std::string::npos);
 }
 
+TEST(BudgetCli, ProfitsAreAtLeastZeroAndTheirSumsDoNotOverflow) {
+  // Negative profits: refused as docs/budget.md says (impostors too).
+  Result r = budget(R"({"capacity": 5, "subsets": [[{"profit": -1, "cost": 1}]]})", "exact");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("subsets[0][0].profit: must be a finite number >= 0"), std::string::npos) << r.err;
+  r = budget(R"({"capacity": 5, "subsets": [[{"profit": 1, "cost": 1}]],
+                 "groups": [{"subsets": [0], "impostors": [{"profit": -2, "cost": 0}]}]})", "mason-hierarchical");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("groups[0].impostors[0].profit: must be a finite number >= 0"), std::string::npos) << r.err;
+  // Profits each finite, their sum not: was "profit": null, "optimal": true, exit 0.
+  for (const char* solver : {"exact", "mason-greedy", "funkhouser"}) {
+    r = budget(R"({"capacity": 10, "subsets": [[{"profit": 1e308, "cost": 1}], [{"profit": 1e308, "cost": 1}]]})", solver);
+    EXPECT_EQ(r.code, 2) << solver;
+    EXPECT_NE(r.err.find("subsets: the largest profits of the subsets (and impostors) must add up to at most the "
+                         "largest double, 1.8e308, got an overflow"),
+              std::string::npos)
+        << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["exit_code"].get<int>(), 2);
+    EXPECT_EQ(j["kind"], "bad_input");
+    EXPECT_FALSE(j.contains("profit"));
+  }
+  r = budget(R"({"capacity": 1e308, "subsets": [[{"profit": 1, "cost": 1e308}], [{"profit": 1, "cost": 1e308}]]})", "exact");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("subsets: the largest costs of the subsets (and impostors) must add up to at most"),
+            std::string::npos) << r.err;
+  // Text output: no "inf" left to print.
+  r = budget(R"({"capacity": 10, "subsets": [[{"profit": 1e308, "cost": 1}], [{"profit": 1e308, "cost": 1}]]})",
+             "exact", false);
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(r.out, "");
+}
+
+TEST(BudgetCli, JsonErrorsAreOneObjectOnStdout) {
+  Result r = budget(R"({"capacity": 1, "subsets": [[{"profit": 1, "cost": 2}]]})", "mason-greedy");
+  EXPECT_EQ(r.code, 3);
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["kind"], "infeasible_instance");
+  EXPECT_EQ(j["exit_code"].get<int>(), 3);
+  EXPECT_NE(j["error"].get<std::string>().find("infeasible instance: the cheapest level of detail costs 2 > capacity 1"),
+            std::string::npos);
+  EXPECT_NE(r.err.find("infeasible instance"), std::string::npos) << "stderr keeps its line";
+  r = budget(kT2, "simplex");
+  EXPECT_EQ(r.code, 2);
+  j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["kind"], "bad_input");
+  EXPECT_NE(j["error"].get<std::string>().find("unknown solver 'simplex'"), std::string::npos);
+  std::ostringstream out, err;
+  EXPECT_EQ(run({"budget", "--instance", "/nonexistent/x.json", "--solver", "exact", "--json"}, out, err), 2);
+  j = nlohmann::json::parse(out.str());
+  EXPECT_NE(j["error"].get<std::string>().find("cannot open"), std::string::npos);
+  // Without --json, errors stay on stderr only.
+  r = budget(R"({"capacity": 1, "subsets": [[{"profit": 1, "cost": 2}]]})", "mason-greedy", false);
+  EXPECT_EQ(r.code, 3);
+  EXPECT_EQ(r.out, "");
+}
+
 TEST(BudgetCli, HierarchyOutputsGroupChoices) {
   // Fig. 27: leaves A, B, D, E; C = group 0 over D, E; the root object = group 1.
   const Result r = budget(R"({"capacity": 12, "subsets": [[{"profit": 4, "cost": 4}],

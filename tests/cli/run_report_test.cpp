@@ -18,6 +18,7 @@ FrameRecord frame(std::int64_t i, double ms, std::uint64_t drawn, std::uint64_t 
   f.frame_ms = ms;
   f.triangles_full = 1000;
   f.triangles_drawn = drawn;
+  f.triangles_perceptual = drawn;  // no switch policy or budget in these frames
   f.triangles_size_only = size_only;
   f.triangles_size_eccentricity = size_ecc;
   f.triangles_size_velocity = size_vel;

@@ -98,6 +98,15 @@ TEST(Compare, JsonShapeAndNoCriterionAddsTriangles) {
       EXPECT_LE(h["shares"][k].get<double>(), 1.0 + 1e-12) << k;
     }
     EXPECT_LE(h.at("lod_map").at("triangles").get<double>(), tri("none"));
+    // The run's visibility audit, per HMD, as in its summary.json.
+    const auto& audit = h.at("audit");
+    ASSERT_TRUE(audit.at("available").get<bool>()) << name << ": " << audit.dump();
+    EXPECT_GT(audit.at("visible_degradations").at("object_frames").get<double>(), 0.0) << name;
+    EXPECT_GE(audit["visible_degradations"].at("share").get<double>(), 0.0) << name;
+    EXPECT_LE(audit["visible_degradations"].at("share").get<double>(), 1.0) << name;
+    EXPECT_GT(audit.at("triangles_in_view").at("oracle").get<double>(), 0.0) << name;
+    EXPECT_TRUE(audit.at("switches").contains("outside_suppression")) << name;
+    EXPECT_EQ(audit.at("suppression_window").at("after_saccade_ms").get<double>(), 50.0) << name;
   }
   EXPECT_TRUE(std::filesystem::file_size(dir / "out" / "compare.svg") > 500);
   EXPECT_TRUE(std::filesystem::exists(dir / "out" / "questpro" / "summary.json"));
@@ -137,6 +146,52 @@ TEST(Compare, SharesFromHandMadeSummary) {
   EXPECT_NEAR(c.share_interaction, 0.0, 1e-12);
   EXPECT_EQ(c.sets[4].triangles, 250u);
   EXPECT_EQ(c.lod_map.triangles, 500u);
+  EXPECT_FALSE(c.audit.available) << "a summary without an audit";
+}
+
+TEST(Compare, AuditIsReadBackFromTheSummary) {
+  const auto set = [](int t, double l) { return nlohmann::json{{"triangles", t}, {"average_lod", l}}; };
+  nlohmann::json s = {{"frames", 10}, {"criteria", "size,eccentricity,velocity"},
+                      {"criteria_sets", {{"none", set(1000, 0)}, {"size", set(400, 1)}, {"size+eccentricity", set(300, 1.2)},
+                                         {"size+velocity", set(350, 1.1)}, {"drawn", set(250, 1.5)}}},
+                      {"lod_map", set(500, 1.0)}};
+  AuditSummary a;
+  a.available = true;
+  a.frames = 10;
+  a.suppressed_frames = 2;
+  a.object_frames = 80;
+  a.degraded = 4;
+  a.degraded_share = 0.05;
+  a.excess_mean = 1.25;
+  a.excess_max = 2;
+  a.drawn_triangles = 250;
+  a.oracle_triangles = 500;
+  a.triangle_ratio = 0.5;
+  a.switches_fixation = {3, 0.9, 3.0 / 0.9};
+  a.switches_suppressed = {5, 0.2, 25.0};
+  a.pursuit_frames = 6;
+  a.pursuit_degraded = 3;
+  a.pursuit_degraded_share = 0.5;
+  s["audit"] = audit_json(a);
+  const HmdComparison c = comparison_from_summary("questpro", s, "hand");
+  ASSERT_TRUE(c.audit.available);
+  EXPECT_EQ(c.audit.degraded, 4);
+  EXPECT_EQ(c.audit.excess_max, 2u);
+  EXPECT_DOUBLE_EQ(c.audit.switches_suppressed.per_object_s, 25.0);
+  EXPECT_EQ(audit_json(c.audit), audit_json(a)) << "the compare document carries the run's audit unchanged";
+
+  s["audit"] = {{"available", false}, {"reason", "no ground truth: not the simulated runtime"}};
+  const HmdComparison off = comparison_from_summary("questpro", s, "hand");
+  EXPECT_FALSE(off.audit.available);
+  EXPECT_EQ(off.audit.reason, "no ground truth: not the simulated runtime");
+
+  s["audit"] = {{"available", true}, {"frames", 3}};
+  try {
+    comparison_from_summary("questpro", s, "x/summary.json");
+    FAIL() << "expected an error";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("x/summary.json: audit.suppression_window"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

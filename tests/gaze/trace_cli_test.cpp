@@ -6,9 +6,11 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 namespace gazelod::gaze {
 namespace {
@@ -109,6 +111,60 @@ TEST(TraceCli, ConvertGazeBaseVrThenStats) {
   EXPECT_NE(run({"trace", "convert", in.string(), bad_out.string(), "--format", "gazebasevr"}).rc, 0);
   EXPECT_FALSE(fs::exists(bad_out));
   EXPECT_FALSE(fs::exists(bad_out.string() + ".part"));
+}
+
+// What is not a trace, said precisely, without reading it all (/dev/zero used to be read for
+// 2.1 GB before "empty file: no header row").
+TEST(TraceCli, StatsSaysWhatIsNotATrace) {
+  if (fs::exists("/dev/zero")) {
+    const Result r = run({"trace", "stats", "/dev/zero"});
+    EXPECT_EQ(r.rc, 2);
+    EXPECT_NE(r.err.find("/dev/zero: is a device, not a trace file"), std::string::npos) << r.err;
+  }
+  const fs::path dir = temp_file("adir");
+  fs::create_directories(dir);
+  Result r = run({"trace", "stats", dir.string()});
+  EXPECT_EQ(r.rc, 2);
+  EXPECT_NE(r.err.find(dir.string() + ": is a directory, not a trace file"), std::string::npos) << r.err;
+  const fs::path cr = temp_file("cr.csv");
+  write_text(cr, "t_ns,gaze_x,gaze_y,gaze_z\r0,0,0,-1\r");
+  r = run({"trace", "stats", cr.string(), "--lenient"});
+  EXPECT_EQ(r.rc, 2);
+  EXPECT_NE(r.err.find(cr.string() + ":1:26: carriage return (CR) inside a line"), std::string::npos) << r.err;
+  const fs::path one_line = temp_file("one_line.csv");
+  write_text(one_line, std::string(1 << 20, '7'));
+  r = run({"trace", "stats", one_line.string()});
+  EXPECT_EQ(r.rc, 2);
+  EXPECT_NE(r.err.find(one_line.string() + ":1:65537: line longer than 65536 bytes"), std::string::npos) << r.err;
+}
+
+// convert writes OUT atomically: on failure neither OUT nor a temporary is left, and the
+// message has the system's reason.
+TEST(TraceCli, ConvertFailuresLeaveNothingAndSayWhy) {
+  fs::remove_all(temp_file("good.csv").parent_path());  // from an earlier run
+  const fs::path in = temp_file("good.csv");
+  write_text(in, "t_ns,gaze_x,gaze_y,gaze_z\n0,0,0,-1\n1000,0,0,-1\n");
+  const fs::path dir = in.parent_path();
+  const fs::path adir = dir / "adir.csv";
+  fs::create_directories(adir);
+  Result r = run({"trace", "convert", in.string(), adir.string()});
+  EXPECT_EQ(r.rc, 1);
+  EXPECT_NE(r.err.find("cannot write '" + adir.string() + "': is a directory"), std::string::npos) << r.err;
+  r = run({"trace", "convert", in.string(), (dir / "none" / "out.csv").string()});
+  EXPECT_EQ(r.rc, 1);
+  EXPECT_NE(r.err.find("No such file or directory (creating a temporary file in '"), std::string::npos) << r.err;
+  if (fs::exists("/dev/full")) {
+    r = run({"trace", "convert", in.string(), "/dev/full"});
+    EXPECT_EQ(r.rc, 1);
+    EXPECT_NE(r.err.find("cannot write '/dev/full': No space left on device"), std::string::npos) << r.err;
+  }
+  std::vector<std::string> left;
+  for (const auto& e : fs::directory_iterator(dir)) left.push_back(e.path().filename().string());
+  std::sort(left.begin(), left.end());
+  EXPECT_EQ(left, (std::vector<std::string>{"adir.csv", "good.csv"})) << "no .part, no temporary";
+  r = run({"trace", "convert", in.string(), (dir / "out.csv").string()});
+  ASSERT_EQ(r.rc, 0) << r.err;
+  EXPECT_TRUE(fs::is_regular_file(dir / "out.csv"));
 }
 
 }  // namespace

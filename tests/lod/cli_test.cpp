@@ -67,13 +67,26 @@ TEST(CliThresholds, BadArgumentsNameTheArgument) {
   expect_refused({"thresholds", "--pixels", "100x", "--fov", "90x90"}, "--pixels");
   expect_refused({"thresholds", "--pixels", "abcxdef", "--fov", "90x90"}, "not a finite number");
   expect_refused({"thresholds", "--pixels", "100x100", "--fov", "0x90"}, "--fov");
-  expect_refused({"thresholds", "--pixels", "100x100", "--fov", "180x90"}, "(0, 180)");
+  expect_refused({"thresholds", "--pixels", "100x100", "--fov", "180x90"},
+                 "--fov: horizontal FOV must be in [0.001, 179] deg, got 180");
+  // The limits of scenario files (lod::validate_described_view): one rule.
+  expect_refused({"thresholds", "--pixels", "100x100", "--fov", "179.9x90"}, "must be in [0.001, 179] deg, got 179.9");
+  expect_refused({"thresholds", "--pixels", "100x100", "--fov", "90x1e-300"},
+                 "--fov: vertical FOV must be in [0.001, 179] deg, got 1e-300");
+  expect_refused({"thresholds", "--pixels", "100x100", "--fov", "90x-5"}, "--fov: vertical FOV");
   expect_refused({"thresholds", "--pixels", "100x100", "--fov", "90xnan"}, "--fov");
   expect_refused({"thresholds", "--pixels", "100x100"}, "--fov: required");
   expect_refused({"thresholds", "--hmd", "quest3", "--at-eccentricity", "x"}, "--at-eccentricity");
   expect_refused({"thresholds", "--hmd", "quest3", "--at-eccentricity", "-1"}, "[0, 180]");
   expect_refused({"thresholds", "--hmd", "quest3", "--pixels", "1x1", "--fov", "1x1"}, "not both");
   expect_refused({"thresholds"}, "--hmd");
+}
+
+TEST(CliThresholds, FovLimitsThemselvesAreAccepted) {
+  const Result r = run_cli({"thresholds", "--pixels", "1000x1000", "--fov", "179x0.001", "--json"});
+  ASSERT_EQ(r.rc, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(j["xi_cpd"].get<double>(), 1000 / (2 * 0.001), 1e-3);
 }
 
 TEST(CliHmds, ListsEveryPresetWithSource) {

@@ -65,6 +65,35 @@ TEST(GazeArbiter, DistrustsARuntimeThatAdvertisesButNeverDelivers) {
   EXPECT_EQ(log.sources.back(), GazeSourceKind::external);
 }
 
+// The silence timer starts when the session becomes focused, not at the first frame: an
+// application that renders for 3 s before FOCUSED does not lose the runtime's gaze for it.
+TEST(GazeArbiter, SilenceTimerStartsAtFocused) {
+  ScriptedSource silent("openxr", [](std::int64_t) { return false; });
+  Log log;
+  auto a = make(&silent, nullptr, log);
+  a.session_state(false, 0);  // READY: the application reports states
+  for (std::int64_t t = 0; t <= 3000 * kMs; t += 11 * kMs) a.update(t);
+  EXPECT_FALSE(a.primary_distrusted()) << "not focused yet";
+  a.session_state(true, 3000 * kMs);  // FOCUSED
+  a.update(3900 * kMs);
+  EXPECT_FALSE(a.primary_distrusted()) << "0.9 s after FOCUSED";
+  a.update(4001 * kMs);
+  EXPECT_TRUE(a.primary_distrusted()) << "1.001 s after FOCUSED";
+}
+
+// Without any reported state the timer runs from the first update (applications that do
+// not forward their events).
+TEST(GazeArbiter, SilenceTimerFromFirstFrameWithoutStates) {
+  ScriptedSource silent("openxr", [](std::int64_t) { return false; });
+  Log log;
+  auto a = make(&silent, nullptr, log);
+  a.update(500 * kMs);
+  a.update(1400 * kMs);
+  EXPECT_FALSE(a.primary_distrusted());
+  a.update(1501 * kMs);
+  EXPECT_TRUE(a.primary_distrusted());
+}
+
 TEST(GazeArbiter, FallsBackDuringGapsAndReturns) {
   // Delivers except between 100 and 200 ms.
   ScriptedSource primary("openxr", [](std::int64_t t) { return t < 100 * kMs || t >= 200 * kMs; });

@@ -72,12 +72,12 @@ TEST(ScenarioParse, GeneratedFieldLiesInsideItsBoxAndFollowsTheSeed) {
 
 TEST(ScenarioParse, ExplicitDisplayInDegrees) {
   nlohmann::json j = base_scenario();
-  j["display"] = {{"width_px", 1000}, {"height_px", 800}, {"views", 1},
+  j["display"] = {{"width_px", 1000}, {"height_px", 800}, {"views", 2},
                   {"fov_deg", {{"left", -45}, {"right", 40}, {"up", 30}, {"down", -35}}},
                   {"refresh_hz", 60}, {"eye_tracking_hz", 250}};
   j.erase("duration_s");
   const Scenario sc = load_scenario_json(j.dump(), "d");
-  EXPECT_EQ(sc.display.view_count, 1);
+  EXPECT_EQ(sc.display.view_count, 2);
   EXPECT_EQ(sc.display.views[0].width_px, 1000);
   EXPECT_NEAR(sc.display.views[0].fov.angle_left_rad, -45.0 * M_PI / 180.0, 1e-12);
   EXPECT_NEAR(sc.display.views[0].fov.angle_up_rad, 30.0 * M_PI / 180.0, 1e-12);

@@ -33,9 +33,11 @@ struct Options {
   long long max_growth_kib = 1024;
 };
 
+constexpr const char* kUsage =
+    "usage: gazelod_soak [--frames N] [--scenario FILE] [--samples K] [--max-growth-kib G]\n";
+
 [[noreturn]] void usage(const std::string& why) {
-  std::fprintf(stderr, "gazelod_soak: %s\nusage: gazelod_soak [--frames N] [--scenario FILE] "
-                       "[--samples K] [--max-growth-kib G]\n", why.c_str());
+  std::fprintf(stderr, "gazelod_soak: %s\n%s", why.c_str(), kUsage);
   std::exit(2);
 }
 
@@ -52,6 +54,16 @@ Options parse(int argc, char** argv) {
   Options o;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
+    if (a == "--help" || a == "-h") {
+      std::printf("%s  --frames N          frames to run (default 324000: one hour at 90 Hz)\n"
+                  "  --scenario FILE     scenario JSON (default: the embedded one)\n"
+                  "  --samples K         RSS samples (default 40)\n"
+                  "  --max-growth-kib G  RSS growth after the first tenth that fails the run (default 1024)\n",
+                  kUsage);
+      std::exit(0);
+    }
+    if (a != "--frames" && a != "--scenario" && a != "--samples" && a != "--max-growth-kib")
+      usage("unknown option " + a);
     if (i + 1 >= argc) usage(a + ": missing value");
     const char* v = argv[++i];
     if (a == "--frames") o.frames = parse_int("--frames", v, 1, 100'000'000);

@@ -1,0 +1,419 @@
+#include "gaze/gaze_conditioner.hpp"
+
+#include "gaze/angles.hpp"
+
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace gazelod::gaze {
+namespace {
+
+constexpr double kSPerNs = 1e-9;
+constexpr std::size_t kMinVelocitySamples = 3;  // a slope from fewer is a two-sample difference
+constexpr std::size_t kMinPursuitSamples = 5;   // residuals need a few degrees of freedom
+constexpr double kNoiseTau_s = 2.0;              // averaging time of the long-run noise level
+
+bool finite3(const glm::dvec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+// Unit quaternion, or false when q is not finite or (near) zero.
+bool normalized_quat(const glm::dquat& q, glm::dquat& out) {
+  const double n2 = q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z;
+  if (!std::isfinite(n2) || !(n2 > 1e-18)) return false;
+  const double n = std::sqrt(n2);
+  out = glm::dquat(q.w / n, q.x / n, q.y / n, q.z / n);
+  return std::isfinite(out.w) && std::isfinite(out.x) && std::isfinite(out.y) && std::isfinite(out.z);
+}
+
+// Unit vector, or false when v is not finite or (near) zero.
+bool normalized_dir(const glm::dvec3& v, glm::dvec3& out) {
+  if (!finite3(v)) return false;
+  const double n = glm::length(v);
+  if (!std::isfinite(n) || !(n > 1e-9)) return false;
+  out = v / n;
+  return finite3(out);
+}
+
+// a - b without overflow (saturating).
+std::int64_t sat_sub(std::int64_t a, std::int64_t b) {
+  std::int64_t r = 0;
+  if (__builtin_sub_overflow(a, b, &r))
+    return a > b ? std::numeric_limits<std::int64_t>::max() : std::numeric_limits<std::int64_t>::min();
+  return r;
+}
+
+// Smoothing factor of an exponential average with time constant tau over a step dt (1 when
+// tau is zero: no smoothing).
+double ema_alpha(double dt_s, double tau_s) {
+  if (!(tau_s > 0.0)) return 1.0;
+  if (!(dt_s > 0.0)) return 0.0;
+  return 1.0 - std::exp(-dt_s / tau_s);
+}
+
+ConditionerConfig sanitized(ConditionerConfig c) {
+  const ConditionerConfig d;
+  auto pos = [](double v, double def) { return std::isfinite(v) && v > 0.0 ? v : def; };
+  auto nonneg = [](double v, double def) { return std::isfinite(v) && v >= 0.0 ? v : def; };
+  auto pos_ns = [](std::int64_t v, std::int64_t def) { return v > 0 ? v : def; };
+  auto nonneg_ns = [](std::int64_t v, std::int64_t def) { return v >= 0 ? v : def; };
+  c.accuracy_deg = nonneg(c.accuracy_deg, d.accuracy_deg);
+  c.precision_deg = nonneg(c.precision_deg, d.precision_deg);
+  c.saccade_threshold_deg_s = pos(c.saccade_threshold_deg_s, d.saccade_threshold_deg_s);
+  c.velocity_window_ns = pos_ns(c.velocity_window_ns, d.velocity_window_ns);
+  c.dispersion_window_ns = pos_ns(c.dispersion_window_ns, d.dispersion_window_ns);
+  c.dispersion_threshold_deg = pos(c.dispersion_threshold_deg, d.dispersion_threshold_deg);
+  c.pursuit_significance = nonneg(c.pursuit_significance, d.pursuit_significance);
+  c.pursuit_exit_fraction = std::isfinite(c.pursuit_exit_fraction) && c.pursuit_exit_fraction >= 0.0
+                                ? std::min(c.pursuit_exit_fraction, 1.0)
+                                : d.pursuit_exit_fraction;
+  c.max_gap_ns = pos_ns(c.max_gap_ns, d.max_gap_ns);
+  c.fixation_smoothing_tau_ns = nonneg_ns(c.fixation_smoothing_tau_ns, d.fixation_smoothing_tau_ns);
+  c.pursuit_velocity_tau_ns = nonneg_ns(c.pursuit_velocity_tau_ns, d.pursuit_velocity_tau_ns);
+  c.prediction_horizon_max_ns = nonneg_ns(c.prediction_horizon_max_ns, d.prediction_horizon_max_ns);
+  c.post_saccade_suppression_ns = nonneg_ns(c.post_saccade_suppression_ns, d.post_saccade_suppression_ns);
+  c.loss_hold_max_ns = nonneg_ns(c.loss_hold_max_ns, d.loss_hold_max_ns);
+  c.age_growth_deg_s = nonneg(c.age_growth_deg_s, d.age_growth_deg_s);
+  c.velocity_error_fraction = nonneg(c.velocity_error_fraction, d.velocity_error_fraction);
+  c.max_uncertainty_deg = pos(c.max_uncertainty_deg, d.max_uncertainty_deg);
+  c.max_uncertainty_deg = std::max(c.max_uncertainty_deg, c.accuracy_deg);
+  c.max_sample_lead_ns = pos_ns(c.max_sample_lead_ns, d.max_sample_lead_ns);
+  return c;
+}
+
+}  // namespace
+
+const char* to_string(EyeMotion motion) {
+  switch (motion) {
+    case EyeMotion::fixation: return "fixation";
+    case EyeMotion::saccade: return "saccade";
+    case EyeMotion::pursuit: return "pursuit";
+    case EyeMotion::loss: return "loss";
+  }
+  return "unknown";
+}
+
+// Least-squares line through the newest `n` world directions, in tangent-plane angles
+// (atan2, radians) about the newest direction, against time in seconds from the newest sample.
+struct GazeConditioner::Fit {
+  std::size_t n = 0;
+  double span_s = 0.0;         // newest - oldest sample time
+  glm::dvec3 ref{0.0, 0.0, -1.0}, e1{1.0, 0.0, 0.0}, e2{0.0, 1.0, 0.0};
+  glm::dvec2 slope{0.0};       // rad/s along e1, e2
+  glm::dvec2 at_newest{0.0};   // fitted angles at the newest sample's time, rad
+  double ctt = 0.0;            // sum of squared time deviations, s^2
+  double resid_var = 0.0;      // residual variance per component, rad^2 (0 unless n > 2)
+  double slope_se = std::numeric_limits<double>::infinity();  // standard error per component
+  bool ok = false;
+
+  double speed_rad_s() const { return std::hypot(slope.x, slope.y); }
+  // The fitted direction at the newest sample's time (unit).
+  glm::dvec3 direction() const {
+    if (!(std::fabs(at_newest.x) < 1.4 && std::fabs(at_newest.y) < 1.4)) return ref;
+    glm::dvec3 d;
+    if (!normalized_dir(ref + e1 * std::tan(at_newest.x) + e2 * std::tan(at_newest.y), d)) return ref;
+    return d;
+  }
+  // Angular velocity vector (rad/s, world): omega x d = d(d)/dt at the reference direction.
+  glm::dvec3 omega() const { return glm::cross(ref, e1 * slope.x + e2 * slope.y); }
+};
+
+const GazeConditioner::Entry& GazeConditioner::newest(std::size_t back) const noexcept {
+  return ring_[(head_ + kCapacity - 1 - back) % kCapacity];
+}
+
+GazeConditioner::Fit GazeConditioner::fit_newest(std::size_t count) const noexcept {
+  Fit f;
+  count = std::min(count, segment_count_);
+  f.n = count;
+  if (count == 0) return f;
+  const Entry& last = newest(0);
+  f.ref = last.world;
+  tangent_basis(f.ref, f.e1, f.e2);
+  if (count < 2) return f;
+  double st = 0, sx = 0, sy = 0, stt = 0, stx = 0, sty = 0, sxx = 0, syy = 0;
+  for (std::size_t i = 0; i < count; ++i) {
+    const Entry& e = newest(i);
+    const double t = static_cast<double>(e.t_ns - last.t_ns) * kSPerNs;
+    const glm::dvec2 a = angular_offset_rad(e.world, f.ref, f.e1, f.e2);
+    st += t; sx += a.x; sy += a.y;
+    stt += t * t; stx += t * a.x; sty += t * a.y;
+    sxx += a.x * a.x; syy += a.y * a.y;
+  }
+  const double n = static_cast<double>(count);
+  const double mt = st / n, mx = sx / n, my = sy / n;
+  const double ctt = stt - st * mt;
+  if (!(ctt > 1e-16)) return f;  // all samples at (nearly) one time
+  const double ctx = stx - st * mx, cty = sty - st * my;
+  const double cxx = sxx - sx * mx, cyy = syy - sy * my;
+  f.ctt = ctt;
+  f.slope = {ctx / ctt, cty / ctt};
+  f.at_newest = {mx - f.slope.x * mt, my - f.slope.y * mt};
+  f.span_s = static_cast<double>(last.t_ns - newest(count - 1).t_ns) * kSPerNs;
+  if (count > 2) {
+    const double rss = std::max(0.0, cxx - f.slope.x * ctx) + std::max(0.0, cyy - f.slope.y * cty);
+    f.resid_var = std::max(0.0, rss / (2.0 * (n - 2.0)));
+    f.slope_se = std::sqrt(f.resid_var / ctt);
+  }
+  f.ok = std::isfinite(f.slope.x) && std::isfinite(f.slope.y) && std::isfinite(f.at_newest.x) &&
+         std::isfinite(f.at_newest.y) && std::isfinite(f.span_s);
+  if (!f.ok) {
+    f.slope = glm::dvec2(0.0);
+    f.at_newest = glm::dvec2(0.0);
+  }
+  return f;
+}
+
+GazeConditioner::GazeConditioner(ConditionerConfig config)
+    : config_(sanitized(config)),
+      noise_var_(0.5 * (config_.precision_deg * kRadPerDeg) * (config_.precision_deg * kRadPerDeg)) {}
+
+void GazeConditioner::reset() noexcept {
+  const std::int64_t bad = bad_samples_;
+  const bool have_display = have_display_;
+  const std::int64_t display = last_display_t_ns_;
+  const ConditionerConfig config = config_;
+  *this = GazeConditioner(config);
+  bad_samples_ = bad;
+  have_display_ = have_display;
+  last_display_t_ns_ = display;
+}
+
+void GazeConditioner::push(const GazeSample& sample, const glm::dquat& head_at_sample) noexcept {
+  // Repeats: the plugin polls the source once a frame and often sees the same sample again.
+  if (have_seen_ && sample.t_ns == last_seen_t_ns_) return;
+  if (have_time_ && sample.t_ns == last_t_ns_) return;  // the accepted one again, after a refused one
+  have_seen_ = true;
+  last_seen_t_ns_ = sample.t_ns;
+  if (have_time_ && sample.t_ns < last_t_ns_) {
+    ++bad_samples_;  // backwards in time
+    return;
+  }
+  if (have_display_ && sat_sub(sample.t_ns, last_display_t_ns_) > config_.max_sample_lead_ns) {
+    ++bad_samples_;  // implausibly far in the future
+    return;
+  }
+  if (!sample.valid) {
+    push_invalid(sample.t_ns);
+    return;
+  }
+  glm::dvec3 d;
+  glm::dquat q;
+  if (!normalized_dir(sample.direction, d) || !normalized_quat(head_at_sample, q)) {
+    ++bad_samples_;
+    return;
+  }
+  glm::dvec3 world;
+  if (!normalized_dir(q * d, world)) {
+    ++bad_samples_;
+    return;
+  }
+  last_head_ = q;
+  push_valid(sample.t_ns, world);
+}
+
+void GazeConditioner::push_invalid(std::int64_t t_ns) noexcept {
+  have_time_ = true;
+  last_t_ns_ = t_ns;
+  segment_count_ = 0;
+  phase_count_ = 0;
+  fixation_n_ = 0.0;
+  motion_ = EyeMotion::loss;  // est_world_ is held
+  omega_world_ = glm::dvec3(0.0);
+  speed_deg_s_ = 0.0;
+}
+
+void GazeConditioner::push_valid(std::int64_t t_ns, const glm::dvec3& world) noexcept {
+  if (have_time_ && sat_sub(t_ns, last_t_ns_) > config_.max_gap_ns) {
+    // A gap: no fit spans it, and the eye may have moved meanwhile (as after a loss).
+    segment_count_ = 0;
+    phase_count_ = 0;
+    fixation_n_ = 0.0;
+    motion_ = EyeMotion::loss;
+    omega_world_ = glm::dvec3(0.0);
+  }
+  const double dt_s =
+      segment_count_ > 0 ? static_cast<double>(sat_sub(t_ns, newest(0).t_ns)) * kSPerNs : 0.0;
+  ring_[head_] = Entry{t_ns, world};
+  head_ = (head_ + 1) % kCapacity;
+  segment_count_ = std::min(segment_count_ + 1, kCapacity);
+  phase_count_ = std::min(phase_count_ + 1, kCapacity);
+  have_time_ = true;
+  last_t_ns_ = t_ns;
+  have_valid_ = true;
+  last_valid_t_ns_ = t_ns;
+  last_raw_world_ = world;
+  const EyeMotion prev = motion_;
+
+  // 1. I-VT: the least-squares speed over the velocity window (at least 3 samples).
+  std::size_t k = 0;
+  while (k < segment_count_) {
+    const std::int64_t age = t_ns - newest(k).t_ns;
+    if (age > config_.dispersion_window_ns) break;
+    if (k >= kMinVelocitySamples && age > config_.velocity_window_ns) break;
+    ++k;
+  }
+  const Fit fv = fit_newest(k);
+  // Relative to the pursuit in progress (a saccade on a moving background: catch-up saccades
+  // are saccades, fast pursuit with noise is not).
+  glm::dvec2 rel = fv.slope;
+  if (prev == EyeMotion::pursuit) {
+    const glm::dvec3 u = glm::cross(omega_world_, fv.ref);  // pursuit tangent velocity at ref
+    rel -= glm::dvec2(glm::dot(u, fv.e1), glm::dot(u, fv.e2));
+  }
+  const double v_deg_s = std::hypot(rel.x, rel.y) * kDegPerRad;
+  // A fit over much less than the window (a young segment at a high rate) is too noisy.
+  const double v_window_s = static_cast<double>(config_.velocity_window_ns) * kSPerNs;
+  if (fv.ok && fv.n >= kMinVelocitySamples && fv.span_s >= 0.5 * v_window_s &&
+      v_deg_s > config_.saccade_threshold_deg_s) {
+    // No estimate yet (the stream began in a saccade): the oldest sample of the fit, where
+    // the saccade started from.
+    if (!have_estimate_) est_world_ = newest(k - 1).world;
+    have_estimate_ = true;
+    motion_ = EyeMotion::saccade;  // est_world_ (the estimate before the saccade) is held
+    omega_world_ = glm::dvec3(0.0);
+    speed_deg_s_ = fv.speed_rad_s() * kDegPerRad;
+    have_saccade_ = true;
+    saccade_last_t_ns_ = t_ns;
+    phase_count_ = 0;  // the next phase begins after the saccade
+    fixation_n_ = 0.0;
+    return;
+  }
+
+  // 2. Dispersion over the phase so far (since the saccade / gap / loss), at most the window.
+  std::size_t m = 0;
+  while (m < phase_count_ && t_ns - newest(m).t_ns <= config_.dispersion_window_ns) ++m;
+  const Fit fd = fit_newest(m);
+  const double speed = fd.speed_rad_s();
+  // Hysteresis: a pursuit in progress continues down to pursuit_exit_fraction of both tests.
+  const double f = prev == EyeMotion::pursuit ? config_.pursuit_exit_fraction : 1.0;
+  // The slope's standard error from this window's residuals, but never below the one the
+  // long-run noise level gives (a window of few samples can have small residuals by chance).
+  const double se = fd.ok && fd.ctt > 0.0 ? std::sqrt(std::max(fd.resid_var, noise_var_) / fd.ctt)
+                                          : std::numeric_limits<double>::infinity();
+  const bool pursuit = fd.ok && fd.n >= kMinPursuitSamples && fd.span_s >= v_window_s &&
+                       speed * fd.span_s * kDegPerRad >= f * config_.dispersion_threshold_deg &&
+                       speed > f * config_.pursuit_significance * se;
+  if (pursuit) {
+    const glm::dvec3 om = fd.omega();
+    if (prev != EyeMotion::pursuit) {
+      omega_world_ = om;
+    } else {
+      const double a =
+          ema_alpha(dt_s, static_cast<double>(config_.pursuit_velocity_tau_ns) * kSPerNs);
+      omega_world_ += a * (om - omega_world_);
+    }
+    if (!finite3(omega_world_)) omega_world_ = glm::dvec3(0.0);
+    est_world_ = fd.direction();
+    motion_ = EyeMotion::pursuit;
+    speed_deg_s_ = glm::length(omega_world_) * kDegPerRad;
+    fixation_n_ = 0.0;
+  } else {
+    if (prev != EyeMotion::fixation) {
+      if (prev == EyeMotion::pursuit && fd.ok) {
+        // From pursuit: start at the fitted position, weighted like a quarter of its samples.
+        est_world_ = fd.direction();
+        fixation_n_ = std::max(1.0, static_cast<double>(fd.n) / 4.0);
+      } else {
+        est_world_ = world;
+        fixation_n_ = 1.0;
+      }
+    } else {
+      fixation_n_ += 1.0;
+      const double a = std::max(
+          1.0 / fixation_n_,
+          ema_alpha(dt_s, static_cast<double>(config_.fixation_smoothing_tau_ns) * kSPerNs));
+      glm::dvec3 next;
+      if (normalized_dir(slerp_direction(est_world_, world, std::clamp(a, 0.0, 1.0)), next))
+        est_world_ = next;
+    }
+    motion_ = EyeMotion::fixation;
+    omega_world_ = glm::dvec3(0.0);
+    speed_deg_s_ = 0.0;
+    // Long-run noise level (the adaptive noise estimate of Nyström & Holmqvist 2010, here
+    // from the fixation windows' residuals).
+    if (fd.ok && fd.n >= kMinPursuitSamples && std::isfinite(fd.resid_var))
+      noise_var_ += ema_alpha(dt_s, kNoiseTau_s) * (fd.resid_var - noise_var_);
+  }
+  if (!finite3(est_world_)) est_world_ = world;
+  have_estimate_ = true;
+}
+
+ConditionedGaze GazeConditioner::at(std::int64_t display_t_ns,
+                                    const glm::dquat& head_at_display) noexcept {
+  have_display_ = true;
+  last_display_t_ns_ = display_t_ns;
+  ConditionedGaze g;
+  g.bad_samples = bad_samples_;
+  glm::dquat q;
+  if (!normalized_quat(head_at_display, q)) q = last_head_;
+  const glm::dquat q_inv = glm::conjugate(q);
+  const glm::dvec3 ahead(0.0, 0.0, -1.0);
+
+  if (!have_valid_ || !have_estimate_) {
+    g.valid = false;
+    g.motion = EyeMotion::loss;
+    g.direction_head = ahead;
+    if (!normalized_dir(q * ahead, g.direction_world)) g.direction_world = ahead;
+    g.uncertainty_deg = config_.max_uncertainty_deg;
+    return g;
+  }
+
+  g.sample_t_ns = last_valid_t_ns_;
+  const std::int64_t age_ns = sat_sub(display_t_ns, last_valid_t_ns_);
+  const double h_s = static_cast<double>(std::max<std::int64_t>(0, age_ns)) * kSPerNs;
+  const double cap_s = static_cast<double>(config_.prediction_horizon_max_ns) * kSPerNs;
+  glm::dvec3 dir = est_world_;
+  double speed_term_deg = 0.0;
+  switch (motion_) {
+    case EyeMotion::pursuit: {
+      const double h_pred = std::min(h_s, cap_s);
+      const double w = glm::length(omega_world_);
+      if (std::isfinite(w) && w > 1e-12 && h_pred > 0.0) {
+        const glm::dquat r = glm::angleAxis(w * h_pred, omega_world_ / w);
+        glm::dvec3 next;
+        if (normalized_dir(r * dir, next)) dir = next;
+      }
+      speed_term_deg = speed_deg_s_ * (config_.velocity_error_fraction * h_pred + (h_s - h_pred));
+      break;
+    }
+    case EyeMotion::saccade:
+      // Held: the eye is already angle(held, newest) away and still moving.
+      speed_term_deg = angle_between_rad(est_world_, last_raw_world_) * kDegPerRad + speed_deg_s_ * h_s;
+      break;
+    case EyeMotion::fixation:
+    case EyeMotion::loss:
+      break;
+  }
+  const double age_term_deg = config_.age_growth_deg_s * h_s;
+  double unc = std::hypot(config_.accuracy_deg, std::hypot(age_term_deg, speed_term_deg));
+  if (!std::isfinite(unc)) unc = config_.max_uncertainty_deg;
+  g.uncertainty_deg = std::clamp(unc, config_.accuracy_deg, config_.max_uncertainty_deg);
+
+  if (!normalized_dir(dir, g.direction_world)) g.direction_world = last_raw_world_;
+  if (!normalized_dir(q_inv * g.direction_world, g.direction_head)) {
+    g.direction_head = ahead;
+    g.direction_world = q * ahead;
+  }
+
+  if (age_ns > config_.loss_hold_max_ns) {  // lost (or the source froze) too long
+    g.valid = false;
+    g.motion = EyeMotion::loss;
+    g.suppressed = false;
+    g.uncertainty_deg = config_.max_uncertainty_deg;
+    return g;
+  }
+  g.valid = true;
+  g.motion = motion_;
+  if (motion_ == EyeMotion::pursuit && finite3(omega_world_)) g.angular_velocity_world_rad_s = omega_world_;
+  g.suppressed = motion_ == EyeMotion::saccade || motion_ == EyeMotion::loss ||
+                 (have_saccade_ &&
+                  sat_sub(display_t_ns, saccade_last_t_ns_) <= config_.post_saccade_suppression_ns);
+  return g;
+}
+
+}  // namespace gazelod::gaze

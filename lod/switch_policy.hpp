@@ -1,0 +1,105 @@
+// The switch policy between the perceptual choice and what is drawn. select_lods (lod/select.hpp)
+// picks each frame the coarsest level whose removed detail is invisible; drawing that level
+// directly makes a noisy gaze flip an object between two levels every frame. The policy, per
+// object:
+//   - refines (a finer level, smaller number) at once: detail the viewer could see is never
+//     withheld;
+//   - coarsens only after a coarser level has been allowed continuously for coarsen_hold_s
+//     (the "window": it opens at the first frame a coarser level than the drawn one is
+//     allowed, and closes at any frame that allows none). It then goes to the finest level
+//     allowed throughout the window, never coarser than anything allowed during it;
+//   - with prefer_suppression, once the hold has passed, waits for a frame in which vision is
+//     suppressed (the caller's flag: a saccade, up to ~60 ms after it, or a blink) and
+//     coarsens then, or anyway once max_deferral_s more has passed.
+// So the drawn level is never coarser than this frame's perceptual level, coarsenings of one
+// object are at least coarsen_hold_s apart on a monotonic clock (at most 1 / coarsen_hold_s per
+// object-second; refinements are not limited), and a coarsening comes at most hold + deferral
+// after the window opened. docs/perceptual-model.md ("Switch policy") has the defaults' sources.
+//
+// API (plain data in, caller-owned arrays, no allocation, no hidden state, linear time):
+//   std::vector<std::uint8_t> drawn(n), finest(n), held(n);  std::vector<double> start(n);
+//   SwitchState state{drawn, finest, start};
+//   reset_switch_state(state);                                  // at registration: level 0
+//   each frame: select_lods(...) -> lod;
+//     std::string err = apply_switch_policy(config, t_s, suppressed, lod, state, held);
+//     draw drawn[i]; held[i] says why it differs from lod[i] (HoldReason).
+// One new object: reset_switch_state on a SwitchState of one-entry subspans.
+// Validation: apply_switch_policy and reset_switch_state refuse an invalid config or spans of
+// different lengths with a message and write nothing. A non-finite t_s is a frame in which no
+// time passes (see apply_switch_policy); no NaN reaches a decision.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <string>
+
+namespace gazelod::lod {
+
+// Why the drawn level differs from this frame's perceptual level (one byte per object).
+enum class HoldReason : std::uint8_t {
+  none = 0,                  // drawn == perceptual: nothing held (refined, coarsened or steady)
+  hold_time = 1,             // a coarser level is allowed, but not yet for coarsen_hold_s
+                             // without a break: drawn stays finer
+  awaiting_suppression = 2,  // the hold has passed; prefer_suppression waits for a suppressed
+                             // frame (saccade or blink), at most max_deferral_s
+  no_time = 3,               // a coarser level is allowed, but this frame's t_s is not finite:
+                             // nothing coarsens and no window opens in it
+};
+const char* to_string(HoldReason r);
+
+struct SwitchPolicyConfig {
+  // How long a coarser level must be allowed without a break before it is drawn. 200 ms: well
+  // above the frame-to-frame flips of tracker noise (one to a few frames, tens of ms), below
+  // the ~330 ms mean fixation in scene viewing (Rayner 1998), so a level allowed through most
+  // of a fixation is reached in it; caps coarsening at 5 per object-second. 0 turns the policy
+  // into "draw the perceptual level" (coarsening at once).
+  double coarsen_hold_s = 0.2;
+  // After the hold, how much longer a coarsening may wait for a suppressed frame. 1 s: with
+  // ~3 saccades a second in free viewing (Rayner 1998) the next one usually comes within a few
+  // hundred ms; 1 s is past nearly every fixation, so it only runs out in long fixations,
+  // smooth pursuit, or without saccade labels. Waiting only keeps detail (costs time, not
+  // quality).
+  double max_deferral_s = 1.0;
+  // Coarsen inside saccadic suppression or a blink where one comes in time: changes up to
+  // ~60 ms after a saccade go unnoticed (Loschky & Wolverton 2007), vision is suppressed in
+  // blinks (Volkmann, Riggs & Moore 1980).
+  bool prefer_suppression = true;
+  // The hold in a suppressed frame (the shorter of this and coarsen_hold_s; with
+  // prefer_suppression only). 0: a change made
+  // while vision is suppressed goes unseen, so it need not wait out the noise, and the level a
+  // saccade's landing allows is drawn in the same suppression window. (Measured with the
+  // audit of `gazelod run`: a 30 ms hold here keeps ~25 % more triangles than the eye needs,
+  // because the window has often closed before the hold is over.)
+  double suppressed_hold_s = 0.0;
+};
+
+// "" when valid (both times finite and >= 0), else which field and why.
+std::string validate_switch_config(const SwitchPolicyConfig& config);
+
+// No window open (window_start_s); any non-finite value reads the same.
+inline constexpr double kNoSwitchWindow = std::numeric_limits<double>::quiet_NaN();
+
+// Caller-owned, one entry per object in each span (resize at registration, reset_switch_state).
+struct SwitchState {
+  std::span<std::uint8_t> drawn;           // the level drawn (the output)
+  std::span<std::uint8_t> finest_allowed;  // finest level allowed since the window opened
+  std::span<double> window_start_s;        // when the window opened; non-finite: none open
+};
+
+// One frame. t_s: monotonic seconds; suppressed: vision is suppressed in this frame (a saccade
+// or up to ~60 ms after one, or a blink). perceptual[i]: this frame's perceptual level. Updates
+// state (drawn[i] is what to draw) and writes held[i] (a HoldReason; held may be empty to skip).
+// Returns "" or, for an invalid config or a span whose length differs from perceptual's, a
+// message, writing nothing. A non-finite t_s: refinement still happens and an open window
+// still takes this frame's level into its finest, but no window opens and nothing coarsens.
+// t_s before an open window's start (the clock went back) restarts that window at t_s.
+std::string apply_switch_policy(const SwitchPolicyConfig& config, double t_s, bool suppressed,
+                                std::span<const std::uint8_t> perceptual, const SwitchState& state,
+                                std::span<std::uint8_t> held);
+
+// Every object: draw `level`, no window open (registration, reset). Returns "" or, for spans
+// of different lengths, a message, writing nothing.
+std::string reset_switch_state(const SwitchState& state, std::uint8_t level = 0);
+
+}  // namespace gazelod::lod

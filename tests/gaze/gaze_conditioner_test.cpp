@@ -1,0 +1,621 @@
+// The frame-loop gaze conditioner (gaze/gaze_conditioner.hpp): classification of eye-in-world
+// motion, fixation smoothing, pursuit velocity, prediction, uncertainty, blinks and bad input.
+// Synthetic traces with seeded Gaussian noise; "0.5 deg RMS" is the total angular RMS (per
+// axis 0.5 / sqrt(2)), which differenced at 120 Hz reads as ~85 deg/s.
+#include "gaze/gaze_conditioner.hpp"
+
+#include "gaze/angles.hpp"
+#include "gaze/main_sequence.hpp"
+#include "gaze/trace_reader.hpp"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cmath>
+#include <cstdlib>
+#include <functional>
+#include <limits>
+#include <new>
+#include <random>
+#include <vector>
+
+// Counts every allocation of this test program, for "push() and at() allocate nothing".
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"  // malloc/free pairs, on purpose
+#endif
+namespace {
+std::atomic<long> g_allocations{0};
+}
+void* operator new(std::size_t n) {
+  ++g_allocations;
+  if (void* p = std::malloc(n ? n : 1)) return p;
+  throw std::bad_alloc();
+}
+void* operator new(std::size_t n, const std::nothrow_t&) noexcept {
+  ++g_allocations;
+  return std::malloc(n ? n : 1);
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
+
+namespace gazelod::gaze {
+namespace {
+
+constexpr std::int64_t kMs = 1'000'000;
+constexpr std::int64_t kT0 = 1'000'000'000;  // stream start, ns
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+std::int64_t ns_of(double t_s) { return kT0 + static_cast<std::int64_t>(std::llround(t_s * 1e9)); }
+
+// Head yaw (positive = turned right) as a head-to-world rotation about +Y.
+glm::dquat head_yaw(double yaw_deg) { return glm::angleAxis(-yaw_deg * kRadPerDeg, glm::dvec3(0, 1, 0)); }
+
+// Ground truth at time t (s from the stream start): eye-in-world yaw/pitch, head yaw.
+struct Truth {
+  double yaw_deg = 0.0, pitch_deg = 0.0, head_yaw_deg = 0.0;
+  bool valid = true;
+  glm::dvec3 world() const { return direction_from_yaw_pitch_deg(yaw_deg, pitch_deg); }
+};
+using TruthFn = std::function<Truth(double)>;
+
+struct Frame {
+  double t_s = 0.0;         // display time, s from the stream start
+  double sample_t_s = 0.0;  // time of the sample pushed this frame
+  ConditionedGaze out;
+  Truth truth;  // at the display time
+};
+
+struct Sim {
+  double rate_hz = 120.0;
+  double noise_deg = 0.5;   // total RMS
+  double frame_hz = 0.0;    // 0: one at() per sample; else frames that push the newest sample
+  double latency_s = 0.015; // display time - frame (or sample) time
+  unsigned seed = 1;
+};
+
+// Samples the truth at the tracker rate with noise in the head frame (eye-in-head yaw is the
+// world yaw minus the head yaw: the head only yaws) and runs the conditioner.
+std::vector<Frame> simulate(GazeConditioner& c, const TruthFn& truth, double seconds, const Sim& r) {
+  std::mt19937_64 rng(r.seed);
+  std::normal_distribution<double> noise(0.0, r.noise_deg / std::sqrt(2.0));
+  std::vector<GazeSample> samples;
+  std::vector<glm::dquat> heads;
+  const auto n = static_cast<std::size_t>(std::floor(seconds * r.rate_hz));
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = static_cast<double>(i) / r.rate_hz;
+    const Truth tr = truth(t);
+    GazeSample s;
+    s.t_ns = ns_of(t);
+    const double nx = noise(rng), ny = noise(rng);
+    s.direction = direction_from_yaw_pitch_deg(tr.yaw_deg - tr.head_yaw_deg + nx, tr.pitch_deg + ny);
+    s.valid = tr.valid;
+    s.confidence = tr.valid ? 1.0f : 0.0f;
+    samples.push_back(s);
+    heads.push_back(head_yaw(tr.head_yaw_deg));
+  }
+  std::vector<Frame> frames;
+  auto frame = [&](double t_display, std::size_t i) {
+    Frame f;
+    f.t_s = t_display;
+    f.sample_t_s = static_cast<double>(samples[i].t_ns - kT0) * 1e-9;
+    f.truth = truth(t_display);
+    f.out = c.at(ns_of(t_display), head_yaw(f.truth.head_yaw_deg));
+    frames.push_back(f);
+  };
+  if (r.frame_hz <= 0.0) {
+    for (std::size_t i = 0; i < n; ++i) {
+      c.push(samples[i], heads[i]);
+      frame(static_cast<double>(i) / r.rate_hz + r.latency_s, i);
+    }
+  } else {
+    std::size_t i = 0;
+    for (double tf = 0.0; tf < seconds; tf += 1.0 / r.frame_hz) {
+      while (i + 1 < n && static_cast<double>(i + 1) / r.rate_hz <= tf) ++i;  // newest sample
+      c.push(samples[i], heads[i]);
+      frame(tf + r.latency_s, i);
+    }
+  }
+  return frames;
+}
+
+double err_deg(const Frame& f) { return angle_between_rad(f.out.direction_world, f.truth.world()) * kDegPerRad; }
+double speed_deg_s(const ConditionedGaze& g) { return glm::length(g.angular_velocity_world_rad_s) * kDegPerRad; }
+
+bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+void expect_sane(const ConditionedGaze& g, const ConditionerConfig& cfg) {
+  ASSERT_TRUE(finite(g.direction_world));
+  ASSERT_TRUE(finite(g.direction_head));
+  ASSERT_TRUE(finite(g.angular_velocity_world_rad_s));
+  ASSERT_NEAR(glm::length(g.direction_world), 1.0, 1e-9);
+  ASSERT_NEAR(glm::length(g.direction_head), 1.0, 1e-9);
+  ASSERT_TRUE(std::isfinite(g.uncertainty_deg));
+  ASSERT_GE(g.uncertainty_deg, cfg.accuracy_deg);
+  ASSERT_LE(g.uncertainty_deg, cfg.max_uncertainty_deg);
+  if (g.motion != EyeMotion::pursuit) {
+    ASSERT_EQ(g.angular_velocity_world_rad_s, glm::dvec3(0.0));
+  }
+  if (!g.valid) {
+    ASSERT_FALSE(g.suppressed);
+  }
+}
+
+TEST(GazeConditioner, NoiseAtRestIsAFixationWithZeroVelocityAndSmoothedDirection) {
+  for (unsigned seed = 1; seed <= 5; ++seed) {
+    GazeConditioner c;
+    const TruthFn still = [](double) { return Truth{3.0, -2.0, 0.0}; };
+    const auto frames = simulate(c, still, 10.0, Sim{.seed = seed});
+    int counted = 0, fixation = 0, suppressed = 0;
+    double max_speed = 0.0, sum_sq = 0.0, raw_sum_sq = 0.0;
+    for (std::size_t i = 0; i < frames.size(); ++i) {
+      const Frame& f = frames[i];
+      expect_sane(f.out, c.config());
+      if (f.t_s < 0.5) continue;  // the mean settles
+      ++counted;
+      fixation += f.out.motion == EyeMotion::fixation;
+      suppressed += f.out.suppressed;
+      max_speed = std::max(max_speed, speed_deg_s(f.out));
+      sum_sq += err_deg(f) * err_deg(f);
+    }
+    // What the plugin did before: two-sample differences of the raw samples.
+    GazeConditioner unused;
+    std::mt19937_64 rng(seed);
+    std::normal_distribution<double> n(0.0, 0.5 / std::sqrt(2.0));
+    glm::dvec3 prev = direction_from_yaw_pitch_deg(3.0 + n(rng), -2.0 + n(rng));
+    for (int i = 0; i < 1000; ++i) {
+      const glm::dvec3 d = direction_from_yaw_pitch_deg(3.0 + n(rng), -2.0 + n(rng));
+      const double v = angle_between_rad(prev, d) * kDegPerRad * 120.0;
+      raw_sum_sq += v * v;
+      prev = d;
+    }
+    const double rms = std::sqrt(sum_sq / counted);
+    EXPECT_EQ(fixation, counted) << "seed " << seed;
+    EXPECT_EQ(suppressed, 0) << "seed " << seed;
+    EXPECT_LT(max_speed, 1.0) << "seed " << seed;
+    EXPECT_LT(rms, 0.1) << "seed " << seed;  // input noise 0.5 deg RMS
+    EXPECT_GT(std::sqrt(raw_sum_sq / 1000), 60.0) << "the raw difference really is noisy";
+  }
+}
+
+// 0.5 s fixation at yaw 0, a main-sequence 10 deg saccade (43 ms, raised-cosine velocity,
+// peak ~360 deg/s), 0.6 s fixation at yaw 10.
+constexpr double kOnset = 0.5;
+Truth saccade_truth(double t) {
+  const double dur = main_sequence::duration_s(10.0);
+  const double f = std::clamp((t - kOnset) / dur, 0.0, 1.0);
+  return Truth{10.0 * 0.5 * (1.0 - std::cos(std::numbers::pi * f)), 0.0, 0.0};
+}
+
+void check_saccade(const std::vector<Frame>& frames, const ConditionerConfig& cfg, const std::string& what) {
+  const double dur = main_sequence::duration_s(10.0);
+  const double end = kOnset + dur;
+  const double post = static_cast<double>(cfg.post_saccade_suppression_ns) * 1e-9;
+  double first = -1.0, last = -1.0;
+  for (const Frame& f : frames) {
+    expect_sane(f.out, cfg);
+    if (f.out.motion != EyeMotion::saccade) continue;
+    if (first < 0) first = f.sample_t_s;
+    last = f.sample_t_s;
+    EXPECT_EQ(f.out.angular_velocity_world_rad_s, glm::dvec3(0.0)) << what;
+    EXPECT_TRUE(f.out.suppressed) << what;
+    // Held: the estimate from before the saccade (within its first part).
+    EXPECT_LT(std::fabs(std::atan2(f.out.direction_world.x, -f.out.direction_world.z) * kDegPerRad), 3.0) << what;
+  }
+  ASSERT_GE(first, 0.0) << what << ": no saccade found";
+  EXPECT_GE(first, kOnset) << what;
+  EXPECT_LE(first, end) << what << ": detected during the saccade";
+  EXPECT_LE(last, end + 0.05) << what;  // the fit window's lag after the end
+  for (const Frame& f : frames) {
+    const double sample_t = f.sample_t_s;
+    // Suppressed from detection through the end of the saccade and the post window.
+    if (sample_t >= first && f.t_s <= end + post) {
+      EXPECT_TRUE(f.out.suppressed) << what << " t " << f.t_s;
+    }
+    if (f.t_s > end + 0.15 || sample_t < kOnset) {
+      EXPECT_FALSE(f.out.suppressed) << what << " t " << f.t_s;
+    }
+    if (f.t_s > end + 0.3) {
+      EXPECT_EQ(f.out.motion, EyeMotion::fixation) << what << " t " << f.t_s;
+      EXPECT_LT(err_deg(f), 0.3) << what << " t " << f.t_s;
+    }
+  }
+}
+
+TEST(GazeConditioner, MainSequenceSaccadeIsSuppressedDuringAndAfter) {
+  for (unsigned seed = 1; seed <= 5; ++seed) {
+    GazeConditioner c;
+    const auto frames = simulate(c, saccade_truth, 1.1, Sim{.seed = seed});
+    check_saccade(frames, c.config(), "120 Hz seed " + std::to_string(seed));
+  }
+}
+
+TEST(GazeConditioner, PursuitAt10DegPerSecondHasItsVelocity) {
+  for (unsigned seed = 1; seed <= 5; ++seed) {
+    GazeConditioner c;
+    const TruthFn ramp = [](double t) { return Truth{t < 0.3 ? -10.0 : -10.0 + 10.0 * (t - 0.3), 1.0, 0.0}; };
+    const auto frames = simulate(c, ramp, 2.5, Sim{.seed = seed});
+    int counted = 0, pursuit = 0, within = 0;
+    double sum_speed = 0.0, sum_sq = 0.0;
+    for (const Frame& f : frames) {
+      expect_sane(f.out, c.config());
+      if (f.sample_t_s < 0.3 + 0.4) continue;  // the dispersion window fills
+      ++counted;
+      sum_sq += err_deg(f) * err_deg(f);
+      if (f.out.motion != EyeMotion::pursuit) continue;
+      ++pursuit;
+      const double v = speed_deg_s(f.out);
+      sum_speed += v;
+      within += std::fabs(v - 10.0) <= 1.5;
+      // Rightward yaw: omega = d x d' points down (-Y); within the noise of its vertical part.
+      EXPECT_GT(-glm::normalize(f.out.angular_velocity_world_rad_s).y, 0.95);
+    }
+    ASSERT_GT(pursuit, 0);
+    EXPECT_GE(pursuit, counted * 98 / 100) << "seed " << seed;
+    EXPECT_GE(within, pursuit * 95 / 100) << "seed " << seed << ": within 15% of 10 deg/s";
+    EXPECT_NEAR(sum_speed / pursuit, 10.0, 0.5) << "seed " << seed;
+    EXPECT_LT(std::sqrt(sum_sq / counted), 0.3) << "seed " << seed << ": predicted to the display time";
+  }
+}
+
+TEST(GazeConditioner, FastPursuitIsNotASaccade) {
+  // 40 deg/s plus the fit's noise crosses 70 deg/s; the saccade test is relative to the
+  // pursuit in progress (a saccade on a moving background).
+  for (unsigned seed = 1; seed <= 5; ++seed) {
+    GazeConditioner c;
+    const auto frames = simulate(c, [](double t) { return Truth{-30.0 + 40.0 * t, 0.0, 0.0}; }, 1.5, Sim{.seed = seed});
+    int counted = 0, pursuit = 0;
+    for (const Frame& f : frames) {
+      expect_sane(f.out, c.config());
+      if (f.sample_t_s < 0.3) continue;
+      ++counted;
+      EXPECT_NE(f.out.motion, EyeMotion::saccade) << "seed " << seed << " t " << f.t_s;
+      pursuit += f.out.motion == EyeMotion::pursuit;
+    }
+    EXPECT_EQ(pursuit, counted) << "seed " << seed;
+  }
+}
+
+TEST(GazeConditioner, GapRestartsTheFixation) {
+  GazeConditioner c;
+  const glm::dquat id(1, 0, 0, 0);
+  GazeSample s;
+  s.valid = true;
+  std::int64_t t = kT0;
+  for (int i = 0; i < 60; ++i, t += 8 * kMs) {
+    s.t_ns = t;
+    s.direction = direction_from_yaw_pitch_deg(0.0, 0.0);
+    c.push(s, id);
+  }
+  // No samples for 100 ms (> max_gap); the eye is elsewhere when they come back.
+  t += 100 * kMs;
+  const glm::dvec3 there = direction_from_yaw_pitch_deg(8.0, 0.0);
+  s.t_ns = t;
+  s.direction = there;
+  c.push(s, id);
+  const ConditionedGaze g = c.at(t + 10 * kMs, id);
+  EXPECT_EQ(g.motion, EyeMotion::fixation);
+  EXPECT_LT(angle_between_rad(g.direction_world, there), 1e-9) << "not blended with the old fixation";
+  EXPECT_FALSE(g.suppressed);
+}
+
+TEST(GazeConditioner, VorFixationDuringA100DegPerSecondHeadTurnIsAFixation) {
+  for (unsigned seed = 1; seed <= 5; ++seed) {
+    GazeConditioner c;
+    // The head turns from -20 to +20 deg at 100 deg/s; the eye counter-rotates in the head
+    // (100 deg/s there) so that gaze stays on a world point at yaw 5.
+    const TruthFn vor = [](double t) {
+      return Truth{5.0, 0.0, std::clamp(-20.0 + 100.0 * (t - 0.4), -20.0, 20.0)};
+    };
+    const auto frames = simulate(c, vor, 1.2, Sim{.seed = seed});
+    int counted = 0, fixation = 0;
+    double sum_sq = 0.0;
+    for (const Frame& f : frames) {
+      expect_sane(f.out, c.config());
+      if (f.t_s < 0.3) continue;
+      ++counted;
+      fixation += f.out.motion == EyeMotion::fixation;
+      EXPECT_FALSE(f.out.suppressed) << "t " << f.t_s;
+      EXPECT_EQ(f.out.angular_velocity_world_rad_s, glm::dvec3(0.0)) << "t " << f.t_s;
+      sum_sq += err_deg(f) * err_deg(f);
+      // The head direction is the world one seen from the head at the display time.
+      const glm::dvec3 want_head = glm::conjugate(head_yaw(f.truth.head_yaw_deg)) * f.out.direction_world;
+      EXPECT_LT(angle_between_rad(f.out.direction_head, want_head), 1e-9);
+    }
+    EXPECT_EQ(fixation, counted) << "seed " << seed;
+    EXPECT_LT(std::sqrt(sum_sq / counted), 0.1) << "seed " << seed;
+  }
+}
+
+TEST(GazeConditioner, BlinkIsLossThenInvalidAfterTheHold) {
+  GazeConditioner c;
+  // Fixation, a 150 ms blink, fixation, then the eye lost for 0.6 s, then back.
+  const TruthFn blink = [](double t) {
+    Truth tr{2.0, 4.0, 0.0};
+    tr.valid = !(t >= 0.5 && t < 0.65) && !(t >= 1.2 && t < 1.8);
+    return tr;
+  };
+  const auto frames = simulate(c, blink, 2.3, Sim{});
+  const double hold = static_cast<double>(c.config().loss_hold_max_ns) * 1e-9;
+  for (const Frame& f : frames) {
+    expect_sane(f.out, c.config());
+    const double t = f.sample_t_s;
+    const bool in_blink = t >= 0.5 && t < 0.65;
+    const bool in_loss = t >= 1.2 && t < 1.8;
+    if (in_blink) {
+      EXPECT_EQ(f.out.motion, EyeMotion::loss) << t;
+      EXPECT_TRUE(f.out.valid) << t;
+      EXPECT_TRUE(f.out.suppressed) << t;
+      EXPECT_LT(err_deg(f), 0.3) << t << ": the estimate is held";
+      EXPECT_LT(f.out.sample_t_ns, ns_of(0.5));
+    } else if (in_loss) {
+      const double since_valid = f.t_s - static_cast<double>(f.out.sample_t_ns - kT0) * 1e-9;
+      EXPECT_EQ(f.out.motion, EyeMotion::loss) << t;
+      EXPECT_EQ(f.out.valid, since_valid <= hold) << t;
+      if (!f.out.valid) {
+        EXPECT_EQ(f.out.uncertainty_deg, c.config().max_uncertainty_deg);
+      }
+    } else if (t > 0.3) {
+      EXPECT_TRUE(f.out.valid) << t;
+      EXPECT_EQ(f.out.motion, EyeMotion::fixation) << t;
+      EXPECT_FALSE(f.out.suppressed) << t;
+    }
+  }
+  EXPECT_EQ(frames.back().out.bad_samples, 0);
+}
+
+TEST(GazeConditioner, UncertaintyGrowsWithSampleAgeAndSpeed) {
+  GazeConditioner fix;
+  const TruthFn still = [](double) { return Truth{}; };
+  simulate(fix, still, 0.5, Sim{});
+  const std::int64_t last = ns_of(static_cast<double>(59) / 120.0);
+  const ConditionerConfig& cfg = fix.config();
+  double prev = 0.0;
+  for (int k = 0; k <= 100; ++k) {
+    const ConditionedGaze g = fix.at(last + k * 5 * kMs, head_yaw(0.0));
+    expect_sane(g, cfg);
+    ASSERT_EQ(g.sample_t_ns, last);
+    if (k == 0) {
+      EXPECT_NEAR(g.uncertainty_deg, cfg.accuracy_deg, 1e-12);
+    }
+    if (g.valid && k > 0) {
+      EXPECT_GT(g.uncertainty_deg, prev) << k;
+    }
+    EXPECT_GE(g.uncertainty_deg, prev) << k;
+    prev = g.uncertainty_deg;
+    if (k == 4) {
+      EXPECT_NEAR(g.uncertainty_deg, std::hypot(cfg.accuracy_deg, cfg.age_growth_deg_s * 0.020), 1e-9);
+    }
+  }
+  EXPECT_EQ(prev, cfg.max_uncertainty_deg);
+  // The display time before the sample: no negative age.
+  EXPECT_NEAR(fix.at(last - 30 * kMs, head_yaw(0.0)).uncertainty_deg, cfg.accuracy_deg, 1e-12);
+
+  // At the same age, pursuit (velocity error) and saccade (held estimate) are less certain.
+  GazeConditioner pur;
+  simulate(pur, [](double t) { return Truth{20.0 * t, 0.0, 0.0}; }, 1.0, Sim{});
+  const std::int64_t last_p = ns_of(static_cast<double>(119) / 120.0);
+  const ConditionedGaze gp = pur.at(last_p + 20 * kMs, head_yaw(0.0));
+  ASSERT_EQ(gp.motion, EyeMotion::pursuit);
+  GazeConditioner sac;
+  simulate(sac, saccade_truth, kOnset + 0.04, Sim{});
+  const std::int64_t last_s = ns_of(std::floor((kOnset + 0.04) * 120.0 - 1e-9) / 120.0);
+  const ConditionedGaze gs = sac.at(last_s + 20 * kMs, head_yaw(0.0));
+  ASSERT_EQ(gs.motion, EyeMotion::saccade);
+  const double u_fix = fix.at(last + 20 * kMs, head_yaw(0.0)).uncertainty_deg;
+  EXPECT_GT(gp.uncertainty_deg, u_fix);
+  EXPECT_GT(gs.uncertainty_deg, gp.uncertainty_deg);
+}
+
+TEST(GazeConditioner, NanZeroBackwardsAndFutureSamplesAreRefusedAndCounted) {
+  GazeConditioner c;
+  const ConditionerConfig& cfg = c.config();
+  const glm::dquat id(1, 0, 0, 0);
+  std::int64_t t = kT0;
+  auto sample = [&](glm::dvec3 d, bool valid = true) {
+    GazeSample s;
+    s.t_ns = t;
+    s.direction = d;
+    s.valid = valid;
+    return s;
+  };
+  for (int i = 0; i < 60; ++i, t += 8 * kMs) c.push(sample({0, 0, -1}), id);
+  expect_sane(c.at(t, id), cfg);
+  std::int64_t want_bad = 0;
+  auto bad = [&](const GazeSample& s, const glm::dquat& q) {
+    c.push(s, q);
+    ++want_bad;
+    const ConditionedGaze g = c.at(t + 10 * kMs, id);
+    expect_sane(g, cfg);
+    EXPECT_EQ(g.bad_samples, want_bad);
+    EXPECT_TRUE(g.valid);
+    t += 8 * kMs;
+  };
+  bad(sample({kNaN, 0, -1}), id);
+  bad(sample({0, 0, 0}), id);
+  bad(sample({kInf, 0, -1}), id);
+  bad(sample({1e-300, 0, 0}), id);
+  bad(sample({0, 0, -1}), glm::dquat(kNaN, 0, 0, 0));
+  bad(sample({0, 0, -1}), glm::dquat(0, 0, 0, 0));
+  {
+    GazeSample back = sample({0, 0, -1});
+    back.t_ns = t - 100 * kMs;  // before the newest accepted sample
+    bad(back, id);
+  }
+  {
+    GazeSample future = sample({0, 0, -1});
+    future.t_ns = t + 10'000 * kMs;  // a corrupt clock
+    bad(future, id);
+  }
+  // Repeats are not bad, and neither are invalid samples (blinks), whatever their direction.
+  c.push(sample({0, 0, -1}), id);
+  c.push(sample({0, 0, -1}), id);
+  c.push(sample({0, 0, -1}), glm::dquat(kNaN, 0, 0, 0));
+  t += 8 * kMs;
+  c.push(sample({kNaN, kNaN, kNaN}, false), id);
+  const ConditionedGaze g = c.at(t, glm::dquat(kNaN, kNaN, 0, 0));  // head falls back too
+  expect_sane(g, cfg);
+  EXPECT_EQ(g.bad_samples, want_bad);
+  EXPECT_EQ(g.motion, EyeMotion::loss);
+  // The stream still works after all that.
+  for (int i = 0; i < 30; ++i) {
+    t += 8 * kMs;
+    c.push(sample({0, 0.1, -1}), id);
+  }
+  const ConditionedGaze after = c.at(t + 10 * kMs, id);
+  EXPECT_TRUE(after.valid);
+  EXPECT_EQ(after.motion, EyeMotion::fixation);
+  EXPECT_LT(angle_between_rad(after.direction_world, glm::normalize(glm::dvec3(0, 0.1, -1))), 1e-6);
+}
+
+TEST(GazeConditioner, FrozenSourceAgesIntoInvalid) {
+  GazeConditioner c;
+  const glm::dquat id(1, 0, 0, 0);
+  GazeSample s;
+  s.valid = true;
+  s.direction = {0, 0, -1};
+  for (int i = 0; i < 60; ++i) {
+    s.t_ns = kT0 + i * 8 * kMs;
+    c.push(s, id);
+  }
+  // The same sample every frame (90 Hz) for 1 s: repeats, ignored; the age grows.
+  double prev = 0.0;
+  bool went_invalid = false;
+  for (int f = 1; f <= 90; ++f) {
+    c.push(s, id);
+    const ConditionedGaze g = c.at(s.t_ns + f * 11 * kMs, id);
+    expect_sane(g, c.config());
+    EXPECT_GE(g.uncertainty_deg, prev);
+    EXPECT_EQ(g.bad_samples, 0);
+    EXPECT_EQ(g.sample_t_ns, s.t_ns);
+    prev = g.uncertainty_deg;
+    if (!g.valid) went_invalid = true;
+    if (went_invalid) {
+      EXPECT_FALSE(g.valid);
+    }
+    EXPECT_EQ(g.valid, f * 11 * kMs <= c.config().loss_hold_max_ns) << f;
+  }
+  EXPECT_TRUE(went_invalid);
+}
+
+TEST(GazeConditioner, GarbageInNeverGivesNaNOut) {
+  GazeConditioner c;
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::uniform_int_distribution<int> pick(0, 15);
+  const double specials[] = {kNaN, kInf, -kInf, 0.0, 1e300, -1e-300, 1e-12};
+  std::int64_t t = kT0;
+  for (int i = 0; i < 20000; ++i) {
+    GazeSample s;
+    const int p = pick(rng);
+    t += p == 0 ? -50 * kMs : p == 1 ? 0 : p == 2 ? 200 * kMs : static_cast<std::int64_t>(1 + 10 * kMs * (u(rng) + 1));
+    s.t_ns = p == 3 ? std::numeric_limits<std::int64_t>::max() : p == 4 ? std::numeric_limits<std::int64_t>::min() : t;
+    s.direction = {u(rng), u(rng), -1.0 + 0.3 * u(rng)};
+    if (p == 5) s.direction[static_cast<int>(rng() % 3)] = specials[rng() % 7];
+    s.valid = p != 6;
+    glm::dquat q(1.0 + 0.2 * u(rng), 0.3 * u(rng), 0.3 * u(rng), 0.3 * u(rng));
+    if (p == 7) q.w = specials[rng() % 7];
+    c.push(s, q);
+    const std::int64_t display = p == 8 ? std::numeric_limits<std::int64_t>::min()
+                                 : p == 9 ? std::numeric_limits<std::int64_t>::max()
+                                          : t + static_cast<std::int64_t>(20 * kMs * u(rng));
+    const ConditionedGaze g = c.at(display, p == 10 ? glm::dquat(kNaN, 0, 0, 0) : q);
+    expect_sane(g, c.config());
+    if (::testing::Test::HasFatalFailure()) return;
+    if (i % 5000 == 4999) c.reset();
+  }
+}
+
+TEST(GazeConditioner, WorksFrom30To1000HzWithOneSamplePerFrame) {
+  for (const double rate : {30.0, 60.0, 90.0, 250.0, 1000.0}) {
+    const std::string what = std::to_string(static_cast<int>(rate)) + " Hz at 90 Hz frames";
+    {
+      GazeConditioner c;
+      const auto frames = simulate(c, [](double) { return Truth{-4.0, 2.0, 0.0}; }, 5.0,
+                                   Sim{.rate_hz = rate, .frame_hz = 90.0, .seed = 3});
+      int counted = 0, fixation = 0;
+      double sum_sq = 0.0;
+      for (const Frame& f : frames) {
+        expect_sane(f.out, c.config());
+        if (f.t_s < 0.5) continue;
+        ++counted;
+        fixation += f.out.motion == EyeMotion::fixation;
+        sum_sq += err_deg(f) * err_deg(f);
+      }
+      EXPECT_EQ(fixation, counted) << what;
+      EXPECT_LT(std::sqrt(sum_sq / counted), 0.15) << what;
+    }
+    {
+      GazeConditioner c;
+      const auto frames = simulate(c, saccade_truth, 1.1, Sim{.rate_hz = rate, .frame_hz = 90.0, .seed = 3});
+      int saccade = 0;
+      for (const Frame& f : frames) {
+        expect_sane(f.out, c.config());
+        saccade += f.out.motion == EyeMotion::saccade;
+      }
+      EXPECT_GT(saccade, 0) << what;
+      EXPECT_EQ(frames.back().out.motion, EyeMotion::fixation) << what;
+      EXPECT_LT(err_deg(frames.back()), 0.3) << what;
+    }
+  }
+}
+
+TEST(GazeConditioner, SaccadeAt250And1000Hz) {
+  for (const double rate : {250.0, 1000.0}) {
+    GazeConditioner c;
+    const auto frames = simulate(c, saccade_truth, 1.1, Sim{.rate_hz = rate, .seed = 2});
+    check_saccade(frames, c.config(), std::to_string(static_cast<int>(rate)) + " Hz");
+  }
+}
+
+TEST(GazeConditioner, ResetForgetsTheHistory) {
+  GazeConditioner c;
+  simulate(c, [](double) { return Truth{}; }, 0.5, Sim{});
+  EXPECT_TRUE(c.at(ns_of(0.5), head_yaw(0.0)).valid);
+  c.reset();
+  const ConditionedGaze g = c.at(ns_of(0.5), head_yaw(30.0));
+  EXPECT_FALSE(g.valid);
+  EXPECT_EQ(g.motion, EyeMotion::loss);
+  EXPECT_EQ(g.direction_head, glm::dvec3(0, 0, -1));  // straight ahead of the head
+  EXPECT_LT(angle_between_rad(g.direction_world, head_yaw(30.0) * glm::dvec3(0, 0, -1)), 1e-12);
+  expect_sane(g, c.config());
+  // A new source's clock may start anywhere, even before the old one's.
+  GazeSample s;
+  s.valid = true;
+  s.t_ns = kT0 - 5'000 * kMs;
+  c.push(s, head_yaw(0.0));
+  EXPECT_TRUE(c.at(s.t_ns + 10 * kMs, head_yaw(0.0)).valid);
+}
+
+TEST(GazeConditioner, PushAndAtDoNotAllocate) {
+  GazeConditioner c;
+  std::vector<GazeSample> samples(4000);
+  std::mt19937_64 rng(5);
+  std::normal_distribution<double> n(0.0, 0.35);
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    const double t = static_cast<double>(i) / 250.0;
+    const double yaw = i < 2000 ? 0.0 : i < 2010 ? static_cast<double>(i - 2000) : 10.0 + 10.0 * (t - 8.04);
+    samples[i].t_ns = ns_of(t);
+    samples[i].direction = direction_from_yaw_pitch_deg(yaw + n(rng), n(rng));
+    samples[i].valid = i % 700 > 30;
+  }
+  const long before = g_allocations.load();
+  double sink = 0.0;
+  for (const GazeSample& s : samples) {
+    c.push(s, glm::dquat(1, 0, 0, 0));
+    sink += c.at(s.t_ns + 15 * kMs, glm::dquat(1, 0, 0, 0)).uncertainty_deg;
+  }
+  EXPECT_EQ(g_allocations.load() - before, 0);
+  EXPECT_TRUE(std::isfinite(sink));
+  EXPECT_LE(sizeof(GazeConditioner), 16u * 1024u);  // fixed capacity, inline
+}
+
+TEST(GazeConditioner, MotionNames) {
+  EXPECT_STREQ(to_string(EyeMotion::fixation), "fixation");
+  EXPECT_STREQ(to_string(EyeMotion::saccade), "saccade");
+  EXPECT_STREQ(to_string(EyeMotion::pursuit), "pursuit");
+  EXPECT_STREQ(to_string(EyeMotion::loss), "loss");
+}
+
+}  // namespace
+}  // namespace gazelod::gaze

@@ -164,6 +164,7 @@ class GazeConditioner {
   // quaternion falls back to the head at the newest sample). No allocation.
   ConditionedGaze at(std::int64_t display_t_ns, const glm::dquat& head_at_display) noexcept;
   void reset() noexcept;  // source change: forget history (bad_samples is kept)
+  std::int64_t bad_samples() const noexcept { return bad_samples_; }  // refused so far
 
   const ConditionerConfig& config() const { return config_; }
 

@@ -53,6 +53,8 @@ struct FrameDiagnostics {
   // is suppressed now (saccade, blink, shortly after a saccade), which releases coarsening.
   gaze::EyeMotion eye_motion = gaze::EyeMotion::loss;
   bool gaze_suppressed = false;
+  // Samples the conditioning refused so far (NaN, zero length, backwards in time), all sources.
+  std::int64_t gaze_bad_samples = 0;
   // The gaze's angular uncertainty (deg: the source's accuracy, grown with the sample's age
   // and the eye's speed) and the foveal cone it widens (Reddy 1995): apex at the eye, along
   // the gaze, half-angle the foveal eccentricity plus the uncertainty.

@@ -168,6 +168,7 @@ class LodPluginImpl final : public LodPlugin {
     frame_.gaze_source = used;
     frame_.gaze_valid = used != GazeSourceKind::head_fixed;
     diag_.gaze_suppressed = gaze_suppressed;
+    diag_.gaze_bad_samples = openxr_conditioner_.bad_samples() + external_conditioner_.bad_samples();
     diag_.gaze_direction_world = v.gaze_direction;
     diag_.gaze_direction_head = gaze_head;
     diag_.eye_position_world = v.eye_position_m;

@@ -143,10 +143,12 @@ void print_summary(const RunInfo& info, const RunSummary& s, std::ostream& out) 
                 100 * s.shares.size, 100 * s.shares.eccentricity, 100 * s.shares.velocity,
                 100 * s.shares.interaction);
   out << line;
-  std::snprintf(line, sizeof line, "gaze            valid in %.1f%% of frames, %lld saccades\n",
+  std::snprintf(line, sizeof line, "gaze            valid in %.1f%% of frames, %lld saccades",
                 100.0 * safe_ratio(static_cast<double>(s.gaze_valid_frames), static_cast<double>(s.frames)),
                 static_cast<long long>(s.saccades));
   out << line;
+  if (s.gaze_bad_samples > 0) out << ", " << s.gaze_bad_samples << " bad samples refused (NaN, zero or backwards)";
+  out << "\n";
   if (info.budget_ms > 0.0) {
     std::snprintf(line, sizeof line, "budget          %.3f ms, exceeded in %lld frames (%.1f%%)\n",
                   info.budget_ms, static_cast<long long>(s.frames_over_budget),
@@ -192,6 +194,7 @@ void write_report_files(const std::filesystem::path& dir, const RunInfo& info,
   for (std::size_t k = 0; k < s.in_view.size(); ++k) j["in_view"][view_names[k]] = set_json(s.in_view[k]);
   j["gaze_valid_frames"] = s.gaze_valid_frames;
   j["saccades"] = s.saccades;
+  j["gaze_bad_samples"] = s.gaze_bad_samples;
   if (info.budget_ms > 0.0) {
     j["budget_ms"] = info.budget_ms;
     j["frames_over_budget"] = s.frames_over_budget;

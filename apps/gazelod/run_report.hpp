@@ -96,6 +96,9 @@ struct RunSummary {
   std::int64_t frames_over_budget = 0;
   std::int64_t gaze_valid_frames = 0;
   std::int64_t saccades = 0;
+  // Gaze samples the plugin's conditioning refused (NaN, zero, backwards in time): never in a
+  // decision, but said.
+  std::int64_t gaze_bad_samples = 0;
   // Criteria sets ("none" = every object at level 0; "drawn" = the run's own --criteria).
   SetTotals set_none, set_size, set_size_eccentricity, set_size_velocity, set_drawn, set_lod_map;
   // Over the objects in view only (FrameRecord::in_view_*), same order; average_lod per

@@ -97,7 +97,9 @@ int run_session(const RunOptions& opt, Io io) {
   }
 
   PluginConfig config;
-  config.use_openxr_eye_gaze = opt.eye_gaze && app->eye_gaze_enabled();
+  // --trace: the trace is the gaze source for the whole run (from the first frame on; the
+  // runtime's own gaze is not used), and the source-change lines say when it ends.
+  config.use_openxr_eye_gaze = opt.eye_gaze && app->eye_gaze_enabled() && opt.trace_path.empty();
   config.criteria = opt.criteria;
   config.compute_breakdown = true;
   config.budget_ms = opt.budget_ms;
@@ -166,7 +168,8 @@ int run_session(const RunOptions& opt, Io io) {
     app->begin_frame();
     if (time_base == 0) {
       time_base = app->scenario_time_base();
-      ground_truth = opt.runtime == "sim" && time_base != 0;
+      // A replayed trace is not the simulator's eye: no ground truth to hold it against.
+      ground_truth = opt.runtime == "sim" && time_base != 0 && opt.trace_path.empty();
       if (ground_truth && opt.audit) oracle.emplace(scenario, opt.criteria);
       if (time_base == 0) time_base = fs.predictedDisplayTime - fs.predictedDisplayPeriod;
     }
@@ -268,9 +271,12 @@ int run_session(const RunOptions& opt, Io io) {
   info.criteria = criteria_text(opt.criteria);
   info.budget_ms = opt.budget_ms;
   RunSummary summary = summarize(frames, opt.budget_ms);
+  summary.gaze_bad_samples = plugin->diagnostics().gaze_bad_samples;
   if (!oracle) {
     summary.audit = AuditSummary{};
-    summary.audit.reason = !ground_truth ? "no ground truth: not the simulated runtime" : "switched off with --no-audit";
+    summary.audit.reason = !opt.trace_path.empty() ? "no ground truth: the gaze is a replayed trace"
+                           : !ground_truth          ? "no ground truth: not the simulated runtime"
+                                                    : "switched off with --no-audit";
   }
   print_summary(info, summary, io.out);
   write_report_files(opt.out_dir, info, summary, frames);

@@ -253,6 +253,39 @@ TEST(RunAudit, DecisionsFileFormatAndTheAuditNeverChangesThem) {
     EXPECT_EQ(hist[l].get<std::uint64_t>(), levels[static_cast<int>(l)]) << "level " << l;
 }
 
+// The product's promise, as deterministic counts over whole 20 s runs (gaze conditioning and
+// the switch policy on, their defaults): at most 0.5 % of in-view object-frames outside
+// saccadic suppression drawn coarser than the true gaze allows, at most 1.35 times the
+// triangles the true gaze needs, at most one LOD switch per object-second outside
+// suppression, and the pursued object never coarser than its oracle level while pursued.
+// The default scenario (90 Hz, 12 ms, 0.3 deg tracker), its variant with a 120 Hz, 50 ms,
+// 0.5 deg tracker, and a still head with that tracker.
+TEST(RunAudit, TargetsHoldOnTheDefaultAndItsLateNoisyAndStillHeadVariants) {
+  use_simulated_runtime("");
+  const std::string scenarios = std::string(GAZELOD_SOURCE_DIR) + "/sim/scenarios/";
+  for (const std::string scenario : {std::string(), scenarios + "default-120hz-50ms.json",
+                                     scenarios + "still-head-120hz-50ms.json"}) {
+    SCOPED_TRACE(scenario.empty() ? "the default scenario" : scenario);
+    const auto dir = scratch_dir() / (scenario.empty() ? "default" : std::filesystem::path(scenario).stem());
+    std::vector<std::string> args{"run", "--no-render", "--quiet", "--out", dir.string()};
+    if (!scenario.empty()) args.insert(args.end(), {"--scenario", scenario});
+    const CliResult r = run_cli(args);
+    ASSERT_EQ(r.rc, 0) << r.err;
+    const auto audit = nlohmann::json::parse(read_text(dir / "summary.json")).at("audit");
+    ASSERT_TRUE(audit.at("available").get<bool>());
+    EXPECT_EQ(audit.at("frames").get<int>(), 1800);
+    const auto& visible = audit.at("visible_degradations");
+    EXPECT_GT(visible.at("object_frames").get<std::int64_t>(), 100000);
+    EXPECT_LE(visible.at("share").get<double>(), 0.005);
+    const double ratio = audit.at("triangles_in_view").at("drawn_over_oracle").get<double>();
+    EXPECT_LE(ratio, 1.35);
+    EXPECT_GE(ratio, 1.0) << "drawing less than the true gaze needs would show as degradations";
+    EXPECT_LE(audit.at("switches").at("outside_suppression").at("per_object_second").get<double>(), 1.0);
+    const auto& pursuit = audit.at("pursuit");
+    if (pursuit.at("frames").get<int>() > 0) EXPECT_EQ(pursuit.at("degraded").get<int>(), 0);
+  }
+}
+
 TEST(RunAudit, DecisionsIntoAMissingFolderFailsWithTheReasonAndWritesNothing) {
   const auto dir = scratch_dir();
   use_simulated_runtime("");

@@ -86,6 +86,46 @@ TEST(RunCli, RuntimeThatNeverDeliversGazeIsDistrusted) {
   EXPECT_NE(r.err.find("head-fixed"), std::string::npos) << r.err;
 }
 
+// --trace is the gaze source for the whole run: every frame until the trace ends uses it
+// (the runtime offers eye gaze too, and is not used), and the run says when it ends and what
+// it falls back to.
+TEST(RunCli, TraceIsTheGazeSourceForTheWholeRun) {
+  use_simulated_runtime("");
+  const auto dir = scratch_dir();
+  const CliResult rec = run_cli({"scenario", "record", "--default", "--out", (dir / "trace.csv").string(), "--duration", "1.5"});
+  ASSERT_EQ(rec.rc, 0) << rec.err;
+  const CliResult r = run_cli({"run", "--frames", "270", "--no-render", "--trace", (dir / "trace.csv").string(),
+                               "--out", (dir / "out").string()});
+  ASSERT_EQ(r.rc, 0) << r.err;
+  std::istringstream csv(read_text(dir / "out" / "frames.csv"));
+  std::string line;
+  std::getline(csv, line);
+  std::size_t column = 0;
+  for (std::size_t p = 0, c = 0; p != std::string::npos; p = line.find(',', p) == std::string::npos ? std::string::npos : line.find(',', p) + 1, ++c)
+    if (line.compare(p, 12, "gaze_source,") == 0) column = c;
+  ASSERT_GT(column, 0u) << line;
+  int external = 0, head_fixed = 0, other = 0;
+  while (std::getline(csv, line)) {
+    std::istringstream row(line);
+    std::string cell;
+    for (std::size_t c = 0; c <= column; ++c) std::getline(row, cell, ',');
+    if (cell == "external") ++external;
+    else if (cell == "head-fixed") ++head_fixed;
+    else ++other;
+  }
+  EXPECT_EQ(other, 0) << "never the runtime's own gaze";
+  // 1.5 s of trace at 90 Hz (minus the tracker's latency before its first sample and the
+  // replay's hold after its last), then head-fixed for the rest.
+  EXPECT_GE(external, 120);
+  EXPECT_LE(external, 150);
+  EXPECT_GE(head_fixed, 110);
+  EXPECT_NE(r.err.find("gaze source head-fixed"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("trace unavailable"), std::string::npos) << r.err;
+  // No ground truth for a replayed trace.
+  const auto summary = nlohmann::json::parse(read_text(dir / "out" / "summary.json"));
+  EXPECT_FALSE(summary.at("audit").at("available").get<bool>());
+}
+
 TEST(RunCli, BudgetKeepsThePredictedFrameTimeUnderTheBudget) {
   use_simulated_runtime("");
   const auto dir = scratch_dir();

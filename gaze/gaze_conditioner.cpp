@@ -76,6 +76,7 @@ ConditionerConfig sanitized(ConditionerConfig c) {
   c.pursuit_velocity_tau_ns = nonneg_ns(c.pursuit_velocity_tau_ns, d.pursuit_velocity_tau_ns);
   c.prediction_horizon_max_ns = nonneg_ns(c.prediction_horizon_max_ns, d.prediction_horizon_max_ns);
   c.post_saccade_suppression_ns = nonneg_ns(c.post_saccade_suppression_ns, d.post_saccade_suppression_ns);
+  c.max_saccade_ns = nonneg_ns(c.max_saccade_ns, d.max_saccade_ns);
   c.loss_hold_max_ns = nonneg_ns(c.loss_hold_max_ns, d.loss_hold_max_ns);
   c.age_growth_deg_s = nonneg(c.age_growth_deg_s, d.age_growth_deg_s);
   c.velocity_error_fraction = nonneg(c.velocity_error_fraction, d.velocity_error_fraction);
@@ -272,6 +273,19 @@ void GazeConditioner::push_valid(std::int64_t t_ns, const glm::dvec3& world) noe
       v_deg_s > config_.saccade_threshold_deg_s) {
     // No estimate yet (the stream began in a saccade): the oldest sample of the fit, where
     // the saccade started from.
+    if (prev != EyeMotion::saccade) saccade_start_t_ns_ = t_ns;
+    if (t_ns - saccade_start_t_ns_ > config_.max_saccade_ns && fv.ok) {
+      // Too long for a saccade: a smooth gaze shift at saccadic speed.
+      omega_world_ = fv.omega();
+      if (!finite3(omega_world_)) omega_world_ = glm::dvec3(0.0);
+      est_world_ = fv.direction();
+      have_estimate_ = true;
+      motion_ = EyeMotion::pursuit;
+      speed_deg_s_ = glm::length(omega_world_) * kDegPerRad;
+      fixation_n_ = 0.0;
+      phase_count_ = fv.n;  // the pursuit's phase: the samples of this fit
+      return;
+    }
     if (!have_estimate_) est_world_ = newest(k - 1).world;
     have_estimate_ = true;
     motion_ = EyeMotion::saccade;  // est_world_ (the estimate before the saccade) is held

@@ -116,6 +116,11 @@ struct ConditionerConfig {
   // eye-to-image latency are tolerated (Albert, Patney, Luebke & Kim 2017). 70 ms: so that
   // with a late tracker (50 ms) the landing region's update still falls in that window.
   std::int64_t post_saccade_suppression_ns = 70'000'000;
+  // A movement above the saccade threshold that lasts longer than this is no saccade: saccades
+  // last ~2.2 ms/deg * A + 21 ms (Carpenter 1988), under 130 ms even for 50 deg. It is a smooth
+  // gaze shift at saccadic speed (the eyes carried by a fast head turn, or a very fast
+  // pursuit) and is classified as pursuit, with its velocity, not suppressed.
+  std::int64_t max_saccade_ns = 150'000'000;
   // Invalid samples (blink, loss) hold the last estimate, suppressed (blink suppression:
   // Volkmann, Riggs & Moore 1980), for at most this long after the last valid sample; then
   // valid = false. Spontaneous blinks close the lid for ~100-300 ms (Caffier, Erdmann &
@@ -206,6 +211,7 @@ class GazeConditioner {
   double noise_var_ = 0.0;       // long-run residual variance per axis in fixation, rad^2 (from precision_deg at first)
   bool have_saccade_ = false;
   std::int64_t saccade_last_t_ns_ = 0;  // newest saccade-labelled sample
+  std::int64_t saccade_start_t_ns_ = 0;  // first sample of the saccade in progress
   std::int64_t bad_samples_ = 0;
 };
 

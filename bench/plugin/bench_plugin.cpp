@@ -11,6 +11,9 @@
 #include <benchmark/benchmark.h>
 
 #include <chrono>
+#include <cstdio>
+#include <map>
+#include <string>
 #include <cstdlib>
 #include <memory>
 #include <random>
@@ -112,7 +115,34 @@ void BM_BareSelection(benchmark::State& state) {
 BENCHMARK(BM_BareSelection)->Arg(10000)->UseManualTime()->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_PluginBeginFrame)->Args({10000, 0})->Args({10000, 1})->UseManualTime()->Unit(benchmark::kMicrosecond);
 
+// The console table, then begin_frame's time over the bare selection's, from this run.
+class RatioReporter : public benchmark::ConsoleReporter {
+ public:
+  void ReportRuns(const std::vector<Run>& runs) override {
+    ConsoleReporter::ReportRuns(runs);
+    for (const Run& r : runs) us_[r.benchmark_name()] = r.GetAdjustedRealTime();
+  }
+  void Finalize() override {
+    ConsoleReporter::Finalize();
+    const auto bare = us_.find("BM_BareSelection/10000/manual_time");
+    if (bare == us_.end() || !(bare->second > 0.0)) return;
+    for (const char* name : {"BM_PluginBeginFrame/10000/0/manual_time", "BM_PluginBeginFrame/10000/1/manual_time"})
+      if (auto it = us_.find(name); it != us_.end())
+        std::printf("%s / lod::select_lods alone: %.2f\n", name, it->second / bare->second);
+  }
+
+ private:
+  std::map<std::string, double> us_;
+};
+
 }  // namespace
 }  // namespace gazelod
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  gazelod::RatioReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  benchmark::Shutdown();
+  return 0;
+}

@@ -327,6 +327,33 @@ TEST(GazeConditioner, VorFixationDuringA100DegPerSecondHeadTurnIsAFixation) {
   }
 }
 
+// Eyes fixed in the head through a 0.8 s, 100 deg/s head turn (no VOR): the gaze moves in the
+// world at saccadic speed for far longer than any saccade lasts. After the first 150 ms (when
+// it could still be a saccade) it is a smooth gaze shift: pursuit, with the head's velocity,
+// not suppressed; the estimate follows the gaze rather than holding where the turn began.
+TEST(GazeConditioner, EyesCarriedByAFastHeadTurnArePursuitNotAnEndlessSaccade) {
+  for (unsigned seed = 1; seed <= 5; ++seed) {
+    GazeConditioner c;
+    const TruthFn carried = [](double t) {
+      const double yaw = std::clamp(-40.0 + 100.0 * (t - 0.4), -40.0, 40.0);
+      return Truth{yaw, 0.0, yaw};  // eye straight ahead in the head
+    };
+    const auto frames = simulate(c, carried, 1.6, Sim{.seed = seed});
+    int counted = 0, pursuit = 0;
+    for (const Frame& f : frames) {
+      expect_sane(f.out, c.config());
+      if (f.t_s < 0.4 + 0.25 || f.t_s > 1.2 - 0.05) continue;  // the turn, after 250 ms of it
+      ++counted;
+      pursuit += f.out.motion == EyeMotion::pursuit && !f.out.suppressed;
+      if (f.out.motion == EyeMotion::pursuit) {
+        EXPECT_NEAR(speed_deg_s(f.out), 100.0, 20.0) << "t " << f.t_s;
+        EXPECT_LT(err_deg(f), 3.0) << "t " << f.t_s;
+      }
+    }
+    EXPECT_GE(pursuit, counted * 9 / 10) << "seed " << seed;
+  }
+}
+
 TEST(GazeConditioner, BlinkIsLossThenInvalidAfterTheHold) {
   GazeConditioner c;
   // Fixation, a 150 ms blink, fixation, then the eye lost for 0.6 s, then back.

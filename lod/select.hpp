@@ -12,7 +12,8 @@
 //   geometric error e (m):        f = 1 / (2 (e / d) deg) (small-angle: over-states the angle,
 //                                 so it errs towards keeping detail)
 // and may be used when f_k > A = s * min(G(v) M(E), xi). E is the nearest point's eccentricity
-// minus the tracker's error, v the retinal velocity (lod/criteria.hpp). The vectorised kernels
+// minus the tracker's error, v the retinal velocity (their scalar forms, the tests'
+// reference: tests/lod/reference_criteria.hpp). The vectorised kernels
 // (lod/select_kernel*.cpp) evaluate the same rule on squared quantities to avoid roots and
 // divisions per level, and make the last comparison w_k^2 > (A p)^2 in float with each side
 // rounded once: where the two sides lie within 6e-8 of each other that can keep a finer

@@ -1,6 +1,6 @@
 // Per-object criteria: the geometric hard cases (gaze through the centre, eye inside the
 // sphere, object behind the eye, tiny angles) and retinal velocity.
-#include "lod/criteria.hpp"
+#include "tests/lod/reference_criteria.hpp"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>

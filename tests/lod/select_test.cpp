@@ -1,7 +1,7 @@
 // Per-object selection: agreement with an exact scalar reference on random scenes, the
 // criteria switches, hard inputs, and monotonicity of the chosen level.
 #include "lod/acuity.hpp"
-#include "lod/criteria.hpp"
+#include "tests/lod/reference_criteria.hpp"
 #include "lod/select.hpp"
 
 #include <glm/geometric.hpp>
@@ -45,7 +45,7 @@ struct Ref {
   double margin = 1.0;  // smallest relative distance of any comparison from its threshold
 };
 
-// The selection rule written with the exact scalar functions (criteria.hpp, acuity.hpp).
+// The selection rule written with the exact scalar functions (reference_criteria.hpp, acuity.hpp).
 Ref reference(const Viewer& vw, const glm::dvec3& c, double r, const glm::dvec3& vel,
               const std::vector<LodLevel>& chain) {
   const double d = glm::length(c - vw.eye_position_m);

@@ -1,7 +1,8 @@
 // The per-object quantities the acuity model needs (Reddy 1998 section 3.2): angular size,
 // eccentricity of the bounding sphere's nearest point to the gaze ray, retinal velocity.
-// Exact scalar forms with libm (atan2, never acos of a dot product); lod/select.cpp computes
-// the same quantities inline for whole arrays and is tested against these.
+// Exact scalar forms with libm (atan2, never acos of a dot product): the tests' reference.
+// lod/select.cpp computes the same quantities inline for whole arrays (vectorised) and is
+// tested against these; no product code calls them, so they live with the tests.
 #pragma once
 
 #include "lod/angles.hpp"

@@ -1,5 +1,5 @@
 // Exact per-object criteria (see criteria.hpp).
-#include "lod/criteria.hpp"
+#include "tests/lod/reference_criteria.hpp"
 
 #include <glm/geometric.hpp>
 

@@ -13,22 +13,8 @@
 #include <new>
 #include <vector>
 
-// Counts every allocation of this test program, for "a steady frame allocates nothing".
-namespace {
-std::atomic<long> g_allocations{0};
-}
-void* operator new(std::size_t n) {
-  ++g_allocations;
-  if (void* p = std::malloc(n ? n : 1)) return p;
-  throw std::bad_alloc();
-}
-void* operator new(std::size_t n, const std::nothrow_t&) noexcept {
-  ++g_allocations;
-  return std::malloc(n ? n : 1);
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
+// Counts every allocation of this test program (g_allocations).
+#include "tests/counting_new.hpp"
 
 namespace gazelod::plugin {
 namespace {

@@ -1,5 +1,7 @@
 #include "apps/gazelod/run_report.hpp"
 
+#include "gaze/atomic_file.hpp"
+
 #include "apps/gazelod/svg_plot.hpp"
 
 #include <nlohmann/json.hpp>
@@ -22,16 +24,6 @@ namespace {
 
 double safe_ratio(double num, double den) { return den > 0.0 ? num / den : 0.0; }
 
-std::ofstream open_out(const std::filesystem::path& p) {
-  std::ofstream f(p);
-  if (!f) throw std::runtime_error("cannot write " + p.string());
-  return f;
-}
-
-void close_checked(std::ofstream& f, const std::filesystem::path& p) {
-  f.close();
-  if (!f) throw std::runtime_error("error while writing " + p.string());
-}
 
 }  // namespace
 
@@ -200,13 +192,11 @@ void write_report_files(const std::filesystem::path& dir, const RunInfo& info,
     j["frames_over_budget"] = s.frames_over_budget;
   }
   j["audit"] = audit_json(s.audit);
-  const auto summary_path = dir / "summary.json";
-  auto summary = open_out(summary_path);
-  summary << j.dump(2) << "\n";
-  close_checked(summary, summary_path);
-
-  const auto csv_path = dir / "frames.csv";
-  auto csv = open_out(csv_path);
+  // Every file goes to a temporary beside it and replaces the old one only when complete
+  // (gaze/atomic_file.hpp): a full disk leaves no cut file, and the error says why. The
+  // largest first and the summary last, so a run that fails leaves no summary of it.
+  gaze::AtomicFile csv_file((dir / "frames.csv").string());
+  std::ostream& csv = csv_file.stream();
   csv << "frame,t_s,frame_ms,select_ms,predicted_ms,triangles_drawn,triangles_full,"
          "triangles_size_only,triangles_size_eccentricity,triangles_size_velocity,"
          "gaze_source,gaze_valid,saccade,head_speed_dps";
@@ -231,7 +221,7 @@ void write_report_files(const std::filesystem::path& dir, const RunInfo& info,
       csv << ",,,,,,,,,";
     csv << "\n";
   }
-  close_checked(csv, csv_path);
+  csv_file.commit();
 
   Plot plot;
   plot.title = "gazelod run: " + info.scenario + " on " + info.hmd;
@@ -252,18 +242,20 @@ void write_report_files(const std::filesystem::path& dir, const RunInfo& info,
   plot.panels.push_back({"time (ms)", {frame, select}});
   plot.panels.push_back({"head speed (deg/s)", {head}});
   plot.marker_legend = "saccade";
-  const auto svg_path = dir / "frames.svg";
-  auto svg = open_out(svg_path);
-  write_svg(plot, svg);
-  close_checked(svg, svg_path);
+  gaze::AtomicFile svg((dir / "frames.svg").string());
+  write_svg(plot, svg.stream());
+  svg.commit();
 
   std::filesystem::remove(dir / "audit.svg", ec);  // never leave an older run's plot behind
   if (s.audit.available) {
-    const auto audit_path = dir / "audit.svg";
-    auto audit_svg = open_out(audit_path);
-    write_svg(audit_plot(info, s.audit, frames), audit_svg);
-    close_checked(audit_svg, audit_path);
+    gaze::AtomicFile audit_svg((dir / "audit.svg").string());
+    write_svg(audit_plot(info, s.audit, frames), audit_svg.stream());
+    audit_svg.commit();
   }
+
+  gaze::AtomicFile summary((dir / "summary.json").string());
+  summary.stream() << j.dump(2) << "\n";
+  summary.commit();
 }
 
 Plot audit_plot(const RunInfo& info, const AuditSummary& s, const std::vector<FrameRecord>& frames) {

@@ -3,6 +3,7 @@
 #include "bake/baked_scene.hpp"
 #include "bake/bake_error.hpp"
 #include "gaze/replay_source.hpp"
+#include "gaze/atomic_file.hpp"
 #include "gaze/trace_error.hpp"
 #include "gaze/trace_open.hpp"
 #include "lod/display.hpp"
@@ -165,9 +166,11 @@ PreparedScenario prepare_scenario(const RunOptions& opt) {
   std::filesystem::create_directories(opt.out_dir, ec);
   if (ec) throw UsageError("--out: cannot create '" + opt.out_dir.string() + "': " + ec.message());
   p.file = opt.out_dir / "scenario.json";
-  std::ofstream out(p.file, std::ios::binary | std::ios::trunc);
-  out << text << "\n";
-  if (!out) throw UsageError("--out: cannot write '" + p.file.string() + "'");
+  try {
+    gaze::write_file_atomic(p.file.string(), text + "\n");
+  } catch (const gaze::WriteError& e) {
+    throw UsageError(std::string("--out: ") + e.what());
+  }
   return p;
 }
 

@@ -126,6 +126,22 @@ TEST(RunCli, TraceIsTheGazeSourceForTheWholeRun) {
   EXPECT_FALSE(summary.at("audit").at("available").get<bool>());
 }
 
+// The report's files are written to temporaries and renamed when complete: when one cannot be
+// written, the run says which and why, exits 1, and leaves no report of it (no summary.json,
+// no temporary).
+TEST(RunCli, AReportThatCannotBeWrittenLeavesNoPartialFile) {
+  use_simulated_runtime("");
+  const auto dir = scratch_dir();
+  std::filesystem::create_directories(dir / "out" / "frames.csv");  // in the way
+  const CliResult r = run_cli({"run", "--frames", "20", "--no-render", "--quiet", "--out", (dir / "out").string()});
+  EXPECT_EQ(r.rc, 1);
+  EXPECT_NE(r.err.find("cannot write '" + (dir / "out" / "frames.csv").string() + "': is a directory"),
+            std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out" / "summary.json"));
+  for (const auto& e : std::filesystem::directory_iterator(dir / "out"))
+    EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
+}
+
 TEST(RunCli, BudgetKeepsThePredictedFrameTimeUnderTheBudget) {
   use_simulated_runtime("");
   const auto dir = scratch_dir();

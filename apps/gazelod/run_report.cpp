@@ -24,6 +24,14 @@ namespace {
 
 double safe_ratio(double num, double den) { return den > 0.0 ? num / den : 0.0; }
 
+// Levels 0 to the coarsest that occurred (at least 0-3): what the reports list.
+int reported_levels(const RunSummary& s) {
+  int n = 4;
+  for (int i = 0; i < kMaxReportedLods; ++i)
+    if (s.lod_histogram[i] != 0) n = std::max(n, i + 1);
+  return n;
+}
+
 
 }  // namespace
 
@@ -123,8 +131,7 @@ void print_summary(const RunInfo& info, const RunSummary& s, std::ostream& out) 
   std::uint64_t total = 0;
   for (auto c : s.lod_histogram) total += c;
   out << "LOD histogram   ";
-  for (int i = 0; i < kMaxReportedLods; ++i) {
-    if (s.lod_histogram[i] == 0 && i > 3) continue;
+  for (int i = 0; i < reported_levels(s); ++i) {
     std::snprintf(line, sizeof line, "L%d %.1f%%  ", i,
                   100.0 * safe_ratio(static_cast<double>(s.lod_histogram[i]), static_cast<double>(total)));
     out << line;
@@ -167,7 +174,7 @@ void write_report_files(const std::filesystem::path& dir, const RunInfo& info,
   j["triangles_full"] = s.triangles_full;
   j["frame_time_ms"] = {{"mean", s.mean_frame_ms}, {"p95", s.p95_frame_ms}, {"max", s.max_frame_ms}};
   j["selection_time_ms"] = {{"mean", s.mean_select_ms}};
-  j["lod_histogram"] = s.lod_histogram;
+  j["lod_histogram"] = std::vector<std::uint64_t>(s.lod_histogram.begin(), s.lod_histogram.begin() + reported_levels(s));
   j["shares"] = {{"size", s.shares.size},
                  {"eccentricity", s.shares.eccentricity},
                  {"velocity", s.shares.velocity},
@@ -200,7 +207,8 @@ void write_report_files(const std::filesystem::path& dir, const RunInfo& info,
   csv << "frame,t_s,frame_ms,select_ms,predicted_ms,triangles_drawn,triangles_full,"
          "triangles_size_only,triangles_size_eccentricity,triangles_size_velocity,"
          "gaze_source,gaze_valid,saccade,head_speed_dps";
-  for (int i = 0; i < kMaxReportedLods; ++i) csv << ",lod" << i;
+  const int levels = reported_levels(s);
+  for (int i = 0; i < levels; ++i) csv << ",lod" << i;
   // The audit's columns (empty cells without ground truth): see run_audit.hpp's AuditFrame.
   csv << ",objects_in_view,audit_suppressed,audit_pursuit,audit_degraded,audit_excess_levels,"
          "audit_excess_max,audit_drawn_triangles,audit_oracle_triangles,audit_switches,audit_pursued";
@@ -210,7 +218,7 @@ void write_report_files(const std::filesystem::path& dir, const RunInfo& info,
         << ',' << f.triangles_drawn << ',' << f.triangles_full << ',' << f.triangles_size_only << ','
         << f.triangles_size_eccentricity << ',' << f.triangles_size_velocity << ',' << f.gaze_source
         << ',' << (f.gaze_valid ? 1 : 0) << ',' << (f.saccade ? 1 : 0) << ',' << f.head_speed_dps;
-    for (auto c : f.lod_histogram) csv << ',' << c;
+    for (int i = 0; i < levels; ++i) csv << ',' << f.lod_histogram[i];
     csv << ',' << f.objects_in_view;
     const AuditFrame& a = f.audit;
     if (a.available)

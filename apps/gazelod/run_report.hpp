@@ -17,7 +17,9 @@
 
 namespace gazelod::cli {
 
-inline constexpr int kMaxReportedLods = 8;
+// Every level a chain can have (1 to 255 levels): nothing is folded. The reports list levels
+// 0 to the coarsest that occurred in the run (at least 0-3), summary.json and frames.csv alike.
+inline constexpr int kMaxReportedLods = 256;
 
 struct FrameRecord {
   std::int64_t index = 0;

@@ -214,7 +214,7 @@ int run_session(const RunOptions& opt, Io io) {
     r.triangles_size_only = triangles(chains, diag.lod_size_only);
     r.triangles_size_eccentricity = triangles(chains, diag.lod_size_eccentricity);
     r.triangles_size_velocity = triangles(chains, diag.lod_size_velocity);
-    for (std::uint8_t l : d.lod) ++r.lod_histogram[std::min<int>(l, kMaxReportedLods - 1)];
+    for (std::uint8_t l : d.lod) ++r.lod_histogram[l];
     r.objects = static_cast<std::int64_t>(chains.size());
     r.lod_sum_drawn = lod_sum(d.lod);
     r.lod_sum_size_only = lod_sum(diag.lod_size_only);

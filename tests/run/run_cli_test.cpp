@@ -142,6 +142,29 @@ TEST(RunCli, AReportThatCannotBeWrittenLeavesNoPartialFile) {
     EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
 }
 
+// Levels past 7 are reported as themselves (nothing folded): objects far away with 12-level
+// chains end at their coarse levels, and the histogram, summary.json and frames.csv say so.
+TEST(RunCli, EveryLevelIsReportedUpTo255) {
+  use_simulated_runtime("");
+  const auto dir = scratch_dir();
+  const auto scenario = dir / "deep.json";
+  std::ofstream(scenario) << R"({"version": 1, "display": "questpro", "duration_s": 1,
+    "scene": {"generators": [{"type": "random_field", "count": 30, "min_m": [-5, -1, -400],
+      "max_m": [5, 1, -300], "radius_min_m": 0.05, "radius_max_m": 0.1, "lod_count": 12,
+      "triangles": 40000, "triangle_ratio": 2}]}})";
+  const CliResult r = run_cli({"run", "--scenario", scenario.string(), "--no-render", "--quiet",
+                               "--out", (dir / "out").string()});
+  ASSERT_EQ(r.rc, 0) << r.err;
+  const auto hist = nlohmann::json::parse(read_text(dir / "out" / "summary.json")).at("lod_histogram");
+  ASSERT_GT(hist.size(), 8u) << hist.dump();
+  std::uint64_t beyond7 = 0;
+  for (std::size_t l = 8; l < hist.size(); ++l) beyond7 += hist[l].get<std::uint64_t>();
+  EXPECT_GT(beyond7, 0u) << hist.dump();
+  const std::string csv = read_text(dir / "out" / "frames.csv");
+  EXPECT_NE(csv.find(",lod" + std::to_string(hist.size() - 1) + ","), std::string::npos);
+  EXPECT_NE(r.out.find("L" + std::to_string(hist.size() - 1) + " "), std::string::npos) << r.out;
+}
+
 TEST(RunCli, BudgetKeepsThePredictedFrameTimeUnderTheBudget) {
   use_simulated_runtime("");
   const auto dir = scratch_dir();

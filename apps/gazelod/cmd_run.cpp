@@ -5,6 +5,7 @@
 #include "apps/gazelod/command.hpp"
 #include "apps/gazelod/run_session.hpp"
 
+#include <cmath>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -14,6 +15,7 @@ namespace {
 
 EnabledCriteria parse_criteria(const std::string& text) {
   EnabledCriteria c{false, false, false};
+  if (text.empty()) throw UsageError("--criteria: empty (use all, none or a comma list of size, eccentricity, velocity)");
   if (text == "none") return c;
   if (text == "all") return EnabledCriteria{};
   std::istringstream in(text);
@@ -22,6 +24,8 @@ EnabledCriteria parse_criteria(const std::string& text) {
     if (item == "size") c.size = true;
     else if (item == "eccentricity") c.eccentricity = true;
     else if (item == "velocity") c.velocity = true;
+    else if (item.empty())
+      throw UsageError("--criteria: an empty item in '" + text + "'");
     else
       throw UsageError("--criteria: unknown criterion '" + item +
                        "' (use all, none or a comma list of size, eccentricity, velocity)");
@@ -56,7 +60,10 @@ const Registrar reg("run", "Run an OpenXR session with gaze-contingent LOD and w
                  "Write the drawn level of every object in every frame to this CSV (frame,t_ns,<object>...)");
   auto no_audit = std::make_shared<bool>(false);
   app.add_flag("--no-audit", *no_audit, "Skip the visibility audit against the simulator's true gaze");
-  return [=](Io io) {
+  return [=, &app](Io io) {
+    // CLI11's range check lets NaN through (every comparison with it is false).
+    if (!std::isfinite(opt->budget_ms)) throw UsageError("--budget-ms: must be a number in [0, 1000], got nan");
+    if (app.count("--hmd") > 0 && opt->hmd.empty()) throw UsageError("--hmd: empty (see gazelod hmds)");
     RunOptions o = *opt;
     o.criteria = parse_criteria(*criteria);
     o.out_dir = *out;

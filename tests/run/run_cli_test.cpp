@@ -220,6 +220,17 @@ TEST(RunCli, BadInputsAreClearErrors) {
   EXPECT_NE(r.rc, 0);
   EXPECT_NE(r.err.find("nosuchhmd"), std::string::npos) << r.err;
 
+  // Values that used to pass silently: a NaN budget (turned the budget off), an empty
+  // criteria list (meant none), an empty HMD (was ignored).
+  for (const std::vector<std::string>& bad_option : std::vector<std::vector<std::string>>{
+           {"--budget-ms", "nan"}, {"--criteria", ""}, {"--criteria", "size,,velocity"}, {"--hmd", ""}}) {
+    std::vector<std::string> args{"run", "--frames", "2", "--no-render", "--quiet", "--out", (dir / "o").string()};
+    args.insert(args.end(), bad_option.begin(), bad_option.end());
+    r = run_cli(args);
+    EXPECT_EQ(r.rc, 2) << bad_option[0] << " '" << bad_option[1] << "'";
+    EXPECT_NE(r.err.find(bad_option[0]), std::string::npos) << r.err;
+  }
+
   std::ofstream(dir / "afile") << "x";
   r = run_cli({"run", "--frames", "5", "--out", (dir / "afile" / "sub").string()});
   EXPECT_NE(r.rc, 0);

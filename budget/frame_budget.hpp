@@ -1,4 +1,4 @@
-// Frame-budget LOD scheduling for `gazelod run --budget-ms X` (issue 6): per frame, choose one
+// Frame-budget LOD scheduling for `gazelod run --budget-ms X`: per frame, choose one
 // level per object so that the predicted frame time stays under the budget, never finer than
 // the perceptual choice (finer levels buy nothing visible). Prediction: Funkhouser & Sequin's
 // cost, max(C1 triangles + C2 vertices, C3 pixels) + C0 per frame, with the coefficients fit

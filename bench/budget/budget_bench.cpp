@@ -1,4 +1,4 @@
-// What accuracy costs in time (issue 6). Two benchmarks over scenes of 100 to 100k objects with
+// What accuracy costs in time. Two benchmarks over scenes of 100 to 100k objects with
 // 4 and 8 levels each (budget_scene.hpp):
 //  - BM_Solve: every solver from scratch on one frame: time per frame and the gap to the
 //    reference, which is the proven optimum (branch and bound, where it finishes within its

@@ -1,4 +1,4 @@
-// Mason's (1999) worked instances (digest sec. 6): counterexamples 1 and 2, Figures 21, 23, 27.
+// Mason's (1999) worked instances: counterexamples 1 and 2, Figures 21, 23, 27.
 #include "budget/knapsack.hpp"
 #include "budget/knapsack_incremental.hpp"
 #include "mckp_test_util.hpp"

@@ -6,7 +6,7 @@
 #include "sim/main_sequence.hpp"
 
 #include <algorithm>
-#include <vector>
+#include <deque>
 
 namespace gazelod::sim::effects {
 namespace {
@@ -34,10 +34,7 @@ class Saccades final : public Effect {
   unsigned stages() const override { return kStageGaze; }
   void apply_gaze(std::int64_t t_ns, const EffectContext&, glm::dvec3& dir) const override {
     if (!window_.contains(t_ns)) return;
-    extend_to(t_ns);
-    auto it = std::upper_bound(segments_.begin(), segments_.end(), t_ns,
-                               [](std::int64_t t, const Segment& s) { return t < s.fix_start_ns; });
-    const Segment& s = *std::prev(it);
+    const Segment& s = segments_[segment_index(t_ns)];
     if (t_ns < s.sac_start_ns) dir = s.from;
     else if (t_ns >= s.sac_end_ns) dir = s.to;
     else {
@@ -54,22 +51,38 @@ class Saccades final : public Effect {
       truth.last_saccade_end_ns = std::max(truth.last_saccade_end_ns, window_.end_ns);
       return;
     }
-    extend_to(t_ns);
-    auto it = std::upper_bound(segments_.begin(), segments_.end(), t_ns,
-                               [](std::int64_t t, const Segment& s) { return t < s.fix_start_ns; });
-    const Segment& s = *std::prev(it);
+    const std::size_t i = segment_index(t_ns);
+    const Segment& s = segments_[i];
     truth.in_saccade = t_ns >= s.sac_start_ns && t_ns < s.sac_end_ns;
     truth.pursuit_object = -1;
-    if (std::prev(it) != segments_.begin()) truth.last_saccade_end_ns = s.fix_start_ns;
+    if (first_index_ + i != 0) truth.last_saccade_end_ns = s.fix_start_ns;
   }
 
  private:
-  // The schedule is drawn in order, fixation by fixation, as far as the latest time asked
-  // for: the same segments whatever the order of queries, and memory grows only with the
-  // time actually simulated.
+  // The schedule is drawn in order, fixation by fixation, each from (seed, effect, index), as
+  // far as the latest time asked for; only the newest kKeptSegments stay (memory bounded for
+  // any session length). A query older than those draws the schedule again from the start:
+  // the same segments whatever the order of queries, only slower (the frame loop asks at most
+  // a tracker latency back).
+  static constexpr std::size_t kKeptSegments = 1024;  // ~5 min of fixations
+
+  // The segment whose fixation starts at or before t (t in the window).
+  std::size_t segment_index(std::int64_t t_ns) const {
+    if (first_index_ > 0 && t_ns < segments_.front().fix_start_ns) {
+      segments_.clear();
+      first_index_ = 0;
+      cur_ = {};
+      next_start_ns_ = window_.start_ns;
+    }
+    extend_to(t_ns);
+    const auto it = std::upper_bound(segments_.begin(), segments_.end(), t_ns,
+                                     [](std::int64_t t, const Segment& s) { return t < s.fix_start_ns; });
+    return static_cast<std::size_t>(std::prev(it) - segments_.begin());
+  }
+
   void extend_to(std::int64_t t_ns) const {
     while (segments_.empty() || segments_.back().sac_end_ns <= t_ns) {
-      const std::uint64_t i = segments_.size();
+      const std::uint64_t i = first_index_ + segments_.size();
       Segment s;
       s.fix_start_ns = next_start_ns_;
       s.sac_start_ns = s.fix_start_ns + to_ns(rng_.uniform(4 * i, fix_min_ms_, fix_max_ms_) * 1e-3);
@@ -87,6 +100,10 @@ class Saccades final : public Effect {
       s.ratio = saccade_velocity_ratio(amp_deg);
       s.sac_end_ns = s.sac_start_ns + to_ns(saccade_duration_s(amp_deg));
       segments_.push_back(s);
+      if (segments_.size() > kKeptSegments) {
+        segments_.pop_front();
+        ++first_index_;
+      }
       cur_ = next;
       next_start_ns_ = s.sac_end_ns;
     }
@@ -96,7 +113,8 @@ class Saccades final : public Effect {
   double fix_min_ms_ = 0, fix_max_ms_ = 0, amp_min_deg_ = 0, amp_max_deg_ = 0, range_rad_ = 0;
   TimeWindow window_;
   // Lazily extended schedule (the Simulator is not thread-safe; the runtime holds one lock).
-  mutable std::vector<Segment> segments_;
+  mutable std::deque<Segment> segments_;
+  mutable std::uint64_t first_index_ = 0;  // schedule index of segments_.front()
   mutable YawPitch cur_{};
   mutable std::int64_t next_start_ns_ = 0;
 };

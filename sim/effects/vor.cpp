@@ -31,6 +31,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <deque>
 #include <vector>
 
 namespace gazelod::sim::effects {
@@ -87,7 +88,7 @@ class Vor final : public Effect {
     if (t_ns < window_.start_ns) return;
     if (t_ns < window_.end_ns) {
       extend_to(t_ns, ctx);
-      dir = eye_at(*segment_at(t_ns), t_ns, ctx, &dir);
+      dir = eye_at(segments_[segment_index(t_ns, ctx)], t_ns, ctx, &dir);
       return;
     }
     const Segment& e = end_saccade(ctx);
@@ -127,10 +128,29 @@ class Vor final : public Effect {
     return eccentricity_rad(counter(h.anchor_head, t_ns, ctx) * g) > limit;
   }
 
-  const Segment* segment_at(std::int64_t t_ns) const {
+  // Only the newest kKeptSegments stay (memory bounded for any session length); a query older
+  // than those works the schedule out again from the start: the same segments whatever the
+  // order of queries, only slower (the frame loop asks at most a tracker latency back).
+  static constexpr std::size_t kKeptSegments = 1024;
+
+  // The segment that holds t (t in the window), after working the schedule out through t.
+  std::size_t segment_index(std::int64_t t_ns, const EffectContext& ctx) const {
+    if (first_index_ > 0 && t_ns < segments_.front().start_ns) {
+      segments_.clear();
+      first_index_ = 0;
+      next_step_ = move_first_ = 0;
+      prev_moving_ = false;
+    }
+    extend_to(t_ns, ctx);
     const auto it = std::upper_bound(segments_.begin(), segments_.end(), t_ns,
                                      [](std::int64_t t, const Segment& s) { return t < s.start_ns; });
-    return &*std::prev(it);
+    return static_cast<std::size_t>(std::prev(it) - segments_.begin());
+  }
+  void trim() const {
+    while (segments_.size() > kKeptSegments) {
+      segments_.pop_front();
+      ++first_index_;
+    }
   }
 
   // A main-sequence saccade from `from` at t to where the hold after it starts (land until
@@ -152,6 +172,7 @@ class Vor final : public Effect {
     s.to = source(h, s.end_ns, ctx, nullptr);  // the hold starts exactly there
     segments_.push_back(s);
     segments_.push_back(h);
+    trim();
   }
 
   // Works the schedule out through step k + 1 for the step k that holds t: later steps only
@@ -203,8 +224,7 @@ class Vor final : public Effect {
   const Segment& end_saccade(const EffectContext& ctx) const {
     if (!end_known_) {
       const std::int64_t t = window_.end_ns;
-      extend_to(t, ctx);
-      const glm::dvec3 from = eye_at(*segment_at(t), t, ctx, nullptr);
+      const glm::dvec3 from = eye_at(segments_[segment_index(t, ctx)], t, ctx, nullptr);
       const double amp_deg = angle_between_rad(from, incoming(t, ctx)) * kDegPerRad;
       end_.saccade = true;
       end_.start_ns = t;
@@ -227,11 +247,10 @@ class Vor final : public Effect {
       else if (e.end_ns > e.start_ns) truth.last_saccade_end_ns = std::max(truth.last_saccade_end_ns, e.end_ns);
       return;
     }
-    extend_to(t_ns, ctx);
-    const Segment* s = segment_at(t_ns);
-    truth.in_saccade = s->saccade;
-    while (s->saccade) --s;  // the latest hold: it began when the saccade before it landed
-    if (s != segments_.data()) truth.last_saccade_end_ns = s->start_ns;
+    std::size_t i = segment_index(t_ns, ctx);
+    truth.in_saccade = segments_[i].saccade;
+    while (segments_[i].saccade && i > 0) --i;  // the latest hold: it began when the saccade before it landed
+    if (first_index_ + i != 0) truth.last_saccade_end_ns = segments_[i].start_ns;
     else truth.last_saccade_end_ns = std::min(truth.last_saccade_end_ns, window_.start_ns);
   }
 
@@ -239,7 +258,8 @@ class Vor final : public Effect {
   TimeWindow window_;
   std::vector<std::unique_ptr<Effect>> before_;  // copies of the gaze effects listed before
   // Lazily extended schedule (the Simulator is not thread-safe; the runtime holds one lock).
-  mutable std::vector<Segment> segments_;
+  mutable std::deque<Segment> segments_;
+  mutable std::uint64_t first_index_ = 0;  // schedule index of segments_.front()
   mutable std::int64_t next_step_ = 0, move_first_ = 0;
   mutable bool prev_moving_ = false;
   mutable glm::dvec3 in_next_{0.0, 0.0, -1.0};

@@ -81,6 +81,34 @@ TEST(Determinism, LongScenarioQueriedLateFirstRepeatsItself) {
   for (std::size_t i = times.size(); i-- > 0;) ASSERT_TRUE(same_bits(b.tracker_at(times[i]), forward[i])) << times[i];
 }
 
+// The schedules keep only their newest segments (bounded memory): a query from before those
+// draws them again from the start, with the same bits. Two simulated hours of 20 ms fixations
+// (far more than the kept segments), the vor effect's schedule too, then early times again.
+TEST(Determinism, QueriesBeforeTheKeptScheduleRepeatThemselves) {
+  const std::string json = R"({"version": 1, "display": "questpro", "duration_s": 7200, "seed": 4,
+      "effects": [{"type": "head_sweep", "yaw_amplitude_deg": 20, "yaw_period_s": 6},
+                  {"type": "saccades", "fixation_min_ms": 20, "fixation_max_ms": 20},
+                  {"type": "vor"}, {"type": "tracker_noise", "std_deg": 0.2}]})";
+  Simulator a(load_scenario_json(json, "long")), b(load_scenario_json(json, "long"));
+  const std::vector<std::int64_t> early{1'000'000'000, 2'345'678'901, 61'000'000'000};
+  std::vector<gaze::GazeSample> truth, tracker;
+  std::vector<EyeTruth> eye;
+  for (std::int64_t t : early) {
+    truth.push_back(a.true_gaze_at(t));
+    tracker.push_back(a.tracker_at(t));
+    eye.push_back(a.eye_truth_at(t));
+  }
+  for (std::int64_t t = 0; t < 7'200'000'000'000; t += 600'000'000'000) b.true_gaze_at(t);  // far past the kept segments
+  b.true_gaze_at(7'199'000'000'000);
+  for (std::size_t i = 0; i < early.size(); ++i) {
+    EXPECT_TRUE(same_bits(b.true_gaze_at(early[i]), truth[i])) << early[i];
+    EXPECT_TRUE(same_bits(b.tracker_at(early[i]), tracker[i])) << early[i];
+    const EyeTruth e = b.eye_truth_at(early[i]);
+    EXPECT_EQ(e.in_saccade, eye[i].in_saccade) << early[i];
+    EXPECT_EQ(e.last_saccade_end_ns, eye[i].last_saccade_end_ns) << early[i];
+  }
+}
+
 TEST(Determinism, AnotherSeedGivesAnotherStream) {
   Scenario s1 = all_effects(), s2 = all_effects();
   s2.seed = s1.seed + 1;

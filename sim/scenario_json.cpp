@@ -241,7 +241,7 @@ Scenario load_scenario_json(std::string_view json_text, std::string_view source_
   return sc;
 }
 
-Scenario load_scenario_file(const std::string& path) {
+std::string read_scenario_text(const std::string& path) {
   struct stat st {};
   if (::stat(path.c_str(), &st) != 0)
     throw ScenarioError(path + ": cannot open the scenario file: " + std::strerror(errno));
@@ -264,7 +264,9 @@ Scenario load_scenario_file(const std::string& path) {
   if (in.bad()) throw ScenarioError(path + ": cannot read the scenario file: " + std::strerror(errno));
   if (text.size() > kMaxScenarioBytes)
     throw_at(path, "", "must be at most " + bytes_text(kMaxScenarioBytes) + " of JSON, got more");
-  return load_scenario_json(text, path);
+  return text;
 }
+
+Scenario load_scenario_file(const std::string& path) { return load_scenario_json(read_scenario_text(path), path); }
 
 }  // namespace gazelod::sim

@@ -79,6 +79,9 @@ struct Scenario {
 
 Scenario load_scenario_json(std::string_view json_text, std::string_view source_name);
 Scenario load_scenario_file(const std::string& path);
+// The file's text, refusing what is not a scenario file (a directory, a device) and anything
+// past the size limit (sim/scene_json.hpp) before reading it all; throws ScenarioError.
+std::string read_scenario_text(const std::string& path);
 // The embedded default: a Reddy-1998-style field of objects with four LODs, an eye-tracked HMD
 // preset, head sweeps, saccades and a pursuit.
 std::string_view default_scenario_json();

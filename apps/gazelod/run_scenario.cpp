@@ -23,11 +23,11 @@ namespace gazelod::cli {
 namespace {
 
 std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw UsageError("--scenario: cannot open '" + path + "'");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
+  try {
+    return sim::read_scenario_text(path);
+  } catch (const sim::ScenarioError& e) {
+    throw UsageError(std::string("--scenario: ") + e.what());
+  }
 }
 
 void set_env(const char* name, const std::string& value) {

@@ -216,6 +216,13 @@ TEST(RunCli, BadInputsAreClearErrors) {
   EXPECT_NE(r.rc, 0);
   EXPECT_NE(r.err.find("missing.json"), std::string::npos) << r.err;
 
+  // A device or a directory is refused before anything is read (/dev/zero never ends).
+  for (const char* not_a_file : {"/dev/zero", "/tmp"}) {
+    r = run_cli({"run", "--scenario", not_a_file, "--out", (dir / "o").string()});
+    EXPECT_EQ(r.rc, 2) << not_a_file;
+    EXPECT_NE(r.err.find(not_a_file), std::string::npos) << r.err;
+  }
+
   r = run_cli({"run", "--hmd", "nosuchhmd", "--out", (dir / "o").string()});
   EXPECT_NE(r.rc, 0);
   EXPECT_NE(r.err.find("nosuchhmd"), std::string::npos) << r.err;

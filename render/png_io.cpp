@@ -6,15 +6,45 @@
 
 #include <cstring>
 #include <string>
+#include <vector>
 
 namespace gazelod::render {
 
-void write_png(const std::filesystem::path& file, const RgbaImage& image) {
+namespace {
+
+void check_image(const std::string& what, const RgbaImage& image) {
   if (image.width == 0 || image.height == 0 ||
       image.pixels.size() != static_cast<std::size_t>(image.width) * image.height * 4u)
-    throw RenderError(file.string() + ": cannot write an empty or inconsistent image (" +
+    throw RenderError(what + ": cannot write an empty or inconsistent image (" +
                       std::to_string(image.width) + "x" + std::to_string(image.height) + ", " +
                       std::to_string(image.pixels.size()) + " bytes)");
+}
+
+}  // namespace
+
+std::vector<unsigned char> encode_png(const RgbaImage& image) {
+  check_image("PNG", image);
+  png_image png;
+  std::memset(&png, 0, sizeof png);
+  png.version = PNG_IMAGE_VERSION;
+  png.width = image.width;
+  png.height = image.height;
+  png.format = PNG_FORMAT_RGBA;
+  png_alloc_size_t size = 0;  // first the size, then the bytes
+  if (png_image_write_to_memory(&png, nullptr, &size, 0, image.pixels.data(), 0, nullptr)) {
+    std::vector<unsigned char> bytes(size);
+    if (png_image_write_to_memory(&png, bytes.data(), &size, 0, image.pixels.data(), 0, nullptr)) {
+      bytes.resize(size);
+      return bytes;
+    }
+  }
+  const std::string why = png.message;
+  png_image_free(&png);
+  throw RenderError("cannot encode PNG: " + why);
+}
+
+void write_png(const std::filesystem::path& file, const RgbaImage& image) {
+  check_image(file.string(), image);
   png_image png;
   std::memset(&png, 0, sizeof png);
   png.version = PNG_IMAGE_VERSION;

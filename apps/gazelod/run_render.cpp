@@ -1,5 +1,6 @@
 #include "apps/gazelod/run_render.hpp"
 
+#include "gaze/atomic_file.hpp"
 #include "lod/angles.hpp"
 #include "render/camera.hpp"
 #include "render/foveal_marker.hpp"
@@ -88,7 +89,9 @@ void RunRenderer::render_eye(std::size_t eye, std::uint32_t image_index, const X
 }
 
 void RunRenderer::save_png(std::size_t eye, std::uint32_t image_index, const std::filesystem::path& file) {
-  render::write_png(file, renderer(eye).read_back(image_index));
+  // Atomically, like the run's other files: a full disk leaves no cut frame.png.
+  const std::vector<unsigned char> png = render::encode_png(renderer(eye).read_back(image_index));
+  gaze::write_file_atomic(file.string(), std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
 }
 
 std::uint64_t RunRenderer::triangles_drawn(std::size_t eye) const { return renderer(eye).triangles_last_frame(); }

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 namespace gazelod::render {
 namespace {
@@ -30,6 +31,22 @@ TEST(PngIo, RoundTripKeepsEveryByte) {
   EXPECT_EQ(back.height, 2u);
   EXPECT_EQ(back.pixels, img.pixels);
   std::filesystem::remove_all(file.parent_path());
+}
+
+// encode_png gives the same file write_png writes (`gazelod run` writes those bytes atomically).
+TEST(PngIo, EncodedBytesAreTheFile) {
+  RgbaImage img;
+  img.width = 4;
+  img.height = 3;
+  for (int i = 0; i < 48; ++i) img.pixels.push_back(static_cast<std::uint8_t>(i * 5));
+  const auto dir = temp_dir();
+  write_png(dir / "written.png", img);
+  const std::vector<unsigned char> bytes = encode_png(img);
+  std::ifstream in(dir / "written.png", std::ios::binary);
+  const std::vector<unsigned char> file((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(bytes, file);
+  EXPECT_THROW(encode_png(RgbaImage{2, 2, {1, 2, 3}}), RenderError);
+  std::filesystem::remove_all(dir);
 }
 
 TEST(PngIo, ErrorsNameTheFile) {

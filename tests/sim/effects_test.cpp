@@ -115,7 +115,7 @@ TEST(Effects, SaccadesFollowTheMainSequence) {
   ASSERT_GT(s.size(), 40u);
   double max_amp = 0.0, max_peak = 0.0;
   for (const Saccade& c : s) {
-    const double duration_ms = (c.end_ns - c.start_ns) * 1e-6;
+    const double duration_ms = static_cast<double>(c.end_ns - c.start_ns) * 1e-6;
     // Main sequence: 2.2 ms per degree + 21 ms (Carpenter 1988), to the 0.1 ms sampling.
     EXPECT_NEAR(duration_ms, 2.2 * c.amplitude_deg + 21.0, 0.25) << "amplitude " << c.amplitude_deg;
     EXPECT_LE(c.amplitude_deg, 40.0 + 1e-6);
@@ -129,7 +129,7 @@ TEST(Effects, SaccadesFollowTheMainSequence) {
   EXPECT_GT(max_peak, 400.0) << "large saccades approach the saturation";
   // Fixations are still: between saccades the direction does not move at all.
   for (std::size_t i = 1; i < s.size(); ++i) {
-    const double fix_ms = (s[i].start_ns - s[i - 1].end_ns) * 1e-6;
+    const double fix_ms = static_cast<double>(s[i].start_ns - s[i - 1].end_ns) * 1e-6;
     EXPECT_GE(fix_ms, 100.0 - 0.2);
     EXPECT_LE(fix_ms, 300.0 + 0.2);
   }

@@ -46,11 +46,15 @@ TEST(RecordTrace, OneRowPerTrackerSampleWithTheHeadAtThatTime) {
   EXPECT_GT(st.invalid_rows, 0u);
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const gaze::TraceRecord& r = rows[i];
-    if (i > 0) EXPECT_GT(r.gaze.t_ns, rows[i - 1].gaze.t_ns);
+    if (i > 0) {
+      EXPECT_GT(r.gaze.t_ns, rows[i - 1].gaze.t_ns);
+    }
     const gaze::GazeSample expect = sim.tracker_at(r.gaze.t_ns + 20 * kMs);
     EXPECT_EQ(expect.t_ns, r.gaze.t_ns);
     EXPECT_EQ(r.gaze.valid, expect.valid);
-    if (expect.valid) EXPECT_LT(angle_deg(r.gaze.direction, expect.direction), 1e-9);
+    if (expect.valid) {
+      EXPECT_LT(angle_deg(r.gaze.direction, expect.direction), 1e-9);
+    }
     ASSERT_TRUE(r.has_head);
     const glm::dquat q = sim.head_at(r.gaze.t_ns).orientation;
     EXPECT_NEAR(std::abs(glm::dot(q, r.head.orientation)), 1.0, 1e-12);

@@ -42,7 +42,9 @@ TEST(ScenarioParse, DefaultScenarioIsAnEyeTrackedHmdWithAFieldOfFourLodObjects) 
       const double ratio = double(o.lods[l - 1].triangles) / o.lods[l].triangles;
       EXPECT_NEAR(ratio, 4.0, 0.1) << o.name << " level " << l;
       EXPECT_GT(o.lods[l].detail, 0.0);
-      if (l > 1) EXPECT_LT(o.lods[l].detail, o.lods[l - 1].detail) << "coarser levels keep less";
+      if (l > 1) {
+        EXPECT_LT(o.lods[l].detail, o.lods[l - 1].detail) << "coarser levels keep less";
+      }
       EXPECT_EQ(o.lods[l].detail_kind, lod::DetailKind::removed_cycles_per_diameter);
     }
   }

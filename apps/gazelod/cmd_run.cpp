@@ -54,6 +54,8 @@ const Registrar reg("run", "Run an OpenXR session with gaze-contingent LOD and w
   app.add_flag("--no-render", *no_render, "Select LODs only; draw nothing");
   app.add_flag("--no-eye-gaze", *no_eye_gaze, "Ignore the runtime's eye gaze (head-fixed fallback)");
   app.add_option("--trace", opt->trace_path, "Replay this gazelod gaze trace as the gaze source");
+  auto gaze_source = std::make_shared<std::string>();
+  app.add_option("--gaze", *gaze_source, "Gaze source for the whole run: runtime (default), hid (the first HID eye tracker) or trace:FILE");
   app.add_option("--capture-frame", opt->capture_frame, "Frame saved as frame.png (default: the middle one)");
   app.add_flag("--quiet", opt->quiet, "No progress lines");
   app.add_option("--decisions", opt->decisions_path,
@@ -65,6 +67,14 @@ const Registrar reg("run", "Run an OpenXR session with gaze-contingent LOD and w
     if (!std::isfinite(opt->budget_ms)) throw UsageError("--budget-ms: must be a number in [0, 1000], got nan");
     if (app.count("--hmd") > 0 && opt->hmd.empty()) throw UsageError("--hmd: empty (see gazelod hmds)");
     RunOptions o = *opt;
+    if (*gaze_source == "hid") {
+      o.hid_gaze = true;
+    } else if (gaze_source->rfind("trace:", 0) == 0 && gaze_source->size() > 6) {
+      o.trace_path = gaze_source->substr(6);
+    } else if (!gaze_source->empty() && *gaze_source != "runtime") {
+      throw UsageError("--gaze: '" + *gaze_source + "' (use runtime, hid or trace:FILE)");
+    }
+    if (o.hid_gaze && !o.trace_path.empty()) throw UsageError("--gaze hid and --trace: choose one gaze source");
     o.criteria = parse_criteria(*criteria);
     o.out_dir = *out;
     o.render = !*no_render;

@@ -1,4 +1,6 @@
 #include "apps/gazelod/run_session.hpp"
+
+#include "gaze/hid/hid_gaze_source.hpp"
 #include "lod/angles.hpp"
 
 #include "apps/gazelod/eval_lod_map.hpp"
@@ -99,7 +101,7 @@ int run_session(const RunOptions& opt, Io io) {
   PluginConfig config;
   // --trace: the trace is the gaze source for the whole run (from the first frame on; the
   // runtime's own gaze is not used), and the source-change lines say when it ends.
-  config.use_openxr_eye_gaze = opt.eye_gaze && app->eye_gaze_enabled() && opt.trace_path.empty();
+  config.use_openxr_eye_gaze = opt.eye_gaze && app->eye_gaze_enabled() && opt.trace_path.empty() && !opt.hid_gaze;
   config.criteria = opt.criteria;
   config.compute_breakdown = true;
   config.budget_ms = opt.budget_ms;
@@ -108,6 +110,21 @@ int run_session(const RunOptions& opt, Io io) {
   config.budget.headroom = 0.15;
   config.hmd_override = opt.hmd;
   config.external_source = make_external_source(opt);
+  if (opt.hid_gaze) {
+    // The first HID eye tracker, its samples mapped onto the runtime's clock. No tracker (or
+    // one unplugged later): the source says so and the plugin falls back to head-fixed gaze.
+    if (app->now() == 0) {
+      io.err << "gazelod run: --gaze hid needs XR_KHR_convert_timespec_time (the runtime's clock), which this runtime does not offer\n";
+      return 2;
+    }
+    gaze::hid::HidTrackerConfig hid;
+    const xr_host::XrApp* host = &*app;
+    hid.host_now_ns = [host] { return static_cast<std::int64_t>(host->now()); };
+    hid.log = [&io, &opt](const std::string& line) {
+      if (!opt.quiet) io.err << line << "\n";  // already "gazelod hid: ..."
+    };
+    config.external_source = std::make_shared<gaze::hid::HidGazeSource>(std::move(hid));
+  }
   auto plugin = LodPlugin::create(app->instance(), app->system(), app->session(), app->local_space(), config);
   plugin->on_source_changed([&io, &opt](GazeSourceKind now, const std::string& why) {
     if (!opt.quiet) io.err << "gazelod run: gaze source " << to_string(now) << ": " << why << "\n";
@@ -169,7 +186,7 @@ int run_session(const RunOptions& opt, Io io) {
     if (time_base == 0) {
       time_base = app->scenario_time_base();
       // A replayed trace is not the simulator's eye: no ground truth to hold it against.
-      ground_truth = opt.runtime == "sim" && time_base != 0 && opt.trace_path.empty();
+      ground_truth = opt.runtime == "sim" && time_base != 0 && opt.trace_path.empty() && !opt.hid_gaze;
       if (ground_truth && opt.audit) oracle.emplace(scenario, opt.criteria);
       if (time_base == 0) time_base = fs.predictedDisplayTime - fs.predictedDisplayPeriod;
     }
@@ -275,6 +292,7 @@ int run_session(const RunOptions& opt, Io io) {
   if (!oracle) {
     summary.audit = AuditSummary{};
     summary.audit.reason = !opt.trace_path.empty() ? "no ground truth: the gaze is a replayed trace"
+                           : opt.hid_gaze           ? "no ground truth: the gaze is a HID eye tracker"
                            : !ground_truth          ? "no ground truth: not the simulated runtime"
                                                     : "switched off with --no-audit";
   }

@@ -24,6 +24,7 @@ struct RunOptions {
   bool render = true;                  // false: select only, no Vulkan drawing
   bool eye_gaze = true;                // false: ignore the runtime's eye gaze (fallback test)
   std::string trace_path;              // an external gaze source: a gazelod trace to replay
+  bool hid_gaze = false;               // the first HID eye tracker (usage page 0x12) as the gaze source
   std::int64_t capture_frame = -1;     // frame saved as PNG in out_dir (-1: the middle one)
   bool quiet = false;                  // no progress lines
   bool audit = true;                   // the visibility audit against the simulator's truth (run_audit.hpp)

@@ -62,6 +62,8 @@ void XrApp::create_instance(bool want_eye_gaze) {
   std::vector<const char*> exts{XR_KHR_VULKAN_ENABLE2_EXTENSION_NAME};
   eye_gaze_enabled_ = want_eye_gaze && has(XR_EXT_EYE_GAZE_INTERACTION_EXTENSION_NAME);
   if (eye_gaze_enabled_) exts.push_back(XR_EXT_EYE_GAZE_INTERACTION_EXTENSION_NAME);
+  timespec_enabled_ = has(XR_KHR_CONVERT_TIMESPEC_TIME_EXTENSION_NAME);
+  if (timespec_enabled_) exts.push_back(XR_KHR_CONVERT_TIMESPEC_TIME_EXTENSION_NAME);
   simulator_state_enabled_ = has(XR_GAZELOD_SIMULATOR_STATE_EXTENSION_NAME);
   if (simulator_state_enabled_) exts.push_back(XR_GAZELOD_SIMULATOR_STATE_EXTENSION_NAME);
 
@@ -215,6 +217,20 @@ void XrApp::create_swapchains() {
     swapchains_.push_back(std::move(sv));
   }
   projection_views_.assign(swapchains_.size(), {XR_TYPE_COMPOSITION_LAYER_PROJECTION_VIEW});
+}
+
+XrTime XrApp::now() const {
+  if (!timespec_enabled_) return 0;
+  if (!to_xr_time_) {
+    PFN_xrVoidFunction f = nullptr;
+    if (XR_FAILED(xrGetInstanceProcAddr(instance_, "xrConvertTimespecTimeToTimeKHR", &f)) || !f) return 0;
+    to_xr_time_ = reinterpret_cast<void (*)()>(f);
+  }
+  timespec ts{};
+  if (::clock_gettime(CLOCK_MONOTONIC, &ts) != 0) return 0;
+  XrTime t = 0;
+  const auto convert = reinterpret_cast<PFN_xrConvertTimespecTimeToTimeKHR>(to_xr_time_);
+  return XR_SUCCEEDED(convert(instance_, &ts, &t)) ? t : 0;
 }
 
 XrTime XrApp::scenario_time_base() const {

@@ -4,6 +4,8 @@
 #pragma once
 
 #define XR_USE_GRAPHICS_API_VULKAN
+#define XR_USE_TIMESPEC
+#include <time.h>
 #include <vulkan/vulkan.h>
 #include <openxr/openxr.h>
 #include <openxr/openxr_platform.h>
@@ -42,6 +44,9 @@ class XrApp {
   XrSession session() const { return session_; }
   XrSpace local_space() const { return local_space_; }
   bool eye_gaze_enabled() const { return eye_gaze_enabled_; }
+  // The runtime's clock now (XR_KHR_convert_timespec_time from CLOCK_MONOTONIC), the clock
+  // devices outside OpenXR (a HID eye tracker) stamp their samples on; 0 when not offered.
+  XrTime now() const;
   const std::string& runtime_name() const { return runtime_name_; }
   // Scenario time 0 as an XrTime, when the runtime is gazelod's simulator
   // (XR_GAZELOD_simulator_state); 0 otherwise.
@@ -85,6 +90,8 @@ class XrApp {
   XrSessionState state_ = XR_SESSION_STATE_UNKNOWN;
   bool session_running_ = false;
   bool eye_gaze_enabled_ = false;
+  bool timespec_enabled_ = false;
+  mutable void (*to_xr_time_)() = nullptr;
   bool simulator_state_enabled_ = false;
   std::string runtime_name_, system_name_, vk_device_name_;
   VkInstance vk_instance_ = VK_NULL_HANDLE;

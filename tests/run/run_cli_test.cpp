@@ -165,6 +165,24 @@ TEST(RunCli, EveryLevelIsReportedUpTo255) {
   EXPECT_NE(r.out.find("L" + std::to_string(hist.size() - 1) + " "), std::string::npos) << r.out;
 }
 
+// --gaze hid: the first HID eye tracker is the run's gaze source (its samples mapped onto the
+// runtime's clock through XR_KHR_convert_timespec_time). This machine has none: the run goes on
+// head-fixed and says why, and there is no ground truth to audit. Bad --gaze values exit 2.
+TEST(RunCli, GazeHidWithoutATrackerFallsBackAndSaysSo) {
+  use_simulated_runtime("");
+  const auto dir = scratch_dir();
+  CliResult r = run_cli({"run", "--gaze", "hid", "--frames", "30", "--no-render", "--out", (dir / "out").string()});
+  ASSERT_EQ(r.rc, 0) << r.err;
+  EXPECT_NE(r.err.find("hid unavailable"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("head-fixed"), std::string::npos) << r.err;
+  const auto summary = nlohmann::json::parse(read_text(dir / "out" / "summary.json"));
+  EXPECT_EQ(summary.at("gaze_valid_frames").get<int>(), 0);
+  EXPECT_FALSE(summary.at("audit").at("available").get<bool>());
+  r = run_cli({"run", "--gaze", "camera", "--frames", "3", "--no-render", "--out", (dir / "o2").string()});
+  EXPECT_EQ(r.rc, 2);
+  EXPECT_NE(r.err.find("--gaze"), std::string::npos) << r.err;
+}
+
 TEST(RunCli, BudgetKeepsThePredictedFrameTimeUnderTheBudget) {
   use_simulated_runtime("");
   const auto dir = scratch_dir();

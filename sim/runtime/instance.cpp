@@ -7,6 +7,7 @@
 #include <openxr/openxr_reflection.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <string_view>
@@ -27,6 +28,16 @@ const Extension kExtensions[] = {
     {XR_EXT_CONFORMANCE_AUTOMATION_EXTENSION_NAME, XR_EXT_conformance_automation_SPEC_VERSION},
     {XR_GAZELOD_SIMULATOR_STATE_EXTENSION_NAME, XR_GAZELOD_simulator_state_SPEC_VERSION},
 };
+
+// GAZELOD_SIM_EYE_GAZE_EXTENSION=0 hides XR_EXT_eye_gaze_interaction, as on the many runtimes
+// that lack it (how the eye-gaze API layer is tested). Only "0" hides it here: a bad value
+// fails xrCreateInstance with its message (load_runtime_scenario), since the loader ignores
+// a failing enumeration.
+bool offered(std::string_view name) {
+  if (name != XR_EXT_EYE_GAZE_INTERACTION_EXTENSION_NAME) return true;
+  const char* v = std::getenv("GAZELOD_SIM_EYE_GAZE_EXTENSION");
+  return v == nullptr || std::strcmp(v, "0") != 0;
+}
 
 void copy_name(char* dst, std::size_t cap, std::string_view src) {
   const std::size_t n = std::min(cap - 1, src.size());
@@ -49,15 +60,18 @@ XrResult EnumerateInstanceExtensionProperties(const char* layerName, uint32_t ca
   return guarded([&] {
     if (layerName != nullptr) return XR_ERROR_API_LAYER_NOT_PRESENT;
     if (count == nullptr) return XR_ERROR_VALIDATION_FAILURE;
-    const auto n = static_cast<std::uint32_t>(std::size(kExtensions));
+    const Extension* listed[std::size(kExtensions)];
+    std::uint32_t n = 0;
+    for (const Extension& e : kExtensions)
+      if (offered(e.name)) listed[n++] = &e;
     *count = n;
     if (capacity == 0) return XR_SUCCESS;
     if (capacity < n) return XR_ERROR_SIZE_INSUFFICIENT;
     if (props == nullptr) return XR_ERROR_VALIDATION_FAILURE;
     for (std::uint32_t i = 0; i < n; ++i) {
       if (props[i].type != XR_TYPE_EXTENSION_PROPERTIES) return XR_ERROR_VALIDATION_FAILURE;
-      copy_name(props[i].extensionName, XR_MAX_EXTENSION_NAME_SIZE, kExtensions[i].name);
-      props[i].extensionVersion = kExtensions[i].version;
+      copy_name(props[i].extensionName, XR_MAX_EXTENSION_NAME_SIZE, listed[i]->name);
+      props[i].extensionVersion = listed[i]->version;
     }
     return XR_SUCCESS;
   });
@@ -75,6 +89,7 @@ XrResult CreateInstance(const XrInstanceCreateInfo* info, XrInstance* instance) 
       const char* name_c = info->enabledExtensionNames ? info->enabledExtensionNames[i] : nullptr;
       if (name_c == nullptr) return XR_ERROR_VALIDATION_FAILURE;
       const std::string_view name(name_c);
+      if (!offered(name)) return XR_ERROR_EXTENSION_NOT_PRESENT;
       if (name == XR_KHR_VULKAN_ENABLE_EXTENSION_NAME) inst->ext_vulkan = true;
       else if (name == XR_KHR_VULKAN_ENABLE2_EXTENSION_NAME) inst->ext_vulkan2 = true;
       else if (name == XR_KHR_CONVERT_TIMESPEC_TIME_EXTENSION_NAME) inst->ext_timespec = true;

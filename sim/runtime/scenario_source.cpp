@@ -29,6 +29,7 @@ sim::Scenario load_runtime_scenario() {
   // Read when first logged; checked here so that a bad value fails instance creation as every
   // other variable does.
   (void)env_flag("GAZELOD_SIM_LOG", false);
+  (void)env_flag("GAZELOD_SIM_EYE_GAZE_EXTENSION", true);
   sim::Scenario scenario;
   if (const char* file = env("GAZELOD_SIM_SCENARIO")) {
     scenario = sim::load_scenario_file(file);

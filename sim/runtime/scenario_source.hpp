@@ -8,7 +8,7 @@
 namespace gazelod::xrrt {
 
 // Throws sim::ScenarioError (or std::runtime_error for a bad environment variable, including
-// GAZELOD_SIM_LOG).
+// GAZELOD_SIM_LOG and GAZELOD_SIM_EYE_GAZE_EXTENSION).
 sim::Scenario load_runtime_scenario();
 
 // The one parser of the runtime's boolean variables (GAZELOD_SIM_PACED, GAZELOD_SIM_LOG,

@@ -8,6 +8,8 @@
 #include <dlfcn.h>
 
 #include <cstring>
+#include <cstdlib>
+#include <vector>
 
 namespace gazelod::xrrt_test {
 namespace {
@@ -195,6 +197,33 @@ TEST(RuntimeErrors, UnsupportedExtensionsFormFactorsAndViews) {
   XrSession session = XR_NULL_HANDLE;
   EXPECT_EQ(xrCreateSession(instance, &si, &session), XR_ERROR_GRAPHICS_DEVICE_INVALID);
   EXPECT_EQ(xrDestroyInstance(instance), XR_SUCCESS);
+}
+
+// GAZELOD_SIM_EYE_GAZE_EXTENSION=0: a runtime without eye gaze, as the eye-gaze layer meets it.
+TEST(RuntimeErrors, EyeGazeExtensionCanBeHidden) {
+  use_runtime(5.0);
+  const auto listed = [] {
+    std::uint32_t n = 0;
+    EXPECT_EQ(xrEnumerateInstanceExtensionProperties(nullptr, 0, &n, nullptr), XR_SUCCESS);
+    std::vector<XrExtensionProperties> props(n, {XR_TYPE_EXTENSION_PROPERTIES});
+    EXPECT_EQ(xrEnumerateInstanceExtensionProperties(nullptr, n, &n, props.data()), XR_SUCCESS);
+    for (const auto& p : props)
+      if (std::strcmp(p.extensionName, XR_EXT_EYE_GAZE_INTERACTION_EXTENSION_NAME) == 0) return true;
+    return false;
+  };
+  EXPECT_TRUE(listed());
+  setenv("GAZELOD_SIM_EYE_GAZE_EXTENSION", "0", 1);
+  EXPECT_FALSE(listed());
+  XrInstanceCreateInfo info{XR_TYPE_INSTANCE_CREATE_INFO};
+  std::strcpy(info.applicationInfo.applicationName, "errors");
+  info.applicationInfo.apiVersion = XR_MAKE_VERSION(1, 0, 0);
+  const char* eye[] = {XR_EXT_EYE_GAZE_INTERACTION_EXTENSION_NAME};
+  info.enabledExtensionCount = 1;
+  info.enabledExtensionNames = eye;
+  XrInstance instance = XR_NULL_HANDLE;
+  EXPECT_EQ(xrCreateInstance(&info, &instance), XR_ERROR_EXTENSION_NOT_PRESENT);
+  unsetenv("GAZELOD_SIM_EYE_GAZE_EXTENSION");
+  EXPECT_TRUE(listed());
 }
 
 TEST(RuntimeErrors, ActionSystemRules) {

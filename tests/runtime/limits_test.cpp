@@ -82,7 +82,8 @@ TEST(RuntimeLimits, ScenarioPastTheLimitsFailsInstanceCreationWithTheMessage) {
 
 TEST(RuntimeLimits, BooleanVariablesShareOneParser) {
   use_runtime(2.0);
-  for (const char* name : {"GAZELOD_SIM_LOG", "GAZELOD_SIM_PACED", "GAZELOD_SIM_LOSE_SESSION_SILENTLY"}) {
+  for (const char* name : {"GAZELOD_SIM_LOG", "GAZELOD_SIM_PACED", "GAZELOD_SIM_LOSE_SESSION_SILENTLY",
+                           "GAZELOD_SIM_EYE_GAZE_EXTENSION"}) {
     SCOPED_TRACE(name);
     setenv(name, "abc", 1);
     const Created bad = create_capturing_stderr();

@@ -6,6 +6,24 @@
 
 namespace gazelod::xrrt {
 
+namespace {
+
+// The conversions of section 11.5.2 ("Action type conversions"): boolean and float sources
+// feed each other's actions; a vector2, pose or haptic action takes only its own kind. Any other
+// pairing leaves the binding unused (the action inactive), not an error.
+bool feeds(XrActionType action, InputKind source) {
+  switch (action) {
+    case XR_ACTION_TYPE_BOOLEAN_INPUT:
+    case XR_ACTION_TYPE_FLOAT_INPUT: return source == InputKind::boolean || source == InputKind::scalar;
+    case XR_ACTION_TYPE_VECTOR2F_INPUT: return source == InputKind::vector2;
+    case XR_ACTION_TYPE_POSE_INPUT: return source == InputKind::pose;
+    case XR_ACTION_TYPE_VIBRATION_OUTPUT: return source == InputKind::haptic;
+    default: return false;
+  }
+}
+
+}  // namespace
+
 std::vector<XrPath> bound_sources(const Instance& inst, const Session& session, const Action& action,
                                   XrPath subaction) {
   std::vector<XrPath> out;
@@ -21,7 +39,8 @@ std::vector<XrPath> bound_sources(const Instance& inst, const Session& session, 
     for (const auto& [action_id, binding] : it->second) {
       if (action_id != action.id) continue;
       const std::string* b = inst.paths.find(binding);
-      if (b != nullptr && top_str != nullptr && top_level_of(*b) == *top_str) out.push_back(binding);
+      if (b != nullptr && top_str != nullptr && top_level_of(*b) == *top_str && feeds(action.type, input_kind(*b)))
+        out.push_back(binding);
     }
   }
   return out;

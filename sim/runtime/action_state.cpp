@@ -2,6 +2,7 @@
 // (OpenXR 1.0 sections 11.5-11.8). Input values come from XR_EXT_conformance_automation.
 #include "sim/runtime/action_bindings.hpp"
 #include "sim/runtime/entry_points.hpp"
+#include "sim/runtime/events.hpp"
 #include "sim/runtime/interaction_profiles.hpp"
 #include "sim/runtime/runtime_state.hpp"
 
@@ -64,6 +65,30 @@ XrVector2f longest(const std::vector<SourceValue>& values) {
   return best;
 }
 
+// True when some action of the set lists `subaction` among its subaction paths.
+bool declares_subaction(std::uint64_t set_id, XrPath subaction) {
+  for (const auto& [aid, action] : runtime().actions.live)
+    if (action->set_id == set_id &&
+        std::find(action->subaction_paths.begin(), action->subaction_paths.end(), subaction) !=
+            action->subaction_paths.end())
+      return true;
+  return false;
+}
+
+// Device changes asked for since the last sync become current now, with one
+// XR_TYPE_EVENT_DATA_INTERACTION_PROFILE_CHANGED when any current profile changed.
+void apply_device_changes(Instance& inst, Session& s) {
+  bool changed = false;
+  for (auto& [top, d] : s.devices) {
+    if (!d.change_pending) continue;
+    d.change_pending = false;
+    changed = changed || d.active != d.pending_active || d.profile != d.pending_profile;
+    d.active = d.pending_active;
+    d.profile = d.pending_profile;
+  }
+  if (changed && s.actions_attached) queue_profile_changed(inst, s);
+}
+
 }  // namespace
 
 XrResult SyncActions(XrSession session, const XrActionsSyncInfo* info) {
@@ -83,9 +108,11 @@ XrResult SyncActions(XrSession session, const XrActionsSyncInfo* info) {
       if (as.subactionPath != XR_NULL_PATH) {
         const std::string* p = inst.paths.find(as.subactionPath);
         if (p == nullptr) return XR_ERROR_PATH_INVALID;
-        if (!is_top_level_user_path(*p)) return XR_ERROR_PATH_UNSUPPORTED;
+        if (!is_top_level_user_path(*p) || !declares_subaction(set->id, as.subactionPath))
+          return XR_ERROR_PATH_UNSUPPORTED;
       }
     }
+    apply_device_changes(inst, *s);
     const bool focused = s->state == XR_SESSION_STATE_FOCUSED;
     const XrTime now = inst.clock.now();
     s->last_sync_time = now;
@@ -95,19 +122,36 @@ XrResult SyncActions(XrSession session, const XrActionsSyncInfo* info) {
       state.current.clear();
     }
     if (!focused) return XR_SESSION_NOT_FOCUSED;  // every action inactive
+    // Each active set's actions with their bound sources; then a source feeds only the actions
+    // of the highest-priority active sets that bind it (section 11.5.1, "priority").
+    struct Bound {
+      std::uint64_t action_id;
+      std::uint32_t priority;
+      std::vector<XrPath> sources;
+    };
+    std::vector<Bound> bound;
+    std::map<XrPath, std::uint32_t> top_priority;
     for (std::uint32_t i = 0; i < info->countActiveActionSets; ++i) {
       const XrActiveActionSet& as = info->activeActionSets[i];
-      const std::uint64_t set_id = handle_id(as.actionSet);
-      s->synced_sets.push_back(set_id);
+      const ActionSet* set = find_action_set(as.actionSet);
+      s->synced_sets.push_back(set->id);
       for (const auto& [aid, action] : runtime().actions.live) {
-        if (action->set_id != set_id) continue;
-        ActionState& st = s->action_states[aid];
-        for (XrPath src : bound_sources(inst, *s, *action, as.subactionPath))
-          st.current[src] = read_source(inst, *s, src);
-        const float before = largest(select(inst, st.previous, XR_NULL_PATH));
-        const float after = largest(select(inst, st.current, XR_NULL_PATH));
-        if (before != after) st.last_change_time = now;
+        if (action->set_id != set->id) continue;
+        Bound b{aid, set->priority, bound_sources(inst, *s, *action, as.subactionPath)};
+        for (XrPath src : b.sources) top_priority[src] = std::max(top_priority[src], set->priority);
+        bound.push_back(std::move(b));
       }
+    }
+    for (const Bound& b : bound) {
+      ActionState& st = s->action_states[b.action_id];
+      for (XrPath src : b.sources)
+        if (b.priority == top_priority[src]) st.current[src] = read_source(inst, *s, src);
+    }
+    for (const Bound& b : bound) {
+      ActionState& st = s->action_states[b.action_id];
+      const float before = largest(select(inst, st.previous, XR_NULL_PATH));
+      const float after = largest(select(inst, st.current, XR_NULL_PATH));
+      if (before != after) st.last_change_time = now;
     }
     return XR_SUCCESS;
   });

@@ -176,9 +176,9 @@ XrResult AttachSessionActionSets(XrSession session, const XrSessionActionSetsAtt
     const XrPath eye_profile = inst.paths.intern(kEyeGazeProfile);
     if (inst.ext_eye_gaze && sc.runtime.eye_gaze_supported && inst.suggested.count(eye_profile) != 0) {
       InputDevice& eyes = s->devices[inst.paths.intern(kEyesUserPath)];
-      eyes.active = true;
-      eyes.profile = eye_profile;
-      queue_profile_changed(inst, *s);
+      eyes.change_pending = true;  // current from the first xrSyncActions
+      eyes.pending_active = true;
+      eyes.pending_profile = eye_profile;
     }
     return XR_SUCCESS;
   });

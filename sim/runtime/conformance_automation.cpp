@@ -2,7 +2,6 @@
 // poses; values take effect at the next xrSyncActions. A location set on
 // /user/eyes_ext/input/gaze_ext/pose replaces the simulated gaze.
 #include "sim/runtime/entry_points.hpp"
-#include "sim/runtime/events.hpp"
 #include "sim/runtime/interaction_profiles.hpp"
 #include "sim/runtime/pose_math.hpp"
 #include "sim/runtime/runtime_state.hpp"
@@ -41,12 +40,9 @@ XrResult SetInputDeviceActiveEXT(XrSession session, XrPath interactionProfile, X
         std::find(profile->user_paths.begin(), profile->user_paths.end(), *top_str) == profile->user_paths.end())
       return XR_ERROR_PATH_UNSUPPORTED;
     InputDevice& d = s->devices[topLevelPath];
-    const bool active = isActive == XR_TRUE;
-    const XrPath new_profile = active ? interactionProfile : XR_NULL_PATH;
-    const bool changed = d.active != active || d.profile != new_profile;
-    d.active = active;
-    d.profile = new_profile;
-    if (changed && s->actions_attached) queue_profile_changed(inst, *s);
+    d.change_pending = true;  // applied, and reported, by the next xrSyncActions
+    d.pending_active = isActive == XR_TRUE;
+    d.pending_profile = d.pending_active ? interactionProfile : XR_NULL_PATH;
     return XR_SUCCESS;
   });
 }

@@ -26,6 +26,13 @@ void push(Instance& inst, const E& event) {
   inst.events.push_back(buffer);
 }
 
+template <class E>
+E read_event(const XrEventDataBuffer& buffer) {
+  E event;
+  std::memcpy(&event, &buffer, sizeof(E));
+  return event;
+}
+
 int rank(XrSessionState s) {
   switch (s) {
     case XR_SESSION_STATE_SYNCHRONIZED: return 1;
@@ -59,8 +66,10 @@ void raise_to_focused(Instance& inst, Session& session, XrTime time) {
 void lower_to_stopping(Instance& inst, Session& session, XrTime time) {
   if (session.state == XR_SESSION_STATE_FOCUSED) change_state(inst, session, XR_SESSION_STATE_VISIBLE, time);
   if (session.state == XR_SESSION_STATE_VISIBLE) change_state(inst, session, XR_SESSION_STATE_SYNCHRONIZED, time);
-  if (session.state == XR_SESSION_STATE_SYNCHRONIZED || session.state == XR_SESSION_STATE_READY)
-    change_state(inst, session, XR_SESSION_STATE_STOPPING, time);
+  // STOPPING follows only SYNCHRONIZED (section 9.3's diagram): a running session asked to
+  // stop before its first xrWaitFrame passes through SYNCHRONIZED first.
+  if (session.state == XR_SESSION_STATE_READY) change_state(inst, session, XR_SESSION_STATE_SYNCHRONIZED, time);
+  if (session.state == XR_SESSION_STATE_SYNCHRONIZED) change_state(inst, session, XR_SESSION_STATE_STOPPING, time);
 }
 
 void check_scenario_end(Instance& inst, Session& session, XrTime time) {
@@ -69,6 +78,24 @@ void check_scenario_end(Instance& inst, Session& session, XrTime time) {
   session.exit_requested = true;
   session.scenario_ended = true;
   lower_to_stopping(inst, session, time);
+}
+
+void discard_session_events(Instance& inst, std::uint64_t session_id) {
+  const XrSession doomed = to_handle<XrSession>(session_id);
+  std::erase_if(inst.events, [&](const XrEventDataBuffer& buffer) {
+    XrSession named = XR_NULL_HANDLE;
+    switch (buffer.type) {  // every event type this runtime queues that holds a session
+      case XR_TYPE_EVENT_DATA_SESSION_STATE_CHANGED:
+        named = read_event<XrEventDataSessionStateChanged>(buffer).session;
+        break;
+      case XR_TYPE_EVENT_DATA_INTERACTION_PROFILE_CHANGED:
+        named = read_event<XrEventDataInteractionProfileChanged>(buffer).session;
+        break;
+      default:
+        return false;
+    }
+    return named == doomed;
+  });
 }
 
 void queue_profile_changed(Instance& inst, const Session& session) {

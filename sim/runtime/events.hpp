@@ -15,6 +15,9 @@ void raise_to_focused(Instance& inst, Session& session, XrTime time);
 void lower_to_stopping(Instance& inst, Session& session, XrTime time);
 // Starts the stop once the scenario's time (predicted or current) reaches its duration.
 void check_scenario_end(Instance& inst, Session& session, XrTime time);
+// Drops queued events that name a session being destroyed (OpenXR 1.0 section 2.9: the
+// runtime discards queued events holding a destroyed handle).
+void discard_session_events(Instance& inst, std::uint64_t session_id);
 // Queues XrEventDataInteractionProfileChanged.
 void queue_profile_changed(Instance& inst, const Session& session);
 

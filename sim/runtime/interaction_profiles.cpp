@@ -1,15 +1,13 @@
 // Interaction profile table and path classification (see interaction_profiles.hpp).
 #include "sim/runtime/interaction_profiles.hpp"
 
+#include <algorithm>
+
 namespace gazelod::xrrt {
 namespace {
 
 constexpr std::string_view kUserPaths[] = {"/user/hand/left", "/user/hand/right", "/user/head",
                                             "/user/gamepad", "/user/eyes_ext"};
-
-bool ends_with(std::string_view s, std::string_view suffix) {
-  return s.size() >= suffix.size() && s.substr(s.size() - suffix.size()) == suffix;
-}
 
 }  // namespace
 
@@ -45,6 +43,28 @@ const std::vector<InteractionProfile>& interaction_profiles() {
         "input/thumbstick/x", "input/thumbstick/y", "input/thumbstick/click", "input/trackpad",
         "input/trackpad/x", "input/trackpad/y", "input/trackpad/click", "input/trackpad/touch",
         "input/grip/pose", "input/aim/pose", "output/haptic"}},
+      {"/interaction_profiles/google/daydream_controller",
+       {"/user/hand/left", "/user/hand/right"},
+       {"input/select/click", "input/trackpad", "input/trackpad/x", "input/trackpad/y",
+        "input/trackpad/click", "input/trackpad/touch", "input/grip/pose", "input/aim/pose"}},
+      {"/interaction_profiles/htc/vive_pro",
+       {"/user/head"},
+       {"input/system/click", "input/volume_up/click", "input/volume_down/click", "input/mute_mic/click"}},
+      {"/interaction_profiles/microsoft/xbox_controller",
+       {"/user/gamepad"},
+       {"input/menu/click", "input/view/click", "input/a/click", "input/b/click", "input/x/click",
+        "input/y/click", "input/dpad_down/click", "input/dpad_right/click", "input/dpad_up/click",
+        "input/dpad_left/click", "input/shoulder_left/click", "input/shoulder_right/click",
+        "input/thumbstick_left/click", "input/thumbstick_right/click", "input/trigger_left/value",
+        "input/trigger_right/value", "input/thumbstick_left", "input/thumbstick_left/x",
+        "input/thumbstick_left/y", "input/thumbstick_right", "input/thumbstick_right/x",
+        "input/thumbstick_right/y", "output/haptic_left", "output/haptic_right", "output/haptic_left_trigger",
+        "output/haptic_right_trigger"}},
+      {"/interaction_profiles/oculus/go_controller",
+       {"/user/hand/left", "/user/hand/right"},
+       {"input/system/click", "input/trigger/click", "input/back/click", "input/trackpad", "input/trackpad/x",
+        "input/trackpad/y", "input/trackpad/click", "input/trackpad/touch", "input/grip/pose",
+        "input/aim/pose"}},
       {kEyeGazeProfile, {kEyesUserPath}, {"input/gaze_ext/pose"}, true},
   };
   return kProfiles;
@@ -79,17 +99,22 @@ bool profile_has_binding(const InteractionProfile& profile, std::string_view bin
       if (side.empty() || !c.starts_with(side)) continue;
       c.remove_prefix(side.size());
     }
-    // Exact, or an identifier naming a component's parent ("input/trigger" for ".../value").
-    if (c == rest || (c.size() > rest.size() && c.starts_with(rest) && c[rest.size()] == '/')) return true;
+    if (c == rest) return true;
+    // An identifier without its component ("input/trigger" for "input/trigger/value", section
+    // 6.3.2): exactly "input/<identifier>" or "output/<identifier>", never "input" alone.
+    const bool identifier = std::count(rest.begin(), rest.end(), '/') == 1;
+    if (identifier && c.size() > rest.size() && c.starts_with(rest) && c[rest.size()] == '/') return true;
   }
   return false;
 }
 
 InputKind input_kind(std::string_view binding) {
-  if (ends_with(binding, "/pose")) return InputKind::pose;
-  if (ends_with(binding, "/haptic")) return InputKind::haptic;
-  if (ends_with(binding, "/click") || ends_with(binding, "/touch")) return InputKind::boolean;
-  if (ends_with(binding, "/thumbstick") || ends_with(binding, "/trackpad")) return InputKind::vector2;
+  const std::string_view last = binding.substr(binding.rfind('/') + 1);  // npos + 1 == 0
+  if (last == "pose") return InputKind::pose;
+  if (binding.find("/output/") != std::string_view::npos) return InputKind::haptic;
+  if (last == "click" || last == "touch") return InputKind::boolean;
+  // 2D identifiers (thumbstick, thumbstick_left, trackpad) bound without a component.
+  if (last.starts_with("thumbstick") || last == "trackpad") return InputKind::vector2;
   return InputKind::scalar;
 }
 

@@ -1,6 +1,7 @@
 // Handle registry and the cascade of destruction (destroying an instance destroys its
 // sessions, action sets and actions; a session its spaces and swapchains).
 #include "sim/runtime/runtime_state.hpp"
+#include "sim/runtime/events.hpp"
 #include "sim/runtime/vulkan_images.hpp"
 
 #include <cstring>
@@ -40,6 +41,8 @@ void destroy_session(std::uint64_t id) {
     if (sc->session_id == id) doomed.push_back(sid);
   for (std::uint64_t sid : doomed) destroy_swapchain(sid);
   std::erase_if(rt.spaces.live, [&](const auto& kv) { return kv.second->session_id == id; });
+  if (const Session* s = rt.sessions.find(id))
+    if (Instance* inst = rt.instances.find(s->instance_id)) discard_session_events(*inst, id);
   rt.sessions.live.erase(id);
 }
 

@@ -45,6 +45,14 @@ struct Instance {
 struct InputDevice {  // one top-level user path, as XR_EXT_conformance_automation drives it
   bool active = false;
   XrPath profile = XR_NULL_PATH;  // current interaction profile, XR_NULL_PATH when none
+  // A change asked for (xrSetInputDeviceActiveEXT, an eye tracker found at attach); the
+  // current profile changes, with its event, only in xrSyncActions (OpenXR 1.0 section 11.4).
+  bool change_pending = false;
+  bool pending_active = false;
+  XrPath pending_profile = XR_NULL_PATH;
+  // Whether the device is switched on now: tracking follows this at once, the current
+  // interaction profile only at the next xrSyncActions.
+  bool switched_on() const { return change_pending ? pending_active : active; }
   std::map<XrPath, bool> bools;
   std::map<XrPath, float> floats;
   std::map<XrPath, XrVector2f> vec2s;
@@ -109,6 +117,10 @@ struct Space {
   std::uint64_t action_id = 0;
   XrPath subaction = XR_NULL_PATH;
   XrPosef offset{};  // pose in the reference or action space
+  // The input source an action space follows, chosen when it is first located: it keeps
+  // following that device (the conformance suite expects a space to stick to one device), and
+  // stays locatable through it after its action is destroyed. A cache of locating, hence mutable.
+  mutable XrPath followed_source = XR_NULL_PATH;
 };
 
 struct ActionSet {

@@ -38,6 +38,19 @@ Located from_automation(Instance& inst, Session& session, const InputDevice::Loc
   return l;
 }
 
+// An active controller whose pose no test has set (XR_EXT_conformance_automation) is tracked at
+// a fixed resting place in LOCAL, a hand's width either side, below and in front of the eyes:
+// the conformance suite waits for an activated controller to become locatable, and a
+// simulated device has no reason to be lost.
+Located default_controller(std::string_view top_level, const Pose& offset) {
+  const double side_m = top_level == "/user/hand/left" ? -0.2 : top_level == "/user/hand/right" ? 0.2 : 0.0;
+  Located l;
+  l.valid = l.tracked = true;
+  l.pose = compose(Pose{glm::dquat(1, 0, 0, 0), glm::dvec3(side_m, -0.3, -0.4)}, offset);
+  l.has_velocity = true;  // at rest
+  return l;
+}
+
 Located locate_gaze(Instance& inst, Session& session, const InputDevice* eyes, XrPath gaze_path,
                     const Pose& offset, XrTime time, int depth) {
   Located l;
@@ -88,25 +101,36 @@ Located locate_in_local(Instance& inst, Session& session, const Space& space, Xr
       default: return {};
     }
   }
-  // Action space: located only while its action is active (last xrSyncActions).
+  // Action space: follows one bound source of its action (active at the last xrSyncActions),
+  // located while that source's device is switched on.
+  XrPath source = space.followed_source;
   const Action* action = runtime().actions.find(space.action_id);
-  if (action == nullptr) return {};
-  auto st = session.action_states.find(action->id);
-  if (st == session.action_states.end()) return {};
-  const std::string* sub = inst.paths.find(space.subaction);
-  for (const auto& [source, value] : st->second.current) {
-    const std::string* src = inst.paths.find(source);
-    if (src == nullptr || (sub != nullptr && top_level_of(*src) != *sub)) continue;
-    const InputDevice* device = nullptr;
-    for (const auto& [top, d] : session.devices)
-      if (const std::string* t = inst.paths.find(top); t != nullptr && top_level_of(*src) == *t) device = &d;
-    if (*src == kGazePosePath) return locate_gaze(inst, session, device, source, offset, time, depth);
-    if (device != nullptr) {
-      if (auto it = device->locations.find(source); it != device->locations.end())
-        return from_automation(inst, session, it->second, offset, time, depth);
+  if (action != nullptr) {
+    auto st = session.action_states.find(action->id);
+    if (st == session.action_states.end()) return {};
+    const std::string* sub = inst.paths.find(space.subaction);
+    const bool still_bound = source != XR_NULL_PATH && st->second.current.count(source) != 0;
+    if (source == XR_NULL_PATH) {
+      for (const auto& [candidate, value] : st->second.current) {
+        const std::string* src = inst.paths.find(candidate);
+        if (src == nullptr || (sub != nullptr && top_level_of(*src) != *sub)) continue;
+        source = space.followed_source = candidate;
+        break;
+      }
+    } else if (!still_bound) {
+      return {};  // the followed source is not active: the space is not located
     }
   }
-  return {};
+  const std::string* src = inst.paths.find(source);
+  if (source == XR_NULL_PATH || src == nullptr) return {};
+  const InputDevice* device = nullptr;
+  for (const auto& [top, d] : session.devices)
+    if (const std::string* t = inst.paths.find(top); t != nullptr && top_level_of(*src) == *t) device = &d;
+  if (*src == kGazePosePath) return locate_gaze(inst, session, device, source, offset, time, depth);
+  if (device == nullptr || !device->switched_on()) return {};
+  if (auto it = device->locations.find(source); it != device->locations.end())
+    return from_automation(inst, session, it->second, offset, time, depth);
+  return default_controller(top_level_of(*src), offset);
 }
 
 }  // namespace gazelod::xrrt

@@ -32,8 +32,9 @@ XrResult GetSystem(XrInstance instance, const XrSystemGetInfo* getInfo, XrSystem
     if (inst == nullptr) return XR_ERROR_HANDLE_INVALID;
     if (getInfo == nullptr || systemId == nullptr || getInfo->type != XR_TYPE_SYSTEM_GET_INFO)
       return XR_ERROR_VALIDATION_FAILURE;
-    if (getInfo->formFactor == XR_FORM_FACTOR_HANDHELD_DISPLAY) return XR_ERROR_FORM_FACTOR_UNSUPPORTED;
-    if (getInfo->formFactor != XR_FORM_FACTOR_HEAD_MOUNTED_DISPLAY) return XR_ERROR_VALIDATION_FAILURE;
+    // Every form factor but an HMD, known or not, is unsupported here (the conformance suite
+    // asks with XR_FORM_FACTOR_MAX_ENUM and expects this code, not a validation failure).
+    if (getInfo->formFactor != XR_FORM_FACTOR_HEAD_MOUNTED_DISPLAY) return XR_ERROR_FORM_FACTOR_UNSUPPORTED;
     inst->system_queried = true;
     *systemId = kSystemId;
     return XR_SUCCESS;

@@ -1,6 +1,6 @@
 // XR_EXT_conformance_automation through the loader: a test switches a controller on, presses
 // a button, places its grip pose and overrides the gaze pose; the action system reports them
-// after the next xrSyncActions, and the interaction profile changes are announced.
+// after the next xrSyncActions, and the interaction profile changes are announced there.
 #include "tests/runtime/xr_client.hpp"
 
 #include <cmath>
@@ -8,12 +8,6 @@
 
 namespace gazelod::xrrt_test {
 namespace {
-
-XrPath path(XrInstance instance, const char* s) {
-  XrPath p = XR_NULL_PATH;
-  EXPECT_EQ(xrStringToPath(instance, s, &p), XR_SUCCESS) << s;
-  return p;
-}
 
 TEST(RuntimeAutomation, DrivesControllerButtonsPosesAndGaze) {
   use_runtime(5.0);
@@ -93,10 +87,23 @@ TEST(RuntimeAutomation, DrivesControllerButtonsPosesAndGaze) {
   ASSERT_EQ(xrGetCurrentInteractionProfile(hs.session, eyes, &ips), XR_SUCCESS);
   EXPECT_EQ(ips.interactionProfile, path(inst, "/interaction_profiles/ext/eye_gaze_interaction"));
 
+  // The profile changes, with its event, at the next xrSyncActions only (section 11.4).
   ASSERT_EQ(set_active(hs.session, simple, left, XR_TRUE), XR_SUCCESS);
   ASSERT_EQ(xrGetCurrentInteractionProfile(hs.session, left, &ips), XR_SUCCESS);
-  EXPECT_EQ(ips.interactionProfile, simple);
+  EXPECT_EQ(ips.interactionProfile, XR_NULL_PATH);
+  int profile_events = 0;
+  XrEventDataBuffer e{XR_TYPE_EVENT_DATA_BUFFER};
+  const auto count_profile_events = [&] {
+    while (xrPollEvent(inst, &e) == XR_SUCCESS) {
+      profile_events += e.type == XR_TYPE_EVENT_DATA_INTERACTION_PROFILE_CHANGED;
+      e = {XR_TYPE_EVENT_DATA_BUFFER};
+    }
+  };
+  count_profile_events();
+  EXPECT_EQ(profile_events, 1) << "only the eyes' change, from the first xrSyncActions";
   ASSERT_EQ(xrSyncActions(hs.session, &sync), XR_SUCCESS);
+  ASSERT_EQ(xrGetCurrentInteractionProfile(hs.session, left, &ips), XR_SUCCESS);
+  EXPECT_EQ(ips.interactionProfile, simple);
   ASSERT_EQ(xrGetActionStateBoolean(hs.session, &get, &b), XR_SUCCESS);
   EXPECT_EQ(b.isActive, XR_TRUE);
   EXPECT_EQ(b.currentState, XR_FALSE);
@@ -143,15 +150,9 @@ TEST(RuntimeAutomation, DrivesControllerButtonsPosesAndGaze) {
   EXPECT_EQ(set_active(hs.session, simple, eyes, XR_TRUE), XR_ERROR_PATH_UNSUPPORTED);
   EXPECT_EQ(set_bool(hs.session, left, gaze_path, XR_TRUE), XR_ERROR_PATH_UNSUPPORTED);
 
-  // Interaction profile changes were announced.
-  int profile_events = 0;
-  XrEventDataBuffer e{XR_TYPE_EVENT_DATA_BUFFER};
-  while (xrPollEvent(inst, &e) == XR_SUCCESS) {
-    profile_events += e.type == XR_TYPE_EVENT_DATA_INTERACTION_PROFILE_CHANGED;
-    e = {XR_TYPE_EVENT_DATA_BUFFER};
-  }
-  // Controller on and off (the eyes' event at attach was consumed by begin()'s pump).
-  EXPECT_EQ(profile_events, 2);
+  // Interaction profile changes were announced: the eyes, the controller on and off.
+  count_profile_events();
+  EXPECT_EQ(profile_events, 3);
   hs.destroy();
 }
 

@@ -175,6 +175,8 @@ TEST(RuntimeErrors, UnsupportedExtensionsFormFactorsAndViews) {
   sys.formFactor = XR_FORM_FACTOR_HANDHELD_DISPLAY;
   XrSystemId system = XR_NULL_SYSTEM_ID;
   EXPECT_EQ(xrGetSystem(instance, &sys, &system), XR_ERROR_FORM_FACTOR_UNSUPPORTED);
+  sys.formFactor = XR_FORM_FACTOR_MAX_ENUM;  // not a form factor at all: still unsupported (CTS)
+  EXPECT_EQ(xrGetSystem(instance, &sys, &system), XR_ERROR_FORM_FACTOR_UNSUPPORTED);
   system = get_system(instance);
   uint32_t count = 0;
   EXPECT_EQ(xrEnumerateViewConfigurationViews(instance, system, XR_VIEW_CONFIGURATION_TYPE_PRIMARY_MONO, 0, &count,

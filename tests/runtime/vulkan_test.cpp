@@ -184,5 +184,20 @@ TEST(RuntimeVulkan, SwapchainsOfRealImagesOnLavapipe) {
   rig.destroy();
 }
 
+// xrRequestExitSession before the first xrWaitFrame: STOPPING follows only SYNCHRONIZED
+// (section 9.3), so the session passes through it; then IDLE and EXITING after xrEndSession.
+TEST(RuntimeVulkan, EarlyExitRequestPassesThroughSynchronized) {
+  setenv("VK_ICD_FILENAMES", "/usr/share/vulkan/icd.d/lvp_icd.x86_64.json", 1);
+  use_runtime(5.0);
+  VulkanRig rig;
+  ASSERT_NO_FATAL_FAILURE(rig.create_devices());  // begun, READY, no frame yet
+  ASSERT_EQ(xrRequestExitSession(rig.session), XR_SUCCESS);
+  EXPECT_EQ(drain_states(rig.instance),
+            (std::vector<XrSessionState>{XR_SESSION_STATE_SYNCHRONIZED, XR_SESSION_STATE_STOPPING}));
+  ASSERT_EQ(xrEndSession(rig.session), XR_SUCCESS);
+  EXPECT_EQ(drain_states(rig.instance), (std::vector<XrSessionState>{XR_SESSION_STATE_IDLE, XR_SESSION_STATE_EXITING}));
+  rig.destroy();
+}
+
 }  // namespace
 }  // namespace gazelod::xrrt_test

@@ -19,6 +19,12 @@ void use_runtime(double duration_s, bool paced, const std::string& scenario_file
   else setenv("GAZELOD_SIM_SCENARIO", scenario_file.c_str(), 1);
 }
 
+XrPath path(XrInstance instance, const char* s) {
+  XrPath p = XR_NULL_PATH;
+  EXPECT_EQ(xrStringToPath(instance, s, &p), XR_SUCCESS) << s;
+  return p;
+}
+
 XrInstance create_instance(const std::vector<const char*>& extensions) {
   XrInstanceCreateInfo info{XR_TYPE_INSTANCE_CREATE_INFO};
   std::strcpy(info.applicationInfo.applicationName, "gazelod-runtime-test");

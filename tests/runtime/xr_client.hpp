@@ -19,6 +19,8 @@ namespace gazelod::xrrt_test {
 void use_runtime(double duration_s, bool paced = false, const std::string& scenario_file = "");
 
 XrInstance create_instance(const std::vector<const char*>& extensions);
+// xrStringToPath, failing the test on error.
+XrPath path(XrInstance instance, const char* s);
 XrSystemId get_system(XrInstance instance);
 
 template <class PFN>

@@ -65,16 +65,6 @@ XrVector2f longest(const std::vector<SourceValue>& values) {
   return best;
 }
 
-// True when some action of the set lists `subaction` among its subaction paths.
-bool declares_subaction(std::uint64_t set_id, XrPath subaction) {
-  for (const auto& [aid, action] : runtime().actions.live)
-    if (action->set_id == set_id &&
-        std::find(action->subaction_paths.begin(), action->subaction_paths.end(), subaction) !=
-            action->subaction_paths.end())
-      return true;
-  return false;
-}
-
 // Device changes asked for since the last sync become current now, with one
 // XR_TYPE_EVENT_DATA_INTERACTION_PROFILE_CHANGED when any current profile changed.
 void apply_device_changes(Instance& inst, Session& s) {
@@ -108,7 +98,9 @@ XrResult SyncActions(XrSession session, const XrActionsSyncInfo* info) {
       if (as.subactionPath != XR_NULL_PATH) {
         const std::string* p = inst.paths.find(as.subactionPath);
         if (p == nullptr) return XR_ERROR_PATH_INVALID;
-        if (!is_top_level_user_path(*p) || !declares_subaction(set->id, as.subactionPath))
+        const auto& declared = set->subaction_paths;
+        if (!is_top_level_user_path(*p) ||
+            std::find(declared.begin(), declared.end(), as.subactionPath) == declared.end())
           return XR_ERROR_PATH_UNSUPPORTED;
       }
     }

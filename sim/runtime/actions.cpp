@@ -103,6 +103,9 @@ XrResult CreateAction(XrActionSet actionSet, const XrActionCreateInfo* info, XrA
     a->name = name;
     a->localized_name = localized;
     a->type = info->actionType;
+    for (XrPath p : subactions)
+      if (std::find(set->subaction_paths.begin(), set->subaction_paths.end(), p) == set->subaction_paths.end())
+        set->subaction_paths.push_back(p);
     a->subaction_paths = std::move(subactions);
     *action = to_handle<XrAction>(a->id);
     rt.actions.live.emplace(a->id, std::move(a));

@@ -129,6 +129,9 @@ struct ActionSet {
   std::string name, localized_name;
   std::uint32_t priority = 0;
   bool attached = false;  // to any session: the set and its actions are then immutable
+  // Every subaction path its actions declared, destroyed actions' too (xrSyncActions accepts
+  // exactly these for the set).
+  std::vector<XrPath> subaction_paths;
 };
 
 struct Action {

@@ -272,5 +272,50 @@ TEST(RuntimeSpecRules, ActivatedControllerIsLocatableAtARestingPose) {
   rig.hs.destroy();
 }
 
+// An action space without a subaction path follows the first device it was located through,
+// loses tracking at once when that device is switched off (its profile changes only at the next
+// sync), and stays locatable through it after its action is destroyed (what the CTS expects).
+TEST(RuntimeSpecRules, ActionSpacesFollowOneDeviceAndOutliveTheirAction) {
+  use_runtime(5.0);
+  ControllerRig rig;
+  ASSERT_NO_FATAL_FAILURE(rig.create());
+  const XrInstance inst = rig.hs.instance;
+  const XrActionSet set = make_set(inst, "set", 0);
+  const XrAction grip = make_action(set, "grip", XR_ACTION_TYPE_POSE_INPUT, {rig.left, rig.right});
+  ASSERT_EQ(suggest(inst, "/interaction_profiles/khr/simple_controller",
+                    {{grip, path(inst, "/user/hand/left/input/grip/pose")},
+                     {grip, path(inst, "/user/hand/right/input/grip/pose")}}),
+            XR_SUCCESS);
+  XrActionSpaceCreateInfo asci{XR_TYPE_ACTION_SPACE_CREATE_INFO};
+  asci.action = grip;
+  asci.poseInActionSpace.orientation.w = 1.0f;
+  XrSpace either = XR_NULL_HANDLE;
+  ASSERT_EQ(xrCreateActionSpace(rig.hs.session, &asci, &either), XR_SUCCESS);
+  const XrSpace local = rig.hs.reference_space(XR_REFERENCE_SPACE_TYPE_LOCAL);
+  ASSERT_NO_FATAL_FAILURE(rig.start({set}));  // the left controller on
+  auto set_active = proc<PFN_xrSetInputDeviceActiveEXT>(inst, "xrSetInputDeviceActiveEXT");
+  const std::vector<XrActiveActionSet> both{{set, rig.left}, {set, rig.right}};
+  ASSERT_EQ(sync(rig.hs.session, both), XR_SUCCESS);
+  const auto located = [&] {
+    XrSpaceLocation loc{XR_TYPE_SPACE_LOCATION};
+    EXPECT_EQ(xrLocateSpace(either, local, 2'000'000'000, &loc), XR_SUCCESS);
+    return (loc.locationFlags & XR_SPACE_LOCATION_POSITION_VALID_BIT) != 0;
+  };
+  EXPECT_TRUE(located()) << "through the left hand";
+  ASSERT_EQ(set_active(rig.hs.session, rig.simple, rig.right, XR_TRUE), XR_SUCCESS);
+  ASSERT_EQ(set_active(rig.hs.session, rig.simple, rig.left, XR_FALSE), XR_SUCCESS);
+  EXPECT_FALSE(located()) << "the left hand is off now, before any sync";
+  ASSERT_EQ(sync(rig.hs.session, both), XR_SUCCESS);
+  EXPECT_FALSE(located()) << "still following the left hand, not the right";
+  ASSERT_EQ(set_active(rig.hs.session, rig.simple, rig.left, XR_TRUE), XR_SUCCESS);
+  ASSERT_EQ(sync(rig.hs.session, both), XR_SUCCESS);
+  EXPECT_TRUE(located());
+  ASSERT_EQ(xrDestroyAction(grip), XR_SUCCESS);
+  EXPECT_TRUE(located()) << "the space outlives its action";
+  EXPECT_EQ(sync(rig.hs.session, both), XR_SUCCESS) << "the destroyed action's subaction paths stay declared";
+  EXPECT_TRUE(located());
+  rig.hs.destroy();
+}
+
 }  // namespace
 }  // namespace gazelod::xrrt_test

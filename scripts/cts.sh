@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Khronos's OpenXR Conformance Test Suite (CTS 1.1.41.0) on the simulated runtime: the
+# non-interactive suites with Vulkan and headless, the scripted-input action tests
+# (XR_EXT_conformance_automation) and the eye-gaze tests. Needs ../shared beside the checkout
+# (../shared/tools/openxr-cts/run-cts.sh builds the CTS once, about 12 minutes on 2 cores,
+# cached in ~/.cache/gazelod-cts). docs/runtime.md, "Conformance", lists what it runs.
+#
+#   bash scripts/cts.sh [OUT_DIR]     exit 0 when no test case failed
+set -euo pipefail
+cd "$(dirname "$0")/.."
+cts=../shared/tools/openxr-cts/run-cts.sh
+[ -f "$cts" ] || { echo "cts: $cts not found (the CTS ships in ../shared beside the checkout)" >&2; exit 2; }
+out="${1:-build/cts}"
+bash scripts/install-deps.sh
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build build -j"$(nproc 2>/dev/null || echo 2)" --target gazelod_xr_runtime
+echo "cts: running the conformance suite on build/sim/runtime (results in $out)" >&2
+bash "$cts" build/sim/runtime/gazelod_xr_runtime.json "$out"

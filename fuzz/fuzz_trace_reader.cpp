@@ -4,6 +4,7 @@
 
 #include "gaze/import_gazebasevr.hpp"
 #include "gaze/import_pupil.hpp"
+#include "gaze/import_pupil_cloud.hpp"
 #include "gaze/trace_error.hpp"
 #include "gaze/trace_reader.hpp"
 
@@ -63,6 +64,7 @@ int trace_reader(const std::uint8_t* data, std::size_t size) {
     read_all<gaze::TraceReader>(text, lenient);
     read_all<gaze::GazeBaseVrReader>(text, lenient);
     read_all<gaze::PupilReader>(text, lenient);
+    read_all<gaze::PupilCloudReader>(text, lenient);
   }
   return 0;
 }

@@ -1,6 +1,8 @@
 // gazelod trace stats FILE / gazelod trace convert IN OUT: gaze traces in gazelod's format or
-// an imported layout (GazeBaseVR, Pupil Labs). Malformed files exit non-zero naming
-// file:line:column; --lenient skips bad lines and reports every one of them.
+// an imported layout (GazeBaseVR, Pupil Core, Pupil Cloud), detected from the header unless
+// --format says. Malformed files exit non-zero naming file:line:column; --lenient skips bad
+// lines and reports every one of them. On a Pupil Cloud trace, stats also says how our
+// classifiers agree with Pupil Cloud's own fixations and blinks (gaze/gaze_agreement.hpp).
 #include "gaze/trace_open.hpp"
 #include "gaze/trace_stats.hpp"
 #include "gaze/trace_writer.hpp"
@@ -11,19 +13,22 @@
 #include <filesystem>
 #include <iomanip>
 #include <memory>
+#include <optional>
+#include <string_view>
+#include <utility>
 #include <string>
 
 namespace gazelod::cli {
 namespace {
 
 struct Options {
-  std::string file, out_file, format = "gazelod", time_unit = "ns";
+  std::string file, out_file, format = "auto", time_unit = "ns";
   bool json = false, lenient = false;
 };
 
 gaze::TraceFormat format_of(const Options& o) {
   const auto f = gaze::parse_trace_format(o.format);
-  if (!f) throw UsageError("--format: expected gazelod, gazebasevr or pupil, got '" + o.format + "'");
+  if (!f) throw UsageError("--format: expected auto, gazelod, gazebasevr, pupil or pupil_cloud, got '" + o.format + "'");
   return *f;
 }
 
@@ -33,6 +38,66 @@ void report_skipped(const gaze::SkipReport& s, std::ostream& err) {
   err << "warning: skipped " << s.skipped << " bad line(s):\n";
   for (const auto& issue : s.first) err << "  " << issue.to_string() << "\n";
   if (s.skipped > s.first.size()) err << "  ... and " << s.skipped - s.first.size() << " more\n";
+}
+
+// The agreement block (Pupil Cloud traces): one classifier, fixations and blinks.
+nlohmann::json agreement_json(const std::optional<gaze::EventAgreement>& a) {
+  if (!a) return nullptr;
+  return {{"agreement", a->agreement},
+          {"kappa", a->kappa ? nlohmann::json(*a->kappa) : nlohmann::json(nullptr)},
+          {"both", a->samples.both},
+          {"ours_only", a->samples.ours_only},
+          {"reference_only", a->samples.reference_only},
+          {"neither", a->samples.neither},
+          {"ours_events", a->ours_events},
+          {"reference_events", a->reference_events},
+          {"reference_overlapped", a->reference_overlapped},
+          {"ours_overlapped", a->ours_overlapped}};
+}
+
+constexpr const char* kIvtName = "I-VT (trace stats' classifier)";
+constexpr const char* kIvdtName = "I-VDT (gaze_conditioner, the plugin's; pursuit is not fixation)";
+
+nlohmann::json agreement_json(const gaze::ReferenceAgreement& a) {
+  auto classifier = [](const gaze::ClassifierAgreement& c, const char* name) {
+    return nlohmann::json{{"classifier", name}, {"fixation", agreement_json(c.fixation)},
+                          {"blink", agreement_json(c.blink)}};
+  };
+  return {{"reference", "pupil_cloud fixation id / blink id, per sample"},
+          {"blinks_file", a.blinks_file.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.blinks_file)},
+          {"blinks_in_file", a.blinks_in_file},
+          {"samples_in_blinks", a.samples_in_blinks},
+          {"ivt", classifier(a.ivt, kIvtName)},
+          {"ivdt", classifier(a.ivdt, kIvdtName)}};
+}
+
+void print_category(std::ostream& out, std::string_view what, const std::optional<gaze::EventAgreement>& a) {
+  const std::string label = "    " + std::string(what) + std::string(what.size() < 10 ? 10 - what.size() : 1, ' ');
+  if (!a) {
+    out << label << "(no Pupil " << what << " id column)\n";
+    return;
+  }
+  out << label << "agreement " << a->agreement * 100.0 << " %, kappa ";
+  if (a->kappa) out << *a->kappa; else out << "n/a";
+  out << " (samples: both " << a->samples.both << ", ours only " << a->samples.ours_only
+      << ", Pupil only " << a->samples.reference_only << ", neither " << a->samples.neither << ")\n"
+      << std::string(label.size(), ' ') << "events: ours " << a->ours_events << ", Pupil "
+      << a->reference_events << ", Pupil's overlapped by ours " << a->reference_overlapped
+      << ", ours overlapped by Pupil's " << a->ours_overlapped << "\n";
+}
+
+void print_agreement(std::ostream& out, const gaze::ReferenceAgreement& a) {
+  out << "agreement with Pupil Cloud's fixation id / blink id, per sample\n";
+  if (a.blinks_file.empty())
+    out << "  blinks file: none beside the trace, only worn = 0 makes samples invalid\n";
+  else
+    out << "  blinks file: " << a.blinks_file << ", " << a.blinks_in_file << " blinks, "
+        << a.samples_in_blinks << " samples made invalid (so blink agreement checks that import)\n";
+  for (const auto& [c, name] : {std::pair{&a.ivt, kIvtName}, std::pair{&a.ivdt, kIvdtName}}) {
+    out << "  " << name << "\n";
+    print_category(out, "fixation", c->fixation);
+    print_category(out, "blink", c->blink);
+  }
 }
 
 int run_stats(const Options& o, Io io) {
@@ -45,10 +110,12 @@ int run_stats(const Options& o, Io io) {
     throw UsageError(e.what());
   }
   report_skipped(stream->skipped(), io.err);
+  const auto opened = gaze::opened_trace_format(*stream);
+  const std::string format(opened ? gaze::trace_format_name(*opened) : std::string_view(o.format));
   if (o.json) {
     nlohmann::json j;
     j["file"] = o.file;
-    j["format"] = o.format;
+    j["format"] = format;
     j["samples"] = st.samples;
     j["duration_s"] = st.duration_s;
     j["rate_hz"] = st.rate_hz;
@@ -63,10 +130,11 @@ int run_stats(const Options& o, Io io) {
     for (const auto& issue : stream->skipped().first)
       skipped.push_back({{"line", issue.line}, {"column", issue.column}, {"message", issue.message}});
     j["skipped"] = skipped;
+    if (st.agreement) j["agreement"] = agreement_json(*st.agreement);
     io.out << j.dump(2) << "\n";
     return 0;
   }
-  io.out << std::fixed << std::setprecision(3) << "file              " << o.file << " (" << o.format
+  io.out << std::fixed << std::setprecision(3) << "file              " << o.file << " (" << format
          << ")\n"
          << "samples           " << st.samples << "\n"
          << "duration          " << st.duration_s << " s\n"
@@ -77,6 +145,7 @@ int run_stats(const Options& o, Io io) {
          << "fixations         " << st.fixations << "\n"
          << "with head pose    " << st.with_head << "\n"
          << "skipped lines     " << stream->skipped().skipped << "\n";
+  if (st.agreement) print_agreement(io.out, *st.agreement);
   return 0;
 }
 
@@ -115,7 +184,8 @@ const Registrar registrar{
     [](CLI::App& sub) -> Action {
       auto o = std::make_shared<Options>();
       sub.require_subcommand(1);
-      const std::string fmt_help = "input layout: gazelod (default), gazebasevr, pupil";
+      const std::string fmt_help =
+          "input layout: auto (default: from the header), gazelod, gazebasevr, pupil, pupil_cloud";
       CLI::App* stats = sub.add_subcommand("stats", "samples, duration, rate, invalid fraction, saccades, fixations");
       stats->add_option("FILE", o->file, "trace file")->required();
       stats->add_option("--format", o->format, fmt_help);

@@ -207,7 +207,7 @@ void point_loader_at_simulator(const PreparedScenario& prepared, const RunOption
 std::shared_ptr<gaze::GazeSource> make_external_source(const RunOptions& opt) {
   if (opt.trace_path.empty()) return nullptr;
   try {
-    auto stream = gaze::open_trace(opt.trace_path, gaze::TraceFormat::gazelod);
+    auto stream = gaze::open_trace(opt.trace_path, gaze::TraceFormat::automatic);
     auto records = gaze::ReplaySource::load(*stream);
     if (records.empty()) throw UsageError("--trace: '" + opt.trace_path + "' has no samples");
     return std::make_shared<TraceFromFirstFrame>(std::move(records));

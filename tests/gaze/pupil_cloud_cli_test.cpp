@@ -1,6 +1,6 @@
 // `gazelod trace stats|convert` on Pupil Cloud gaze.csv files the test writes: detected
 // without --format, blinks.csv beside applied, agreement with Pupil's ids reported.
-#include "apps/gazelod/command.hpp"
+#include "tests/cli_run.hpp"
 #include "tests/gaze/pupil_cloud_util.hpp"
 
 #include <gtest/gtest.h>
@@ -15,16 +15,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int rc;
-  std::string out, err;
-};
-
-Result run(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  const int rc = cli::run(args, out, err);
-  return {rc, out.str(), err.str()};
-}
+using Result = test::CliResult;
+Result run(const std::vector<std::string>& args) { return test::run_cli(args); }
 
 fs::path temp_dir() {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();

@@ -1,6 +1,6 @@
 // The `gazelod trace` command-line contract, through gazelod::cli::run.
 #include "gaze/trace_writer.hpp"
-#include "apps/gazelod/command.hpp"
+#include "tests/cli_run.hpp"
 #include "tests/gaze/synth.hpp"
 
 #include <gtest/gtest.h>
@@ -17,16 +17,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int rc;
-  std::string out, err;
-};
-
-Result run(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  const int rc = cli::run(args, out, err);
-  return {rc, out.str(), err.str()};
-}
+using Result = test::CliResult;
+Result run(const std::vector<std::string>& args) { return test::run_cli(args); }
 
 fs::path temp_file(const std::string& name) {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();

@@ -46,12 +46,6 @@ void bounds(const std::vector<PrimitiveGeometry>& prims, double& diameter_m, dou
   extent_m = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
 }
 
-std::string mesh_name(const tinygltf::Model& m, int mesh) {
-  return m.meshes[static_cast<std::size_t>(mesh)].name.empty()
-             ? "mesh " + std::to_string(mesh)
-             : "mesh " + std::to_string(mesh) + " '" + m.meshes[static_cast<std::size_t>(mesh)].name + "'";
-}
-
 // One mesh: simplify each primitive, then combine level by level; a level that does not get
 // below the previous one in total, or loses every triangle, ends the chain.
 // Renders the chain (all primitives as one mesh) and stores each level's rendered figure.
@@ -159,7 +153,7 @@ BakeReport bake_model(tinygltf::Model& m, const BakeOptions& o) {
     rep.name = m.meshes[mi].name;
     if (o.progress)
       o.progress("bake: mesh " + std::to_string(done + 1) + "/" + std::to_string(total) + " " +
-                 mesh_name(m, rep.mesh) + " (" + std::to_string(m.meshes[mi].primitives.size()) +
+                 mesh_label(m, rep.mesh) + " (" + std::to_string(m.meshes[mi].primitives.size()) +
                  " primitives) ...");
     chains[mi] = bake_mesh(m, rep.mesh, o.chain, profiler.get(), rep);
     rep.seconds = seconds_since(tm);

@@ -2,6 +2,7 @@
 #include "bake/baked_scene.hpp"
 
 #include "bake/bake_error.hpp"
+#include "bake/cluster_lod_gltf.hpp"
 #include "bake/gltf_load.hpp"
 #include "bake/mesh_extract.hpp"
 #include "lod/object_set.hpp"
@@ -32,6 +33,8 @@ glm::dmat4 local_matrix(const tinygltf::Node& n) {
 struct Reader {
   const std::string& path;
   const tinygltf::Model& m;
+  const std::vector<BakedClusterMesh>& clusters;
+  const std::vector<int>& cluster_mesh_of;  // per mesh: index into `clusters`, or -1
 
   [[noreturn]] void fail(const std::string& where, const std::string& what) const {
     throw BakeError(path + ": " + where + ": " + what);
@@ -52,6 +55,9 @@ struct Reader {
   lod::LodLevel level(int node, int expect_level) const {
     const std::string where = "/nodes/" + std::to_string(node) + "/extras/gazelod_lod";
     const tinygltf::Node& n = m.nodes[static_cast<std::size_t>(node)];
+    if ((!n.extras.IsObject() || !n.extras.Has("gazelod_lod")) && expect_level == 0 &&
+        cluster_mesh_of[static_cast<std::size_t>(n.mesh)] >= 0)
+      return full_mesh_level(clusters[static_cast<std::size_t>(cluster_mesh_of[static_cast<std::size_t>(n.mesh)])]);
     if (!n.extras.IsObject() || !n.extras.Has("gazelod_lod"))
       fail(where, "missing (not written by gazelod bake?)");
     const Value& e = n.extras.Get("gazelod_lod");
@@ -74,6 +80,18 @@ struct Reader {
     l.vertices = verts >= 0.0 && verts <= 4294967295.0 ? static_cast<std::uint32_t>(verts) : 0;
     l.detail_kind = lod::DetailKind::removed_cycles_per_diameter;
     l.detail = expect_level == 0 ? 0.0 : det;
+    return l;
+  }
+
+  // A --clusters bake has no chain: one level, the source triangles of every hierarchy.
+  static lod::LodLevel full_mesh_level(const BakedClusterMesh& c) {
+    lod::LodLevel l;
+    for (const BakedClusterPrimitive& p : c.primitives) {
+      for (std::size_t k = 0; k < p.hierarchy.size(); ++k)
+        if (p.hierarchy.depth[k] == 0) l.triangles += p.hierarchy.index_count[k] / 3;
+      l.vertices += p.vertex_count;
+    }
+    l.detail_kind = lod::DetailKind::removed_cycles_per_diameter;
     return l;
   }
 
@@ -102,6 +120,7 @@ struct Reader {
     const tinygltf::Node& n = m.nodes[static_cast<std::size_t>(node)];
     BakedObject o;
     o.node = node;
+    o.mesh = n.mesh;
     o.name = n.name.empty() ? "node " + std::to_string(node) : n.name;
     o.lods.push_back(level(node, 0));
     const auto ext = n.extensions.find("MSFT_lod");
@@ -145,18 +164,39 @@ struct Reader {
 
 }  // namespace
 
-std::vector<BakedObject> load_baked_scene(const std::string& path) {
+const BakedClusterMesh* BakedScene::clusters_of(const BakedObject& object) const {
+  for (const BakedClusterMesh& c : cluster_meshes)
+    if (c.mesh == object.mesh) return &c;
+  return nullptr;
+}
+
+BakedScene load_baked(const std::string& path) {
   LoadedGltf g = load_gltf(path);
-  const Reader r{path, g.model};
-  std::vector<BakedObject> out;
+  BakedScene scene;
+  std::vector<int> cluster_mesh_of(g.model.meshes.size(), -1);
+  for (std::size_t mi = 0; mi < g.model.meshes.size(); ++mi) {
+    BakedClusterMesh c;
+    c.mesh = static_cast<int>(mi);
+    c.name = g.model.meshes[mi].name;
+    for (std::size_t p = 0; p < g.model.meshes[mi].primitives.size(); ++p)
+      if (auto lod = read_cluster_lod(g.model, c.mesh, static_cast<int>(p), path))
+        c.primitives.push_back({static_cast<int>(p), lod->vertex_count, lod->levels,
+                                std::move(lod->hierarchy), std::move(lod->indices)});
+    if (c.primitives.empty()) continue;
+    cluster_mesh_of[mi] = static_cast<int>(scene.cluster_meshes.size());
+    scene.cluster_meshes.push_back(std::move(c));
+  }
+  const Reader r{path, g.model, scene.cluster_meshes, cluster_mesh_of};
   std::vector<bool> on_path(g.model.nodes.size(), false);
   const auto& scenes = g.model.scenes;
   for (std::size_t s = 0; s < scenes.size(); ++s) {
     if (g.model.defaultScene >= 0 && static_cast<int>(s) != g.model.defaultScene) continue;
-    for (int root : scenes[s].nodes) r.visit(root, glm::dmat4(1.0), on_path, out);
+    for (int root : scenes[s].nodes) r.visit(root, glm::dmat4(1.0), on_path, scene.objects);
   }
-  if (out.empty()) throw BakeError(path + ": /scenes: no node with a mesh in the scene");
-  return out;
+  if (scene.objects.empty()) throw BakeError(path + ": /scenes: no node with a mesh in the scene");
+  return scene;
 }
+
+std::vector<BakedObject> load_baked_scene(const std::string& path) { return load_baked(path).objects; }
 
 }  // namespace gazelod::bake

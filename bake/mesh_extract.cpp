@@ -59,8 +59,12 @@ View checked_view(const tinygltf::Model& m, int accessor, std::size_t element_si
   return {data.data() + bv.byteOffset + a.byteOffset, stride, a.count};
 }
 
-std::vector<std::uint32_t> read_indices(const tinygltf::Model& m, int accessor,
-                                        std::size_t vertex_count, const std::string& where) {
+}  // namespace
+
+std::vector<std::uint32_t> read_index_accessor(const tinygltf::Model& m, int accessor,
+                                               std::size_t vertex_count, const std::string& where) {
+  if (accessor < 0 || static_cast<std::size_t>(accessor) >= m.accessors.size())
+    throw BakeError(where + ": indices accessor " + std::to_string(accessor) + " does not exist");
   const tinygltf::Accessor& a = m.accessors.at(static_cast<std::size_t>(accessor));
   std::size_t size = 0;
   switch (a.componentType) {
@@ -90,14 +94,38 @@ std::vector<std::uint32_t> read_indices(const tinygltf::Model& m, int accessor,
   return out;
 }
 
-}  // namespace
+std::vector<unsigned char> read_accessor_bytes(const tinygltf::Model& m, int accessor,
+                                               std::size_t element_size, const std::string& where) {
+  const View v = checked_view(m, accessor, element_size, where);
+  std::vector<unsigned char> out(v.count * element_size);
+  for (std::size_t i = 0; i < v.count; ++i)
+    std::memcpy(out.data() + i * element_size, v.first + i * v.stride, element_size);
+  return out;
+}
 
-std::string primitive_label(const tinygltf::Model& model, int mesh, int primitive) {
+std::vector<std::uint32_t> strip_to_list(const std::vector<std::uint32_t>& s) {
+  std::vector<std::uint32_t> out;
+  for (std::size_t i = 0; i + 2 < s.size(); ++i)  // every other triangle flips, keeping the winding
+    out.insert(out.end(), {s[i], s[i + 1 + i % 2], s[i + 2 - i % 2]});
+  return out;
+}
+
+std::vector<std::uint32_t> fan_to_list(const std::vector<std::uint32_t>& f) {
+  std::vector<std::uint32_t> out;
+  for (std::size_t i = 0; i + 2 < f.size(); ++i) out.insert(out.end(), {f[i + 1], f[i + 2], f[0]});
+  return out;
+}
+
+std::string mesh_label(const tinygltf::Model& model, int mesh) {
   std::string s = "mesh " + std::to_string(mesh);
   if (mesh >= 0 && static_cast<std::size_t>(mesh) < model.meshes.size() &&
       !model.meshes[mesh].name.empty())
     s += " '" + model.meshes[mesh].name + "'";
-  return s + " primitive " + std::to_string(primitive);
+  return s;
+}
+
+std::string primitive_label(const tinygltf::Model& model, int mesh, int primitive) {
+  return mesh_label(model, mesh) + " primitive " + std::to_string(primitive);
 }
 
 std::vector<float> read_positions(const tinygltf::Model& m, int accessor,
@@ -123,20 +151,24 @@ PrimitiveGeometry extract_primitive(const tinygltf::Model& m, int mesh, int prim
   const std::string where = primitive_label(m, mesh, primitive);
   const tinygltf::Primitive& p = m.meshes.at(static_cast<std::size_t>(mesh))
                                      .primitives.at(static_cast<std::size_t>(primitive));
-  if (p.mode != TINYGLTF_MODE_TRIANGLES)
+  if (p.mode != TINYGLTF_MODE_TRIANGLES && p.mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
+      p.mode != TINYGLTF_MODE_TRIANGLE_FAN)
     throw BakeError(where + ": mode " + std::to_string(p.mode) + " (" + mode_name(p.mode) +
-                    ") is not supported; only TRIANGLES (4) can be simplified");
+                    ") is not supported; only triangles (TRIANGLES 4, TRIANGLE_STRIP 5, "
+                    "TRIANGLE_FAN 6) can be simplified");
   const auto pos = p.attributes.find("POSITION");
   if (pos == p.attributes.end()) throw BakeError(where + ": has no POSITION attribute");
   PrimitiveGeometry g;
   g.positions_xyz = read_positions(m, pos->second, where);
   const std::size_t vcount = g.positions_xyz.size() / 3;
   if (p.indices >= 0) {
-    g.indices = read_indices(m, p.indices, vcount, where);
+    g.indices = read_index_accessor(m, p.indices, vcount, where);
   } else {
     g.indices.resize(vcount);
     for (std::size_t i = 0; i < vcount; ++i) g.indices[i] = static_cast<std::uint32_t>(i);
   }
+  if (p.mode == TINYGLTF_MODE_TRIANGLE_STRIP) g.indices = strip_to_list(g.indices);
+  if (p.mode == TINYGLTF_MODE_TRIANGLE_FAN) g.indices = fan_to_list(g.indices);
   if (g.indices.size() % 3 != 0)
     throw BakeError(where + ": " + std::to_string(g.indices.size()) +
                     " indices is not a whole number of triangles");

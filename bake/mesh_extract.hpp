@@ -15,17 +15,35 @@ struct PrimitiveGeometry {
   std::vector<std::uint32_t> indices;    // triangle list; 0..n-1 for a non-indexed primitive
 };
 
-// "mesh 2 'Body' primitive 1" - how errors and progress name a primitive.
+// glTF TRIANGLE_STRIP / TRIANGLE_FAN vertex order (glTF 2.0 spec 3.7.2.1) as a triangle list;
+// fewer than 3 indices give none.
+std::vector<std::uint32_t> strip_to_list(const std::vector<std::uint32_t>& strip);
+std::vector<std::uint32_t> fan_to_list(const std::vector<std::uint32_t>& fan);
+
+// "mesh 2 'Body'" and "mesh 2 'Body' primitive 1" - how errors and progress name them.
+std::string mesh_label(const tinygltf::Model& model, int mesh);
 std::string primitive_label(const tinygltf::Model& model, int mesh, int primitive);
 
+// TRIANGLE_STRIP and TRIANGLE_FAN primitives come out as triangle lists.
 // Throws BakeError "<label>: ..." for: no POSITION, a non-float or non-VEC3 POSITION, a sparse
-// accessor, a mode other than TRIANGLES, an accessor/bufferView outside its buffer, a
-// non-finite position, an index out of range, or an index count not a multiple of 3.
+// accessor, a mode that is not triangles (points, lines), an accessor/bufferView outside its
+// buffer, a non-finite position, an index out of range, or a list whose index count is not a
+// multiple of 3.
 PrimitiveGeometry extract_primitive(const tinygltf::Model& model, int mesh, int primitive);
 
 // Only the positions of accessor `accessor` (POSITION), with the same checks; `where` prefixes
 // error messages. Used by the baked-scene loader for bounding spheres.
 std::vector<float> read_positions(const tinygltf::Model& model, int accessor,
                                   const std::string& where);
+
+// The unsigned byte/short/int SCALAR accessor `accessor` as 32-bit values, each checked
+// < vertex_count; `where` prefixes error messages.
+std::vector<std::uint32_t> read_index_accessor(const tinygltf::Model& model, int accessor,
+                                               std::size_t vertex_count, const std::string& where);
+
+// The elements of accessor `accessor` copied tightly packed (element_size bytes each, stride
+// removed) after the same bounds checks; the caller checks componentType and type.
+std::vector<unsigned char> read_accessor_bytes(const tinygltf::Model& model, int accessor,
+                                               std::size_t element_size, const std::string& where);
 
 }  // namespace gazelod::bake

@@ -87,6 +87,7 @@ void write_msft_lod(tinygltf::Model& m, const std::vector<MeshChain>& chains) {
         if (idx.empty()) continue;
         tinygltf::Primitive prim = m.meshes[mi].primitives[p];
         prim.indices = add_index_accessor(m, idx, vertex_count_of(m, prim));
+        prim.mode = TINYGLTF_MODE_TRIANGLES;  // strips and fans were read as lists
         lod.primitives.push_back(std::move(prim));
       }
       m.meshes.push_back(std::move(lod));

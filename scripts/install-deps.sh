@@ -17,7 +17,13 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-14-dev
   # The evaluation's peer (bench/peer): OpenSceneGraph's osg::LOD
   libopenscenegraph-dev
+  assimp-testmodels  # real glTF 2.0 models (Khronos 2CylinderEngine, ...) for the bake --clusters test
 )
+# node + npm run Khronos's glTF-Validator (npm gltf-validator; scripts/install-gltf-validator.sh).
+# Debian's packages only where no node / npm is installed (a NodeSource nodejs brings its own npm,
+# and Debian's npm would conflict with it).
+command -v node >/dev/null || packages+=(nodejs)
+command -v npm >/dev/null || packages+=(npm)
 
 missing=()
 for p in "${packages[@]}"; do

@@ -30,6 +30,7 @@ case "$what" in
     ;;
   test)
     build build -DGAZELOD_BUILD_TESTS=ON -DGAZELOD_BUILD_BENCH=ON
+    bash scripts/install-gltf-validator.sh build/gltf-validator
     echo "== tests (release) =="
     ctest --test-dir build --output-on-failure -j"$jobs" --timeout 600
     echo "== unit tests under AddressSanitizer + UndefinedBehaviorSanitizer =="

@@ -1,11 +1,14 @@
 // gazelod bake IN.gltf|IN.glb -o OUT.glb [--levels N | --ratios r1,r2,...] [--target-error E]
 // [--lock-borders] [--profile 6|18]:
 // an MSFT_lod chain per mesh node (bake/bake.hpp). Progress on stderr, the summary on stdout.
+// gazelod bake --clusters IN OUT.glb (or -o OUT.glb): a cluster hierarchy per mesh primitive
+// instead, stored as GAZELOD_cluster_lod (bake/cluster_bake.hpp, docs/bake.md).
 // --profile renders every level from 6 or 18 viewpoints (Reddy's perceptual profile, Vulkan on
 // lavapipe, bake/profile_render.hpp) and stores extras.gazelod_lod.rendered_cycles_per_diameter;
 // off by default so a plain bake stays fast.
 #include "bake/bake.hpp"
 #include "bake/bake_error.hpp"
+#include "bake/cluster_bake.hpp"
 #include "bake/summary.hpp"
 #include "render/render_error.hpp"
 #include "apps/gazelod/command.hpp"
@@ -21,11 +24,39 @@ namespace gazelod::cli {
 namespace {
 
 struct Options {
-  std::string input, output, ratios, target_error;
+  std::string input, output, output_argument, ratios, target_error;
   int levels = 0;
   int profile = 0;
   bool lock_borders = false;
+  bool clusters = false;
 };
+
+// -o OUT or the second argument, not two different ones.
+std::string output_path(const Options& o) {
+  if (!o.output.empty() && !o.output_argument.empty() && o.output != o.output_argument)
+    throw UsageError("--output: give the output once (-o OUT or a second argument), got '" +
+                     o.output + "' and '" + o.output_argument + "'");
+  const std::string out = o.output.empty() ? o.output_argument : o.output;
+  if (out.empty()) throw UsageError("--output: missing: give -o OUT.glb (or OUT.glb after the input)");
+  return out;
+}
+
+int run_clusters(const Options& o, const std::string& out, Io io) {
+  for (const auto& [set, name] : {std::pair{o.levels != 0, "--levels"}, {!o.ratios.empty(), "--ratios"},
+                                  {!o.target_error.empty(), "--target-error"},
+                                  {o.lock_borders, "--lock-borders"}, {o.profile != 0, "--profile"}})
+    if (set) throw UsageError(std::string("--clusters: cannot be combined with ") + name);
+  bake::ClusterBakeOptions opts;
+  opts.progress = [&io](const std::string& line) { io.err << line << '\n' << std::flush; };
+  try {
+    io.out << bake::format_cluster_summary(bake::bake_clusters_file(o.input, out, opts));
+  } catch (const bake::OutputError& e) {
+    throw UsageError(e.what(), 1);  // the input was fine: "other failure"
+  } catch (const bake::BakeError& e) {
+    throw UsageError(e.what(), 2);  // bad input file
+  }
+  return 0;
+}
 
 std::vector<double> parse_ratios(const std::string& text) {
   std::vector<double> r;
@@ -55,6 +86,8 @@ void print_profile(const bake::BakeReport& report, std::ostream& out) {
 }
 
 int run_bake(const Options& o, Io io) {
+  const std::string out = output_path(o);
+  if (o.clusters) return run_clusters(o, out, io);
   if (o.profile != 0 && o.profile != 6 && o.profile != 18)
     throw UsageError("--profile: must be 6 or 18 viewpoints, got " + std::to_string(o.profile));
   if (o.levels != 0 && !o.ratios.empty()) throw UsageError("--levels: give either --levels or --ratios, not both");
@@ -72,7 +105,7 @@ int run_bake(const Options& o, Io io) {
   opts.profile_viewpoints = o.profile;
   opts.progress = [&io](const std::string& line) { io.err << line << '\n' << std::flush; };
   try {
-    const bake::BakeReport report = bake::bake_file(o.input, o.output, opts);
+    const bake::BakeReport report = bake::bake_file(o.input, out, opts);
     io.out << bake::format_summary(report);
     if (o.profile != 0) print_profile(report, io.out);
   } catch (const bake::OutputError& e) {
@@ -86,11 +119,15 @@ int run_bake(const Options& o, Io io) {
 }
 
 const Registrar reg(
-    "bake", "Bake glTF LOD chains (MSFT_lod) with meshoptimizer",
+    "bake", "Bake glTF LOD chains (MSFT_lod) or cluster hierarchies (--clusters) with meshoptimizer",
     [](CLI::App& app) -> Action {
       auto o = std::make_shared<Options>();
       app.add_option("input", o->input, "input .gltf or .glb")->required();
-      app.add_option("-o,--output", o->output, "output .glb (written atomically)")->required();
+      app.add_option("output", o->output_argument, "output .glb (or -o)");
+      app.add_option("-o,--output", o->output, "output .glb (written atomically)");
+      app.add_flag("--clusters", o->clusters,
+                   "a cluster hierarchy per mesh primitive (GAZELOD_cluster_lod) instead of "
+                   "MSFT_lod chains");
       app.add_option("--levels", o->levels, "levels in all, each with 1/4 of the previous triangles (default 4)");
       app.add_option("--ratios", o->ratios, "triangle ratios of the coarser levels, e.g. 0.5,0.2,0.05");
       app.add_option("--target-error", o->target_error,

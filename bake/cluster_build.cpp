@@ -1,0 +1,390 @@
+// The cluster hierarchy build (cluster_build.hpp): input checks, position welding, source
+// clusters, then level by level grouping, group simplification (in parallel) and re-splitting.
+#include "bake/cluster_build.hpp"
+
+#include "bake/bake_error.hpp"
+#include "bake/cluster_group.hpp"
+#include "bake/cluster_sphere.hpp"
+
+#include <meshoptimizer.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cfloat>
+#include <cmath>
+#include <cstring>
+#include <exception>
+#include <memory>
+#include <sstream>
+#include <thread>
+
+namespace gazelod::bake {
+namespace {
+
+constexpr std::uint32_t kNone = ~0u;
+constexpr std::size_t kMaxDepth = 255;  // depth is stored as uint8
+
+// vertex -> the first vertex with bit-identical position (-0 counted as +0): the topology the
+// grouping and the degenerate test see, as meshopt_simplify welds seams for its own topology.
+std::vector<std::uint32_t> weld_positions(std::span<const float> pos) {
+  const std::size_t n = pos.size() / 3;
+  std::size_t size = 16;
+  while (size < 2 * n) size *= 2;
+  std::vector<std::uint32_t> table(size, kNone), weld(n);
+  auto key = [&](std::size_t v, int k) {
+    const float f = pos[3 * v + k] == 0.0f ? 0.0f : pos[3 * v + k];
+    std::uint32_t bits;
+    std::memcpy(&bits, &f, 4);
+    return bits;
+  };
+  for (std::size_t v = 0; v < n; ++v) {
+    const std::uint32_t x = key(v, 0), y = key(v, 1), z = key(v, 2);
+    std::size_t h = (x * 73856093u) ^ (y * 19349663u) ^ (z * 83492791u);
+    for (h &= size - 1;; h = (h + 1) & (size - 1)) {
+      const std::uint32_t t = table[h];
+      if (t == kNone) {
+        table[h] = weld[v] = static_cast<std::uint32_t>(v);
+        break;
+      }
+      if (key(t, 0) == x && key(t, 1) == y && key(t, 2) == z) {
+        weld[v] = t;
+        break;
+      }
+    }
+  }
+  return weld;
+}
+
+// New clusters made by one parallel task: a chunk of the source mesh split into clusters
+// (spheres: each cluster's own), or one group simplified and split (sphere, error: the group's).
+struct Piece {
+  std::vector<std::uint32_t> indices;      // the new clusters' triangles, global vertex ids
+  std::vector<std::uint32_t> index_count;  // per new cluster
+  std::vector<Sphere> spheres;
+  Sphere sphere;
+  float error_m = 0.0f;
+  bool simplified = false;
+};
+
+// Source triangles in chunks of about this many, split into clusters in parallel; a chunk is a
+// run of cells along a Morton curve, so clusters rarely need to cross one.
+constexpr std::size_t kChunkTriangles = 65536;
+constexpr unsigned kCellBits = 5;  // per axis
+
+// Triangle ids in Morton order of their centroid's cell, cut into chunks at cell boundaries.
+std::vector<std::vector<std::uint32_t>> source_chunks(std::span<const float> pos,
+                                                      std::span<const std::uint32_t> tris) {
+  const std::size_t n = tris.size() / 3;
+  std::vector<std::vector<std::uint32_t>> chunks;
+  if (n <= kChunkTriangles) {
+    chunks.emplace_back(n);
+    for (std::size_t t = 0; t < n; ++t) chunks[0][t] = static_cast<std::uint32_t>(t);
+    return chunks;
+  }
+  double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+  for (std::uint32_t v : tris)
+    for (int k = 0; k < 3; ++k)
+      lo[k] = std::min(lo[k], double(pos[3 * v + k])), hi[k] = std::max(hi[k], double(pos[3 * v + k]));
+  constexpr std::uint32_t side = 1u << kCellBits;
+  std::vector<std::uint32_t> cell(n), first(std::size_t{side} * side * side + 1, 0);
+  for (std::size_t t = 0; t < n; ++t) {
+    std::uint32_t q[3];
+    for (int k = 0; k < 3; ++k) {
+      const double c = (double(pos[3 * tris[3 * t] + k]) + pos[3 * tris[3 * t + 1] + k] +
+                        pos[3 * tris[3 * t + 2] + k]) / 3.0;
+      const double u = hi[k] > lo[k] ? (c - lo[k]) / (hi[k] - lo[k]) : 0.0;
+      q[k] = std::min(side - 1, static_cast<std::uint32_t>(std::max(0.0, u) * side));
+    }
+    std::uint32_t code = 0;
+    for (int b = kCellBits - 1; b >= 0; --b)
+      code = (code << 3) | ((q[0] >> b & 1u) << 2) | ((q[1] >> b & 1u) << 1) | (q[2] >> b & 1u);
+    cell[t] = code;
+    ++first[code + 1];
+  }
+  for (std::size_t c = 1; c < first.size(); ++c) first[c] += first[c - 1];
+  std::vector<std::uint32_t> order(n), fill(first.begin(), first.end() - 1);
+  for (std::size_t t = 0; t < n; ++t) order[fill[cell[t]]++] = static_cast<std::uint32_t>(t);
+  for (std::size_t a = 0; a < n;) {
+    std::size_t b = std::min(n, a + kChunkTriangles);
+    while (b < n && cell[order[b]] == cell[order[b - 1]]) ++b;
+    chunks.emplace_back(order.begin() + static_cast<std::ptrdiff_t>(a),
+                        order.begin() + static_cast<std::ptrdiff_t>(b));
+    a = b;
+  }
+  return chunks;
+}
+
+// Per-thread buffers. A task works on a compact copy of its vertices, because meshopt 0.18's
+// simplifier and meshlet builder allocate and scan the whole vertex buffer on every call.
+struct Scratch {
+  explicit Scratch(std::size_t vertex_count) : local_of(vertex_count, kNone) {}
+  std::vector<std::uint32_t> local_of, global_of, local, simplified, meshlet_vertices;
+  std::vector<float> local_xyz;
+  std::vector<meshopt_Meshlet> meshlets;
+  std::vector<unsigned char> meshlet_triangles;
+  std::vector<Sphere> spheres;
+
+  // Appends global vertex v to the compact copy; returns its local id.
+  std::uint32_t localise(std::uint32_t v, std::span<const float> pos) {
+    if (local_of[v] == kNone) {
+      local_of[v] = static_cast<std::uint32_t>(global_of.size());
+      global_of.push_back(v);
+      local_xyz.insert(local_xyz.end(), {pos[3 * v], pos[3 * v + 1], pos[3 * v + 2]});
+    }
+    return local_of[v];
+  }
+  void clear() {
+    for (std::uint32_t v : global_of) local_of[v] = kNone;
+    global_of.clear(), local.clear(), local_xyz.clear();
+  }
+};
+
+class Builder {
+ public:
+  Builder(std::span<const float> pos, const ClusterBuildOptions& o) : pos_(pos), o_(o) {}
+
+  ClusterBuildResult run(std::span<const std::uint32_t> source) {
+    weld_ = weld_positions(pos_);
+    std::vector<std::uint32_t> kept;
+    kept.reserve(source.size());
+    for (std::size_t t = 0; t < source.size(); t += 3) {
+      const std::uint32_t a = weld_[source[t]], b = weld_[source[t + 1]], c = weld_[source[t + 2]];
+      if (a == b || b == c || c == a) {
+        ++out_.degenerate_triangles;
+        continue;
+      }
+      kept.insert(kept.end(), source.begin() + static_cast<std::ptrdiff_t>(t),
+                  source.begin() + static_cast<std::ptrdiff_t>(t + 3));
+    }
+    out_.source_triangles = kept.size() / 3;
+    if (kept.empty()) return std::move(out_);
+
+    const std::vector<std::vector<std::uint32_t>> chunks = source_chunks(pos_, kept);
+    std::vector<Piece> pieces(chunks.size());
+    parallel_for(chunks.size(), [&](std::size_t i, Scratch& s) { split_chunk(kept, chunks[i], s, pieces[i]); });
+    for (const Piece& p : pieces) add_clusters(p, 0, -1);
+
+    std::vector<std::uint32_t> pending(self_.size());
+    for (std::size_t c = 0; c < pending.size(); ++c) pending[c] = static_cast<std::uint32_t>(c);
+    ClusterGrouper grouper(pos_.size() / 3);
+    for (std::size_t depth = 0; pending.size() > 1 && depth < kMaxDepth; ++depth)
+      pending = level(pending, depth, grouper);
+    return std::move(out_);
+  }
+
+ private:
+  // Splits s.local (a triangle list over s.local_xyz) into clusters, appended to `p` in
+  // global vertex ids.
+  void split(Scratch& s, std::span<const std::uint32_t> tris, Piece& p) const {
+    const std::size_t vcount = s.global_of.size();
+    const std::size_t bound = meshopt_buildMeshletsBound(tris.size(), o_.max_vertices, o_.max_triangles);
+    s.meshlets.resize(bound);
+    s.meshlet_vertices.resize(bound * o_.max_vertices);
+    s.meshlet_triangles.resize(bound * o_.max_triangles * 3);
+    const std::size_t count = meshopt_buildMeshlets(
+        s.meshlets.data(), s.meshlet_vertices.data(), s.meshlet_triangles.data(), tris.data(),
+        tris.size(), s.local_xyz.data(), vcount, 3 * sizeof(float), o_.max_vertices,
+        o_.max_triangles, 0.0f);
+    for (std::size_t m = 0; m < count; ++m) {
+      const meshopt_Meshlet& ml = s.meshlets[m];
+      for (std::size_t j = 0; j < 3 * std::size_t{ml.triangle_count}; ++j)
+        p.indices.push_back(s.global_of[s.meshlet_vertices[ml.vertex_offset +
+                                                           s.meshlet_triangles[ml.triangle_offset + j]]]);
+      p.index_count.push_back(3 * ml.triangle_count);
+    }
+  }
+
+  // Source clusters of one chunk, each with its own sphere.
+  void split_chunk(std::span<const std::uint32_t> kept, std::span<const std::uint32_t> chunk,
+                   Scratch& s, Piece& p) const {
+    for (std::uint32_t t : chunk)
+      for (int k = 0; k < 3; ++k) s.local.push_back(s.localise(kept[3 * t + k], pos_));
+    split(s, s.local, p);
+    s.clear();
+    std::size_t at = 0;
+    for (std::uint32_t k : p.index_count) {
+      s.spheres.clear();
+      for (std::size_t i = at; i < at + k; ++i) {
+        const std::uint32_t v = p.indices[i];
+        s.spheres.push_back({pos_[3 * v], pos_[3 * v + 1], pos_[3 * v + 2], 0.0f});
+      }
+      p.spheres.push_back(enclosing_sphere(s.spheres));
+      at += k;
+    }
+  }
+
+  // One group: merge, simplify with the border locked, split. Reads only the clusters' data.
+  void simplify_group(const std::vector<std::uint32_t>& members, Scratch& s, Piece& p) const {
+    const lod::ClusterHierarchy& h = out_.hierarchy;
+    float child_error_m = 0.0f;
+    s.spheres.clear();
+    for (std::uint32_t c : members) {
+      s.spheres.push_back(self_[c]);
+      child_error_m = std::max(child_error_m, h.self_error_m[c]);
+      for (std::uint32_t i = h.first_index[c]; i < h.first_index[c] + h.index_count[c]; ++i)
+        s.local.push_back(s.localise(out_.indices[i], pos_));
+    }
+    p.sphere = enclosing_sphere(s.spheres);
+    const std::size_t vcount = s.global_of.size();
+    const std::size_t target = 3 * static_cast<std::size_t>(double(s.local.size() / 3) * o_.simplify_ratio);
+    s.simplified.resize(s.local.size());
+    float error_rel = 0.0f;
+    const std::size_t n = target < 3 ? 0
+                                     : meshopt_simplify(s.simplified.data(), s.local.data(), s.local.size(),
+                                                        s.local_xyz.data(), vcount, 3 * sizeof(float), target,
+                                                        FLT_MAX, meshopt_SimplifyLockBorder, &error_rel);
+    if (n > 0 && double(n) <= o_.stuck_ratio * double(s.local.size())) {
+      const double scale_m = meshopt_simplifyScale(s.local_xyz.data(), vcount, 3 * sizeof(float));
+      const double error_m = double(child_error_m) + (std::isfinite(error_rel) ? error_rel * scale_m : 0.0);
+      p.error_m = std::max(child_error_m, static_cast<float>(error_m));
+      p.simplified = true;
+      split(s, std::span<const std::uint32_t>(s.simplified.data(), n), p);
+    }
+    s.clear();
+  }
+
+  void add_clusters(const Piece& p, std::size_t depth, std::int32_t source_group) {
+    std::uint32_t at = 0;
+    for (std::size_t c = 0; c < p.index_count.size(); ++c) {
+      const Sphere& self = p.spheres.empty() ? p.sphere : p.spheres[c];
+      const float self_error_m = p.spheres.empty() ? p.error_m : 0.0f;
+      lod::ClusterHierarchy& h = out_.hierarchy;
+      if (out_.indices.size() + p.index_count[c] > kNone)
+        throw BakeError(o_.label + ": the clusters of all levels need more than 2^32 - 1 indices");
+      h.first_index.push_back(static_cast<std::uint32_t>(out_.indices.size()));
+      h.index_count.push_back(p.index_count[c]);
+      out_.indices.insert(out_.indices.end(), p.indices.begin() + at, p.indices.begin() + at + p.index_count[c]);
+      at += p.index_count[c];
+      h.self_center_x_m.push_back(self.x), h.self_center_y_m.push_back(self.y);
+      h.self_center_z_m.push_back(self.z), h.self_radius_m.push_back(self.radius_m);
+      h.self_error_m.push_back(self_error_m);
+      h.parent_center_x_m.push_back(self.x), h.parent_center_y_m.push_back(self.y);
+      h.parent_center_z_m.push_back(self.z), h.parent_radius_m.push_back(self.radius_m);
+      h.parent_error_m.push_back(lod::kNoParentError);
+      h.depth.push_back(static_cast<std::uint8_t>(depth));
+      out_.parent_group.push_back(-1);
+      out_.source_group.push_back(source_group);
+      out_.levels = std::max(out_.levels, static_cast<std::uint32_t>(depth + 1));
+      self_.push_back(self);
+    }
+  }
+
+  void set_parent(std::uint32_t c, const Sphere& s, float error_m, std::int32_t group) {
+    lod::ClusterHierarchy& h = out_.hierarchy;
+    h.parent_center_x_m[c] = s.x, h.parent_center_y_m[c] = s.y, h.parent_center_z_m[c] = s.z;
+    h.parent_radius_m[c] = s.radius_m, h.parent_error_m[c] = error_m;
+    out_.parent_group[c] = group;
+  }
+
+  std::vector<std::uint32_t> level(const std::vector<std::uint32_t>& pending, std::size_t depth,
+                                   ClusterGrouper& grouper) {
+    const lod::ClusterHierarchy& h = out_.hierarchy;
+    std::vector<std::uint32_t> first, count;
+    std::vector<Sphere> bounds;
+    for (std::uint32_t c : pending)
+      first.push_back(h.first_index[c]), count.push_back(h.index_count[c]), bounds.push_back(self_[c]);
+    std::vector<std::vector<std::uint32_t>> groups =
+        grouper.group({out_.indices, weld_, first, count, bounds}, o_.group_size);
+    for (auto& g : groups)
+      for (std::uint32_t& m : g) m = pending[m];
+
+    std::vector<Piece> pieces(groups.size());
+    parallel_for(groups.size(), [&](std::size_t g, Scratch& s) { simplify_group(groups[g], s, pieces[g]); });
+
+    std::vector<std::uint32_t> next;
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+      const Piece& p = pieces[g];
+      if (!p.simplified) {  // stuck: these clusters are the top here
+        for (std::uint32_t c : groups[g]) set_parent(c, p.sphere, lod::kNoParentError, -1);
+        continue;
+      }
+      const auto id = static_cast<std::int32_t>(out_.groups++);
+      for (std::uint32_t c : groups[g]) set_parent(c, p.sphere, p.error_m, id);
+      for (std::size_t k = 0; k < p.index_count.size(); ++k)
+        next.push_back(static_cast<std::uint32_t>(self_.size() + k));
+      add_clusters(p, depth + 1, id);
+    }
+    return next;
+  }
+
+  // Runs task(i, scratch) for i < count on the configured threads. Every task writes only its
+  // own output, so the result is the same for any thread count.
+  template <typename Task>
+  void parallel_for(std::size_t count, Task&& task) {
+    unsigned threads = o_.threads ? o_.threads : std::max(1u, std::thread::hardware_concurrency());
+    threads = static_cast<unsigned>(std::min<std::size_t>(threads, count));
+    while (scratch_.size() < std::max(threads, 1u))
+      scratch_.push_back(std::make_unique<Scratch>(pos_.size() / 3));
+    std::atomic<std::size_t> next{0};
+    std::vector<std::exception_ptr> failed(std::max(threads, 1u));  // e.g. bad_alloc
+    auto work = [&](unsigned t) {
+      try {
+        for (std::size_t i; (i = next.fetch_add(1)) < count;) task(i, *scratch_[t]);
+      } catch (...) {
+        failed[t] = std::current_exception();
+        next = count;
+      }
+    };
+    {
+      std::vector<std::jthread> pool;
+      for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work, t);
+      work(0);
+    }
+    for (const std::exception_ptr& e : failed)
+      if (e) std::rethrow_exception(e);
+  }
+
+  std::span<const float> pos_;
+  const ClusterBuildOptions& o_;
+  std::vector<std::uint32_t> weld_;
+  std::vector<Sphere> self_;  // self spheres, as Sphere (hierarchy holds the same, split up)
+  std::vector<std::unique_ptr<Scratch>> scratch_;
+  ClusterBuildResult out_;
+};
+
+}  // namespace
+
+std::string validate_cluster_options(const ClusterBuildOptions& o) {
+  std::ostringstream m;
+  if (o.max_vertices < 3 || o.max_vertices > 255)
+    m << "max vertices per cluster must be in [3, 255], got " << o.max_vertices;
+  else if (o.max_triangles < 4 || o.max_triangles > 512 || o.max_triangles % 4 != 0)
+    m << "max triangles per cluster must be a multiple of 4 in [4, 512], got " << o.max_triangles;
+  else if (o.group_size < 2 || o.group_size > 64)
+    m << "clusters per group must be in [2, 64], got " << o.group_size;
+  else if (!(o.simplify_ratio > 0.0 && o.simplify_ratio < 1.0))
+    m << "simplify ratio must be in (0, 1), got " << o.simplify_ratio;
+  else if (!(o.stuck_ratio >= o.simplify_ratio && o.stuck_ratio < 1.0))
+    m << "stuck ratio must be in [simplify ratio, 1), got " << o.stuck_ratio;
+  return m.str();
+}
+
+ClusterBuildResult build_cluster_hierarchy(std::span<const float> pos,
+                                           std::span<const std::uint32_t> indices,
+                                           const ClusterBuildOptions& o) {
+  if (std::string e = validate_cluster_options(o); !e.empty()) throw BakeError(o.label + ": " + e);
+  if (pos.size() % 3 != 0)
+    throw BakeError(o.label + ": " + std::to_string(pos.size()) + " position floats is not a whole number of vertices");
+  if (indices.size() % 3 != 0)
+    throw BakeError(o.label + ": " + std::to_string(indices.size()) + " indices is not a whole number of triangles");
+  const std::size_t vcount = pos.size() / 3;
+  if (vcount > kNone) throw BakeError(o.label + ": more than 2^32 - 1 vertices");
+  // All levels together hold about twice the source; first_index is 32-bit.
+  if (indices.size() > (std::size_t{1} << 30))
+    throw BakeError(o.label + ": " + std::to_string(indices.size() / 3) +
+                    " triangles; a cluster hierarchy takes at most 2^30 indices (357913941 triangles)");
+  for (std::size_t v = 0; v < vcount; ++v)
+    if (!std::isfinite(pos[3 * v]) || !std::isfinite(pos[3 * v + 1]) || !std::isfinite(pos[3 * v + 2])) {
+      std::ostringstream m;
+      m << o.label << ": vertex " << v << " position (" << pos[3 * v] << ", " << pos[3 * v + 1]
+        << ", " << pos[3 * v + 2] << ") is not finite";
+      throw BakeError(m.str());
+    }
+  for (std::size_t i = 0; i < indices.size(); ++i)
+    if (indices[i] >= vcount)
+      throw BakeError(o.label + ": index " + std::to_string(i) + " is " + std::to_string(indices[i]) +
+                      ", but there are only " + std::to_string(vcount) + " vertices");
+  return Builder(pos, o).run(indices);
+}
+
+}  // namespace gazelod::bake

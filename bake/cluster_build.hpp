@@ -1,0 +1,63 @@
+// One mesh's cluster hierarchy (lod/cluster_hierarchy.hpp) with meshoptimizer 0.18, after
+// Karis et al. 2021 (Nanite) and meshoptimizer's cluster-LOD demo:
+//   1. the source triangles are split into clusters (meshopt_buildMeshlets);
+//   2. neighbouring clusters are grouped (bake/cluster_group.hpp);
+//   3. each group's triangles are simplified to about half with meshopt_SimplifyLockBorder, so
+//      the group's outer border stays vertex for vertex what its neighbours see;
+//   4. the result is split into new clusters, which go back to step 2;
+// until one cluster is left or no group simplifies any more (a group that keeps more than
+// `stuck_ratio` of its triangles is not simplified: its clusters are the top of the hierarchy,
+// parent error kNoParentError).
+// Errors in the positions' units (metres): a group's error is the largest self error of its
+// clusters plus its own simplification error (meshopt's relative error times
+// meshopt_simplifyScale of the group), so parent error >= every member's self error; the group's
+// sphere encloses every member's self sphere. Source clusters: their own sphere, error 0.
+// The vertex buffer is the input's (simplification only drops vertices): `indices` refer to it.
+#pragma once
+
+#include "lod/cluster_hierarchy.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace gazelod::bake {
+
+struct ClusterBuildOptions {
+  std::size_t max_vertices = 64;    // per cluster, 3..255 (meshopt_buildMeshlets)
+  std::size_t max_triangles = 124;  // per cluster, 4..512 and a multiple of 4 (meshopt 0.18)
+  std::size_t group_size = 8;       // clusters per group, >= 2
+  double simplify_ratio = 0.5;      // each group is simplified to this share of its triangles
+  double stuck_ratio = 0.85;        // more than this share left: the group does not simplify
+  unsigned threads = 0;             // groups of a level simplified in parallel; 0: all cores
+  std::string label = "mesh";       // names the mesh in error messages
+};
+
+struct ClusterBuildResult {
+  lod::ClusterHierarchy hierarchy;
+  // Every cluster's triangles, all levels, at hierarchy.first_index / index_count.
+  std::vector<std::uint32_t> indices;
+  // Per cluster: the group it was merged into and the group that produced it (-1: none, i.e.
+  // top of the hierarchy / source cluster). Groups are numbered in build order.
+  std::vector<std::int32_t> parent_group, source_group;
+  std::size_t groups = 0;                // groups that were simplified
+  std::uint32_t levels = 0;              // largest depth + 1; 0 for an empty mesh
+  std::size_t source_triangles = 0;      // input triangles that were kept
+  std::size_t degenerate_triangles = 0;  // dropped: two corners at the same position
+};
+
+// "" or a message naming the bad option.
+std::string validate_cluster_options(const ClusterBuildOptions& options);
+
+// positions_xyz: 3 floats per vertex; indices: a triangle list. Throws BakeError
+// "<label>: ..." for bad options, a position that is not finite ("vertex 12 ..."), an index out
+// of range ("index 7 is 40, but there are only 30 vertices") or an index count that is not a
+// multiple of 3. Degenerate triangles are dropped and counted. No triangles left: an empty
+// hierarchy. At most one cluster's worth: one cluster, depth 0, parent error kNoParentError.
+ClusterBuildResult build_cluster_hierarchy(std::span<const float> positions_xyz,
+                                           std::span<const std::uint32_t> indices,
+                                           const ClusterBuildOptions& options = {});
+
+}  // namespace gazelod::bake

@@ -1,0 +1,44 @@
+// Grouping of neighbouring clusters for the cluster hierarchy (bake/cluster_build.hpp). Each
+// group is later simplified as one piece with its border locked, so groups should be compact
+// and share few border vertices with each other (Karis et al. 2021 partition with METIS;
+// meshoptimizer 0.18 has no meshopt_partitionClusters). Here: greedy graph growing on the
+// graph whose edge weights are the (welded) vertices two clusters share, seeded where the
+// previous group left unassigned clusters behind; groups left small are merged into the
+// neighbour they share most with, and what is still small (pieces with no neighbour, e.g.
+// separate parts of a model) is merged along a Morton curve of the cluster centres.
+#pragma once
+
+#include "bake/cluster_sphere.hpp"
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace gazelod::bake {
+
+struct ClusterSet {
+  std::span<const std::uint32_t> indices;  // the hierarchy's index buffer (triangle lists)
+  std::span<const std::uint32_t> weld;     // vertex -> the first vertex with the same position
+  // The clusters to group: index ranges into `indices` and their bounds (centres break ties).
+  std::span<const std::uint32_t> first_index, index_count;
+  std::span<const Sphere> bounds;
+};
+
+// Keeps per-vertex scratch arrays between calls (one per hierarchy build).
+class ClusterGrouper {
+ public:
+  explicit ClusterGrouper(std::size_t vertex_count);
+  // Groups of about `group_size` (>= 2) clusters, as positions in `set`; every cluster is in
+  // exactly one group. A set of at most `group_size` clusters is one group.
+  std::vector<std::vector<std::uint32_t>> group(const ClusterSet& set, std::size_t group_size);
+
+ private:
+  struct Neighbour {
+    std::uint32_t cluster, shared_vertices;
+  };
+  void build_adjacency(const ClusterSet& set);
+  std::vector<std::uint32_t> owner_, seen_;  // per welded vertex; reset after each call
+  std::vector<std::vector<Neighbour>> adjacency_;
+};
+
+}  // namespace gazelod::bake

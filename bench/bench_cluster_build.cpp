@@ -1,0 +1,93 @@
+// Cluster hierarchy build (bake/cluster_build.hpp) throughput in input triangles per second on
+// a generated terrain of 1,002,528 triangles (708 x 708 quads over 100 m, four octaves of
+// sines up to 4 m). Baseline in the same process, registered first: one meshopt_simplify of the
+// whole mesh to half its triangles. Counters: triangles_per_s = input triangles / wall time;
+// x_simplify = the build's wall time over the baseline's (how many whole-mesh halvings the
+// hierarchy costs). The build runs with 1 thread and with all cores (threads 0).
+#include "bake/cluster_build.hpp"
+#include "tests/bake/test_meshes.hpp"
+
+#include <benchmark/benchmark.h>
+#include <meshoptimizer.h>
+
+#include <chrono>
+#include <cmath>
+#include <numbers>
+
+namespace gazelod::bake {
+namespace {
+
+constexpr int kQuads = 708;
+
+const testing::TestMesh& terrain() {
+  static const testing::TestMesh m = [] {
+    testing::TestMesh t = testing::grid(kQuads, 100.0, 0.0);
+    const double k = 2.0 * std::numbers::pi / 100.0;
+    for (std::size_t i = 0; i < t.positions.size(); i += 3) {
+      const double x = t.positions[i], y = t.positions[i + 1];
+      double z = 0.0;
+      for (int o = 0; o < 4; ++o) {
+        const double f = k * std::pow(3.0, o);
+        z += 4.0 / std::pow(2.5, o) * std::sin(f * x + o) * std::cos(f * y * 1.3 + 2 * o);
+      }
+      t.positions[i + 2] = static_cast<float>(z);
+    }
+    return t;
+  }();
+  return m;
+}
+
+double& baseline_s() {  // seconds per meshopt_simplify to half, set by the baseline
+  static double s = 0.0;
+  return s;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+void report(benchmark::State& state, double wall_s) {
+  const double per_iteration_s = wall_s / static_cast<double>(state.iterations());
+  const double tris = static_cast<double>(terrain().triangles());
+  state.counters["triangles_per_s"] = per_iteration_s > 0.0 ? tris / per_iteration_s : 0.0;
+  if (baseline_s() > 0.0) state.counters["x_simplify"] = per_iteration_s / baseline_s();
+}
+
+void BM_MeshoptSimplifyHalf(benchmark::State& state) {
+  const testing::TestMesh& m = terrain();
+  std::vector<unsigned> dst(m.indices.size());
+  const auto t0 = std::chrono::steady_clock::now();
+  for (auto _ : state) {
+    float err = 0.0f;
+    benchmark::DoNotOptimize(meshopt_simplify(dst.data(), m.indices.data(), m.indices.size(),
+                                              m.positions.data(), m.positions.size() / 3, 12,
+                                              m.indices.size() / 2, 1.0f, 0, &err));
+  }
+  const double wall_s = seconds_since(t0);
+  baseline_s() = wall_s / static_cast<double>(state.iterations());
+  report(state, wall_s);
+}
+
+void BM_ClusterBuild(benchmark::State& state) {
+  const testing::TestMesh& m = terrain();
+  ClusterBuildOptions o;
+  o.threads = static_cast<unsigned>(state.range(0));
+  std::size_t clusters = 0, levels = 0;
+  const auto t0 = std::chrono::steady_clock::now();
+  for (auto _ : state) {
+    const ClusterBuildResult r = build_cluster_hierarchy(m.positions, m.indices, o);
+    clusters = r.hierarchy.size(), levels = r.levels;
+    benchmark::DoNotOptimize(r.indices.data());
+  }
+  report(state, seconds_since(t0));
+  state.counters["clusters"] = static_cast<double>(clusters);
+  state.counters["levels"] = static_cast<double>(levels);
+}
+
+BENCHMARK(BM_MeshoptSimplifyHalf)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_ClusterBuild)->ArgName("threads")->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace
+}  // namespace gazelod::bake
+
+BENCHMARK_MAIN();

@@ -1,0 +1,78 @@
+// gazelod bake --clusters through gazelod::cli::run: progress with throughput, summary, the
+// output form (second argument or -o), usage errors, exit codes.
+#include "tests/cli_run.hpp"
+#include "bake/baked_scene.hpp"
+#include "apps/gazelod/command.hpp"
+#include "tests/bake/test_meshes.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+namespace gazelod::cli {
+namespace {
+
+using test::run_cli;
+
+#define EXPECT_HAS(msg, part) EXPECT_NE((msg).find(part), std::string::npos) << (msg)
+
+struct Paths {
+  std::string dir, in, out;
+};
+
+Paths scene(const std::string& test) {
+  Paths p;
+  p.dir = bake::testing::temp_dir(test);
+  p.in = bake::testing::write_model(bake::testing::scene_model(), p.dir + "/in.gltf");
+  p.out = p.dir + "/out.glb";
+  return p;
+}
+
+TEST(CliBakeClusters, BakesWithProgressAndSummary) {
+  const Paths p = scene("cli_clusters");
+  const test::CliResult r = run_cli({"bake", "--clusters", p.in, p.out});
+  ASSERT_EQ(r.rc, 0) << r.err;
+  EXPECT_HAS(r.err, "bake: mesh 1/2 mesh 0 'Sphere' (1 primitives) ...");
+  EXPECT_HAS(r.err, "bake: mesh 1/2 done: 5120 triangles -> ");
+  EXPECT_HAS(r.err, "input triangles/s); overall 50%");
+  EXPECT_HAS(r.err, "overall 100%");
+  EXPECT_HAS(r.err, "bake: writing " + p.out);
+  EXPECT_HAS(r.out, "mesh 1 'Wavy' primitive 1");
+  EXPECT_HAS(r.out, "total: 2 meshes, 3 primitives with GAZELOD_cluster_lod, 7168 input triangles, hierarchy ");
+  const bake::BakedScene s = bake::load_baked(p.out);
+  EXPECT_EQ(s.objects.size(), 3u);
+  EXPECT_EQ(s.cluster_meshes.size(), 2u);
+  // -o works as well.
+  EXPECT_EQ(run_cli({"bake", p.in, "--clusters", "-o", p.dir + "/o.glb"}).rc, 0);
+  EXPECT_TRUE(std::filesystem::exists(p.dir + "/o.glb"));
+}
+
+TEST(CliBakeClusters, UsageErrors) {
+  const Paths p = scene("cli_clusters_usage");
+  test::CliResult r = run_cli({"bake", "--clusters", p.in, p.out, "--levels", "3"});
+  EXPECT_EQ(r.rc, 2);
+  EXPECT_HAS(r.err, "--clusters: cannot be combined with --levels");
+  r = run_cli({"bake", "--clusters", p.in, p.out, "--profile", "6"});
+  EXPECT_EQ(r.rc, 2);
+  EXPECT_HAS(r.err, "--clusters: cannot be combined with --profile");
+  r = run_cli({"bake", "--clusters", p.in, p.out, "-o", p.dir + "/other.glb"});
+  EXPECT_EQ(r.rc, 2);
+  EXPECT_HAS(r.err, "--output: give the output once");
+  r = run_cli({"bake", "--clusters", p.in});
+  EXPECT_EQ(r.rc, 2);
+  EXPECT_HAS(r.err, "--output: missing");
+  EXPECT_FALSE(std::filesystem::exists(p.out));
+}
+
+TEST(CliBakeClusters, InputAndOutputErrorsHaveDistinctExitCodes) {
+  const Paths p = scene("cli_clusters_io");
+  test::CliResult r = run_cli({"bake", "--clusters", p.dir + "/missing.glb", p.out});
+  EXPECT_EQ(r.rc, 2);
+  EXPECT_HAS(r.err, "missing.glb: cannot open for reading");
+  r = run_cli({"bake", "--clusters", p.in, p.dir + "/no/such/out.glb"});
+  EXPECT_EQ(r.rc, 1);
+  EXPECT_HAS(r.err, "no/such/out.glb: output folder");
+}
+
+}  // namespace
+}  // namespace gazelod::cli

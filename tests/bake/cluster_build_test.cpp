@@ -1,0 +1,157 @@
+// build_cluster_hierarchy (bake/cluster_build.hpp): the hierarchy's invariants on a closed
+// sphere, an open grid and separate pieces; small, empty and degenerate input; bad input.
+#include "bake/bake_error.hpp"
+#include "bake/cluster_build.hpp"
+#include "tests/bake/cluster_invariants.hpp"
+#include "tests/bake/test_meshes.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace gazelod::bake {
+namespace {
+
+#define EXPECT_HAS(msg, part) EXPECT_NE((msg).find(part), std::string::npos) << (msg)
+
+std::string build_error(const testing::TestMesh& m, const ClusterBuildOptions& o = {}) {
+  try {
+    build_cluster_hierarchy(m.positions, m.indices, o);
+  } catch (const BakeError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::size_t top_triangles(const ClusterBuildResult& r) {
+  const std::size_t n = testing::cut(r, std::numeric_limits<float>::max()).size() / 3;
+  std::printf("  %zu source triangles -> %zu clusters, %zu groups, %u levels, top %zu triangles\n",
+              r.source_triangles, r.hierarchy.size(), r.groups, r.levels, n);
+  return n;
+}
+
+TEST(ClusterBuild, ClosedSphereStaysClosedAtEveryCut) {
+  const testing::TestMesh m = testing::icosphere(5, 0.5);  // 20480 triangles
+  const ClusterBuildResult r = build_cluster_hierarchy(m.positions, m.indices);
+  ASSERT_TRUE(testing::open_edges(m.positions, m.indices).empty());
+  testing::expect_hierarchy_invariants(r, m.positions, m.indices);
+  EXPECT_GE(r.levels, 5u);
+  EXPECT_GT(r.groups, 20u);
+  EXPECT_LT(top_triangles(r), m.triangles() / 20) << "the top is coarse";
+  // Errors grow with depth and stay below the sphere's size.
+  for (std::size_t c = 0; c < r.hierarchy.size(); ++c)
+    if (r.hierarchy.parent_error_m[c] != lod::kNoParentError) {
+      EXPECT_LT(r.hierarchy.parent_error_m[c], 0.5f);
+    }
+}
+
+TEST(ClusterBuild, OpenGridKeepsItsBorderAtEveryCut) {
+  const testing::TestMesh m = testing::grid(80, 2.0, 0.2);  // 12800 triangles
+  const ClusterBuildResult r = build_cluster_hierarchy(m.positions, m.indices);
+  EXPECT_FALSE(testing::open_edges(m.positions, m.indices).empty());
+  testing::expect_hierarchy_invariants(r, m.positions, m.indices);
+  EXPECT_GE(r.levels, 4u);
+  EXPECT_LT(top_triangles(r), m.triangles() / 4);
+}
+
+TEST(ClusterBuild, SeparatePiecesAreGroupedByPlace) {
+  // 27 spheres of 320 triangles, none touching: no cluster has a neighbour across pieces.
+  testing::TestMesh m;
+  const testing::TestMesh s = testing::icosphere(2, 0.1);
+  for (int i = 0; i < 27; ++i) {
+    const auto base = static_cast<std::uint32_t>(m.positions.size() / 3);
+    for (std::size_t k = 0; k < s.positions.size(); k += 3)
+      m.positions.insert(m.positions.end(), {s.positions[k] + float(i % 3), s.positions[k + 1] + float(i / 3 % 3),
+                                             s.positions[k + 2] + float(i / 9)});
+    for (std::uint32_t v : s.indices) m.indices.push_back(base + v);
+  }
+  const ClusterBuildResult r = build_cluster_hierarchy(m.positions, m.indices);
+  testing::expect_hierarchy_invariants(r, m.positions, m.indices);
+  EXPECT_LT(top_triangles(r), m.triangles() / 4);
+}
+
+TEST(ClusterBuild, SameHierarchyOnAnyThreadCount) {
+  const testing::TestMesh m = testing::icosphere(4, 1.0);
+  ClusterBuildOptions one, four;
+  one.threads = 1, four.threads = 4;
+  const ClusterBuildResult a = build_cluster_hierarchy(m.positions, m.indices, one);
+  const ClusterBuildResult b = build_cluster_hierarchy(m.positions, m.indices, four);
+  EXPECT_EQ(a.indices, b.indices);
+  EXPECT_EQ(a.hierarchy.parent_error_m, b.hierarchy.parent_error_m);
+  EXPECT_EQ(a.hierarchy.self_radius_m, b.hierarchy.self_radius_m);
+  EXPECT_EQ(a.parent_group, b.parent_group);
+}
+
+TEST(ClusterBuild, SmallMeshIsOneCluster) {
+  const testing::TestMesh m = testing::icosphere(1, 1.0);  // 80 triangles, 42 vertices
+  const ClusterBuildResult r = build_cluster_hierarchy(m.positions, m.indices);
+  ASSERT_EQ(r.hierarchy.size(), 1u);
+  EXPECT_EQ(r.levels, 1u);
+  EXPECT_EQ(r.groups, 0u);
+  EXPECT_EQ(r.hierarchy.index_count[0], m.indices.size());
+  EXPECT_EQ(r.hierarchy.self_error_m[0], 0.0f);
+  EXPECT_EQ(r.hierarchy.parent_error_m[0], lod::kNoParentError);
+  EXPECT_EQ(r.hierarchy.depth[0], 0);
+  EXPECT_NEAR(r.hierarchy.self_radius_m[0], 1.0f, 0.2f);
+  testing::expect_hierarchy_invariants(r, m.positions, m.indices);
+
+  testing::TestMesh one;
+  one.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  one.indices = {0, 1, 2};
+  const ClusterBuildResult r1 = build_cluster_hierarchy(one.positions, one.indices);
+  ASSERT_EQ(r1.hierarchy.size(), 1u);
+  testing::expect_hierarchy_invariants(r1, one.positions, one.indices);
+}
+
+TEST(ClusterBuild, DegenerateTrianglesAreDroppedAndCounted) {
+  testing::TestMesh m = testing::grid(20, 1.0, 0.1);
+  const auto v = static_cast<std::uint32_t>(m.positions.size() / 3);
+  m.positions.insert(m.positions.end(), {m.positions[0], m.positions[1], m.positions[2]});  // = vertex 0
+  m.indices.insert(m.indices.end(), {0, 0, 1, 5, 6, 5, 0, 1, v, 3, 3, 3});
+  const ClusterBuildResult r = build_cluster_hierarchy(m.positions, m.indices);
+  EXPECT_EQ(r.degenerate_triangles, 4u);
+  EXPECT_EQ(r.source_triangles, 800u);
+  testing::expect_hierarchy_invariants(r, m.positions, m.indices);
+
+  testing::TestMesh all;
+  all.positions = {0, 0, 0, 1, 0, 0};
+  all.indices = {0, 0, 1, 1, 1, 1};
+  const ClusterBuildResult e = build_cluster_hierarchy(all.positions, all.indices);
+  EXPECT_EQ(e.hierarchy.size(), 0u);
+  EXPECT_EQ(e.levels, 0u);
+  EXPECT_EQ(e.degenerate_triangles, 2u);
+  EXPECT_TRUE(build_cluster_hierarchy({}, {}).indices.empty());
+}
+
+TEST(ClusterBuild, BadInputNamesMeshAndPlace) {
+  ClusterBuildOptions o;
+  o.label = "mesh 3 'Rock'";
+  testing::TestMesh m = testing::grid(2, 1.0, 0.0);  // 9 vertices, 8 triangles
+  m.positions[3 * 5 + 1] = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_HAS(build_error(m, o), "mesh 3 'Rock': vertex 5 position (");
+  EXPECT_HAS(build_error(m, o), ") is not finite");
+  m.positions[3 * 5 + 1] = 0.0f;
+  m.positions[3 * 7] = std::numeric_limits<float>::infinity();
+  EXPECT_HAS(build_error(m, o), "mesh 3 'Rock': vertex 7 position (inf, ");
+  m.positions[3 * 7] = 0.0f;
+  m.indices[4] = 99;
+  EXPECT_HAS(build_error(m, o), "mesh 3 'Rock': index 4 is 99, but there are only 9 vertices");
+  m.indices[4] = 1;
+  m.indices.push_back(0);
+  EXPECT_HAS(build_error(m, o), "mesh 3 'Rock': 25 indices is not a whole number of triangles");
+  m.indices.pop_back();
+  EXPECT_EQ(build_error(m, o), "");
+  o.max_triangles = 126;
+  EXPECT_HAS(build_error(m, o), "max triangles per cluster must be a multiple of 4 in [4, 512], got 126");
+  o.max_triangles = 124, o.max_vertices = 256;
+  EXPECT_HAS(build_error(m, o), "max vertices per cluster must be in [3, 255], got 256");
+  o.max_vertices = 64, o.simplify_ratio = 1.0;
+  EXPECT_HAS(build_error(m, o), "simplify ratio must be in (0, 1), got 1");
+  o.simplify_ratio = 0.5, o.group_size = 1;
+  EXPECT_HAS(build_error(m, o), "clusters per group must be in [2, 64], got 1");
+}
+
+}  // namespace
+}  // namespace gazelod::bake

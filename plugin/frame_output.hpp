@@ -33,12 +33,23 @@ struct FrameDecisions {
   // for the hold time), 2 awaiting_suppression (waiting for a saccade or blink, at most the
   // maximum deferral), 3 no_time (the frame's time was not usable). Empty without the policy.
   std::span<const std::uint8_t> held;
+  // Cluster meshes (LodPlugin::add_cluster_mesh), their clusters back to back in registration
+  // order: mesh m's cluster c is entry cluster_first[m] + c. cluster_drawn is 1 for the
+  // clusters of this frame's cut (after the switch policy), which covers every mesh exactly
+  // once, without cracks; cluster_limited_by the criterion that let the cluster's own error go
+  // (values as limited_by); cluster_held why a coarser cut waits (values as held; empty
+  // without the policy). The frame budget does not apply to clusters.
+  std::span<const std::uint8_t> cluster_drawn;
+  std::span<const std::uint8_t> cluster_limited_by;
+  std::span<const std::uint8_t> cluster_held;
+  std::span<const std::uint32_t> cluster_first;
   GazeSourceKind gaze_source = GazeSourceKind::head_fixed;
   bool gaze_valid = false;  // false: head-fixed gaze with the widened cone
 };
 
 struct FrameDiagnostics {
   std::span<const std::uint8_t> lod_perceptual;  // this frame's perceptual choice (before the switch policy and the budget)
+  std::span<const std::uint8_t> cluster_drawn_perceptual;  // the same for clusters: this frame's cut before the policy
   std::span<const std::uint8_t> lod_size_only;   // what each criterion (with size) allows
   std::span<const std::uint8_t> lod_eccentricity_only;
   std::span<const std::uint8_t> lod_velocity_only;

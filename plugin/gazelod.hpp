@@ -4,12 +4,15 @@
 // (Reddy 1998 acuity model, Reddy 1995 foveal cone). Thin adapter: the math is in lod/.
 //
 //   auto plugin = gazelod::LodPlugin::create(instance, system, session, local_space, config);
-//   for each object: plugin->add_object(desc);
+//   for each object: plugin->add_object(desc);            (one level per object: LOD chains)
+//   for each large mesh: plugin->add_cluster_mesh(desc);  (detail per region: a cluster hierarchy)
 //   frame: xrWaitFrame -> plugin->begin_frame(predicted_display_time) -> draw decisions.lod
-//          -> xrEndFrame -> plugin->end_frame(measured_ms)
+//          and the clusters with decisions.cluster_drawn -> xrEndFrame -> plugin->end_frame(ms)
 // Configuration: plugin/plugin_config.hpp; the per-frame output: plugin/frame_output.hpp.
 #pragma once
 
+#include "lod/cluster_hierarchy.hpp"
+#include "lod/cluster_select_store.hpp"
 #include "lod/lod_chain.hpp"
 #include "plugin/frame_output.hpp"
 #include "plugin/gaze_source_kind.hpp"
@@ -34,6 +37,16 @@ struct ObjectDesc {
   double importance = 1.0;
 };
 
+// A mesh drawn as a cut of its cluster hierarchy (gazelod bake --clusters; lod/cluster_select.hpp):
+// each cluster is drawn where its own simplification error is invisible and its parent's is
+// not, with Reddy's rule per cluster, so detail follows the fovea across one mesh.
+struct ClusterMeshDesc {
+  lod::ClusterHierarchy hierarchy;     // the mesh's own space
+  std::size_t index_count = 0;         // size of the mesh's index buffer (the clusters' ranges lie in it)
+  lod::InstanceTransform pose;         // mesh space -> base space (rotation, translation, uniform scale)
+  glm::dvec3 velocity_m_s{0.0};        // in the base space
+};
+
 class LodPlugin {
  public:
   using SourceChanged = std::function<void(GazeSourceKind now, const std::string& why)>;
@@ -54,6 +67,11 @@ class LodPlugin {
   virtual void set_object_motion(std::uint32_t id, const glm::dvec3& center_m,
                                  const glm::dvec3& velocity_m_s) = 0;
   virtual std::size_t object_count() const = 0;
+  // Registration of a cluster mesh; returns its id (0, 1, 2, ...). Its clusters are
+  // FrameDecisions::cluster_drawn[cluster_first[id] ...]. Throws std::invalid_argument with
+  // the reason for an inconsistent hierarchy (lod::validate_cluster_hierarchy) or pose.
+  virtual std::uint32_t add_cluster_mesh(const ClusterMeshDesc& desc) = 0;
+  virtual std::size_t cluster_mesh_count() const = 0;
 
   // Called when the session state changes (from the application's xrPollEvent loop).
   virtual void on_session_state(XrSessionState state, XrTime time) = 0;

@@ -8,6 +8,7 @@
 #include "lod/object_set.hpp"
 #include "lod/select.hpp"
 #include "gaze/gaze_conditioner.hpp"
+#include "plugin/cluster_meshes.hpp"
 #include "plugin/gaze_arbiter.hpp"
 #include "plugin/head_motion.hpp"
 #include "plugin/openxr_gaze_source.hpp"
@@ -88,6 +89,13 @@ class LodPluginImpl final : public LodPlugin {
   }
   std::size_t object_count() const override { return store_.size(); }
 
+  std::uint32_t add_cluster_mesh(const ClusterMeshDesc& d) override {
+    const std::uint32_t id = clusters_.add(d);
+    publish_clusters();
+    return id;
+  }
+  std::size_t cluster_mesh_count() const override { return clusters_.mesh_count(); }
+
   void on_session_state(XrSessionState state, XrTime time) override {
     arbiter_->session_state(state == XR_SESSION_STATE_FOCUSED, static_cast<std::int64_t>(time));
   }
@@ -164,6 +172,9 @@ class LodPluginImpl final : public LodPlugin {
 
     apply_switch_policy(t, gaze_suppressed);
     apply_budget();
+    // Cluster meshes: the same viewer, per cluster; the same hysteresis on their records.
+    clusters_.update(v, config_.switch_policy ? &config_.switching : nullptr, frame_seconds(t), gaze_suppressed);
+    publish_clusters();
 
     frame_.gaze_source = used;
     frame_.gaze_valid = used != GazeSourceKind::head_fixed;
@@ -193,13 +204,26 @@ class LodPluginImpl final : public LodPlugin {
 
  private:
   // Refinement at once, coarsening after the hold and preferably while vision is suppressed.
-  void apply_switch_policy(XrTime t, bool suppressed) {
-    if (!config_.switch_policy) return;
+  // Seconds since the first frame (the switch policies' clock).
+  double frame_seconds(XrTime t) {
     if (!have_t0_) {
       have_t0_ = true;
       t0_ = t;
     }
-    const double t_s = static_cast<double>(t - t0_) * 1e-9;
+    return static_cast<double>(t - t0_) * 1e-9;
+  }
+
+  void publish_clusters() {
+    frame_.cluster_drawn = clusters_.drawn();
+    frame_.cluster_limited_by = clusters_.limited_by();
+    frame_.cluster_held = config_.switch_policy ? clusters_.held() : std::span<const std::uint8_t>();
+    frame_.cluster_first = clusters_.first_cluster();
+    diag_.cluster_drawn_perceptual = clusters_.perceptual();
+  }
+
+  void apply_switch_policy(XrTime t, bool suppressed) {
+    if (!config_.switch_policy) return;
+    const double t_s = frame_seconds(t);
     // An object's first frame draws its perceptual level: nothing was drawn before, so there is
     // no switch to hide.
     for (std::size_t i = switch_started_; i < lod_.size(); ++i) switch_drawn_[i] = lod_[i];
@@ -322,6 +346,7 @@ class LodPluginImpl final : public LodPlugin {
   GazeSourceKind active_ = GazeSourceKind::head_fixed;
 
   lod::ObjectStore store_;
+  plugin::ClusterMeshes clusters_;
   std::vector<std::uint8_t> lod_, limited_, size_only_, ecc_only_, vel_only_, se_, sv_;
   std::vector<std::uint8_t> scratch_a_, scratch_b_, scratch_c_, scratch_d_;
   lod::Decisions decisions_out_, breakdown_se_out_, breakdown_sv_out_;

@@ -86,6 +86,8 @@ XrResult CreateAction(XrActionSet actionSet, const XrActionCreateInfo* info, XrA
       const std::string* p = inst->paths.find(info->subactionPaths[i]);
       if (p == nullptr) return XR_ERROR_PATH_INVALID;
       if (!is_top_level_user_path(*p)) return XR_ERROR_PATH_UNSUPPORTED;
+      // /user/eyes_ext exists only with XR_EXT_eye_gaze_interaction enabled.
+      if (*p == kEyesUserPath && !inst->ext_eye_gaze) return XR_ERROR_PATH_UNSUPPORTED;
       if (std::find(subactions.begin(), subactions.end(), info->subactionPaths[i]) != subactions.end())
         return XR_ERROR_PATH_UNSUPPORTED;  // duplicates
       subactions.push_back(info->subactionPaths[i]);

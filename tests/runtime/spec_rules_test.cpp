@@ -149,6 +149,16 @@ TEST(RuntimeSpecRules, CoreProfilesAndStrictBindingPaths) {
   for (const char* bad : {"/user/hand/right/input", "/user/hand/right/output", "/user/hand/right/input/select/click/invalid",
                           "/user/hand/left/input_bad/menu/click", "/user/head/input/select/click"})
     EXPECT_EQ(suggest(inst, simple, {{b, path(inst, bad)}}), XR_ERROR_PATH_UNSUPPORTED) << bad;
+  // /user/eyes_ext is a user path only with XR_EXT_eye_gaze_interaction enabled.
+  XrActionCreateInfo eyes_action{XR_TYPE_ACTION_CREATE_INFO};
+  eyes_action.actionType = XR_ACTION_TYPE_POSE_INPUT;
+  std::strcpy(eyes_action.actionName, "gaze");
+  std::strcpy(eyes_action.localizedActionName, "gaze");
+  const XrPath eyes = path(inst, "/user/eyes_ext");
+  eyes_action.countSubactionPaths = 1;
+  eyes_action.subactionPaths = &eyes;
+  XrAction refused = XR_NULL_HANDLE;
+  EXPECT_EQ(xrCreateAction(set, &eyes_action, &refused), XR_ERROR_PATH_UNSUPPORTED);
   xrDestroyInstance(inst);
 }
 

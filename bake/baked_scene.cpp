@@ -141,6 +141,7 @@ struct Reader {
     if (std::string e = lod::validate_chain(o.lods); !e.empty())
       fail("/nodes/" + std::to_string(node), "LOD chain: " + e);
     sphere(node, world, o);
+    o.world = world;
     out.push_back(std::move(o));
   }
 
@@ -179,9 +180,16 @@ BakedScene load_baked(const std::string& path) {
     c.mesh = static_cast<int>(mi);
     c.name = g.model.meshes[mi].name;
     for (std::size_t p = 0; p < g.model.meshes[mi].primitives.size(); ++p)
-      if (auto lod = read_cluster_lod(g.model, c.mesh, static_cast<int>(p), path))
+      if (auto lod = read_cluster_lod(g.model, c.mesh, static_cast<int>(p), path)) {
+        // read_cluster_lod found POSITION; the cluster indices point into these vertices.
+        const std::string where = path + ": /meshes/" + std::to_string(mi) + "/primitives/" + std::to_string(p);
+        std::vector<float> xyz = read_positions(g.model, g.model.meshes[mi].primitives[p].attributes.at("POSITION"), where);
+        if (xyz.size() != 3 * std::size_t{lod->vertex_count})
+          throw BakeError(where + ": POSITION has " + std::to_string(xyz.size() / 3) + " vertices, expected " +
+                          std::to_string(lod->vertex_count));
         c.primitives.push_back({static_cast<int>(p), lod->vertex_count, lod->levels,
-                                std::move(lod->hierarchy), std::move(lod->indices)});
+                                std::move(lod->hierarchy), std::move(lod->indices), std::move(xyz)});
+      }
     if (c.primitives.empty()) continue;
     cluster_mesh_of[mi] = static_cast<int>(scene.cluster_meshes.size());
     scene.cluster_meshes.push_back(std::move(c));

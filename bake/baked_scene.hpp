@@ -7,6 +7,7 @@
 #include "lod/cluster_hierarchy.hpp"
 #include "lod/lod_chain.hpp"
 
+#include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
 #include <cstdint>
@@ -21,6 +22,7 @@ struct BakedObject {
   int mesh = -1;              // glTF mesh index of the finest level
   glm::dvec3 center_m{0.0};   // world space (node transforms applied)
   double radius_m = 0.0;      // world space, encloses the full-detail mesh
+  glm::dmat4 world{1.0};      // the node's world transform (mesh space -> glTF world), as glTF's column-major matrices
   // lods[0] is the full mesh; detail is removed cycles per diameter (0 at level 0), from the
   // geometric error (detail.hpp); passes lod::validate_chain.
   std::vector<lod::LodLevel> lods;
@@ -28,13 +30,15 @@ struct BakedObject {
 
 // One primitive's cluster hierarchy (bake/cluster_lod_gltf.hpp): cluster c is the triangle
 // list indices[first_index[c] .. + index_count[c]) into the primitive's own vertices; bounds
-// and errors in the mesh's own space (not the node's world space).
+// and errors in the mesh's own space (not the node's world space), as are the primitive's
+// positions (x, y, z per vertex, vertex_count vertices) the indices point into.
 struct BakedClusterPrimitive {
   int primitive = -1;
   std::uint32_t vertex_count = 0;
   std::uint32_t levels = 0;
   lod::ClusterHierarchy hierarchy;
   std::vector<std::uint32_t> indices;
+  std::vector<float> positions_xyz;
 };
 
 struct BakedClusterMesh {

@@ -11,9 +11,11 @@
 #   <libdir>/pkgconfig/gazelod.pc
 #   <libdir>/gazelod/libgazelod_xr_runtime.so       the simulated OpenXR runtime
 #   share/openxr/1/gazelod_xr_runtime.json          its manifest (XR_RUNTIME_JSON=<this file>)
+#   <libdir>/gazelod/libXrApiLayer_gazelod_eye_gaze.so      the eye-gaze API layer, and its
+#   share/openxr/1/api_layers/explicit.d/, share/gazelod/openxr/1/api_layers/implicit.d/ manifests
 #   bin/gazelod
 #
-# Components: dev (libraries, headers, CMake and pkg-config files), xr_runtime, program.
+# Components: dev (libraries, headers, CMake and pkg-config files), xr_runtime, xr_layer, program.
 # Both include/ and include/gazelod/ are include directories of the exported targets (see
 # GAZELOD_INCLUDE_DIRS in cmake/Gazelod.cmake): the headers include each other from the
 # repository root ("lod/cone.hpp"). tests/install/ installs into a scratch prefix and builds a
@@ -148,6 +150,62 @@ if(TARGET gazelod_xr_runtime)
     COMPONENT xr_runtime)
 endif()
 
+# ---- the eye-gaze API layer (layer/, docs/layer.md) --------------------------------------------
+#   <libdir>/gazelod/libXrApiLayer_gazelod_eye_gaze.so
+#   share/openxr/1/api_layers/explicit.d/XrApiLayer_gazelod_eye_gaze.json
+#     explicit manifest; library_path relative to its folder (relocatable, like the runtime's)
+#   share/gazelod/openxr/1/api_layers/implicit.d/XrApiLayer_gazelod_eye_gaze.json
+#     implicit manifest (enable_environment / disable_environment), inert where it is: copy or
+#     symlink it into an implicit.d folder, or put <prefix>/share/gazelod on XDG_DATA_DIRS. Its
+#     library_path is absolute, written at install time (--prefix, without DESTDIR), because the
+#     Khronos loader 1.0.20 resolves a relative one from where it finds the manifest (a symlink's
+#     folder), not from the file it points to.
+# Component xr_layer.
+set(GAZELOD_LAYER_INSTALL_LIBDIR ${CMAKE_INSTALL_LIBDIR}/gazelod)
+set(GAZELOD_LAYER_INSTALL_EXPLICIT_DIR ${CMAKE_INSTALL_DATADIR}/openxr/1/api_layers/explicit.d)
+set(GAZELOD_LAYER_INSTALL_IMPLICIT_DIR ${CMAKE_INSTALL_DATADIR}/gazelod/openxr/1/api_layers/implicit.d)
+if(TARGET gazelod_eye_gaze_layer)
+  install(TARGETS gazelod_eye_gaze_layer LIBRARY DESTINATION ${GAZELOD_LAYER_INSTALL_LIBDIR} COMPONENT xr_layer)
+  set(layer_file $<TARGET_FILE_NAME:gazelod_eye_gaze_layer>)
+  set(layer_manifest ${GAZELOD_LAYER_LIBRARY_NAME}.json)
+  # Explicit: relative from its folder to the library (absolute when either path is).
+  set(dir ${GAZELOD_LAYER_INSTALL_EXPLICIT_DIR})
+  if(IS_ABSOLUTE "${GAZELOD_LAYER_INSTALL_LIBDIR}" OR IS_ABSOLUTE "${dir}")
+    set(lib_from_manifest ${GAZELOD_LAYER_INSTALL_LIBDIR})
+    if(NOT IS_ABSOLUTE "${lib_from_manifest}")
+      set(lib_from_manifest ${CMAKE_INSTALL_PREFIX}/${lib_from_manifest})
+    endif()
+  else()
+    file(RELATIVE_PATH lib_from_manifest /_prefix/${dir} /_prefix/${GAZELOD_LAYER_INSTALL_LIBDIR})
+  endif()
+  gazelod_layer_manifest_text(text "${lib_from_manifest}/${layer_file}" OFF)
+  file(GENERATE OUTPUT ${gazelod_pkg_dir}/layer-explicit/${layer_manifest} CONTENT "${text}")
+  install(FILES ${gazelod_pkg_dir}/layer-explicit/${layer_manifest} DESTINATION ${dir} COMPONENT xr_layer)
+  # Implicit: a template here, the install prefix put in when installing.
+  gazelod_layer_manifest_text(text "@GAZELOD_LAYER_LIBRARY@" ON)
+  set(template ${gazelod_pkg_dir}/layer-implicit/${layer_manifest}.in)
+  file(GENERATE OUTPUT ${template} CONTENT "${text}")
+  file(GENERATE OUTPUT ${gazelod_pkg_dir}/layer-implicit/library_name.txt CONTENT "${layer_file}")
+  install(CODE "set(gazelod_layer_libdir [[${GAZELOD_LAYER_INSTALL_LIBDIR}]])
+    set(gazelod_layer_dir [[${GAZELOD_LAYER_INSTALL_IMPLICIT_DIR}]])
+    set(gazelod_layer_name_file [[${gazelod_pkg_dir}/layer-implicit/library_name.txt]])
+    set(gazelod_layer_template [[${template}]])
+    set(gazelod_layer_manifest [[${layer_manifest}]])" COMPONENT xr_layer)
+  install(CODE [[
+    foreach(v gazelod_layer_libdir gazelod_layer_dir)
+      if(NOT IS_ABSOLUTE "${${v}}")
+        set(${v} "${CMAKE_INSTALL_PREFIX}/${${v}}")
+      endif()
+    endforeach()
+    file(READ "${gazelod_layer_name_file}" name)
+    file(READ "${gazelod_layer_template}" text)
+    string(REPLACE "@GAZELOD_LAYER_LIBRARY@" "${gazelod_layer_libdir}/${name}" text "${text}")
+    message(STATUS "Installing: $ENV{DESTDIR}${gazelod_layer_dir}/${gazelod_layer_manifest}")
+    file(WRITE "$ENV{DESTDIR}${gazelod_layer_dir}/${gazelod_layer_manifest}" "${text}")
+    list(APPEND CMAKE_INSTALL_MANIFEST_FILES "${gazelod_layer_dir}/${gazelod_layer_manifest}")
+  ]] COMPONENT xr_layer)
+endif()
+
 # ---- the gazelod program ---------------------------------------------------------------------
 if(TARGET gazelod)
   install(TARGETS gazelod RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT program)
@@ -157,7 +215,7 @@ endif()
 #   cmake --build build --target gazelod_install_targets && cmake --install build --prefix P
 add_custom_target(gazelod_install_targets)
 add_dependencies(gazelod_install_targets ${gazelod_installed_targets})
-foreach(t gazelod_xr_runtime gazelod)
+foreach(t gazelod_xr_runtime gazelod_eye_gaze_layer gazelod)
   if(TARGET ${t})
     add_dependencies(gazelod_install_targets ${t})
   endif()

@@ -28,31 +28,75 @@ std::uint32_t MeshLibrary::add_sphere(std::uint32_t target_triangles) {
   return id;
 }
 
+std::pair<std::int32_t, std::uint32_t> MeshLibrary::append_block(const char* what,
+                                                                 std::span<const glm::vec3> positions_unit,
+                                                                 std::span<const std::uint32_t> indices) {
+  const std::string name = std::string("MeshLibrary::") + what;
+  if (uploaded()) throw RenderError(name + " after upload()");
+  for (std::size_t i = 0; i < indices.size(); ++i)
+    if (indices[i] >= positions_unit.size())
+      throw RenderError(name + ": index " + std::to_string(i) + " = " + std::to_string(indices[i]) +
+                        " is out of range (" + std::to_string(positions_unit.size()) + " vertices)");
+  for (std::size_t v = 0; v < positions_unit.size(); ++v)
+    if (!std::isfinite(positions_unit[v].x) || !std::isfinite(positions_unit[v].y) ||
+        !std::isfinite(positions_unit[v].z))
+      throw RenderError(name + ": position " + std::to_string(v) + " is not finite");
+  if (positions_.size() + positions_unit.size() > static_cast<std::size_t>(INT32_MAX))
+    throw RenderError(name + ": too many vertices for one library");
+  if (indices_cpu_.size() + indices.size() > static_cast<std::size_t>(UINT32_MAX))
+    throw RenderError(name + ": too many indices for one library");
+  const auto block = std::make_pair(static_cast<std::int32_t>(positions_.size()),
+                                    static_cast<std::uint32_t>(indices_cpu_.size()));
+  positions_.insert(positions_.end(), positions_unit.begin(), positions_unit.end());
+  indices_cpu_.insert(indices_cpu_.end(), indices.begin(), indices.end());
+  return block;
+}
+
 std::uint32_t MeshLibrary::add_mesh(std::span<const glm::vec3> positions_unit,
                                     std::span<const std::uint32_t> indices) {
   if (uploaded()) throw RenderError("MeshLibrary::add_mesh after upload()");
   if (indices.size() % 3 != 0)
     throw RenderError("MeshLibrary::add_mesh: index count " + std::to_string(indices.size()) +
                       " is not a multiple of 3");
-  for (std::size_t i = 0; i < indices.size(); ++i)
-    if (indices[i] >= positions_unit.size())
-      throw RenderError("MeshLibrary::add_mesh: index " + std::to_string(i) + " = " +
-                        std::to_string(indices[i]) + " is out of range (" +
-                        std::to_string(positions_unit.size()) + " vertices)");
-  for (std::size_t v = 0; v < positions_unit.size(); ++v)
-    if (!std::isfinite(positions_unit[v].x) || !std::isfinite(positions_unit[v].y) ||
-        !std::isfinite(positions_unit[v].z))
-      throw RenderError("MeshLibrary::add_mesh: position " + std::to_string(v) + " is not finite");
-  if (positions_.size() + positions_unit.size() > static_cast<std::size_t>(INT32_MAX))
-    throw RenderError("MeshLibrary::add_mesh: too many vertices for one library");
+  const auto [vertex_offset, first_index] = append_block("add_mesh", positions_unit, indices);
   MeshRange range;
-  range.first_index = static_cast<std::uint32_t>(indices_cpu_.size());
+  range.first_index = first_index;
   range.index_count = static_cast<std::uint32_t>(indices.size());
-  range.vertex_offset = static_cast<std::int32_t>(positions_.size());
-  positions_.insert(positions_.end(), positions_unit.begin(), positions_unit.end());
-  indices_cpu_.insert(indices_cpu_.end(), indices.begin(), indices.end());
+  range.vertex_offset = vertex_offset;
   ranges_.push_back(range);
   return static_cast<std::uint32_t>(ranges_.size() - 1);
+}
+
+std::uint32_t MeshLibrary::add_cluster_mesh(std::span<const glm::vec3> positions_unit,
+                                            std::span<const std::uint32_t> indices,
+                                            std::span<const std::uint32_t> first_index,
+                                            std::span<const std::uint32_t> index_count) {
+  const std::string name = "MeshLibrary::add_cluster_mesh";
+  if (uploaded()) throw RenderError(name + " after upload()");
+  if (first_index.empty()) throw RenderError(name + ": no clusters");
+  if (first_index.size() != index_count.size())
+    throw RenderError(name + ": " + std::to_string(first_index.size()) + " first indices but " +
+                      std::to_string(index_count.size()) + " index counts");
+  for (std::size_t c = 0; c < first_index.size(); ++c) {
+    // In 64 bits: first + count cannot wrap.
+    const std::uint64_t end = std::uint64_t{first_index[c]} + index_count[c];
+    if (index_count[c] % 3 != 0)
+      throw RenderError(name + ": cluster " + std::to_string(c) + " has " + std::to_string(index_count[c]) +
+                        " indices, not a multiple of 3");
+    if (end > indices.size())
+      throw RenderError(name + ": cluster " + std::to_string(c) + " ends at index " + std::to_string(end) +
+                        ", past the " + std::to_string(indices.size()) + " indices");
+  }
+  const auto [vertex_offset, base] = append_block("add_cluster_mesh", positions_unit, indices);
+  const auto first_id = static_cast<std::uint32_t>(ranges_.size());
+  for (std::size_t c = 0; c < first_index.size(); ++c) {
+    MeshRange range;
+    range.first_index = base + first_index[c];
+    range.index_count = index_count[c];
+    range.vertex_offset = vertex_offset;
+    ranges_.push_back(range);
+  }
+  return first_id;
 }
 
 void MeshLibrary::upload(const DeviceContext& ctx) {

@@ -1,7 +1,8 @@
 // All meshes a renderer can draw, in one vertex and one index buffer: a stand-in sphere per
-// distinct LOD triangle count (see sphere_mesh.hpp) or an arbitrary triangle mesh (add_mesh,
-// e.g. baked LOD levels for the perceptual profile), shared by both eyes. Built once on the
-// CPU, then uploaded; drawing needs only a mesh id.
+// distinct LOD triangle count (see sphere_mesh.hpp), an arbitrary triangle mesh (add_mesh,
+// e.g. baked LOD levels for the perceptual profile) or a cluster hierarchy's clusters
+// (add_cluster_mesh), shared by both eyes. Built once on the CPU, then uploaded; drawing needs
+// only a mesh id.
 #pragma once
 
 #include "render/device_context.hpp"
@@ -11,6 +12,7 @@
 #include <cstdint>
 #include <map>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace gazelod::render {
@@ -37,6 +39,18 @@ class MeshLibrary {
   std::uint32_t add_mesh(std::span<const glm::vec3> positions_unit,
                          std::span<const std::uint32_t> indices);
 
+  // A cluster hierarchy's clusters (gazelod bake --clusters): one vertex block and one index
+  // buffer holding every cluster of every level, cluster c being the triangle list
+  // indices[first_index[c] .. + index_count[c]). Returns the mesh id of cluster 0; cluster c is
+  // mesh (returned + c), so a cut is drawn with one DrawItem per drawn cluster, all with the
+  // same centre and radius (the frame of positions_unit, as for add_mesh). Throws RenderError
+  // after upload(), for no clusters, spans of different lengths, a range outside `indices` or
+  // not of whole triangles, an index out of range or a non-finite position.
+  std::uint32_t add_cluster_mesh(std::span<const glm::vec3> positions_unit,
+                                 std::span<const std::uint32_t> indices,
+                                 std::span<const std::uint32_t> first_index,
+                                 std::span<const std::uint32_t> index_count);
+
   // Copies every mesh into host-visible Vulkan buffers. Call once, after the last add.
   void upload(const DeviceContext& ctx);
   bool uploaded() const { return vertices_.buffer() != VK_NULL_HANDLE; }
@@ -52,6 +66,12 @@ class MeshLibrary {
   std::vector<glm::vec3> positions_;
   std::vector<std::uint32_t> indices_cpu_;
   HostBuffer vertices_, indices_;
+
+  // Checks and appends one vertex block and its indices; returns the block's vertex offset
+  // and first index. `what` names the caller in errors.
+  std::pair<std::int32_t, std::uint32_t> append_block(const char* what,
+                                                      std::span<const glm::vec3> positions_unit,
+                                                      std::span<const std::uint32_t> indices);
 };
 
 }  // namespace gazelod::render

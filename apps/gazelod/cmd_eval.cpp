@@ -4,6 +4,7 @@
 // own report goes under --work. Quick by default; --full is the paper's protocol (20 layouts,
 // every frame of the 5 s paths at 72 Hz).
 #include "apps/gazelod/command.hpp"
+#include "apps/gazelod/eval_clusters.hpp"
 #include "apps/gazelod/eval_experiments.hpp"
 #include "apps/gazelod/eval_tables.hpp"
 
@@ -89,7 +90,8 @@ const Registrar reg("eval", "Reproduce Reddy 1998's experiments (frame rate, ave
   app.add_option("--radius-scale", flags->radius_scale, "Scale the objects' radii (default 1: 0.3 to 1.5 m)")
       ->check(CLI::Range(0.01, 100.0));
   app.add_flag("--no-render", flags->no_render, "Skip the rendered frame-rate runs (Figure 5)");
-  return [=](Io io) { return run_eval(*flags, io); };
+  const EvalSubcommand clusters = add_eval_clusters(app);  // gazelod eval clusters (eval_clusters.hpp)
+  return [=](Io io) { return clusters.app->parsed() ? clusters.action(io) : run_eval(*flags, io); };
 });
 
 }  // namespace

@@ -41,7 +41,11 @@ const Registrar reg("run", "Run an OpenXR session with gaze-contingent LOD and w
   auto no_render = std::make_shared<bool>(false);
   auto no_eye_gaze = std::make_shared<bool>(false);
   app.add_option("--scenario", opt->scenario_path, "Scenario JSON (default: the embedded scenario)");
-  app.add_option("--scene", opt->scene_path, "A .glb baked by `gazelod bake`: its objects and LOD chains replace the scenario's");
+  app.add_option("--scene", opt->scene_path,
+                 "A .glb baked by `gazelod bake`: its objects and LOD chains (or cluster hierarchies) replace the scenario's");
+  app.add_option("--scene-placement", opt->scene_placement,
+                 "in-front (default: the scene moved 2 radii + 1 m before the viewer's start) or file (the glTF's own "
+                 "placement: glTF origin = LOCAL origin, +Y up)");
   app.add_option("--hmd", opt->hmd, "Display preset replacing the scenario's (see gazelod hmds)");
   app.add_option("--frames", opt->frames, "Frames to run (default: the scenario's duration)")
       ->check(CLI::Range(std::int64_t{1}, std::int64_t{10'000'000}));
@@ -50,6 +54,9 @@ const Registrar reg("run", "Run an OpenXR session with gaze-contingent LOD and w
   app.add_option("--runtime", opt->runtime, "sim (gazelod's simulated runtime) or system (the active OpenXR runtime)");
   app.add_option("--budget-ms", opt->budget_ms, "Frame-time budget to report against (ms)")
       ->check(CLI::Range(0.0, 1000.0));
+  app.add_option("--gaze-error-deg", opt->gaze_error_deg,
+                 "Gaze error (accuracy) assumed for every gaze source, degrees (default: 1.5 for the runtime's eye gaze, 2.0 for --trace and --gaze hid)")
+      ->check(CLI::Range(0.01, 20.0));
   app.add_flag("--paced", opt->paced, "Run at the display rate instead of as fast as possible");
   app.add_flag("--no-render", *no_render, "Select LODs only; draw nothing");
   app.add_flag("--no-eye-gaze", *no_eye_gaze, "Ignore the runtime's eye gaze (head-fixed fallback)");
@@ -65,7 +72,11 @@ const Registrar reg("run", "Run an OpenXR session with gaze-contingent LOD and w
   return [=, &app](Io io) {
     // CLI11's range check lets NaN through (every comparison with it is false).
     if (!std::isfinite(opt->budget_ms)) throw UsageError("--budget-ms: must be a number in [0, 1000], got nan");
+    if (!std::isfinite(opt->gaze_error_deg)) throw UsageError("--gaze-error-deg: must be a number in [0.01, 20], got nan");
     if (app.count("--hmd") > 0 && opt->hmd.empty()) throw UsageError("--hmd: empty (see gazelod hmds)");
+    // Its value is checked with the scene (prepare_scenario).
+    if (app.count("--scene-placement") > 0 && opt->scene_path.empty())
+      throw UsageError("--scene-placement: needs --scene");
     RunOptions o = *opt;
     if (*gaze_source == "hid") {
       o.hid_gaze = true;

@@ -161,13 +161,19 @@ void print_audit(const AuditSummary& s, std::ostream& out) {
   out << line;
 }
 
-AuditOracle::AuditOracle(const sim::Scenario& scenario, const EnabledCriteria& criteria, std::int64_t after_saccade_ns)
+AuditOracle::AuditOracle(const sim::Scenario& scenario, const EnabledCriteria& criteria,
+                         std::vector<std::size_t> objects, std::int64_t after_saccade_ns)
     : criteria_(criteria), after_saccade_ns_(after_saccade_ns) {
-  const std::size_t n = scenario.objects.size();
+  if (objects.empty())
+    for (std::size_t i = 0; i < scenario.objects.size(); ++i) objects.push_back(i);
+  std::erase_if(objects, [&](std::size_t i) { return i >= scenario.objects.size(); });
+  objects_ = std::move(objects);
+  const std::size_t n = objects_.size();
   std::size_t levels = 0;
-  for (const sim::SceneObject& o : scenario.objects) levels += o.lods.size();
+  for (std::size_t i : objects_) levels += scenario.objects[i].lods.size();
   store_.reserve(n, levels);
-  for (const sim::SceneObject& o : scenario.objects) {
+  for (std::size_t i : objects_) {
+    const sim::SceneObject& o = scenario.objects[i];
     store_.add(o.position_m, o.radius_m, o.velocity_m_s, o.lods);
     radii_.push_back(o.radius_m);
   }
@@ -191,10 +197,11 @@ std::string AuditOracle::evaluate(sim::Simulator& simulator, std::int64_t t_ns, 
   truth_ = simulator.eye_truth_at(t_ns);
   suppressed_ = in_suppression(truth_, t_ns, after_saccade_ns_);
   const std::span<const sim::ObjectState> objects = simulator.objects_at(t_ns);
-  const std::size_t n = std::min(objects.size(), radii_.size());
-  for (std::size_t i = 0; i < n; ++i) {
-    store_.set_motion(static_cast<std::uint32_t>(i), objects[i].position_m, objects[i].velocity_m_s);
-    in_view_[i] = sphere_in_view(objects[i].position_m, radii_[i], head.position_m, head.orientation, fov_) ? 1 : 0;
+  for (std::size_t k = 0; k < objects_.size(); ++k) {
+    if (objects_[k] >= objects.size()) continue;
+    const sim::ObjectState& o = objects[objects_[k]];
+    store_.set_motion(static_cast<std::uint32_t>(k), o.position_m, o.velocity_m_s);
+    in_view_[k] = sphere_in_view(o.position_m, radii_[k], head.position_m, head.orientation, fov_) ? 1 : 0;
   }
 
   lod::Viewer v;
@@ -208,6 +215,7 @@ std::string AuditOracle::evaluate(sim::Simulator& simulator, std::int64_t t_ns, 
   v.use_size = criteria_.size;
   v.use_eccentricity = criteria_.eccentricity;
   v.use_velocity = criteria_.velocity;
+  viewer_ = v;
   const lod::Decisions out{lod_, limited_, size_only_, ecc_only_, vel_only_, {}, {}, {}};
   std::string err = lod::select_lods(v, store_.view(), out);
   if (!err.empty()) std::fill(lod_.begin(), lod_.end(), 0);

@@ -11,6 +11,7 @@
 #include "lod/display.hpp"
 #include "lod/lod_chain.hpp"
 #include "lod/object_set.hpp"
+#include "lod/select.hpp"
 #include "plugin/plugin_config.hpp"
 #include "sim/simulator.hpp"
 
@@ -108,7 +109,11 @@ void print_audit(const AuditSummary& s, std::ostream& out);
 // nothing. Not thread-safe.
 class AuditOracle {
  public:
+  // `objects`: the scenario objects audited, in the order of levels() and in_view() (those the
+  // plugin got as objects; cluster meshes have their own audit, run_cluster_audit.hpp); empty:
+  // every object, in scenario order. Indices past the scenario's objects are ignored.
   AuditOracle(const sim::Scenario& scenario, const EnabledCriteria& criteria,
+              std::vector<std::size_t> objects = {},
               std::int64_t after_saccade_ns = static_cast<std::int64_t>(kSuppressionAfterSaccadeMs * 1e6));
 
   // The truth at scenario time t (ns): levels(), in_view(), truth() and suppressed() hold it
@@ -122,9 +127,15 @@ class AuditOracle {
   bool suppressed() const { return suppressed_; }
   // The true eye-in-world angular velocity used (rad/s, world axes).
   const glm::dvec3& gaze_angular_velocity() const { return omega_; }
+  // The viewer the last evaluate selected for (the truth), for the cluster audit's oracle.
+  const lod::Viewer& viewer() const { return viewer_; }
+  // The scenario index of audited object k.
+  std::span<const std::size_t> objects() const { return objects_; }
 
  private:
   lod::ObjectStore store_;
+  std::vector<std::size_t> objects_;
+  lod::Viewer viewer_;
   std::vector<double> radii_;
   lod::FovRad fov_{};
   EnabledCriteria criteria_;

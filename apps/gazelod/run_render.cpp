@@ -7,7 +7,11 @@
 #include "render/png_io.hpp"
 #include "render/render_error.hpp"
 
+#include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
+
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace gazelod::cli {
@@ -22,9 +26,30 @@ render::EyeView to_eye_view(const XrView& v) {
   return e;
 }
 
+// The mesh's positions posed into LOCAL space, then expressed in their own bounding sphere's
+// unit frame ((p - centre) / radius, what the renderer's DrawItem places).
+void unit_positions(const ClusterMesh& m, std::vector<glm::vec3>& unit, glm::dvec3& center_m, double& radius_m) {
+  const std::vector<float>& xyz = m.primitive->positions_xyz;
+  std::vector<glm::dvec3> world(xyz.size() / 3);
+  const glm::dquat rotation = glm::normalize(m.pose.rotation);
+  glm::dvec3 lo(0.0), hi(0.0);
+  for (std::size_t v = 0; v < world.size(); ++v) {
+    world[v] = m.pose.translation_m + m.pose.scale * (rotation * glm::dvec3(xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]));
+    lo = v == 0 ? world[v] : glm::min(lo, world[v]);
+    hi = v == 0 ? world[v] : glm::max(hi, world[v]);
+  }
+  center_m = 0.5 * (lo + hi);
+  double r2 = 0.0;
+  for (const glm::dvec3& p : world) r2 = std::max(r2, glm::dot(p - center_m, p - center_m));
+  radius_m = r2 > 0.0 ? std::sqrt(r2) : 1.0;  // one point (or none): any radius places it
+  unit.resize(world.size());
+  for (std::size_t v = 0; v < world.size(); ++v) unit[v] = glm::vec3((world[v] - center_m) / radius_m);
+}
+
 }  // namespace
 
-RunRenderer::RunRenderer(xr_host::XrApp& app, const std::vector<std::vector<lod::LodLevel>>& chains) {
+RunRenderer::RunRenderer(xr_host::XrApp& app, const std::vector<std::vector<lod::LodLevel>>& chains,
+                         const ClusterScene* clusters) {
   std::size_t max_items = 0;
   mesh_ids_.reserve(chains.size());
   for (const auto& chain : chains) {
@@ -32,6 +57,24 @@ RunRenderer::RunRenderer(xr_host::XrApp& app, const std::vector<std::vector<lod:
     for (const lod::LodLevel& level : chain) ids.push_back(meshes_.add_sphere(level.triangles));
     mesh_ids_.push_back(std::move(ids));
     ++max_items;
+  }
+  if (clusters != nullptr) {
+    std::vector<glm::vec3> unit;
+    for (std::size_t k = 0; k < clusters->meshes.size(); ++k) {
+      const ClusterMesh& m = clusters->meshes[k];
+      const lod::ClusterHierarchy& h = m.primitive->hierarchy;
+      glm::dvec3 center(0.0);
+      double radius = 1.0;
+      unit_positions(m, unit, center, radius);
+      ClusterDraw d;
+      d.center_m = glm::vec3(center);
+      d.radius_m = static_cast<float>(radius);
+      d.first_mesh = meshes_.add_cluster_mesh(unit, m.primitive->indices, h.first_index, h.index_count);
+      d.first_cluster = clusters->first_cluster[k];
+      d.depth = h.depth;
+      max_items += h.size();
+      clusters_.push_back(std::move(d));
+    }
   }
   marker_mesh_ = meshes_.add_sphere(80);
   render::DeviceContext ctx;
@@ -73,6 +116,14 @@ void RunRenderer::render_eye(std::size_t eye, std::uint32_t image_index, const X
     const std::size_t level = std::min<std::size_t>(decisions.lod[i], ids.size() - 1);
     items_.push_back({glm::vec3(positions_m[i]), static_cast<float>(radii_m[i]), ids[level],
                       static_cast<std::uint32_t>(level)});
+  }
+  for (const ClusterDraw& m : clusters_) {
+    if (m.first_cluster >= decisions.cluster_drawn.size()) continue;  // not registered: nothing drawn
+    const std::span<const std::uint8_t> drawn = decisions.cluster_drawn.subspan(
+        m.first_cluster, std::min(m.depth.size(), decisions.cluster_drawn.size() - m.first_cluster));
+    for (std::size_t c = 0; c < drawn.size(); ++c)
+      if (drawn[c] != 0)
+        items_.push_back({m.center_m, m.radius_m, m.first_mesh + static_cast<std::uint32_t>(c), m.depth[c]});
   }
   const render::EyeView eye_view = to_eye_view(view);
   if (foveal_circle_) {

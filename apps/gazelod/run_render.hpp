@@ -1,8 +1,11 @@
 // `gazelod run`'s drawing: each eye's swapchain image gets every object as a stand-in sphere
-// at the LOD the plugin chose, tinted by level (render/). Thin adapter from XrApp's
-// Vulkan objects and swapchains and the plugin's decisions to render::FrameRenderer.
+// at the LOD the plugin chose, tinted by level, and every cluster mesh (--scene with cluster
+// hierarchies) as its drawn cut with the clusters' real triangles, one draw per drawn cluster,
+// tinted by the cluster's depth (render/). Thin adapter from XrApp's Vulkan objects and
+// swapchains and the plugin's decisions to render::FrameRenderer.
 #pragma once
 
+#include "apps/gazelod/run_cluster_scene.hpp"
 #include "apps/xr_host/xr_app.hpp"
 #include "plugin/gazelod.hpp"
 #include "render/frame_renderer.hpp"
@@ -20,16 +23,19 @@ namespace gazelod::cli {
 
 class RunRenderer {
  public:
-  // One mesh per (object, level), from the level's triangle count; one renderer per
-  // swapchain. Throws render::RenderError (unsupported swapchain format, Vulkan failure).
-  RunRenderer(xr_host::XrApp& app, const std::vector<std::vector<lod::LodLevel>>& chains);
+  // One mesh per (object, level), from the level's triangle count, and one per cluster of
+  // each of `clusters`' meshes (its positions posed in LOCAL space; null: none); one renderer
+  // per swapchain. Throws render::RenderError (unsupported swapchain format, Vulkan failure).
+  RunRenderer(xr_host::XrApp& app, const std::vector<std::vector<lod::LodLevel>>& chains,
+              const ClusterScene* clusters = nullptr);
   ~RunRenderer();
   RunRenderer(const RunRenderer&) = delete;
   RunRenderer& operator=(const RunRenderer&) = delete;
 
   // Draws into swapchains()[eye].images[image_index] (acquired and waited on by the caller)
   // and waits for the GPU, so the image can be released right after. positions_m/radii_m are
-  // bounding spheres in LOCAL space; decisions.lod[i] is object i's level (clamped to its chain).
+  // bounding spheres in LOCAL space; decisions.lod[i] is object i's level (clamped to its chain);
+  // decisions.cluster_drawn the cluster meshes' cuts (in the ClusterScene's layout).
   void render_eye(std::size_t eye, std::uint32_t image_index, const XrView& view,
                   std::span<const glm::dvec3> positions_m, std::span<const double> radii_m,
                   const FrameDecisions& decisions, const FrameDiagnostics& diagnostics);
@@ -50,6 +56,14 @@ class RunRenderer {
 
   render::MeshLibrary meshes_;
   std::vector<std::vector<std::uint32_t>> mesh_ids_;  // [object][level] -> MeshLibrary id
+  struct ClusterDraw {                               // one cluster mesh
+    glm::vec3 center_m{0.0f};                        // its positions' frame in LOCAL space
+    float radius_m = 1.0f;
+    std::uint32_t first_mesh = 0;                    // MeshLibrary id of its cluster 0
+    std::uint32_t first_cluster = 0;                 // into FrameDecisions::cluster_drawn
+    std::vector<std::uint8_t> depth;                 // per cluster: the tint
+  };
+  std::vector<ClusterDraw> clusters_;
   std::vector<std::unique_ptr<render::FrameRenderer>> eyes_;
   std::vector<render::DrawItem> items_;               // reused each frame: no allocation
   std::uint32_t marker_mesh_ = 0;

@@ -77,6 +77,9 @@ RunSummary summarize(const std::vector<FrameRecord>& frames, double budget_ms) {
       s.in_view[k].triangles += f.in_view_triangles[k];
       view_lods[k] += f.in_view_lod_sum[k];
     }
+    s.clusters.triangles_drawn += f.cluster_triangles_drawn;
+    s.clusters.triangles_perceptual += f.cluster_triangles_perceptual;
+    s.clusters.triangles_full += f.cluster_triangles_full;
     if (budget_ms > 0.0 && f.frame_ms > budget_ms) ++s.frames_over_budget;
     if (f.gaze_valid) ++s.gaze_valid_frames;
     if (f.saccade) ++s.saccades;
@@ -105,9 +108,12 @@ RunSummary summarize(const std::vector<FrameRecord>& frames, double budget_ms) {
   s.shares.interaction =
       r_all > 0.0 ? 1.0 - s.shares.size - s.shares.eccentricity - s.shares.velocity : 0.0;
   std::vector<AuditFrame> audits;
+  std::vector<ClusterAuditFrame> cluster_audits;
   audits.reserve(frames.size());
-  for (const FrameRecord& f : frames) audits.push_back(f.audit);
+  cluster_audits.reserve(frames.size());
+  for (const FrameRecord& f : frames) audits.push_back(f.audit), cluster_audits.push_back(f.cluster_audit);
   s.audit = summarize_audit(audits);
+  s.clusters.audit = summarize_cluster_audit(cluster_audits);
   if (!s.audit.available) s.audit.reason = "no frame was audited";
   return s;
 }
@@ -128,6 +134,7 @@ void print_summary(const RunInfo& info, const RunSummary& s, std::ostream& out) 
                 static_cast<unsigned long long>(s.triangles_drawn),
                 static_cast<unsigned long long>(s.triangles_full), drawn_pct);
   out << line;
+  print_cluster_run(s.clusters, s.frames, out);
   std::uint64_t total = 0;
   for (auto c : s.lod_histogram) total += c;
   out << "LOD histogram   ";
@@ -155,6 +162,7 @@ void print_summary(const RunInfo& info, const RunSummary& s, std::ostream& out) 
     out << line;
   }
   print_audit(s.audit, out);
+  if (s.clusters.meshes > 0) print_cluster_audit(s.clusters.audit, out);
 }
 
 void write_report_files(const std::filesystem::path& dir, const RunInfo& info,
@@ -199,6 +207,7 @@ void write_report_files(const std::filesystem::path& dir, const RunInfo& info,
     j["frames_over_budget"] = s.frames_over_budget;
   }
   j["audit"] = audit_json(s.audit);
+  j["clusters"] = cluster_run_json(s.clusters);
   // Every file goes to a temporary beside it and replaces the old one only when complete
   // (gaze/atomic_file.hpp): a full disk leaves no cut file, and the error says why. The
   // largest first and the summary last, so a run that fails leaves no summary of it.
@@ -212,6 +221,7 @@ void write_report_files(const std::filesystem::path& dir, const RunInfo& info,
   // The audit's columns (empty cells without ground truth): see run_audit.hpp's AuditFrame.
   csv << ",objects_in_view,audit_suppressed,audit_pursuit,audit_degraded,audit_excess_levels,"
          "audit_excess_max,audit_drawn_triangles,audit_oracle_triangles,audit_switches,audit_pursued";
+  write_cluster_csv_header(csv);  // 0 and empty cells without cluster meshes
   csv << "\n";
   for (const FrameRecord& f : frames) {
     csv << f.index << ',' << f.t_s << ',' << f.frame_ms << ',' << f.select_ms << ',' << f.predicted_ms
@@ -227,6 +237,7 @@ void write_report_files(const std::filesystem::path& dir, const RunInfo& info,
           << ',' << a.switches << ',' << a.pursued;
     else
       csv << ",,,,,,,,,";
+    write_cluster_csv_cells(csv, f.cluster_triangles_drawn, f.cluster_triangles_perceptual, f.cluster_audit);
     csv << "\n";
   }
   csv_file.commit();
@@ -237,16 +248,20 @@ void write_report_files(const std::filesystem::path& dir, const RunInfo& info,
   PlotSeries drawn{"drawn", "#d62728", {}}, full{"full detail", "#1f77b4", {}};
   PlotSeries frame{"frame", "#2ca02c", {}}, select{"selection", "#9467bd", {}};
   PlotSeries head{"head speed", "#ff7f0e", {}};
+  PlotSeries cluster_drawn{"cluster meshes drawn", "#8c564b", {}}, cluster_full{"cluster meshes full", "#17becf", {}};
   for (const FrameRecord& f : frames) {
     plot.x.push_back(f.t_s);
     drawn.y.push_back(static_cast<double>(f.triangles_drawn));
     full.y.push_back(static_cast<double>(f.triangles_full));
+    cluster_drawn.y.push_back(static_cast<double>(f.cluster_triangles_drawn));
+    cluster_full.y.push_back(static_cast<double>(f.cluster_triangles_full));
     frame.y.push_back(f.frame_ms);
     select.y.push_back(f.select_ms);
     head.y.push_back(f.head_speed_dps);
     if (f.saccade) plot.markers.push_back({f.t_s, "#7f7f7f"});
   }
   plot.panels.push_back({"triangles per eye", {drawn, full}});
+  if (s.clusters.meshes > 0) plot.panels.push_back({"cluster triangles per eye", {cluster_drawn, cluster_full}});
   plot.panels.push_back({"time (ms)", {frame, select}});
   plot.panels.push_back({"head speed (deg/s)", {head}});
   plot.marker_legend = "saccade";

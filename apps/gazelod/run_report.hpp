@@ -3,6 +3,7 @@
 #pragma once
 
 #include "apps/gazelod/run_audit.hpp"
+#include "apps/gazelod/run_cluster_audit.hpp"
 #include "apps/gazelod/svg_plot.hpp"
 
 #include <array>
@@ -56,6 +57,13 @@ struct FrameRecord {
   // The visibility audit against the simulator's truth (run_audit.hpp); available = false
   // without ground truth or with --no-audit (its frames.csv cells are then empty).
   AuditFrame audit;
+  // Cluster meshes (--scene with cluster hierarchies, run_cluster_scene.hpp), per eye: the
+  // drawn cut's triangles, the perceptual cut's (before the switch policy), full detail; and
+  // their audit (run_cluster_audit.hpp).
+  std::uint64_t cluster_triangles_drawn = 0;
+  std::uint64_t cluster_triangles_perceptual = 0;
+  std::uint64_t cluster_triangles_full = 0;
+  ClusterAuditFrame cluster_audit;
 };
 
 struct RunInfo {
@@ -109,6 +117,8 @@ struct RunSummary {
   double objects_in_view_mean = 0.0;
   // summarize() sums the frames' audits; a caller without ground truth sets audit.reason.
   AuditSummary audit;
+  // summarize() sums the cluster triangles and audits; the caller sets the scene's counts.
+  ClusterRunSummary clusters;
 };
 
 RunSummary summarize(const std::vector<FrameRecord>& frames, double budget_ms);

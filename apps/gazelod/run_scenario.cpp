@@ -59,18 +59,15 @@ class TraceFromFirstFrame final : public gaze::GazeSource {
 };
 
 // --scene: the baked glTF's objects and LOD chains replace the scenario's scene objects, in the
-// scenario text itself, so the simulated runtime and this process step the same scenario. The
-// scene is moved in front of the viewer's start (its bounding sphere's centre 2 radii + 1 m
-// down -Z, at eye height); effects that name objects the baked scene lacks (a pursuit, object
-// motion) are dropped with a note.
-std::string with_baked_scene(const std::string& text, const std::string& label, const std::string& scene_path) {
-  std::vector<bake::BakedObject> baked;
-  try {
-    baked = bake::load_baked_scene(scene_path);
-  } catch (const bake::BakeError& e) {
-    throw UsageError(std::string("--scene: ") + e.what());
-  }
-  if (baked.empty()) throw UsageError("--scene: '" + scene_path + "' has no meshes");
+// scenario text itself, so the simulated runtime and this process step the same scenario.
+// Placement "in-front" moves the scene in front of the viewer's start (its bounding sphere's
+// centre 2 radii + 1 m down -Z, at eye height); "file" keeps the glTF's coordinates (glTF +Y up
+// and OpenXR LOCAL +Y up agree; the glTF origin is LOCAL's). `shift` gets the translation.
+// Effects that name objects the baked scene lacks (a pursuit, object motion) are dropped with
+// a note.
+std::string with_baked_scene(const std::string& text, const std::string& label, const bake::BakedScene& scene_file,
+                             const std::string& placement, glm::dvec3& shift_out) {
+  const std::vector<bake::BakedObject>& baked = scene_file.objects;
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(text);
@@ -87,9 +84,13 @@ std::string with_baked_scene(const std::string& text, const std::string& label, 
   glm::dvec3 start(0.0);
   if (j.contains("scene") && j["scene"].contains("head_path") && j["scene"]["head_path"].contains("start_m")) {
     const auto& s = j["scene"]["head_path"]["start_m"];
-    if (s.is_array() && s.size() == 3) start = {s[0].get<double>(), s[1].get<double>(), s[2].get<double>()};
+    // A malformed start is the scenario loader's to report (with its JSON path); here it counts as 0.
+    if (s.is_array() && s.size() == 3 && s[0].is_number() && s[1].is_number() && s[2].is_number())
+      start = {s[0].get<double>(), s[1].get<double>(), s[2].get<double>()};
   }
-  const glm::dvec3 shift = start + glm::dvec3(0.0, 0.0, -(2.0 * radius + 1.0)) - mid;
+  const glm::dvec3 shift =
+      placement == "file" ? glm::dvec3(0.0) : start + glm::dvec3(0.0, 0.0, -(2.0 * radius + 1.0)) - mid;
+  shift_out = shift;
   nlohmann::json objects = nlohmann::json::array();
   std::set<std::string> names;
   for (std::size_t i = 0; i < baked.size(); ++i) {
@@ -148,7 +149,15 @@ PreparedScenario prepare_scenario(const RunOptions& opt) {
     text = j.dump(2);
   }
   if (!opt.scene_path.empty()) {
-    text = with_baked_scene(text, p.label, opt.scene_path);
+    if (opt.scene_placement != "in-front" && opt.scene_placement != "file")
+      throw UsageError("--scene-placement: '" + opt.scene_placement + "' (use in-front or file)");
+    try {
+      p.baked = bake::load_baked(opt.scene_path);
+    } catch (const bake::BakeError& e) {
+      throw UsageError(std::string("--scene: ") + e.what());
+    }
+    if (p.baked->objects.empty()) throw UsageError("--scene: '" + opt.scene_path + "' has no meshes");
+    text = with_baked_scene(text, p.label, *p.baked, opt.scene_placement, p.scene_shift_m);
     p.label += " + " + opt.scene_path;
   }
   try {

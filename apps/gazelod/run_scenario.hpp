@@ -5,10 +5,14 @@
 
 #include "gaze/gaze_source.hpp"
 #include "apps/gazelod/run_session.hpp"
+#include "bake/baked_scene.hpp"
 #include "sim/simulator.hpp"
+
+#include <glm/vec3.hpp>
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace gazelod::cli {
@@ -18,9 +22,13 @@ struct PreparedScenario {
   std::string label;                  // "default" or the file name
   std::filesystem::path file;         // the effective scenario as the runtime reads it
   double duration_s = 0.0;
+  // --scene: the baked file, whose objects are the scenario's objects in the same order, and the
+  // translation --scene-placement applied to them (0 for `file`).
+  std::optional<bake::BakedScene> baked;
+  glm::dvec3 scene_shift_m{0.0};
 };
 
-// Throws UsageError naming the scenario file / JSON path, or the output folder.
+// Throws UsageError naming the scenario file / JSON path, the scene file, or the output folder.
 PreparedScenario prepare_scenario(const RunOptions& options);
 
 // Sets XR_RUNTIME_JSON (the simulated runtime built with this program, unless the caller

@@ -5,6 +5,8 @@
 
 #include "apps/gazelod/eval_lod_map.hpp"
 #include "apps/gazelod/run_audit.hpp"
+#include "apps/gazelod/run_cluster_audit.hpp"
+#include "apps/gazelod/run_cluster_scene.hpp"
 #include "apps/gazelod/run_render.hpp"
 #include "apps/gazelod/run_report.hpp"
 #include "apps/gazelod/run_scenario.hpp"
@@ -81,12 +83,25 @@ int run_session(const RunOptions& opt, Io io) {
   const sim::Scenario& scenario = simulator.scenario();
   if (opt.runtime == "sim") point_loader_at_simulator(prepared, opt);
   else if (opt.runtime != "system") throw UsageError("--runtime: must be 'sim' or 'system', got '" + opt.runtime + "'");
+  // --scene with cluster hierarchies: those objects are cluster meshes (run_cluster_scene.hpp);
+  // the plugin's objects are the others, plain[k] being plugin object k's scenario index.
+  const ClusterScene clusters = prepared.baked ? make_cluster_scene(*prepared.baked, prepared.scene_shift_m, scenario)
+                                               : ClusterScene{};
+  if (!opt.quiet)
+    for (const std::string& note : clusters.notes) io.err << "gazelod run: --scene: " << note << "\n";
+  std::vector<std::size_t> plain;
+  std::vector<int> plugin_id(scenario.objects.size(), -1);
+  for (std::size_t i = 0; i < scenario.objects.size(); ++i) {
+    if (i < clusters.drawn_as_clusters.size() && clusters.drawn_as_clusters[i]) continue;
+    plugin_id[i] = static_cast<int>(plain.size());
+    plain.push_back(i);
+  }
   // Opened before the session so that a bad path fails at once; committed (renamed into place)
   // only after the last frame.
   std::optional<DecisionsFile> decisions;
   if (!opt.decisions_path.empty()) {
     std::vector<std::string> names;
-    for (const sim::SceneObject& o : scenario.objects) names.push_back(o.name);
+    for (std::size_t i : plain) names.push_back(scenario.objects[i].name);
     decisions.emplace(opt.decisions_path, names);
   }
 
@@ -105,6 +120,9 @@ int run_session(const RunOptions& opt, Io io) {
   config.criteria = opt.criteria;
   config.compute_breakdown = true;
   config.budget_ms = opt.budget_ms;
+  // One accuracy for every source (the plugin's defaults differ per source), so runs that get the
+  // same gaze through different sources can be compared (tests/layer).
+  if (opt.gaze_error_deg > 0.0) config.openxr_gaze_error_deg = config.external_gaze_error_deg = opt.gaze_error_deg;
   // Plan with a margin: the cost fit is unbiased, so without one about half the frames would
   // land above their prediction.
   config.budget.headroom = 0.15;
@@ -131,7 +149,8 @@ int run_session(const RunOptions& opt, Io io) {
   });
   std::vector<std::vector<lod::LodLevel>> chains;
   std::vector<double> radii;
-  for (const sim::SceneObject& o : scenario.objects) {
+  for (std::size_t i : plain) {
+    const sim::SceneObject& o = scenario.objects[i];
     ObjectDesc d;
     d.center_m = o.position_m;
     d.radius_m = o.radius_m;
@@ -142,24 +161,28 @@ int run_session(const RunOptions& opt, Io io) {
     chains.push_back(o.lods);
     radii.push_back(o.radius_m);
   }
+  register_cluster_meshes(clusters, *plugin);
 
   const std::vector<std::uint8_t> full_detail(chains.size(), 0);
   const std::uint64_t triangles_full = triangles(chains, full_detail);
   std::optional<RunRenderer> renderer;
-  if (opt.render) renderer.emplace(*app, chains);
+  if (opt.render) renderer.emplace(*app, chains, clusters.empty() ? nullptr : &clusters);
 
   const double rate = scenario.frame_rate_hz > 0 ? scenario.frame_rate_hz : 90.0;
   const std::int64_t planned = opt.frames > 0 ? opt.frames : static_cast<std::int64_t>(std::llround(scenario.duration_s * rate));
   const std::int64_t capture = opt.capture_frame >= 0 ? opt.capture_frame : planned / 2;
   std::vector<FrameRecord> frames;
   frames.reserve(static_cast<std::size_t>(planned));
-  std::vector<glm::dvec3> positions(scenario.objects.size());
+  std::vector<glm::dvec3> positions(plain.size());
+  std::vector<sim::ObjectState> objects(plain.size());  // the plugin's objects, from the simulator
   std::vector<XrView> views;
   SaccadeMarker saccades;
   XrTime time_base = 0;
   // The audit needs the simulator's truth on the runtime's clock: gazelod's simulated runtime.
   bool ground_truth = false;
   std::optional<AuditOracle> oracle;
+  std::optional<ClusterAuditOracle> cluster_oracle;
+  bool layout_checked = clusters.empty();
   std::vector<std::uint8_t> previous_lod(chains.size(), 0);
   double previous_t_s = 0.0;
   bool exit_requested = false;
@@ -187,18 +210,29 @@ int run_session(const RunOptions& opt, Io io) {
       time_base = app->scenario_time_base();
       // A replayed trace is not the simulator's eye: no ground truth to hold it against.
       ground_truth = opt.runtime == "sim" && time_base != 0 && opt.trace_path.empty() && !opt.hid_gaze;
-      if (ground_truth && opt.audit) oracle.emplace(scenario, opt.criteria);
+      if (ground_truth && opt.audit) oracle.emplace(scenario, opt.criteria, plain);
+      try {
+        if (oracle && !clusters.empty()) cluster_oracle.emplace(clusters);
+      } catch (const std::invalid_argument& e) {
+        throw UsageError(std::string("--scene: ") + e.what());
+      }
       if (time_base == 0) time_base = fs.predictedDisplayTime - fs.predictedDisplayPeriod;
     }
     const double t_s = static_cast<double>(fs.predictedDisplayTime - time_base) * 1e-9;
-    const auto objects = simulator.objects_at(fs.predictedDisplayTime - time_base);
-    for (std::size_t i = 0; i < objects.size() && i < positions.size(); ++i) {
-      plugin->set_object_motion(static_cast<std::uint32_t>(i), objects[i].position_m, objects[i].velocity_m_s);
-      positions[i] = objects[i].position_m;
+    const auto all_objects = simulator.objects_at(fs.predictedDisplayTime - time_base);
+    for (std::size_t k = 0; k < plain.size() && plain[k] < all_objects.size(); ++k) {
+      objects[k] = all_objects[plain[k]];
+      plugin->set_object_motion(static_cast<std::uint32_t>(k), objects[k].position_m, objects[k].velocity_m_s);
+      positions[k] = objects[k].position_m;
     }
     const FrameDecisions& d = plugin->begin_frame(fs.predictedDisplayTime);
     const FrameDiagnostics& diag = plugin->diagnostics();
     const double select_ms = ms_since(t0);
+    if (!layout_checked && !same_cluster_layout(clusters, d.cluster_first)) {
+      io.err << "gazelod run: the plugin laid out the cluster meshes otherwise than they were registered\n";
+      return 1;
+    }
+    layout_checked = true;
 
     std::vector<XrView>* submitted = nullptr;
     const bool counting = !exit_requested && static_cast<std::int64_t>(frames.size()) < planned;
@@ -232,6 +266,9 @@ int run_session(const RunOptions& opt, Io io) {
     r.triangles_size_eccentricity = triangles(chains, diag.lod_size_eccentricity);
     r.triangles_size_velocity = triangles(chains, diag.lod_size_velocity);
     for (std::uint8_t l : d.lod) ++r.lod_histogram[l];
+    r.cluster_triangles_drawn = clusters.triangles_of(d.cluster_drawn);
+    r.cluster_triangles_perceptual = clusters.triangles_of(diag.cluster_drawn_perceptual);
+    r.cluster_triangles_full = clusters.full_triangles;
     r.objects = static_cast<std::int64_t>(chains.size());
     r.lod_sum_drawn = lod_sum(d.lod);
     r.lod_sum_size_only = lod_sum(diag.lod_size_only);
@@ -263,20 +300,33 @@ int run_session(const RunOptions& opt, Io io) {
       in.oracle = oracle->levels();
       in.in_view = oracle->in_view();
       in.suppressed = oracle->suppressed();
-      in.pursuit_object = oracle->truth().pursuit_object;
+      // The truth names a scenario object; the audit counts plugin objects (-1: a cluster mesh).
+      const int pursued = oracle->truth().pursuit_object;
+      const bool known = pursued >= 0 && static_cast<std::size_t>(pursued) < plugin_id.size();
+      in.pursuit_object = known ? plugin_id[static_cast<std::size_t>(pursued)] : -1;
       in.frame_s = first ? 0.0 : t_s - previous_t_s;
       r.audit = audit_frame(in);
+      if (cluster_oracle)
+        r.cluster_audit = cluster_oracle->audit(oracle->viewer(), head.position_m, head.orientation,
+                                                scenario.display.views[0].fov, d.cluster_drawn, oracle->suppressed(),
+                                                in.frame_s);
     }
     std::copy_n(d.lod.begin(), std::min(d.lod.size(), previous_lod.size()), previous_lod.begin());
     previous_t_s = t_s;
     if (decisions) decisions->write(r.index, t_ns, d.lod);
+    if (opt.frame_observer) opt.frame_observer(d, diag);
+    const std::uint64_t frame_cluster_triangles = r.cluster_triangles_drawn;
     frames.push_back(std::move(r));
 
     if (!opt.quiet && (ms_since(last_progress) > 1000.0 || static_cast<std::int64_t>(frames.size()) == planned)) {
       last_progress = Clock::now();
       io.err << "gazelod run: frame " << frames.size() << "/" << planned << " ("
              << (100 * static_cast<std::int64_t>(frames.size())) / std::max<std::int64_t>(planned, 1) << "%), "
-             << static_cast<int>(ms_since(started) / 1000.0) << " s elapsed\n";
+             << static_cast<int>(ms_since(started) / 1000.0) << " s elapsed";
+      if (!clusters.empty())
+        io.err << ", cluster triangles " << frame_cluster_triangles << " of " << clusters.full_triangles << " ("
+               << (100 * frame_cluster_triangles) / std::max<std::uint64_t>(clusters.full_triangles, 1) << "%)";
+      io.err << "\n";
     }
   }
 
@@ -289,6 +339,10 @@ int run_session(const RunOptions& opt, Io io) {
   info.budget_ms = opt.budget_ms;
   RunSummary summary = summarize(frames, opt.budget_ms);
   summary.gaze_bad_samples = plugin->diagnostics().gaze_bad_samples;
+  summary.clusters.meshes = clusters.meshes.size();
+  summary.clusters.clusters = clusters.cluster_count();
+  for (const ClusterMesh& m : clusters.meshes)
+    for (std::uint8_t depth : m.primitive->hierarchy.depth) summary.clusters.leaves += depth == 0 ? 1 : 0;
   if (!oracle) {
     summary.audit = AuditSummary{};
     summary.audit.reason = !opt.trace_path.empty() ? "no ground truth: the gaze is a replayed trace"

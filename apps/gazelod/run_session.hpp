@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <string>
 
 namespace gazelod::cli {
@@ -15,11 +16,13 @@ struct RunOptions {
   std::int64_t frames = 0;             // 0: the scenario's whole duration
   std::string scenario_path;           // "" = the embedded default scenario
   std::string scene_path;              // a glb from `gazelod bake`: its objects replace the scenario's
+  std::string scene_placement = "in-front";  // "in-front": moved before the viewer's start; "file": the glTF's own placement
   std::string hmd;                     // preset overriding the scenario's display
   EnabledCriteria criteria;
   std::filesystem::path out_dir = "gazelod-out";
   std::string runtime = "sim";         // "sim" or "system"
   double budget_ms = 0.0;              // 0: no frame budget
+  double gaze_error_deg = 0.0;         // > 0: the gaze error assumed for every source; 0: the plugin's per-source defaults
   bool paced = false;                  // sleep to the display rate (default: as fast as possible)
   bool render = true;                  // false: select only, no Vulkan drawing
   bool eye_gaze = true;                // false: ignore the runtime's eye gaze (fallback test)
@@ -29,6 +32,9 @@ struct RunOptions {
   bool quiet = false;                  // no progress lines
   bool audit = true;                   // the visibility audit against the simulator's truth (run_audit.hpp)
   std::string decisions_path;          // "" = none; else the drawn levels per frame (DecisionsFile, run_report.hpp)
+  // Tests only (no option): called with each counted frame's decisions and diagnostics, after
+  // the frame is drawn; the spans are valid during the call.
+  std::function<void(const FrameDecisions&, const FrameDiagnostics&)> frame_observer;
 };
 
 // Returns the process exit status; throws UsageError for bad options or input.

@@ -263,7 +263,7 @@ TEST(RunAudit, DecisionsFileFormatAndTheAuditNeverChangesThem) {
 TEST(RunAudit, TargetsHoldOnTheDefaultAndItsLateNoisyAndStillHeadVariants) {
   use_simulated_runtime("");
   const std::string scenarios = std::string(GAZELOD_SOURCE_DIR) + "/sim/scenarios/";
-  for (const std::string scenario : {std::string(), scenarios + "default-120hz-50ms.json",
+  for (const std::string& scenario : {std::string(), scenarios + "default-120hz-50ms.json",
                                      scenarios + "still-head-120hz-50ms.json"}) {
     SCOPED_TRACE(scenario.empty() ? "the default scenario" : scenario);
     const auto dir = scratch_dir() / (scenario.empty() ? "default" : std::filesystem::path(scenario).stem());
@@ -282,7 +282,9 @@ TEST(RunAudit, TargetsHoldOnTheDefaultAndItsLateNoisyAndStillHeadVariants) {
     EXPECT_GE(ratio, 1.0) << "drawing less than the true gaze needs would show as degradations";
     EXPECT_LE(audit.at("switches").at("outside_suppression").at("per_object_second").get<double>(), 1.0);
     const auto& pursuit = audit.at("pursuit");
-    if (pursuit.at("frames").get<int>() > 0) EXPECT_EQ(pursuit.at("degraded").get<int>(), 0);
+    if (pursuit.at("frames").get<int>() > 0) {
+      EXPECT_EQ(pursuit.at("degraded").get<int>(), 0);
+    }
   }
 }
 

@@ -1,0 +1,223 @@
+#include "apps/gazelod/eval_clusters.hpp"
+
+#include "apps/gazelod/eval_clusters_baseline.hpp"
+#include "apps/gazelod/eval_clusters_report.hpp"
+#include "gaze/atomic_file.hpp"
+
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+namespace gazelod::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct ClusterEvalFlags {
+  std::string out = "gazelod-eval-clusters";
+  std::string work;          // "": a temporary folder, removed at the end
+  std::string scene_source;  // "": the generated terrain
+  std::string scenario = "sim/scenarios/terrain-walk.json";
+  std::string hmd;
+  std::uint64_t triangles = 1'000'000;
+  std::uint64_t seed = 1;
+  int tiles = 1;
+  std::int64_t frames = 0;   // 0: the scenario's duration
+  int render_frames = 60;    // 0: no rendered runs
+};
+
+// The work folder, removed on the way out when it is a temporary one.
+class WorkDir {
+ public:
+  explicit WorkDir(const std::string& given) : temporary_(given.empty()) {
+    path_ = temporary_ ? fs::temp_directory_path() / ("gazelod-eval-clusters-" + std::to_string(::getpid()))
+                       : fs::path(given);
+    std::error_code ec;
+    if (temporary_) fs::remove_all(path_, ec);
+    fs::create_directories(path_, ec);
+    if (ec) throw UsageError("--work: cannot create '" + path_.string() + "': " + ec.message());
+  }
+  ~WorkDir() {
+    std::error_code ec;
+    if (temporary_) fs::remove_all(path_, ec);
+  }
+  WorkDir(const WorkDir&) = delete;
+  WorkDir& operator=(const WorkDir&) = delete;
+  const fs::path& path() const { return path_; }
+
+ private:
+  bool temporary_;
+  fs::path path_;
+};
+
+std::string join(const std::vector<std::string>& args) {
+  std::string s = "gazelod";
+  for (const std::string& a : args) s += " " + a;
+  return s;
+}
+
+// One gazelod command in this process; its output is kept for the error message only.
+void invoke(const std::vector<std::string>& args) {
+  std::ostringstream out, err;
+  const int rc = run(args, out, err);
+  if (rc != 0) {
+    std::string why = err.str();
+    while (!why.empty() && why.back() == '\n') why.pop_back();
+    throw UsageError("`" + join(args) + "` failed (exit " + std::to_string(rc) + "): " + why, rc == 2 ? 2 : 1);
+  }
+}
+
+std::string cpu_model() {
+  std::ifstream in("/proc/cpuinfo");
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("model name", 0) == 0) {
+      const std::size_t colon = line.find(':');
+      return colon == std::string::npos ? line : line.substr(colon + 2);
+    }
+  return "";
+}
+
+std::string fmt(const char* format, double a, double b = 0.0) {
+  char s[200];
+  std::snprintf(s, sizeof s, format, a, b);
+  return s;
+}
+
+int run_eval_clusters(const ClusterEvalFlags& flags, const CLI::App& app, Io io) {
+  if (!flags.scene_source.empty())
+    for (const char* option : {"--triangles", "--seed", "--tiles"})
+      if (app.count(option) > 0)
+        throw UsageError(std::string(option) + ": only for the generated terrain, not with --scene-source");
+  if (!fs::is_regular_file(flags.scenario))
+    throw UsageError("--scenario: '" + flags.scenario +
+                     "' is not a file (run from the repository root, or give --scenario FILE)");
+  if (!flags.scene_source.empty() && !fs::is_regular_file(flags.scene_source))
+    throw UsageError("--scene-source: '" + flags.scene_source + "' is not a file");
+  const fs::path out = flags.out;
+  std::error_code ec;
+  fs::create_directories(out, ec);
+  if (ec) throw UsageError("--out: cannot create '" + out.string() + "': " + ec.message());
+  const WorkDir work(flags.work);
+  const fs::path& w = work.path();
+
+  const auto started = std::chrono::steady_clock::now();
+  auto progress = [&](const std::string& line) {
+    const auto s = std::chrono::duration_cast<std::chrono::seconds>(std::chrono::steady_clock::now() - started).count();
+    io.err << "gazelod eval clusters [" << s << " s]: " << line << "\n" << std::flush;
+  };
+  auto step = [&](const std::vector<std::string>& args) {
+    progress(join(args));
+    invoke(args);
+  };
+
+  ClusterEvalReport report;
+  report.scenario = flags.scenario;
+  report.machine = cpu_model();
+  std::string source = flags.scene_source;
+  if (source.empty()) {
+    source = (w / "terrain.glb").string();
+    step({"scene", "generate", "terrain", source, "--triangles", std::to_string(flags.triangles), "--seed",
+          std::to_string(flags.seed), "--tiles", std::to_string(flags.tiles)});
+    report.scene = "generated terrain (gazelod scene generate terrain --triangles " + std::to_string(flags.triangles) +
+                   " --seed " + std::to_string(flags.seed) + " --tiles " + std::to_string(flags.tiles) + ")";
+  } else {
+    report.scene = flags.scene_source;
+  }
+  // The three bakes: per-object LOD as `gazelod bake` makes it (the baseline), the same chains
+  // under the cluster rule (eval_clusters_baseline.hpp), and the cluster hierarchy.
+  report.columns = {{"per_object", "per-object LOD (bake: MSFT_lod chain, object rule)", false, {}, "", 0.0, 0.0},
+                    {"per_object_cluster_rule", "per-object LOD under the cluster rule (the same chain, one cluster per level)",
+                     true, {}, "", 0.0, 0.0},
+                    {"clusters", "cluster LOD (bake --clusters)", true, {}, "", 0.0, 0.0}};
+  const std::string glbs[3] = {(w / "per-object.glb").string(), (w / "per-object-cluster-rule.glb").string(),
+                               (w / "clusters.glb").string()};
+  const std::string dirs[3] = {"per-object", "per-object-cluster-rule", "clusters"};
+  step({"bake", source, "-o", glbs[0]});
+  progress("the same chains as one cluster per level -> " + glbs[1]);
+  bake_chain_as_clusters(source, glbs[1]);
+  step({"bake", "--clusters", source, "-o", glbs[2]});
+
+  auto run_args = [&](const std::string& glb, const fs::path& dir, bool render) {
+    std::vector<std::string> a{"run", "--scene", glb, "--scene-placement", "file", "--scenario", flags.scenario,
+                               "--out", dir.string(), "--quiet"};
+    if (!flags.hmd.empty()) a.insert(a.end(), {"--hmd", flags.hmd});
+    if (render) a.insert(a.end(), {"--frames", std::to_string(flags.render_frames)});
+    else if (flags.frames > 0) a.insert(a.end(), {"--frames", std::to_string(flags.frames)});
+    if (!render) a.push_back("--no-render");
+    return a;
+  };
+  for (std::size_t i = 0; i < 3; ++i) {
+    ClusterEvalColumn& c = report.columns[i];
+    step(run_args(glbs[i], w / dirs[i], false));
+    try {
+      c.side = read_cluster_eval_side(w / dirs[i], c.clusters);
+      progress(c.title + fmt(": %.0f triangles per frame (%.2f%% of full detail)", c.side->triangles_per_frame,
+                             100.0 * c.side->triangles_per_frame / std::max(1.0, c.side->full_triangles_per_frame)) +
+               fmt(", visible degradations %.3f%%", 100.0 * c.side->degraded_share));
+    } catch (const UsageError& e) {
+      if (!c.clusters) throw;  // the baseline must be there
+      c.missing = e.what();
+      progress(c.title + ": " + c.missing);
+    }
+  }
+  if (flags.render_frames > 0) {
+    report.rendered_frames = flags.render_frames;
+    for (std::size_t i = 0; i < 3; ++i) {
+      ClusterEvalColumn& c = report.columns[i];
+      if (!c.side) continue;
+      const fs::path dir = w / (dirs[i] + "-rendered");
+      step(run_args(glbs[i], dir, true));
+      c.frame_ms = read_mean_frame_ms(dir);
+      c.rendered_triangles = read_cluster_eval_side(dir, c.clusters).triangles_per_frame;
+      progress(c.title + fmt(" rendered: mean frame %.1f ms, %.0f triangles per frame", c.frame_ms, c.rendered_triangles));
+    }
+  }
+
+  const std::string md = "<!-- written by: gazelod eval clusters -->\n\n" + cluster_eval_markdown(report);
+  try {
+    gaze::write_file_atomic((out / "clusters.md").string(), md);
+    gaze::write_file_atomic((out / "clusters.json").string(), cluster_eval_json(report).dump(2) + "\n");
+  } catch (const gaze::WriteError& e) {
+    throw UsageError(std::string("--out: ") + e.what(), 1);
+  }
+  write_cluster_eval_svg(report, out / "clusters.svg");
+  io.out << md << "\nfiles: clusters.md, clusters.json, clusters.svg in " << out.string() << "\n";
+  for (const ClusterEvalColumn& c : report.columns)
+    if (!c.side) {
+      io.err << "gazelod eval clusters: not measured: " << c.title << ": " << c.missing << "\n";
+      return 1;
+    }
+  return 0;
+}
+
+}  // namespace
+
+EvalSubcommand add_eval_clusters(CLI::App& eval) {
+  auto flags = std::make_shared<ClusterEvalFlags>();
+  CLI::App* app = eval.add_subcommand(
+      "clusters", "Cluster LOD (bake --clusters) against per-object LOD (MSFT_lod chains) on a large terrain");
+  app->add_option("--out", flags->out, "Folder for clusters.md, clusters.json, clusters.svg");
+  app->add_option("--work", flags->work, "Folder for the scenes, bakes and run reports (default: a temporary one, removed)");
+  app->add_option("--scene-source", flags->scene_source, "A glTF to bake and walk instead of the generated terrain");
+  app->add_option("--scenario", flags->scenario, "The walk (default sim/scenarios/terrain-walk.json)");
+  app->add_option("--hmd", flags->hmd, "Display preset replacing the scenario's (see gazelod hmds)");
+  app->add_option("--triangles", flags->triangles, "Generated terrain: at least this many triangles (default 1000000)")
+      ->check(CLI::Range(std::uint64_t{2}, std::uint64_t{20'000'000}));
+  app->add_option("--seed", flags->seed, "Generated terrain: seed (default 1)");
+  app->add_option("--tiles", flags->tiles, "Generated terrain: N x N meshes (default 1)")->check(CLI::Range(1, 64));
+  app->add_option("--frames", flags->frames, "Frames of the headless runs (default: the scenario's)")
+      ->check(CLI::Range(std::int64_t{1}, std::int64_t{10'000'000}));
+  app->add_option("--render-frames", flags->render_frames, "Frames of each rendered run (default 60; 0: none)")
+      ->check(CLI::Range(0, 100000));
+  return {app, [flags, app](Io io) { return run_eval_clusters(*flags, *app, io); }};
+}
+
+}  // namespace gazelod::cli

@@ -1,0 +1,50 @@
+// Every OpenXR command the layer implements, with the exact signature of its PFN_xr* type
+// (negotiate.cpp checks each at compile time). One file per concept defines them: instance and
+// system (instance.cpp), sessions and frames (session.cpp), actions and bindings (actions.cpp),
+// gaze spaces (gaze_space.cpp).
+#pragma once
+
+#include "layer/loader_negotiation.hpp"
+
+namespace gazelod::layer {
+
+// negotiate.cpp
+XrResult GetInstanceProcAddr(XrInstance instance, const char* name, PFN_xrVoidFunction* function);
+
+// instance.cpp
+XrResult CreateApiLayerInstance(const XrInstanceCreateInfo* info, const XrApiLayerCreateInfo* layer_info,
+                                XrInstance* instance);
+XrResult EnumerateInstanceExtensionProperties(const char* layerName, uint32_t capacity, uint32_t* count,
+                                              XrExtensionProperties* props);
+XrResult DestroyInstance(XrInstance instance);
+XrResult GetSystemProperties(XrInstance instance, XrSystemId systemId, XrSystemProperties* properties);
+XrResult PollEvent(XrInstance instance, XrEventDataBuffer* eventData);
+
+// session.cpp
+XrResult CreateSession(XrInstance instance, const XrSessionCreateInfo* createInfo, XrSession* session);
+XrResult DestroySession(XrSession session);
+XrResult WaitFrame(XrSession session, const XrFrameWaitInfo* frameWaitInfo, XrFrameState* frameState);
+
+// actions.cpp
+XrResult CreateActionSet(XrInstance instance, const XrActionSetCreateInfo* createInfo, XrActionSet* actionSet);
+XrResult DestroyActionSet(XrActionSet actionSet);
+XrResult CreateAction(XrActionSet actionSet, const XrActionCreateInfo* createInfo, XrAction* action);
+XrResult DestroyAction(XrAction action);
+XrResult SuggestInteractionProfileBindings(XrInstance instance,
+                                           const XrInteractionProfileSuggestedBinding* suggestedBindings);
+XrResult AttachSessionActionSets(XrSession session, const XrSessionActionSetsAttachInfo* attachInfo);
+XrResult SyncActions(XrSession session, const XrActionsSyncInfo* syncInfo);
+XrResult GetActionStatePose(XrSession session, const XrActionStateGetInfo* getInfo, XrActionStatePose* state);
+XrResult GetCurrentInteractionProfile(XrSession session, XrPath topLevelUserPath,
+                                      XrInteractionProfileState* interactionProfile);
+XrResult EnumerateBoundSourcesForAction(XrSession session, const XrBoundSourcesForActionEnumerateInfo* enumerateInfo,
+                                        uint32_t capacity, uint32_t* count, XrPath* sources);
+XrResult GetInputSourceLocalizedName(XrSession session, const XrInputSourceLocalizedNameGetInfo* getInfo,
+                                     uint32_t capacity, uint32_t* count, char* buffer);
+
+// gaze_space.cpp
+XrResult CreateActionSpace(XrSession session, const XrActionSpaceCreateInfo* createInfo, XrSpace* space);
+XrResult LocateSpace(XrSpace space, XrSpace baseSpace, XrTime time, XrSpaceLocation* location);
+XrResult DestroySpace(XrSpace space);
+
+}  // namespace gazelod::layer

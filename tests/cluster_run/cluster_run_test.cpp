@@ -1,0 +1,250 @@
+// `gazelod run --scene F` with F from `gazelod bake --clusters` (a generated wavy wall) on the
+// simulated runtime: the wall is a cluster mesh in its glTF placement (--scene-placement
+// file) and a non-uniformly scaled copy of it stays a plain object; the report has the
+// cluster figures and their audit; frame.png is drawn from the clusters; every frame of a walk
+// draws a cut that covers each leaf exactly once (on the group links and on the triangles);
+// bad placements are usage errors.
+#include "tests/run/run_test_util.hpp"
+
+#include "apps/gazelod/run_cluster_cover.hpp"
+#include "apps/gazelod/run_session.hpp"
+#include "bake/baked_scene.hpp"
+#include "render/lod_palette.hpp"
+#include "render/png_io.hpp"
+#include "tests/bake/test_meshes.hpp"
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace gazelod::test {
+namespace {
+
+constexpr int kWallQuads = 128;
+constexpr std::uint64_t kWallTriangles = 2 * kWallQuads * kWallQuads;
+
+// A 20 m x 20 m wall in the XY plane facing +Z, with 5 cm bumps every 0.8 m: detail the fovea
+// sees at 10 m and the periphery does not.
+bake::testing::TestMesh bumpy_wall() {
+  bake::testing::TestMesh m = bake::testing::grid(kWallQuads, 20.0, 0.0);
+  const double k = 2.0 * std::acos(-1.0) / 0.8;
+  for (std::size_t v = 0; v + 2 < m.positions.size(); v += 3)
+    m.positions[v + 2] = static_cast<float>(0.05 * std::sin(k * m.positions[v]) * std::cos(k * m.positions[v + 1]));
+  return m;
+}
+
+// The baked wall and a walk towards it, made once for the suite.
+class ClusterRun : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = std::filesystem::path(GAZELOD_BINARY_DIR) / "test-scratch" / "ClusterRunSuite";
+    std::filesystem::remove_all(dir_);
+    std::filesystem::create_directories(dir_);
+    // The wall 12 m ahead of a viewer at eye height; a copy stretched along Y far to the side
+    // (not a uniform scale: drawn whole).
+    tinygltf::Model model = bake::testing::single_mesh_model(bumpy_wall());
+    model.nodes[0].name = "Wall";
+    model.nodes[0].translation = {-10.0, -8.0, -12.0};
+    tinygltf::Node stretched;
+    stretched.name = "Stretched", stretched.mesh = 0, stretched.scale = {1.0, 2.0, 1.0};
+    stretched.translation = {40.0, -10.0, -30.0};
+    model.nodes.push_back(stretched);
+    model.scenes[0].nodes.push_back(1);
+    const std::string in = bake::testing::write_model(model, (dir_ / "wall.glb").string());
+    baked_ = (dir_ / "wall-clusters.glb").string();
+    const CliResult r = run_cli({"bake", "--clusters", in, baked_});
+    ASSERT_EQ(r.rc, 0) << r.err;
+    scenario_ = (dir_ / "walk.json").string();
+    std::ofstream(scenario_) << R"({
+      "version": 1, "name": "walk to the wall", "display": "questpro", "duration_s": 5,
+      "frame_rate_hz": 90, "seed": 4,
+      "scene": { "objects": [], "head_path": { "start_m": [0, 1.6, 0], "velocity_m_s": [0, 0, -1.0] } },
+      "effects": [
+        { "type": "head_sweep", "yaw_amplitude_deg": 10, "yaw_period_s": 3 },
+        { "type": "saccades", "fixation_min_ms": 150, "fixation_max_ms": 300, "amplitude_min_deg": 4,
+          "amplitude_max_deg": 15, "range_deg": 20 },
+        { "type": "vor" },
+        { "type": "tracker_latency", "latency_ms": 12 },
+        { "type": "tracker_noise", "std_deg": 0.3 }
+      ]
+    })";
+  }
+  void SetUp() override { use_simulated_runtime(""); }
+
+  static std::filesystem::path dir_;
+  static std::string baked_, scenario_;
+};
+std::filesystem::path ClusterRun::dir_;
+std::string ClusterRun::baked_, ClusterRun::scenario_;
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> cells;
+  std::istringstream in(line);
+  std::string c;
+  while (std::getline(in, c, ',')) cells.push_back(c);
+  return cells;
+}
+
+TEST_F(ClusterRun, NoRenderRunReportsClusterFiguresAndTheirAudit) {
+  const auto out = scratch_dir();
+  const CliResult r = run_cli({"run", "--no-render", "--frames", "60", "--scene", baked_, "--scene-placement", "file",
+                               "--scenario", scenario_, "--out", out.string()});
+  ASSERT_EQ(r.rc, 0) << r.err;
+  EXPECT_NE(r.err.find("'Stretched' drawn whole, not as clusters: its world transform scales non-uniformly"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("cluster triangles "), std::string::npos) << "progress lines: " << r.err;
+  EXPECT_NE(r.out.find("clusters        1 meshes, "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("cluster audit   visible degradations "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("cluster audit   every frame's cut covers each leaf exactly once"), std::string::npos) << r.out;
+
+  const auto summary = nlohmann::json::parse(read_text(out / "summary.json"));
+  // The plain copy: one object at its one level (the full mesh) every frame.
+  EXPECT_EQ(summary.at("triangles_full").get<std::uint64_t>(), 60 * kWallTriangles);
+  const auto& c = summary.at("clusters");
+  EXPECT_EQ(c.at("meshes").get<int>(), 1);
+  const auto full = c.at("triangles_full").get<std::uint64_t>();
+  const auto drawn = c.at("triangles_drawn").get<std::uint64_t>();
+  EXPECT_EQ(full, 60 * kWallTriangles);
+  EXPECT_GT(drawn, 0u);
+  EXPECT_LT(drawn, full) << "most of the wall lies away from the gaze";
+  const auto& audit = c.at("audit");
+  ASSERT_TRUE(audit.at("available").get<bool>()) << audit.dump();
+  const double share = audit.at("visible_degradations").at("share").get<double>();
+  EXPECT_TRUE(std::isfinite(share));
+  EXPECT_GE(share, 0.0);
+  EXPECT_LE(share, 1.0);
+  EXPECT_GT(audit.at("visible_degradations").at("leaf_frames").get<std::int64_t>(), 0);
+  const double ratio = audit.at("triangles_in_view").at("drawn_over_oracle").get<double>();
+  EXPECT_TRUE(std::isfinite(ratio));
+  EXPECT_GT(ratio, 0.0);
+  EXPECT_EQ(audit.at("miscovered_leaf_frames").get<std::int64_t>(), 0);
+
+  // frames.csv: a column of cluster triangles, never above full detail, below it once the
+  // switch policy has let the periphery go.
+  std::ifstream csv(out / "frames.csv");
+  std::string line;
+  ASSERT_TRUE(std::getline(csv, line));
+  const auto header = split(line);
+  const auto it = std::find(header.begin(), header.end(), "cluster_triangles_drawn");
+  ASSERT_NE(it, header.end()) << line;
+  const auto col = static_cast<std::size_t>(it - header.begin());
+  int rows = 0, below = 0;
+  while (std::getline(csv, line)) {
+    const auto cells = split(line);
+    ASSERT_GT(cells.size(), col);
+    const std::uint64_t n = std::stoull(cells[col]);
+    EXPECT_LE(n, kWallTriangles);
+    below += n < kWallTriangles;
+    ++rows;
+  }
+  EXPECT_EQ(rows, 60);
+  EXPECT_GT(below, 0);
+
+  // The default placement puts the same scene in front of the viewer: still a cluster mesh.
+  const auto front = out / "in-front";
+  const CliResult f = run_cli({"run", "--no-render", "--frames", "10", "--scene", baked_, "--scenario", scenario_,
+                               "--out", front.string(), "--quiet"});
+  ASSERT_EQ(f.rc, 0) << f.err;
+  EXPECT_EQ(nlohmann::json::parse(read_text(front / "summary.json")).at("clusters").at("meshes").get<int>(), 1);
+}
+
+TEST_F(ClusterRun, RenderedFrameShowsTheClusters) {
+  const auto out = scratch_dir();
+  const CliResult r = run_cli({"run", "--frames", "4", "--scene", baked_, "--scene-placement", "file", "--scenario",
+                               scenario_, "--out", out.string(), "--quiet"});
+  ASSERT_EQ(r.rc, 0) << r.err;
+  EXPECT_NE(r.out.find("frame.png"), std::string::npos) << r.out;
+  const render::RgbaImage img = render::read_png(out / "frame.png");
+  ASSERT_GT(img.width, 0u);
+  // The wall fills much of the view ahead: many pixels are not background.
+  std::size_t wall = 0;
+  for (std::uint32_t y = 0; y < img.height; y += 4)
+    for (std::uint32_t x = 0; x < img.width; x += 4)
+      wall += glm::length(img.rgb(x, y) - render::background_colour()) > 0.05f;
+  EXPECT_GT(wall, (img.width / 4) * (img.height / 4) / 10) << "the wall covers under a tenth of the frame";
+}
+
+// Undirected edges on exactly one triangle of `drawn`'s clusters, sorted: simplification keeps
+// the source's vertex indices and locks group borders, so a crack leaves an edge single that
+// the source's own border does not have.
+std::vector<std::uint64_t> single_edges(const bake::BakedClusterPrimitive& p, std::span<const std::uint8_t> drawn) {
+  std::vector<std::uint64_t> keys;
+  for (std::size_t c = 0; c < drawn.size(); ++c) {
+    if (!drawn[c]) continue;
+    const std::uint32_t* t = p.indices.data() + p.hierarchy.first_index[c];
+    for (std::uint32_t k = 0; k < p.hierarchy.index_count[c]; k += 3)
+      for (std::uint32_t e = 0; e < 3; ++e) {
+        const std::uint64_t a = t[k + e], b = t[k + (e + 1) % 3];
+        keys.push_back(std::min(a, b) << 32 | std::max(a, b));
+      }
+  }
+  std::sort(keys.begin(), keys.end());
+  std::vector<std::uint64_t> single;
+  for (std::size_t i = 0; i < keys.size();) {
+    std::size_t j = i;
+    while (j < keys.size() && keys[j] == keys[i]) ++j;
+    if (j - i == 1) single.push_back(keys[i]);
+    i = j;
+  }
+  return single;
+}
+
+TEST_F(ClusterRun, EveryFrameOfAWalkCoversEachLeafExactlyOnce) {
+  const bake::BakedScene scene = bake::load_baked(baked_);
+  ASSERT_EQ(scene.cluster_meshes.size(), 1u);
+  const bake::BakedClusterPrimitive& wall = scene.cluster_meshes[0].primitives.at(0);
+  const std::size_t n = wall.hierarchy.size();
+  std::vector<std::uint8_t> leaves(n, 0);
+  for (std::size_t c = 0; c < n; ++c) leaves[c] = wall.hierarchy.depth[c] == 0;
+  const std::vector<std::uint64_t> border = single_edges(wall, leaves);
+  ASSERT_FALSE(border.empty());
+  cli::ClusterCover cover(wall.hierarchy);
+  std::vector<cli::LeafCover> covers(cover.leaves().size());
+
+  cli::RunOptions opt;
+  opt.frames = 90;
+  opt.scenario_path = scenario_;
+  opt.scene_path = baked_;
+  opt.scene_placement = "file";
+  opt.render = false;
+  opt.quiet = true;
+  opt.out_dir = scratch_dir();
+  int frames = 0, coarser = 0;
+  opt.frame_observer = [&](const FrameDecisions& d, const FrameDiagnostics& diag) {
+    SCOPED_TRACE("frame " + std::to_string(frames));
+    ++frames;
+    ASSERT_EQ(d.cluster_first.size(), 1u);
+    ASSERT_EQ(d.cluster_drawn.size(), n);
+    ASSERT_EQ(diag.cluster_drawn_perceptual.size(), n);
+    for (const auto cut : {d.cluster_drawn, diag.cluster_drawn_perceptual}) {
+      EXPECT_EQ(cover.evaluate(cut, covers), 0u) << "leaves not covered exactly once";
+      EXPECT_EQ(single_edges(wall, cut), border) << "a crack or an overlap";
+    }
+    coarser += !std::equal(d.cluster_drawn.begin(), d.cluster_drawn.end(), leaves.begin());
+  };
+  std::ostringstream out, err;
+  ASSERT_EQ(cli::run_session(opt, cli::Io{out, err}), 0) << err.str();
+  EXPECT_EQ(frames, 90);
+  EXPECT_GT(coarser, 0) << "the walk never drew anything but the finest cut: the check proved nothing";
+}
+
+TEST_F(ClusterRun, BadPlacementIsAUsageError) {
+  const auto out = scratch_dir() / "run";
+  CliResult r = run_cli({"run", "--no-render", "--frames", "5", "--scene", baked_, "--scene-placement", "bogus",
+                         "--out", out.string()});
+  EXPECT_EQ(r.rc, 2);
+  EXPECT_NE(r.err.find("--scene-placement: 'bogus' (use in-front or file)"), std::string::npos) << r.err;
+  r = run_cli({"run", "--no-render", "--frames", "5", "--scene-placement", "file", "--out", out.string()});
+  EXPECT_EQ(r.rc, 2);
+  EXPECT_NE(r.err.find("--scene-placement: needs --scene"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out / "summary.json"));
+}
+
+}  // namespace
+}  // namespace gazelod::test

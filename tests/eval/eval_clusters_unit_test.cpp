@@ -1,0 +1,118 @@
+// gazelod eval clusters' parts that need no run: the same-rule baseline's hierarchy
+// (eval_clusters_baseline.hpp) and the reading of a run's reports (eval_clusters_report.hpp),
+// with errors naming the file and JSON path.
+#include "apps/gazelod/command.hpp"
+#include "apps/gazelod/eval_clusters_baseline.hpp"
+#include "apps/gazelod/eval_clusters_report.hpp"
+#include "lod/cluster_select_store.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+namespace gazelod::cli {
+namespace {
+
+#define EXPECT_HAS(msg, part) EXPECT_NE(std::string(msg).find(part), std::string::npos) << (msg)
+
+std::filesystem::path scratch(const std::string& name) {
+  const auto dir = std::filesystem::path(GAZELOD_BINARY_DIR) / "test-scratch" / ("eval_clusters." + name);
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+TEST(EvalClustersBaseline, ChainBecomesOneClusterPerLevel) {
+  const std::vector<float> xyz = {0, 0, 0, 2, 0, 0, 0, 2, 0, 2, 2, 0};
+  const std::vector<std::vector<std::uint32_t>> levels = {{0, 1, 2, 1, 3, 2}, {}, {0, 1, 2}};
+  const std::vector<double> errors = {0.0, 0.01, 0.05};
+  std::vector<std::uint32_t> indices;
+  const lod::ClusterHierarchy h = chain_hierarchy(xyz, levels, errors, indices);
+  ASSERT_EQ(h.size(), 2u);  // the empty level is skipped
+  EXPECT_EQ(indices, (std::vector<std::uint32_t>{0, 1, 2, 1, 3, 2, 0, 1, 2}));
+  EXPECT_EQ(h.first_index, (std::vector<std::uint32_t>{0, 6}));
+  EXPECT_EQ(h.index_count, (std::vector<std::uint32_t>{6, 3}));
+  EXPECT_EQ(h.self_error_m[0], 0.0f);
+  EXPECT_GE(h.self_error_m[1], 0.05f);
+  EXPECT_EQ(h.parent_error_m[0], h.self_error_m[1]);
+  EXPECT_EQ(h.parent_error_m[1], lod::kNoParentError);
+  EXPECT_FLOAT_EQ(h.self_center_x_m[0], 1.0f);
+  EXPECT_GE(h.self_radius_m[0], std::sqrt(2.0f));
+  // A hierarchy the selection accepts: a cut is exactly one level.
+  EXPECT_EQ(lod::validate_cluster_hierarchy(h, indices.size()), "");
+}
+
+TEST(EvalClustersReport, ReadsASideAndNamesWhatIsMissing) {
+  const auto dir = scratch("read");
+  nlohmann::json audit = {{"available", true},
+                          {"triangles_in_view", {{"drawn_over_oracle", 1.25}}},
+                          {"visible_degradations", {{"object_frames", 40}, {"leaf_frames", 400}, {"share", 0.01}}},
+                          {"switches", {{"outside_suppression", {{"per_object_second", 0.5}, {"per_leaf_second", 0.7}}}}}};
+  nlohmann::json j = {{"frames", 2}, {"triangles_drawn", 300}, {"triangles_full", 1000}, {"audit", audit}};
+  std::ofstream(dir / "summary.json") << j.dump();
+  std::ofstream(dir / "frames.csv") << "frame,t_s,triangles_drawn,cluster_triangles_drawn\n0,0,100,10\n1,0.1,200,30\n";
+  const ClusterEvalSide s = read_cluster_eval_side(dir, false);
+  EXPECT_EQ(s.frames, 2);
+  EXPECT_DOUBLE_EQ(s.triangles_per_frame, 150.0);
+  EXPECT_DOUBLE_EQ(s.full_triangles_per_frame, 500.0);
+  EXPECT_DOUBLE_EQ(s.drawn_over_oracle, 1.25);
+  EXPECT_EQ(s.audit_unit_frames, 40);
+  EXPECT_DOUBLE_EQ(s.switches_per_unit_s, 0.5);
+  EXPECT_EQ(s.triangles, (std::vector<double>{100, 200}));
+  // A run without cluster figures: the cluster side says so.
+  try {
+    read_cluster_eval_side(dir, true);
+    FAIL() << "no cluster figures accepted";
+  } catch (const UsageError& e) {
+    EXPECT_HAS(e.what(), "no cluster figures");
+  }
+  j["clusters"] = {{"triangles_drawn", 60}, {"triangles_full", 1000}, {"audit", audit}};
+  std::ofstream(dir / "summary.json") << j.dump();
+  const ClusterEvalSide k = read_cluster_eval_side(dir, true);
+  EXPECT_EQ(k.audit_unit_frames, 400);
+  EXPECT_DOUBLE_EQ(k.triangles_per_frame, 30.0);
+  EXPECT_EQ(k.triangles, (std::vector<double>{10, 30}));
+  // A missing field, a bad cell: the path and the line.
+  j["clusters"]["audit"].erase("switches");
+  std::ofstream(dir / "summary.json") << j.dump();
+  try {
+    read_cluster_eval_side(dir, true);
+    FAIL();
+  } catch (const UsageError& e) {
+    EXPECT_HAS(e.what(), "summary.json: /clusters/audit/switches/outside_suppression/per_leaf_second: missing");
+  }
+  std::ofstream(dir / "frames.csv") << "frame,t_s,triangles_drawn\n0,0,100\n1,x,200\n";
+  try {
+    read_cluster_eval_side(dir, false);
+    FAIL();
+  } catch (const UsageError& e) {
+    EXPECT_HAS(e.what(), "frames.csv:3: column 2: 'x' is not a number");
+  }
+}
+
+TEST(EvalClustersReport, TableTargetAndJson) {
+  ClusterEvalReport r;
+  r.scene = "test";
+  r.columns.resize(3);
+  for (auto& c : r.columns) c.side = ClusterEvalSide{};
+  r.columns[kPerObjectColumn].side->triangles_per_frame = 300.0;
+  r.columns[kSameRuleColumn].side->triangles_per_frame = 900.0;
+  r.columns[kClustersColumn].side->triangles_per_frame = 90.0;
+  r.columns[kClustersColumn].side->degraded_share = 0.004;
+  EXPECT_DOUBLE_EQ(r.triangle_ratio(kClustersColumn, kPerObjectColumn), 0.3);
+  EXPECT_TRUE(r.target_met());
+  EXPECT_HAS(cluster_eval_markdown(r), "met (ratio 0.300, degradations 0.400%)");
+  r.columns[kClustersColumn].side->degraded_share = 0.006;  // too many degradations
+  EXPECT_FALSE(r.target_met());
+  EXPECT_HAS(cluster_eval_markdown(r), "MISSED");
+  r.columns[kClustersColumn].side.reset();
+  r.columns[kClustersColumn].missing = "no cluster figures";
+  EXPECT_FALSE(r.target_met());
+  EXPECT_HAS(cluster_eval_markdown(r), "not measured");
+  EXPECT_EQ(cluster_eval_json(r)["triangle_ratio"], 0.0);
+}
+
+}  // namespace
+}  // namespace gazelod::cli

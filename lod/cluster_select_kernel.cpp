@@ -74,8 +74,9 @@ struct Geometry {
 
 // The screen (with screen_by_size): every record whose decisions need no eccentricity or
 // velocity (invalid, error 0 or +inf, or invisible by size alone) is decided here; the rest are
-// marked pending for the full evaluation. Its eccentricity and velocity flags are placeholders
-// (0) where size decides: the limiting criterion is size there whatever they are.
+// flagged for the full evaluation below. Where size decides, the eccentricity-alone and
+// velocity-alone outputs are set only for an error of 0 (invisible under any criterion): the
+// limiting criterion is size there whatever they would be, so they are not computed.
 template <bool kAll>
 [[gnu::always_inline]] inline void screen_loop(const ClusterFrame& f, const RecordInput& in,
                                                std::size_t begin, std::size_t count,

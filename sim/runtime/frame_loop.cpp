@@ -136,7 +136,8 @@ XrResult EndFrame(XrSession session, const XrFrameEndInfo* info) {
     if (info->layerCount > 0 && info->layers == nullptr) return XR_ERROR_VALIDATION_FAILURE;
     const Instance& inst = *instance_of(*s);
     // A headless session (XR_MND_headless) shows nothing: it accepts and ignores layers, as the
-    // conformance suite expects of it (its headless frames carry placeholder layers).
+    // conformance suite expects of it (its headless frames submit layers without swapchains or
+    // views).
     if (!s->headless)
       for (std::uint32_t i = 0; i < info->layerCount; ++i)
         if (XrResult r = check_layer(inst, *s, info->layers[i]); r != XR_SUCCESS) return r;

@@ -1,6 +1,6 @@
 // Rules of the OpenXR 1.0 specification that Khronos's conformance suite (CTS 1.1.41) found the
 // runtime breaking, each pinned here so that it holds without the CTS: queued events of a
-// destroyed session, headless frames with placeholder layers, strict binding paths and the core
+// destroyed session, headless frames with layers they cannot show, strict binding paths and the core
 // 1.0 interaction profiles, action-set priority, subaction paths in xrSyncActions, impossible
 // type conversions, and a default pose for activated controllers.
 #include "tests/runtime/xr_client.hpp"
@@ -95,7 +95,7 @@ TEST(RuntimeSpecRules, EventsOfADestroyedSessionAreDiscarded) {
 }
 
 // A headless session shows nothing, so it accepts frames whose layers it could not show.
-TEST(RuntimeSpecRules, HeadlessFramesAcceptPlaceholderLayers) {
+TEST(RuntimeSpecRules, HeadlessFramesAcceptLayersTheyCannotShow) {
   use_runtime(5.0);
   HeadlessSession hs;
   ASSERT_NO_FATAL_FAILURE(hs.create({}));

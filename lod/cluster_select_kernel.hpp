@@ -23,6 +23,8 @@
 // bit-identical decisions wherever they sit in the arrays (the cut's consistency needs that).
 #pragma once
 
+#include "lod/lod_chain.hpp"
+
 #include <cstddef>
 #include <cstdint>
 
@@ -38,7 +40,7 @@ inline constexpr std::size_t kClusterBlock = 256;  // clusters per block: block 
 // Nearest-point distances are floored here (metres): an eye inside a sphere (or within this of
 // it) sees the record from this distance, so no error above kNearFloorM / (K A) ever goes by
 // size there (K = 360 / pi; under 1e-8 m at A >= 1 cycle/deg).
-inline constexpr float kNearFloorM = 1e-6f;
+inline constexpr float kNearFloorM = static_cast<float>(kNearestPointFloorM);
 
 // Slacks (see above; bounds derived in cluster_select_kernel.cpp, measured by the tests).
 inline constexpr float kDistanceLow = 1.0f - 0x1p-20f;      // d = |c - eye| times this

@@ -6,7 +6,11 @@
 
 namespace gazelod::lod {
 
-// How a level's removed detail is described.
+// How a level's removed detail is described. Either way it has a size in metres (geometric
+// error e, or r / c for c cycles across a diameter 2r: half a cycle), and the selection sees
+// that size from the nearest point of the object's bounding sphere (lod/select.hpp), where it
+// subtends the most: the centre's distance would under-state it by d / (d - r), without bound
+// for a large object the viewer stands in or next to.
 enum class DetailKind : std::uint8_t {
   // Highest spatial frequency removed, in cycles per object diameter (Reddy's measure,
   // from rendering the level against the full model).
@@ -15,6 +19,10 @@ enum class DetailKind : std::uint8_t {
   // detail of about 1 / (2a) cycles/deg.
   geometric_error_m,
 };
+
+// Nearest-point distances are floored here (metres): an eye inside a sphere (or within this of
+// it) sees its detail from this distance, so no visible detail goes by size there.
+inline constexpr double kNearestPointFloorM = 1e-6;
 
 struct LodLevel {
   std::uint32_t triangles = 0;

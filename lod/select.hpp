@@ -7,10 +7,16 @@
 //   Decisions out{lod, limited_by, size_only, ecc_only, vel_only};  // spans of n bytes
 //   std::string err = select_lods(viewer, objects, out);           // "" on success
 //
-// A level k >= 1 with weight w_k (lod/object_set.hpp) removes detail at f_k cycles/deg:
-//   removed cycles per diameter c: f = c / (2 alpha_deg)  (alpha = angular radius)
-//   geometric error e (m):        f = 1 / (2 (e / d) deg) (small-angle: over-states the angle,
-//                                 so it errs towards keeping detail)
+// A level k >= 1 with weight w_k (lod/object_set.hpp) removes detail of a size s_k (m) seen
+// from the bounding sphere's nearest point, d_near = max(d - r, kNearestPointFloorM)
+// (lod/lod_chain.hpp), at f_k = 1 / (2 (s_k / d_near) deg) cycles/deg:
+//   removed cycles per diameter c: s = r / c, f = c / (2 (r / d_near) deg)  (Reddy 1998's
+//                                 c / (2 alpha_deg) for d >> r, alpha the angular radius)
+//   geometric error e (m):        s = e
+// (small-angle: over-states the angle, so it errs towards keeping detail). The nearest point,
+// not the centre or the angular radius: a large object the viewer stands in or next to shows
+// its error at its near side (inside the sphere no level goes by size), as a cluster does
+// (lod/cluster_select.hpp).
 // and may be used when f_k > A = s * min(G(v) M(E), xi). E is the nearest point's eccentricity
 // minus the tracker's error, v the retinal velocity (their scalar forms, the tests'
 // reference: tests/lod/reference_criteria.hpp). The vectorised kernels

@@ -104,10 +104,16 @@ GAZELOD_IVDEP  // no overlap (select_kernel.hpp)
     const double vel2_raw = (tx * tx + ty * ty + tz * tz) * inv_d2 * (kDegPerRad * kDegPerRad);
     // d = 0 or overflow gives NaN: 0 keeps detail (as the scalar criteria do at r = 0).
     const double vel2 = vel2_raw >= 0.0 ? vel2_raw : 0.0;
+    // The level's detail seen from the sphere's nearest point (lod/lod_chain.hpp): its size per
+    // unit weight (r for removed cycles per diameter, 1 m for a geometric error) over the
+    // nearest point's distance, squared.
+    const double d_near_raw = d - r;
+    const double d_near = d_near_raw > kNearestPointFloorM ? d_near_raw : kNearestPointFloorM;
+    const double size_per_weight = out.kind_error[i] > 0.5 ? 1.0 : r;
     out.ecc_deg[i] = ecc_deg;
     out.vel2_dps2[i] = vel2;
     out.alpha_deg[i] = alpha * kDegPerRad;
-    out.inv_d2[i] = inv_d2;
+    out.near_ratio_sq[i] = (size_per_weight * size_per_weight) / (d_near * d_near);
     out.invalid[i] = ok ? 0.0 : 1.0;
   }
 
@@ -116,7 +122,7 @@ GAZELOD_IVDEP  // no overlap (select_kernel.hpp)
 GAZELOD_IVDEP
   for (std::size_t i = 0; i < count; ++i) {
     const double ecc_deg = out.ecc_deg[i], vel2 = out.vel2_dps2[i], alpha_deg = out.alpha_deg[i];
-    const double inv_d2 = out.inv_d2[i];
+    const double near_ratio_sq = out.near_ratio_sq[i];
     const bool ok = out.invalid[i] < 0.5;
 
     // G(v) on v^2 clamped into the log branch's range (log10 v = log10(v^2) / 2) and into
@@ -136,13 +142,10 @@ GAZELOD_IVDEP
     const double m_min = m_branch < 1.0 ? m_branch : 1.0;
     const double m = ecc_on > kEccentricitySeamDeg ? m_min : 1.0;
 
-    // The threshold factor p^2 of the object's kind (select_kernel.hpp); +inf for an invalid
-    // object, so that no level passes. d = 0: inv_d2 = +inf, so p_error^2 = +inf (no level),
-    // as q = 0 in the unsquared rule.
+    // The threshold factor p^2 (select_kernel.hpp); +inf for an invalid object, so that no
+    // level passes. Inside the sphere d_near is the floor: p^2 about 1e17 r^2, no level.
     constexpr double kErrFactor = 360.0 / std::numbers::pi;
-    const double p2_kind = out.kind_error[i] > 0.5 ? (kErrFactor * kErrFactor) * inv_d2
-                                                   : 4.0 * alpha_deg * alpha_deg;
-    const double p2 = ok ? p2_kind : kInf;
+    const double p2 = ok ? (kErrFactor * kErrFactor) * near_ratio_sq : kInf;
     // Size switched off: p no smaller than where level 1 sits at the static limit a0.
     const double p2_floor = out.w1_sq[i] * floor2_per_w2;
     const double p2_off = p2 > p2_floor ? p2 : p2_floor;

@@ -17,10 +17,10 @@
 //
 // Thresholds: level k (weight w_k, lod/object_set.hpp) is allowed by a criterion with acuity
 // limit A when f_k = w_k / p > A, i.e. w_k > A p, with p = 1 / q the degrees per cycle per
-// unit weight: p = 2 alpha_deg (removed cycles per diameter) or 360 / (pi d) (geometric
-// error; +inf at d = 0, where no level is ever allowed). Both sides are >= 0, so the
-// comparison is done squared, w_k^2 > A^2 p^2: p^2 = 1 / d^2 needs no square root, and no
-// division is left per level. Phase 2 compares in float: w_k^2 and A^2 p^2 are each rounded
+// unit weight, seen from the bounding sphere's nearest point at d_near = max(d - r,
+// kNearestPointFloorM) (lod/lod_chain.hpp): p = 360 r / (pi d_near) (removed cycles per
+// diameter: half a cycle is r / c metres) or 360 / (pi d_near) (geometric error). Both sides
+// are >= 0, so the comparison is done squared, w_k^2 > A^2 p^2: no division is left per level. Phase 2 compares in float: w_k^2 and A^2 p^2 are each rounded
 // to float once, and rounding is monotone, so float(a) > float(b) implies a > b; where the
 // two lie within float rounding (6e-8 relative) the float comparison may keep a finer level
 // than the exact rule, never a coarser one.
@@ -90,7 +90,8 @@ struct KernelBlock {
   // float output would make GCC run it 16 objects wide, in twice the registers).
   double t_size[kSelectBlock], t_ecc[kSelectBlock], t_vel[kSelectBlock], t_comb[kSelectBlock];
   double invalid[kSelectBlock];
-  double inv_d2[kSelectBlock];  // phase 1's scratch between its two loops
+  // Phase 1's scratch between its two loops: (size per weight / nearest-point distance)^2.
+  double near_ratio_sq[kSelectBlock];
   // Phase 1, only with KernelFrame::diagnostics (else unspecified); 0 for an invalid object.
   double ecc_deg[kSelectBlock];    // nearest point's eccentricity minus tracker error, >= 0
   double vel2_dps2[kSelectBlock];  // retinal velocity squared, >= 0 (may be +inf)

@@ -49,7 +49,8 @@ struct Ref {
 Ref reference(const Viewer& vw, const glm::dvec3& c, double r, const glm::dvec3& vel,
               const std::vector<LodLevel>& chain) {
   const double d = glm::length(c - vw.eye_position_m);
-  const double alpha_deg = angular_radius_rad(d, r) * 180 / M_PI;
+  // The detail's size is seen from the sphere's nearest point (lod/lod_chain.hpp).
+  const double d_near = std::max(d - r, kNearestPointFloorM);
   double e = std::max(0.0, nearest_point_eccentricity_deg(vw.eye_position_m, vw.gaze_direction, c, r) -
                                vw.tracker_error_deg);
   double v = retinal_velocity_dps(vw.eye_position_m, vw.eye_velocity_m_s,
@@ -61,7 +62,7 @@ Ref reference(const Viewer& vw, const glm::dvec3& c, double r, const glm::dvec3&
   std::vector<double> w, f;
   for (const LodLevel& l : chain) w.push_back(level_weight(l));
   const bool cyc = chain[0].detail_kind == DetailKind::removed_cycles_per_diameter;
-  const double q = cyc ? 1.0 / (2 * alpha_deg) : d * M_PI / 360.0;
+  const double q = (cyc ? d_near / r : d_near) * M_PI / 360.0;
   const double cap = w.size() > 1 ? a0 / w[1] * (1.0 - 1e-15) : q;
   const double q_off = std::min(q, cap);
   Ref ref;

@@ -104,13 +104,19 @@ OffscreenDevice::OffscreenDevice(bool want_validation) {
     qci.queueFamilyIndex = ctx_.queue_family;
     qci.queueCount = 1;
     qci.pQueuePriorities = &priority;
+    // Lets FrameRenderer draw a cluster cut's runs of one tint with one indirect command.
+    VkPhysicalDeviceFeatures supported{}, enabled{};
+    vkGetPhysicalDeviceFeatures(ctx_.physical, &supported);
+    enabled.multiDrawIndirect = supported.multiDrawIndirect;
     VkDeviceCreateInfo dci{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
     dci.queueCreateInfoCount = 1;
     dci.pQueueCreateInfos = &qci;
+    dci.pEnabledFeatures = &enabled;
     r = vkCreateDevice(ctx_.physical, &dci, nullptr, &ctx_.device);
     if (r != VK_SUCCESS)
       throw NoVulkanDevice("vkCreateDevice on " + device_name_ + " failed (VkResult " + std::to_string(r) + ")");
     vkGetDeviceQueue(ctx_.device, ctx_.queue_family, 0, &ctx_.queue);
+    ctx_.multi_draw_indirect = enabled.multiDrawIndirect == VK_TRUE;
   } catch (...) {
     destroy();
     throw;

@@ -21,6 +21,9 @@ struct DeviceContext {
   VkDevice device = VK_NULL_HANDLE;
   std::uint32_t queue_family = 0;
   VkQueue queue = VK_NULL_HANDLE;
+  // VkPhysicalDeviceFeatures::multiDrawIndirect was enabled on `device` (OffscreenDevice and
+  // the OpenXR host, apps/xr_host, enable it where supported).
+  bool multi_draw_indirect = false;
 };
 
 class OffscreenDevice {

@@ -3,6 +3,7 @@
 #include "render/lod_palette.hpp"
 #include "render/render_error.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -69,6 +70,9 @@ FrameRenderer::FrameRenderer(const DeviceContext& ctx, const MeshLibrary& meshes
       framebuffers_.push_back(fb);
     }
     drawn_.assign(target_.images.size(), false);
+    VkPhysicalDeviceProperties props{};
+    vkGetPhysicalDeviceProperties(ctx_.physical, &props);
+    max_draw_indirect_count_ = std::max<std::uint32_t>(props.limits.maxDrawIndirectCount, 1);
     VkCommandPoolCreateInfo pci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     pci.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
     pci.queueFamilyIndex = ctx_.queue_family;
@@ -146,26 +150,87 @@ void FrameRenderer::draw(std::uint32_t image_index, const EyeView& view, std::sp
 
   const ViewCuller culler(view);
   std::uint64_t triangles = 0;
+  std::uint32_t draws = 0;
   DrawConstants dc{};
   dc.view_proj = view_proj;
   dc.eye_position = eye;
+  bool pushed = false;
+  // The draw being extended: a cluster cut is thousands of items whose ranges follow each other
+  // in the index buffer under one set of constants, and lavapipe pays per draw command.
+  std::uint64_t run_first = 0, run_count = 0;
+  std::int32_t run_vertex_offset = 0;
+  const bool indirect = multi_draw_active();
+  if (indirect && indirect_.size() < items.size() * sizeof(VkDrawIndexedIndirectCommand)) {
+    // The last frame's commands are done (each draw waits), so the old buffer can go.
+    constexpr std::size_t kCommand = sizeof(VkDrawIndexedIndirectCommand);
+    const std::size_t capacity = std::max<std::size_t>(items.size(), 2 * indirect_.size() / kCommand);
+    indirect_ = HostBuffer(ctx_, capacity * kCommand, VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
+  }
+  auto* commands = indirect ? static_cast<VkDrawIndexedIndirectCommand*>(indirect_.data()) : nullptr;
+  std::uint32_t draw_commands = 0, batch_first = 0;  // batch: the written commands not yet issued
+  const auto flush = [&] {
+    if (run_count == 0) return;
+    const auto count = static_cast<std::uint32_t>(run_count), first = static_cast<std::uint32_t>(run_first);
+    if (indirect) {
+      commands[draws] = {count, 1, first, run_vertex_offset, 0};
+    } else {
+      vkCmdDrawIndexed(cmd_, count, 1, first, run_vertex_offset, 0);
+      ++draw_commands;
+    }
+    ++draws;
+    run_count = 0;
+  };
+  // Before constants change: the batch drawn under the current ones goes out.
+  const auto flush_batch = [&] {
+    flush();
+    if (!indirect) return;
+    while (batch_first < draws) {
+      const std::uint32_t n = std::min(draws - batch_first, max_draw_indirect_count_);
+      constexpr std::uint32_t kStride = sizeof(VkDrawIndexedIndirectCommand);
+      vkCmdDrawIndexedIndirect(cmd_, indirect_.buffer(), VkDeviceSize{batch_first} * kStride, n, kStride);
+      ++draw_commands;
+      batch_first += n;
+    }
+  };
   for (const DrawItem& item : items) {
     const bool finite = std::isfinite(item.center_m.x) && std::isfinite(item.center_m.y) &&
                         std::isfinite(item.center_m.z) && std::isfinite(item.radius_m);
     if (!finite || !(item.radius_m > 0.0f) || !culler.visible(glm::dvec3(item.center_m), item.radius_m)) continue;
     const MeshRange& mesh = meshes_.range(item.mesh);
-    dc.center_radius = glm::vec4(item.center_m, item.radius_m);
-    dc.colour = glm::vec4(to_target(lod_colour(item.lod_level), srgb_), 1.0f);
-    vkCmdPushConstants(cmd_, pipeline_.layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
-                       sizeof dc, &dc);
-    vkCmdDrawIndexed(cmd_, mesh.index_count, 1, mesh.first_index, mesh.vertex_offset, 0);
     if (item.lod_level != kMarkerLevel) triangles += mesh.triangles();
+    const glm::vec4 center_radius(item.center_m, item.radius_m);
+    const glm::vec4 colour(to_target(lod_colour(item.lod_level), srgb_), 1.0f);
+    // Bit for bit (memcmp, not ==): -0 and +0 would otherwise merge under different constants.
+    const bool same_constants = pushed && std::memcmp(&center_radius, &dc.center_radius, sizeof center_radius) == 0 &&
+                                std::memcmp(&colour, &dc.colour, sizeof colour) == 0;
+    if (merge_draws_ && same_constants && run_count > 0 && mesh.vertex_offset == run_vertex_offset &&
+        mesh.first_index == run_first + run_count && run_count + mesh.index_count <= UINT32_MAX) {
+      run_count += mesh.index_count;  // the same triangles in the same order: the same pixels
+      continue;
+    }
+    if (!merge_draws_ || !same_constants) {
+      flush_batch();
+      dc.center_radius = center_radius;
+      dc.colour = colour;
+      vkCmdPushConstants(cmd_, pipeline_.layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                         sizeof dc, &dc);
+      pushed = true;
+    } else {
+      flush();
+    }
+    run_first = mesh.first_index;
+    run_count = mesh.index_count;
+    run_vertex_offset = mesh.vertex_offset;
+    if (!merge_draws_) flush();
   }
+  flush_batch();
   vkCmdEndRenderPass(cmd_);
   vk_check(vkEndCommandBuffer(cmd_), "vkEndCommandBuffer");
   submit_and_wait();
   drawn_[image_index] = true;
   triangles_last_frame_ = triangles;
+  draws_last_frame_ = draws;
+  draw_commands_last_frame_ = draw_commands;
 }
 
 RgbaImage FrameRenderer::read_back(std::uint32_t image_index) {

@@ -52,6 +52,22 @@ class FrameRenderer {
   // Copies a drawn image to RGBA8 (swizzling BGRA); it stays in COLOR_ATTACHMENT_OPTIMAL.
   RgbaImage read_back(std::uint32_t image_index);
 
+  // On (the default), consecutive drawn items with the same centre, radius and tint whose index
+  // ranges follow each other in the mesh library (the clusters of a cut, cluster by cluster)
+  // become one indexed draw: the same triangles in the same order, so the same image. Off: one
+  // draw per item, the reference the tests and benchmarks compare against.
+  void set_merge_draws(bool on) { merge_draws_ = on; }
+  // On (the default), with merging on and a device with multiDrawIndirect
+  // (DeviceContext::multi_draw_indirect): the merged draws under one set of constants go out as
+  // one vkCmdDrawIndexedIndirect, in item order, so the image is unchanged. Off, or without the
+  // feature: a loop of vkCmdDrawIndexed.
+  void set_multi_draw(bool on) { multi_draw_ = on; }
+  bool multi_draw_active() const { return merge_draws_ && multi_draw_ && ctx_.multi_draw_indirect; }
+  // Indexed draws (merged ranges) and draw commands (an indirect command counts once) recorded
+  // by the last draw, markers included.
+  std::uint32_t draws_last_frame() const { return draws_last_frame_; }
+  std::uint32_t draw_commands_last_frame() const { return draw_commands_last_frame_; }
+
   // Scene triangles submitted in the last draw (markers and culled objects not counted).
   std::uint64_t triangles_last_frame() const { return triangles_last_frame_; }
   const RenderTarget& target() const { return target_; }
@@ -75,6 +91,10 @@ class FrameRenderer {
   VkFence fence_ = VK_NULL_HANDLE;
   HostBuffer readback_;
   std::uint64_t triangles_last_frame_ = 0;
+  std::uint32_t draws_last_frame_ = 0, draw_commands_last_frame_ = 0;
+  bool merge_draws_ = true, multi_draw_ = true;
+  HostBuffer indirect_;  // VkDrawIndexedIndirectCommand per merged draw, grown to the item count
+  std::uint32_t max_draw_indirect_count_ = 1;
 };
 
 }  // namespace gazelod::render

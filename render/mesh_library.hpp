@@ -43,9 +43,10 @@ class MeshLibrary {
   // buffer holding every cluster of every level, cluster c being the triangle list
   // indices[first_index[c] .. + index_count[c]). Returns the mesh id of cluster 0; cluster c is
   // mesh (returned + c), so a cut is drawn with one DrawItem per drawn cluster, all with the
-  // same centre and radius (the frame of positions_unit, as for add_mesh). Throws RenderError
-  // after upload(), for no clusters, spans of different lengths, a range outside `indices` or
-  // not of whole triangles, an index out of range or a non-finite position.
+  // same centre and radius (the frame of positions_unit, as for add_mesh); cluster c + 1's range
+  // starts where cluster c's ends when the input's do, so FrameRenderer merges their draws.
+  // Throws RenderError after upload(), for no clusters, spans of different lengths, a range
+  // outside `indices` or not of whole triangles, an index out of range or a non-finite position.
   std::uint32_t add_cluster_mesh(std::span<const glm::vec3> positions_unit,
                                  std::span<const std::uint32_t> indices,
                                  std::span<const std::uint32_t> first_index,

@@ -83,6 +83,7 @@ RunRenderer::RunRenderer(xr_host::XrApp& app, const std::vector<std::vector<lod:
   ctx.device = app.vk_device();
   ctx.queue_family = app.vk_queue_family();
   ctx.queue = app.vk_queue();
+  ctx.multi_draw_indirect = app.vk_multi_draw_indirect();
   meshes_.upload(ctx);
   for (const xr_host::XrSwapchainView& sc : app.swapchains()) {
     render::RenderTarget target;

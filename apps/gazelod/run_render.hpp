@@ -1,8 +1,10 @@
 // `gazelod run`'s drawing: each eye's swapchain image gets every object as a stand-in sphere
 // at the LOD the plugin chose, tinted by level, and every cluster mesh (--scene with cluster
-// hierarchies) as its drawn cut with the clusters' real triangles, one draw per drawn cluster,
-// tinted by the cluster's depth (render/). Thin adapter from XrApp's Vulkan objects and
-// swapchains and the plugin's decisions to render::FrameRenderer.
+// hierarchies) as its drawn cut with the clusters' real triangles, one DrawItem per drawn
+// cluster in cluster order, tinted by the cluster's depth (render/; the renderer merges runs of
+// clusters that follow each other in the index buffer at one depth into one draw). Thin
+// adapter from XrApp's Vulkan objects and swapchains and the plugin's decisions to
+// render::FrameRenderer.
 #pragma once
 
 #include "apps/gazelod/run_cluster_scene.hpp"

@@ -137,9 +137,16 @@ void XrApp::create_vulkan() {
   qci.queueFamilyIndex = queue_family_;
   qci.queueCount = 1;
   qci.pQueuePriorities = &priority;
+  // multiDrawIndirect where the device has it: a cluster cut goes out as one indirect draw
+  // per tint (render/frame_renderer.hpp) instead of a draw per run of clusters.
+  VkPhysicalDeviceFeatures supported{}, enabled{};
+  vkGetPhysicalDeviceFeatures(vk_physical_, &supported);
+  enabled.multiDrawIndirect = supported.multiDrawIndirect;
+  multi_draw_indirect_ = supported.multiDrawIndirect == VK_TRUE;
   VkDeviceCreateInfo dci{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
   dci.queueCreateInfoCount = 1;
   dci.pQueueCreateInfos = &qci;
+  dci.pEnabledFeatures = &enabled;
   XrVulkanDeviceCreateInfoKHR xdi{XR_TYPE_VULKAN_DEVICE_CREATE_INFO_KHR};
   xdi.systemId = system_;
   xdi.pfnGetInstanceProcAddr = &vkGetInstanceProcAddr;

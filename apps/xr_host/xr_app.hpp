@@ -56,6 +56,8 @@ class XrApp {
   VkInstance vk_instance() const { return vk_instance_; }
   VkPhysicalDevice vk_physical_device() const { return vk_physical_; }
   VkDevice vk_device() const { return vk_device_; }
+  // VkPhysicalDeviceFeatures::multiDrawIndirect was enabled on vk_device().
+  bool vk_multi_draw_indirect() const { return multi_draw_indirect_; }
   std::uint32_t vk_queue_family() const { return queue_family_; }
   VkQueue vk_queue() const { return queue_; }
   const std::string& vk_device_name() const { return vk_device_name_; }
@@ -96,6 +98,7 @@ class XrApp {
   std::string runtime_name_, system_name_, vk_device_name_;
   VkInstance vk_instance_ = VK_NULL_HANDLE;
   VkPhysicalDevice vk_physical_ = VK_NULL_HANDLE;
+  bool multi_draw_indirect_ = false;
   VkDevice vk_device_ = VK_NULL_HANDLE;
   std::uint32_t queue_family_ = 0;
   VkQueue queue_ = VK_NULL_HANDLE;

@@ -3,8 +3,11 @@
 #include "bake/cluster_build.hpp"
 
 #include "bake/bake_error.hpp"
+#include "bake/cluster_distance.hpp"
 #include "bake/cluster_group.hpp"
+#include "bake/cluster_source.hpp"
 #include "bake/cluster_sphere.hpp"
+#include "bake/cluster_split.hpp"
 
 #include <meshoptimizer.h>
 
@@ -12,7 +15,6 @@
 #include <atomic>
 #include <cfloat>
 #include <cmath>
-#include <cstring>
 #include <exception>
 #include <memory>
 #include <sstream>
@@ -24,104 +26,28 @@ namespace {
 constexpr std::uint32_t kNone = ~0u;
 constexpr std::size_t kMaxDepth = 255;  // depth is stored as uint8
 
-// vertex -> the first vertex with bit-identical position (-0 counted as +0): the topology the
-// grouping and the degenerate test see, as meshopt_simplify welds seams for its own topology.
-std::vector<std::uint32_t> weld_positions(std::span<const float> pos) {
-  const std::size_t n = pos.size() / 3;
-  std::size_t size = 16;
-  while (size < 2 * n) size *= 2;
-  std::vector<std::uint32_t> table(size, kNone), weld(n);
-  auto key = [&](std::size_t v, int k) {
-    const float f = pos[3 * v + k] == 0.0f ? 0.0f : pos[3 * v + k];
-    std::uint32_t bits;
-    std::memcpy(&bits, &f, 4);
-    return bits;
-  };
-  for (std::size_t v = 0; v < n; ++v) {
-    const std::uint32_t x = key(v, 0), y = key(v, 1), z = key(v, 2);
-    std::size_t h = (x * 73856093u) ^ (y * 19349663u) ^ (z * 83492791u);
-    for (h &= size - 1;; h = (h + 1) & (size - 1)) {
-      const std::uint32_t t = table[h];
-      if (t == kNone) {
-        table[h] = weld[v] = static_cast<std::uint32_t>(v);
-        break;
-      }
-      if (key(t, 0) == x && key(t, 1) == y && key(t, 2) == z) {
-        weld[v] = t;
-        break;
-      }
-    }
-  }
-  return weld;
-}
-
 // New clusters made by one parallel task: a chunk of the source mesh split into clusters
 // (spheres: each cluster's own), or one group simplified and split (sphere, error: the group's).
 struct Piece {
   std::vector<std::uint32_t> indices;      // the new clusters' triangles, global vertex ids
   std::vector<std::uint32_t> index_count;  // per new cluster
   std::vector<Sphere> spheres;
+  // Per new cluster of a group: the source vertices (welded ids) it answers for (measure()).
+  std::vector<std::vector<std::uint32_t>> owned;
   Sphere sphere;
   float error_m = 0.0f;
   bool simplified = false;
 };
 
-// Source triangles in chunks of about this many, split into clusters in parallel; a chunk is a
-// run of cells along a Morton curve, so clusters rarely need to cross one.
-constexpr std::size_t kChunkTriangles = 65536;
-constexpr unsigned kCellBits = 5;  // per axis
-
-// Triangle ids in Morton order of their centroid's cell, cut into chunks at cell boundaries.
-std::vector<std::vector<std::uint32_t>> source_chunks(std::span<const float> pos,
-                                                      std::span<const std::uint32_t> tris) {
-  const std::size_t n = tris.size() / 3;
-  std::vector<std::vector<std::uint32_t>> chunks;
-  if (n <= kChunkTriangles) {
-    chunks.emplace_back(n);
-    for (std::size_t t = 0; t < n; ++t) chunks[0][t] = static_cast<std::uint32_t>(t);
-    return chunks;
-  }
-  double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-  for (std::uint32_t v : tris)
-    for (int k = 0; k < 3; ++k)
-      lo[k] = std::min(lo[k], double(pos[3 * v + k])), hi[k] = std::max(hi[k], double(pos[3 * v + k]));
-  constexpr std::uint32_t side = 1u << kCellBits;
-  std::vector<std::uint32_t> cell(n), first(std::size_t{side} * side * side + 1, 0);
-  for (std::size_t t = 0; t < n; ++t) {
-    std::uint32_t q[3];
-    for (int k = 0; k < 3; ++k) {
-      const double c = (double(pos[3 * tris[3 * t] + k]) + pos[3 * tris[3 * t + 1] + k] +
-                        pos[3 * tris[3 * t + 2] + k]) / 3.0;
-      const double u = hi[k] > lo[k] ? (c - lo[k]) / (hi[k] - lo[k]) : 0.0;
-      q[k] = std::min(side - 1, static_cast<std::uint32_t>(std::max(0.0, u) * side));
-    }
-    std::uint32_t code = 0;
-    for (int b = kCellBits - 1; b >= 0; --b)
-      code = (code << 3) | ((q[0] >> b & 1u) << 2) | ((q[1] >> b & 1u) << 1) | (q[2] >> b & 1u);
-    cell[t] = code;
-    ++first[code + 1];
-  }
-  for (std::size_t c = 1; c < first.size(); ++c) first[c] += first[c - 1];
-  std::vector<std::uint32_t> order(n), fill(first.begin(), first.end() - 1);
-  for (std::size_t t = 0; t < n; ++t) order[fill[cell[t]]++] = static_cast<std::uint32_t>(t);
-  for (std::size_t a = 0; a < n;) {
-    std::size_t b = std::min(n, a + kChunkTriangles);
-    while (b < n && cell[order[b]] == cell[order[b - 1]]) ++b;
-    chunks.emplace_back(order.begin() + static_cast<std::ptrdiff_t>(a),
-                        order.begin() + static_cast<std::ptrdiff_t>(b));
-    a = b;
-  }
-  return chunks;
-}
-
 // Per-thread buffers. A task works on a compact copy of its vertices, because meshopt 0.18's
-// simplifier and meshlet builder allocate and scan the whole vertex buffer on every call.
+// simplifier (and the splitter's per-vertex arrays) allocate and scan the whole vertex buffer.
 struct Scratch {
-  explicit Scratch(std::size_t vertex_count) : local_of(vertex_count, kNone) {}
-  std::vector<std::uint32_t> local_of, global_of, local, simplified, meshlet_vertices;
+  explicit Scratch(std::size_t vertex_count) : local_of(vertex_count, kNone), cluster_of(vertex_count, kNone) {}
+  std::vector<std::uint32_t> local_of, global_of, local, simplified;
+  std::vector<std::uint32_t> cluster_of, region, triangle_cluster;  // cluster_of: per welded vertex
+  TriangleGrid grid;
+  ClusterSplitter splitter;
   std::vector<float> local_xyz;
-  std::vector<meshopt_Meshlet> meshlets;
-  std::vector<unsigned char> meshlet_triangles;
   std::vector<Sphere> spheres;
 
   // Appends global vertex v to the compact copy; returns its local id.
@@ -162,7 +88,15 @@ class Builder {
     const std::vector<std::vector<std::uint32_t>> chunks = source_chunks(pos_, kept);
     std::vector<Piece> pieces(chunks.size());
     parallel_for(chunks.size(), [&](std::size_t i, Scratch& s) { split_chunk(kept, chunks[i], s, pieces[i]); });
-    for (const Piece& p : pieces) add_clusters(p, 0, -1);
+    for (Piece& p : pieces) add_clusters(p, 0, -1);
+    // Each source vertex is owned by the first source cluster using it (distance 0).
+    {
+      std::vector<bool> taken(pos_.size() / 3, false);
+      const lod::ClusterHierarchy& h = out_.hierarchy;
+      for (std::size_t c = 0; c < h.size(); ++c)
+        for (std::uint32_t i = h.first_index[c]; i < h.first_index[c] + h.index_count[c]; ++i)
+          if (const std::uint32_t w = weld_[out_.indices[i]]; !taken[w]) taken[w] = true, owned_[c].push_back(w);
+    }
 
     std::vector<std::uint32_t> pending(self_.size());
     for (std::size_t c = 0; c < pending.size(); ++c) pending[c] = static_cast<std::uint32_t>(c);
@@ -176,22 +110,10 @@ class Builder {
   // Splits s.local (a triangle list over s.local_xyz) into clusters, appended to `p` in
   // global vertex ids.
   void split(Scratch& s, std::span<const std::uint32_t> tris, Piece& p) const {
-    const std::size_t vcount = s.global_of.size();
-    const std::size_t bound = meshopt_buildMeshletsBound(tris.size(), o_.max_vertices, o_.max_triangles);
-    s.meshlets.resize(bound);
-    s.meshlet_vertices.resize(bound * o_.max_vertices);
-    s.meshlet_triangles.resize(bound * o_.max_triangles * 3);
-    const std::size_t count = meshopt_buildMeshlets(
-        s.meshlets.data(), s.meshlet_vertices.data(), s.meshlet_triangles.data(), tris.data(),
-        tris.size(), s.local_xyz.data(), vcount, 3 * sizeof(float), o_.max_vertices,
-        o_.max_triangles, 0.0f);
-    for (std::size_t m = 0; m < count; ++m) {
-      const meshopt_Meshlet& ml = s.meshlets[m];
-      for (std::size_t j = 0; j < 3 * std::size_t{ml.triangle_count}; ++j)
-        p.indices.push_back(s.global_of[s.meshlet_vertices[ml.vertex_offset +
-                                                           s.meshlet_triangles[ml.triangle_offset + j]]]);
-      p.index_count.push_back(3 * ml.triangle_count);
-    }
+    const std::size_t at = p.indices.size();
+    s.splitter.split(s.local_xyz, s.global_of.size(), tris, o_.max_vertices, o_.max_triangles, p.indices,
+                     p.index_count);
+    for (std::size_t i = at; i < p.indices.size(); ++i) p.indices[i] = s.global_of[p.indices[i]];
   }
 
   // Source clusters of one chunk, each with its own sphere.
@@ -213,7 +135,8 @@ class Builder {
     }
   }
 
-  // One group: merge, simplify with the border locked, split. Reads only the clusters' data.
+  // One group: merge, simplify with the border locked, split, then measure against the source.
+  // Reads only the clusters' data.
   void simplify_group(const std::vector<std::uint32_t>& members, Scratch& s, Piece& p) const {
     const lod::ClusterHierarchy& h = out_.hierarchy;
     float child_error_m = 0.0f;
@@ -228,22 +151,56 @@ class Builder {
     const std::size_t vcount = s.global_of.size();
     const std::size_t target = 3 * static_cast<std::size_t>(double(s.local.size() / 3) * o_.simplify_ratio);
     s.simplified.resize(s.local.size());
-    float error_rel = 0.0f;
     const std::size_t n = target < 3 ? 0
                                      : meshopt_simplify(s.simplified.data(), s.local.data(), s.local.size(),
                                                         s.local_xyz.data(), vcount, 3 * sizeof(float), target,
-                                                        FLT_MAX, meshopt_SimplifyLockBorder, &error_rel);
+                                                        FLT_MAX, meshopt_SimplifyLockBorder, nullptr);
     if (n > 0 && double(n) <= o_.stuck_ratio * double(s.local.size())) {
-      const double scale_m = meshopt_simplifyScale(s.local_xyz.data(), vcount, 3 * sizeof(float));
-      const double error_m = double(child_error_m) + (std::isfinite(error_rel) ? error_rel * scale_m : 0.0);
-      p.error_m = std::max(child_error_m, static_cast<float>(error_m));
       p.simplified = true;
       split(s, std::span<const std::uint32_t>(s.simplified.data(), n), p);
+      const double error_m = measure(members, child_error_m, s, p);
+      // Rounded up to a float at least as large, and never below a member's (monotone).
+      auto error_f = static_cast<float>(error_m);
+      if (double(error_f) < error_m) error_f = std::nextafter(error_f, INFINITY);
+      p.error_m = std::max(child_error_m, error_f);
     }
     s.clear();
   }
 
-  void add_clusters(const Piece& p, std::size_t depth, std::int32_t source_group) {
+  // The largest distance from the source vertices the members own to the group's new triangles;
+  // each vertex goes to the new cluster holding its nearest triangle (or a corner at it).
+  // Vertices are only searched until a triangle within the largest error so far (at least the
+  // members' error, which the group keeps anyway) is found: that bounds them as well.
+  double measure(const std::vector<std::uint32_t>& members, double floor_m, Scratch& s, Piece& p) const {
+    s.region.clear();
+    for (std::uint32_t c : members) s.region.insert(s.region.end(), owned_[c].begin(), owned_[c].end());
+    s.triangle_cluster.clear();
+    for (std::uint32_t k = 0, at = 0; k < p.index_count.size(); at += p.index_count[k++]) {
+      for (std::uint32_t i = at; i < at + p.index_count[k]; ++i) {
+        std::uint32_t& c = s.cluster_of[weld_[p.indices[i]]];
+        if (c == kNone) c = k;
+      }
+      s.triangle_cluster.insert(s.triangle_cluster.end(), p.index_count[k] / 3, k);
+    }
+    s.grid.build(pos_, p.indices);
+    p.owned.assign(p.index_count.size(), {});
+    double error_m = floor_m;
+    std::uint32_t hint = kNone;
+    for (std::uint32_t v : s.region) {
+      if (s.cluster_of[v] != kNone) {
+        p.owned[s.cluster_of[v]].push_back(v);
+        continue;
+      }
+      const NearestTriangle t = s.grid.nearest(&pos_[3 * std::size_t{v}], error_m, hint);
+      hint = t.triangle;
+      p.owned[s.triangle_cluster[t.triangle]].push_back(v);
+      error_m = std::max(error_m, t.distance_m);
+    }
+    for (std::uint32_t v : p.indices) s.cluster_of[weld_[v]] = kNone;
+    return error_m;
+  }
+
+  void add_clusters(Piece& p, std::size_t depth, std::int32_t source_group) {
     std::uint32_t at = 0;
     for (std::size_t c = 0; c < p.index_count.size(); ++c) {
       const Sphere& self = p.spheres.empty() ? p.sphere : p.spheres[c];
@@ -266,6 +223,7 @@ class Builder {
       out_.source_group.push_back(source_group);
       out_.levels = std::max(out_.levels, static_cast<std::uint32_t>(depth + 1));
       self_.push_back(self);
+      owned_.emplace_back(c < p.owned.size() ? std::move(p.owned[c]) : std::vector<std::uint32_t>{});
     }
   }
 
@@ -293,7 +251,8 @@ class Builder {
 
     std::vector<std::uint32_t> next;
     for (std::size_t g = 0; g < groups.size(); ++g) {
-      const Piece& p = pieces[g];
+      Piece& p = pieces[g];
+      for (std::uint32_t c : groups[g]) std::vector<std::uint32_t>().swap(owned_[c]);  // passed on
       if (!p.simplified) {  // stuck: these clusters are the top here
         for (std::uint32_t c : groups[g]) set_parent(c, p.sphere, lod::kNoParentError, -1);
         continue;
@@ -338,6 +297,8 @@ class Builder {
   const ClusterBuildOptions& o_;
   std::vector<std::uint32_t> weld_;
   std::vector<Sphere> self_;  // self spheres, as Sphere (hierarchy holds the same, split up)
+  // Per cluster not yet grouped: the source vertices it answers for (measure()).
+  std::vector<std::vector<std::uint32_t>> owned_;
   std::vector<std::unique_ptr<Scratch>> scratch_;
   ClusterBuildResult out_;
 };

@@ -1,6 +1,6 @@
 // One mesh's cluster hierarchy (lod/cluster_hierarchy.hpp) with meshoptimizer 0.18, after
 // Karis et al. 2021 (Nanite) and meshoptimizer's cluster-LOD demo:
-//   1. the source triangles are split into clusters (meshopt_buildMeshlets);
+//   1. the source triangles are split into clusters (bake/cluster_split.hpp);
 //   2. neighbouring clusters are grouped (bake/cluster_group.hpp);
 //   3. each group's triangles are simplified to about half with meshopt_SimplifyLockBorder, so
 //      the group's outer border stays vertex for vertex what its neighbours see;
@@ -8,10 +8,19 @@
 // until one cluster is left or no group simplifies any more (a group that keeps more than
 // `stuck_ratio` of its triangles is not simplified: its clusters are the top of the hierarchy,
 // parent error kNoParentError).
-// Errors in the positions' units (metres): a group's error is the largest self error of its
-// clusters plus its own simplification error (meshopt's relative error times
-// meshopt_simplifyScale of the group), so parent error >= every member's self error; the group's
-// sphere encloses every member's self sphere. Source clusters: their own sphere, error 0.
+// Errors in the positions' units (metres), measured against the SOURCE, not summed per level:
+// every vertex of a kept source triangle (one per welded position) is owned by one cluster of
+// each level it reaches; a group owns what its members own and hands each vertex to the new
+// cluster holding the triangle found for it (bake/cluster_distance.hpp: its nearest, or the
+// first one no farther than the group's error so far). A group's error is the largest distance
+// from its vertices to those triangles, raised to the largest self error of its members (so
+// parent error >= every member's self error), computed in double and rounded up to float.
+// What it bounds: in any cut (clusters with self error <= t < parent error) every such source
+// vertex lies within the largest self error of the drawn clusters, hence within t, of the drawn
+// triangles. The source is sampled at its vertices (a source triangle's interior is not
+// measured); meshopt's own error estimate (an area-weighted quadric mean, not a maximum, which
+// fell below the true distance at fine levels) is not used. The group's sphere encloses every
+// member's self sphere. Source clusters: their own sphere, error 0.
 // The vertex buffer is the input's (simplification only drops vertices): `indices` refer to it.
 #pragma once
 

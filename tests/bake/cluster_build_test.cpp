@@ -1,15 +1,22 @@
 // build_cluster_hierarchy (bake/cluster_build.hpp): the hierarchy's invariants on a closed
-// sphere, an open grid and separate pieces; small, empty and degenerate input; bad input.
+// sphere, an open grid and separate pieces; stored errors against the true distance from the
+// source; the nearest-triangle grid and the splitter it uses; small, empty and degenerate input;
+// bad input.
 #include "bake/bake_error.hpp"
 #include "bake/cluster_build.hpp"
+#include "bake/cluster_distance.hpp"
+#include "bake/cluster_split.hpp"
 #include "tests/bake/cluster_invariants.hpp"
 #include "tests/bake/test_meshes.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <random>
 
 namespace gazelod::bake {
 namespace {
@@ -70,6 +77,100 @@ TEST(ClusterBuild, SeparatePiecesAreGroupedByPlace) {
   const ClusterBuildResult r = build_cluster_hierarchy(m.positions, m.indices);
   testing::expect_hierarchy_invariants(r, m.positions, m.indices);
   EXPECT_LT(top_triangles(r), m.triangles() / 4);
+}
+
+// Largest distance from a source vertex to the triangles, by brute force.
+double max_source_distance(std::span<const float> pos, std::span<const std::uint32_t> tris) {
+  double worst = 0.0;
+  for (std::size_t v = 0; v < pos.size() / 3; ++v) {
+    const double p[3] = {pos[3 * v], pos[3 * v + 1], pos[3 * v + 2]};
+    double nearest = INFINITY;
+    for (std::size_t t = 0; t < tris.size(); t += 3) {
+      double c[9];
+      for (int k = 0; k < 9; ++k) c[k] = pos[3 * tris[t + k / 3] + k % 3];
+      nearest = std::min(nearest, point_triangle_distance(p, c, c + 3, c + 6));
+    }
+    worst = std::max(worst, nearest);
+  }
+  return worst;
+}
+
+TEST(ClusterBuild, StoredErrorBoundsTheDistanceFromTheSource) {
+  const testing::TestMesh m = testing::grid(32, 2.0, 0.3);  // a height field, 2048 triangles
+  const ClusterBuildResult r = build_cluster_hierarchy(m.positions, m.indices);
+  testing::expect_hierarchy_invariants(r, m.positions, m.indices);
+  ASSERT_GE(r.groups, 4u);
+  // Every cut the hierarchy has: at no error, at each group's error and at the top.
+  std::vector<float> thresholds{0.0f, std::numeric_limits<float>::max()};
+  for (float e : r.hierarchy.parent_error_m)
+    if (e != lod::kNoParentError) thresholds.push_back(e);
+  std::sort(thresholds.begin(), thresholds.end());
+  thresholds.erase(std::unique(thresholds.begin(), thresholds.end()), thresholds.end());
+  double top_bound_m = 0.0, top_true_m = 0.0;
+  for (float t : thresholds) {
+    const std::vector<std::uint32_t> drawn = testing::cut(r, t);
+    double bound_m = 0.0;
+    for (std::size_t c = 0; c < r.hierarchy.size(); ++c)
+      if (r.hierarchy.self_error_m[c] <= t && t < r.hierarchy.parent_error_m[c])
+        bound_m = std::max(bound_m, double(r.hierarchy.self_error_m[c]));
+    const double true_m = max_source_distance(m.positions, drawn);
+    EXPECT_LE(true_m, bound_m) << "cut at " << t << ": a source vertex is farther from the drawn surface";
+    EXPECT_LE(bound_m, double(t)) << "cut at " << t;
+    top_bound_m = bound_m, top_true_m = true_m;
+  }
+  std::printf("  %zu cuts; top: stored %.5f m, true %.5f m\n", thresholds.size(), top_bound_m, top_true_m);
+  // Measured, not summed: the top's bound is the deviation of some source vertex from it.
+  EXPECT_GT(top_true_m, 0.5 * top_bound_m);
+}
+
+TEST(ClusterBuild, TriangleGridFindsTheNearestTriangle) {
+  const testing::TestMesh m = testing::icosphere(2, 1.0);  // 320 triangles
+  TriangleGrid grid;
+  grid.build(m.positions, m.indices);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> u(-1.6f, 1.6f);
+  for (int i = 0; i < 300; ++i) {
+    const float p[3] = {u(rng), u(rng), u(rng)};
+    const double pd[3] = {p[0], p[1], p[2]};
+    double brute = INFINITY;
+    for (std::size_t t = 0; t < m.indices.size(); t += 3) {
+      double c[9];
+      for (int k = 0; k < 9; ++k) c[k] = m.positions[3 * m.indices[t + k / 3] + k % 3];
+      brute = std::min(brute, point_triangle_distance(pd, c, c + 3, c + 6));
+    }
+    EXPECT_NEAR(grid.nearest(p).distance_m, brute, 1e-9) << i;
+    // Good enough: some triangle within the limit, never closer than the nearest.
+    const NearestTriangle q = grid.nearest(p, brute + 0.1, static_cast<std::uint32_t>(i % 320));
+    EXPECT_LE(q.distance_m, brute + 0.1 + 1e-9);
+    EXPECT_GE(q.distance_m, brute - 1e-9);
+  }
+}
+
+TEST(ClusterBuild, SplitterKeepsLimitsAndEveryTriangleOnce) {
+  // Full clusters but the last few: a grid's hold about 64 vertices (~90 triangles), a soup's
+  // 21 triangles of 3 vertices each.
+  const std::pair<testing::TestMesh, std::size_t> cases[] = {{testing::grid(30, 1.0, 0.1), 1800 / 70 + 3},
+                                                             {testing::triangle_soup(700), 700 / 21 + 2}};
+  for (const auto& [m, max_clusters] : cases) {
+    ClusterSplitter splitter;
+    std::vector<std::uint32_t> out, counts;
+    splitter.split(m.positions, m.positions.size() / 3, m.indices, 64, 124, out, counts);
+    ASSERT_EQ(out.size(), m.indices.size());
+    std::size_t at = 0;
+    for (std::uint32_t k : counts) {
+      std::vector<std::uint32_t> v(out.begin() + at, out.begin() + at + k);
+      std::sort(v.begin(), v.end());
+      EXPECT_LE(k / 3, 124u);
+      EXPECT_LE(std::unique(v.begin(), v.end()) - v.begin(), 64);
+      at += k;
+    }
+    std::vector<std::array<std::uint32_t, 3>> a, b;
+    for (std::size_t t = 0; t < out.size(); t += 3)
+      a.push_back({out[t], out[t + 1], out[t + 2]}), b.push_back({m.indices[t], m.indices[t + 1], m.indices[t + 2]});
+    std::sort(a.begin(), a.end()), std::sort(b.begin(), b.end());
+    EXPECT_EQ(a, b);
+    EXPECT_LE(counts.size(), max_clusters) << m.triangles();
+  }
 }
 
 TEST(ClusterBuild, SameHierarchyOnAnyThreadCount) {

@@ -1,0 +1,43 @@
+// Point-to-surface distance for the cluster hierarchy's errors (bake/cluster_build.hpp): the
+// triangles of one simplified group in a uniform grid of cubic cells, about one triangle's area
+// per cell face, searched ring by ring outward from the query point's cell with cells farther
+// than the best distance so far skipped (Ericson 2005, ch. 7). The distance returned is always
+// that to a real triangle, so it is never below the true nearest distance.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace gazelod::bake {
+
+struct NearestTriangle {
+  double distance_m = 0.0;
+  std::uint32_t triangle = 0;  // position in the triangle list given to build()
+};
+
+// Keeps its arrays between builds (one per thread).
+class TriangleGrid {
+ public:
+  // positions_xyz: 3 floats per vertex; triangles: a non-empty triangle list into them.
+  void build(std::span<const float> positions_xyz, std::span<const std::uint32_t> triangles);
+  // The nearest triangle, or, when `good_enough_m` > 0, the first one found within that distance
+  // (tried first: `hint`, e.g. the previous query's answer, when it is a valid triangle).
+  NearestTriangle nearest(const float point[3], double good_enough_m = 0.0, std::uint32_t hint = ~0u);
+
+ private:
+  void cell_of(const double p[3], int c[3]) const;
+  double distance_sq(std::uint32_t triangle, const double p[3], double below_sq) const;
+  double lo_[3] = {0, 0, 0}, cell_m_ = 1.0, per_cell_ = 1.0;
+  int dim_[3] = {1, 1, 1};
+  std::vector<std::uint32_t> first_, items_, stamp_;  // per cell: first item; items; per triangle
+  // Per triangle: corner a, edges ab and ac, unit normal, ab.ab, ab.ac, ac.ac, 1 / Gram
+  // determinant (0: degenerate), then corners b and c.
+  std::vector<double> tri_;
+  std::uint32_t query_ = 0;
+};
+
+// Distance from p to triangle (a, b, c), all in double (Ericson 2005, 5.1.5).
+double point_triangle_distance(const double p[3], const double a[3], const double b[3], const double c[3]);
+
+}  // namespace gazelod::bake

@@ -1,5 +1,6 @@
-// Point-to-surface distance for the cluster hierarchy's errors (bake/cluster_build.hpp): the
-// triangles of one simplified group in a uniform grid of cubic cells, about one triangle's area
+// Point-to-surface distance for the errors of the cluster hierarchy (bake/cluster_build.hpp) and
+// of the LOD chain (bake/simplify_chain.hpp): the triangles of one simplified group or level in a
+// uniform grid of cubic cells, about one triangle's area
 // per cell face, searched ring by ring outward from the query point's cell with cells farther
 // than the best distance so far skipped (Ericson 2005, ch. 7). The distance returned is always
 // that to a real triangle, so it is never below the true nearest distance.

@@ -2,6 +2,8 @@
 // meshopt_optimizeVertexCache on the result (see simplify_chain.hpp).
 #include "bake/simplify_chain.hpp"
 
+#include "bake/cluster_distance.hpp"
+
 #include <meshoptimizer.h>
 
 #include <algorithm>
@@ -22,6 +24,27 @@ std::uint32_t count_vertices(std::span<const std::uint32_t> idx, std::size_t ver
   for (std::uint32_t i : idx)
     if (!seen[i]) seen[i] = true, ++n;
   return n;
+}
+
+// The largest distance from a vertex of the source triangles to the level's triangles (each
+// position once: `used` marks them, all 0 again on return); the source sampled at its vertices,
+// as the cluster hierarchy measures it.
+double largest_source_distance_m(std::span<const float> pos, std::span<const std::uint32_t> source,
+                                 std::span<const std::uint32_t> level, TriangleGrid& grid,
+                                 std::vector<std::uint8_t>& used) {
+  grid.build(pos, level);
+  double largest_m = 0.0;
+  std::uint32_t hint = ~0u;
+  for (std::uint32_t v : source) {
+    if (used[v]) continue;
+    used[v] = 1;
+    // Only a farther triangle than the largest so far can raise it: the first one within it will do.
+    const NearestTriangle t = grid.nearest(&pos[3 * std::size_t(v)], largest_m, hint);
+    largest_m = std::max(largest_m, t.distance_m);
+    hint = t.triangle;
+  }
+  for (std::uint32_t v : source) used[v] = 0;
+  return largest_m;
 }
 
 }  // namespace
@@ -63,6 +86,8 @@ PrimitiveChain simplify_chain(std::span<const float> pos, std::span<const std::u
   const std::size_t tri0 = idx.size() / 3;
   const float target_error = static_cast<float>(options.target_error_rel);
   std::vector<std::uint32_t> dst(idx.size()), sloppy(idx.size());
+  TriangleGrid grid;
+  std::vector<std::uint8_t> used(vcount, 0);
   for (double ratio : options.ratios) {
     const SimplifiedLevel& prev = chain.levels.back();
     SimplifiedLevel level;
@@ -93,9 +118,12 @@ PrimitiveChain simplify_chain(std::span<const float> pos, std::span<const std::u
     level.indices.assign(dst.begin(), dst.begin() + static_cast<std::ptrdiff_t>(n));
     meshopt_optimizeVertexCache(level.indices.data(), level.indices.data(), n, vcount);
     level.vertices = count_vertices(level.indices, vcount);
-    // A coarser level is never reported as more accurate than a finer one.
-    level.error_rel = std::max(static_cast<double>(err), prev.error_rel);
-    level.error_m = level.error_rel * chain.scale_m;
+    // The error measured against the source, as the cluster hierarchy's (bake/cluster_build.hpp):
+    // meshopt's estimate (`err`) is a quadric mean that falls several times below the largest
+    // distance. A coarser level is never reported as more accurate than a finer one.
+    const double error_m = n == 0 ? double(chain.scale_m) : largest_source_distance_m(pos, idx, level.indices, grid, used);
+    level.error_m = std::max(error_m, prev.error_m);
+    level.error_rel = chain.scale_m > 0.0 ? level.error_m / chain.scale_m : 0.0;
     chain.levels.push_back(std::move(level));
   }
   return chain;

@@ -14,8 +14,9 @@ namespace gazelod::bake {
 struct ChainOptions {
   // Triangle ratio of each coarser level against level 0, strictly decreasing in (0, 1).
   std::vector<double> ratios{0.25, 0.0625, 0.015625};
-  // Largest error meshopt may introduce, relative to the mesh extent (meshopt_simplifyScale);
-  // 1 = the whole extent, i.e. no limit: the triangle ratio alone decides.
+  // Cap on meshopt's own error estimate, relative to the mesh extent (meshopt_simplifyScale);
+  // 1 = the whole extent, i.e. no limit: the triangle ratio alone decides. The estimate is a
+  // quadric mean: the measured error_m of a level can exceed the cap several times over.
   double target_error_rel = 1.0;
   // meshopt_SimplifyLockBorder: open borders (where a mesh's primitives meet, the rim of a
   // sheet) stay in place, so primitives do not crack apart; levels this blocks fall back to
@@ -26,8 +27,10 @@ struct ChainOptions {
 struct SimplifiedLevel {
   std::vector<std::uint32_t> indices;  // triangle list into the original vertices
   std::uint32_t vertices = 0;          // distinct vertices the indices use
-  double error_rel = 0.0;              // relative to scale_m (running maximum over levels)
-  double error_m = 0.0;                // error_rel * scale_m, in the positions' units
+  // The largest distance from a source vertex to the level's triangles, in the positions' units
+  // (a running maximum over levels; the whole extent for an empty level), and over scale_m.
+  double error_m = 0.0;
+  double error_rel = 0.0;
   bool sloppy = false;                 // reached with meshopt_simplifySloppy
 };
 

@@ -131,7 +131,8 @@ const Registrar reg(
       app.add_option("--levels", o->levels, "levels in all, each with 1/4 of the previous triangles (default 4)");
       app.add_option("--ratios", o->ratios, "triangle ratios of the coarser levels, e.g. 0.5,0.2,0.05");
       app.add_option("--target-error", o->target_error,
-                     "largest error per level relative to the mesh extent (default 1 = no limit)");
+                     "cap on meshoptimizer's error estimate per level, relative to the mesh extent (default 1 = no "
+                     "limit; the stored error_m is measured and can be larger)");
       app.add_flag("--lock-borders", o->lock_borders,
                    "keep open borders in place (no cracks between a mesh's primitives)");
       app.add_option("--profile", o->profile,

@@ -263,36 +263,45 @@ TEST(ClusterSelect, KernelNeverCoarserOnAdversarialRecords) {
   EXPECT_GT(robust, compared * 7 / 10);  // adversarial: many sit at a tie on purpose
 }
 
-// One mesh whose hierarchy is a chain: cluster k at one point (radius 0) with self error e_k
-// (e_0 = 0) and parent error e_{k+1} (the last: none); select_lods on the same point with the
-// geometric-error chain e_1..e_K must pick level k exactly where cluster k is drawn.
+// One mesh whose hierarchy is a chain: cluster k with self error e_k (e_0 = 0) and parent error
+// e_{k+1} (the last: none), every record one sphere; select_lods on the same sphere with the
+// geometric-error chain e_1..e_K must pick level k exactly where cluster k is drawn. Radius 0,
+// and (every other trial) a sphere of up to 8 m that the eye may be inside, with velocity off:
+// both rules see the error from the sphere's nearest point, but only the cluster rule bounds
+// the velocity over the sphere.
 TEST(ClusterSelect, ChainSelectsTheLevelOfSelectLods) {
   const std::vector<double> err{0.0, 0.001, 0.003, 0.008, 0.02, 0.06, 0.2};
   const std::size_t n = err.size();
-  ClusterHierarchy chain;
-  for (std::size_t k = 0; k < n; ++k) {
-    for (auto* v : {&chain.self_center_x_m, &chain.self_center_y_m, &chain.self_center_z_m,
-                    &chain.self_radius_m, &chain.parent_center_x_m, &chain.parent_center_y_m,
-                    &chain.parent_center_z_m, &chain.parent_radius_m})
-      v->push_back(0.0f);
-    chain.self_error_m.push_back(static_cast<float>(err[k]));
-    chain.parent_error_m.push_back(k + 1 < n ? static_cast<float>(err[k + 1]) : kNoParentError);
-    chain.first_index.push_back(0), chain.index_count.push_back(0), chain.depth.push_back(static_cast<std::uint8_t>(k));
-  }
+  const auto chain_of_radius = [&](float radius_m) {
+    ClusterHierarchy chain;
+    for (std::size_t k = 0; k < n; ++k) {
+      for (auto* v : {&chain.self_center_x_m, &chain.self_center_y_m, &chain.self_center_z_m,
+                      &chain.parent_center_x_m, &chain.parent_center_y_m, &chain.parent_center_z_m})
+        v->push_back(0.0f);
+      chain.self_radius_m.push_back(radius_m), chain.parent_radius_m.push_back(radius_m);
+      chain.self_error_m.push_back(static_cast<float>(err[k]));
+      chain.parent_error_m.push_back(k + 1 < n ? static_cast<float>(err[k + 1]) : kNoParentError);
+      chain.first_index.push_back(0), chain.index_count.push_back(0), chain.depth.push_back(static_cast<std::uint8_t>(k));
+    }
+    return chain;
+  };
   std::vector<LodLevel> levels;
   for (std::size_t k = 0; k < n; ++k) levels.push_back({100, 0, DetailKind::geometric_error_m, err[k]});
   std::mt19937_64 rng(4);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  std::size_t compared = 0, coarser = 0;
+  std::size_t compared = 0, coarser = 0, compared_sized = 0, inside = 0;
   for (int trial = 0; trial < 3000; ++trial) {
     const glm::dvec3 at{30.0 * u(rng), 3.0 * u(rng), 30.0 * u(rng)}, vel{2 * u(rng), 0.2 * u(rng), 2 * u(rng)};
+    const bool sized = trial % 2 == 1;
+    const float radius_m = sized ? static_cast<float>(8.0 * std::abs(u(rng))) : 0.0f;
     ClusterStore cs;
     InstanceTransform xf;
     xf.translation_m = at;
-    cs.add_mesh(chain, xf, vel, 0);
+    cs.add_mesh(chain_of_radius(radius_m), xf, vel, 0);
     ObjectStore os;
-    os.add(at, 0.0, vel, levels);
+    os.add(at, radius_m, vel, levels);
     Viewer vw = random_viewer(rng, cs.view());
+    if (sized) vw.use_velocity = false;
     vw.eye_position_m = glm::dvec3{4.0 * u(rng), 1.6, 4.0 * u(rng)};
     if (trial % 3 == 0) vw.gaze_direction = at - vw.eye_position_m + 0.05 * glm::dvec3{u(rng), u(rng), u(rng)};
     std::vector<std::uint8_t> lod(1), why(1), ls(1), le(1), lv(1);
@@ -311,6 +320,8 @@ TEST(ClusterSelect, ChainSelectsTheLevelOfSelectLods) {
     ASSERT_LE(std::abs(int(k) - int(lod[0])), robust ? 0 : 1) << trial;
     if (!robust) continue;
     ++compared, coarser += k > 0;
+    compared_sized += sized;
+    inside += sized && glm::length(vw.eye_position_m - at) <= radius_m;
     ASSERT_EQ(out.why[k], why[0]) << trial;
     ASSERT_EQ(drawn_level(out.s), ls[0]) << trial;
     ASSERT_EQ(drawn_level(out.e), le[0]) << trial;
@@ -318,6 +329,8 @@ TEST(ClusterSelect, ChainSelectsTheLevelOfSelectLods) {
   }
   EXPECT_GT(compared, 2500u);  // trials with every record clear of a threshold
   EXPECT_GT(coarser, 1000u);
+  EXPECT_GT(compared_sized, 1200u);
+  EXPECT_GT(inside, 20u);  // the eye inside the sphere: level 0 by both rules
 }
 
 // Per leaf of each tree, the level of the node drawn over it.

@@ -16,6 +16,7 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -42,7 +43,11 @@ bake::testing::TestMesh bumpy_wall() {
 class ClusterRun : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dir_ = std::filesystem::path(GAZELOD_BINARY_DIR) / "test-scratch" / "ClusterRunSuite";
+    // One folder per process: CTest runs each test of the suite as its own process, two at a
+    // time under -j2, and a shared folder removed by one while the other reads its bake made the
+    // other's setup fail (reported as skipped).
+    dir_ = std::filesystem::path(GAZELOD_BINARY_DIR) / "test-scratch" /
+           ("ClusterRunSuite-" + std::to_string(::getpid()));
     std::filesystem::remove_all(dir_);
     std::filesystem::create_directories(dir_);
     // The wall 12 m ahead of a viewer at eye height; a copy stretched along Y far to the side
@@ -73,6 +78,10 @@ class ClusterRun : public ::testing::Test {
         { "type": "tracker_noise", "std_deg": 0.3 }
       ]
     })";
+  }
+  static void TearDownTestSuite() {
+    std::error_code ignored;
+    std::filesystem::remove_all(dir_, ignored);
   }
   void SetUp() override { use_simulated_runtime(""); }
 

@@ -5,11 +5,9 @@
 #include "bake/cluster_lod_gltf.hpp"
 #include "bake/gltf_load.hpp"
 #include "bake/mesh_extract.hpp"
+#include "bake/node_world.hpp"
 #include "lod/object_set.hpp"
 
-#include <glm/gtc/matrix_transform.hpp>
-#include <glm/gtc/quaternion.hpp>
-#include <glm/gtc/type_ptr.hpp>
 #include <glm/mat4x4.hpp>
 
 #include <algorithm>
@@ -19,16 +17,6 @@ namespace gazelod::bake {
 namespace {
 
 using tinygltf::Value;
-
-glm::dmat4 local_matrix(const tinygltf::Node& n) {
-  if (n.matrix.size() == 16) return glm::make_mat4(n.matrix.data());  // column-major, as glTF
-  glm::dmat4 m(1.0);
-  if (n.translation.size() == 3) m = glm::translate(m, glm::dvec3(n.translation[0], n.translation[1], n.translation[2]));
-  if (n.rotation.size() == 4)  // glTF stores x, y, z, w
-    m *= glm::mat4_cast(glm::dquat(n.rotation[3], n.rotation[0], n.rotation[1], n.rotation[2]));
-  if (n.scale.size() == 3) m = glm::scale(m, glm::dvec3(n.scale[0], n.scale[1], n.scale[2]));
-  return m;
-}
 
 struct Reader {
   const std::string& path;
@@ -152,7 +140,7 @@ struct Reader {
     if (on_path[static_cast<std::size_t>(node)]) fail("/nodes/" + std::to_string(node), "node graph has a cycle");
     on_path[static_cast<std::size_t>(node)] = true;
     const tinygltf::Node& n = m.nodes[static_cast<std::size_t>(node)];
-    const glm::dmat4 world = parent * local_matrix(n);
+    const glm::dmat4 world = parent * node_local_matrix(n);
     if (n.mesh >= 0) {
       if (static_cast<std::size_t>(n.mesh) >= m.meshes.size())
         fail("/nodes/" + std::to_string(node) + "/mesh", "no such mesh");

@@ -8,6 +8,8 @@
 #include "bake/gltf_load.hpp"
 #include "bake/gltf_pack.hpp"
 #include "bake/mesh_extract.hpp"
+#include "bake/node_world.hpp"
+#include "bake/shared_positions.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -26,15 +28,17 @@ double seconds_since(Clock::time_point t0) {
 
 double per_second(double n, double seconds) { return seconds > 0.0 ? n / seconds : 0.0; }
 
-ClusterPrimitiveReport bake_primitive(tinygltf::Model& m, int mesh, int primitive,
-                                      const ClusterBakeOptions& o, std::uint64_t& input_triangles) {
+ClusterPrimitiveReport bake_primitive(tinygltf::Model& m, int mesh, int primitive, const PrimitiveGeometry& g,
+                                      std::span<const std::uint8_t> locked, const ClusterBakeOptions& o,
+                                      std::uint64_t& input_triangles) {
   ClusterPrimitiveReport rep;
   rep.mesh = mesh, rep.primitive = primitive;
   rep.label = primitive_label(m, mesh, primitive);
-  const PrimitiveGeometry g = extract_primitive(m, mesh, primitive);
   input_triangles += g.indices.size() / 3;
   ClusterBuildOptions b = o.build;
   b.label = rep.label;
+  b.locked_vertices = locked;
+  rep.shared_vertices = static_cast<std::size_t>(std::count_if(locked.begin(), locked.end(), [](std::uint8_t f) { return f != 0; }));
   const auto t0 = Clock::now();
   const ClusterBuildResult r = build_cluster_hierarchy(g.positions_xyz, g.indices, b);
   rep.build_seconds = seconds_since(t0);
@@ -54,6 +58,25 @@ ClusterPrimitiveReport bake_primitive(tinygltf::Model& m, int mesh, int primitiv
 
 }  // namespace
 
+std::vector<std::vector<std::vector<std::uint8_t>>> meeting_vertices(
+    const tinygltf::Model& m, const std::vector<std::vector<PrimitiveGeometry>>& geometry) {
+  const std::vector<MeshInstance> instances = mesh_instances(m);
+  std::vector<PlacedPrimitive> placed;
+  for (std::size_t mi = 0; mi < geometry.size(); ++mi)
+    for (const PrimitiveGeometry& g : geometry[mi]) {
+      PlacedPrimitive pp{g.positions_xyz, g.indices, {}};
+      for (const MeshInstance& i : instances)
+        if (i.mesh == static_cast<int>(mi)) pp.world.push_back(i.world);
+      placed.push_back(std::move(pp));
+    }
+  std::vector<std::vector<std::uint8_t>> flat = shared_positions(placed);
+  std::vector<std::vector<std::vector<std::uint8_t>>> out(geometry.size());
+  std::size_t at = 0;
+  for (std::size_t mi = 0; mi < geometry.size(); ++mi)
+    for (std::size_t p = 0; p < geometry[mi].size(); ++p) out[mi].push_back(std::move(flat[at++]));
+  return out;
+}
+
 ClusterBakeReport bake_clusters_model(tinygltf::Model& m, const ClusterBakeOptions& o) {
   const auto t0 = Clock::now();
   if (std::string e = validate_cluster_options(o.build); !e.empty()) throw BakeError(e);
@@ -64,6 +87,14 @@ ClusterBakeReport bake_clusters_model(tinygltf::Model& m, const ClusterBakeOptio
     if (n.mesh >= 0 && static_cast<std::size_t>(n.mesh) < m.meshes.size())
       used[static_cast<std::size_t>(n.mesh)] = true;
   report.meshes = static_cast<std::size_t>(std::count(used.begin(), used.end(), true));
+  // Every used primitive's geometry first: where meshes meet is locked in each of them.
+  std::vector<std::vector<PrimitiveGeometry>> geometry(m.meshes.size());
+  for (std::size_t mi = 0; mi < m.meshes.size(); ++mi)
+    if (used[mi])
+      for (std::size_t p = 0; p < m.meshes[mi].primitives.size(); ++p)
+        geometry[mi].push_back(extract_primitive(m, static_cast<int>(mi), static_cast<int>(p)));
+  const auto shared = o.build.lock_open_borders ? std::vector<std::vector<std::vector<std::uint8_t>>>(m.meshes.size())
+                                                : meeting_vertices(m, geometry);
   std::size_t done = 0;
   for (std::size_t mi = 0; mi < m.meshes.size(); ++mi) {
     if (!used[mi]) continue;
@@ -77,7 +108,10 @@ ClusterBakeReport bake_clusters_model(tinygltf::Model& m, const ClusterBakeOptio
     std::uint32_t levels = 0;
     double build_s = 0.0;
     for (std::size_t p = 0; p < prims; ++p) {
-      ClusterPrimitiveReport rep = bake_primitive(m, mesh, static_cast<int>(p), o, report.input_triangles);
+      const std::span<const std::uint8_t> locked = shared[mi].empty() ? std::span<const std::uint8_t>{} : shared[mi][p];
+      ClusterPrimitiveReport rep =
+          bake_primitive(m, mesh, static_cast<int>(p), geometry[mi][p], locked, o, report.input_triangles);
+      report.shared_vertices += rep.shared_vertices;
       tris += rep.source_triangles + rep.degenerate_triangles, degenerate += rep.degenerate_triangles;
       clusters += rep.clusters, top += rep.top_triangles, levels = std::max(levels, rep.levels);
       build_s += rep.build_seconds;
@@ -87,6 +121,7 @@ ClusterBakeReport bake_clusters_model(tinygltf::Model& m, const ClusterBakeOptio
         report.primitives.push_back(std::move(rep));
     }
     report.build_seconds += build_s;
+    std::vector<PrimitiveGeometry>().swap(geometry[mi]);
     ++done;
     if (o.progress) {
       char line[320];
@@ -150,6 +185,9 @@ std::string format_cluster_summary(const ClusterBakeReport& r) {
                 r.meshes, r.primitives.size(), static_cast<unsigned long long>(r.input_triangles),
                 r.build_seconds, per_second(double(r.input_triangles), r.build_seconds), r.seconds);
   s << line;
+  if (r.shared_vertices > 0)
+    s << "kept at every level: " << r.shared_vertices
+      << " vertices where primitives meet (open borders elsewhere are simplified)\n";
   for (const std::string& w : r.warnings) s << "warning: " << w << "\n";
   return s.str();
 }

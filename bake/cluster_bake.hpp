@@ -7,6 +7,7 @@
 #pragma once
 
 #include "bake/cluster_build.hpp"
+#include "bake/mesh_extract.hpp"
 
 #include <tiny_gltf.h>
 
@@ -30,6 +31,7 @@ struct ClusterPrimitiveReport {
   std::size_t clusters = 0, groups = 0, top_clusters = 0, top_triangles = 0;
   std::size_t stored_triangles = 0;    // all levels
   std::uint32_t levels = 0;
+  std::size_t shared_vertices = 0;     // where another primitive or instance meets it: locked
   double build_seconds = 0.0;          // build_cluster_hierarchy alone
 };
 
@@ -38,9 +40,17 @@ struct ClusterBakeReport {
   std::vector<std::string> warnings;
   std::size_t meshes = 0;               // meshes used by at least one node
   std::uint64_t input_triangles = 0;    // of those meshes, degenerate ones included
+  std::size_t shared_vertices = 0;      // all primitives' (ClusterPrimitiveReport)
   double build_seconds = 0.0;           // hierarchy builds, all primitives
   double seconds = 0.0;                 // everything (with reading and writing for a file)
 };
+
+// Per mesh, per primitive, per vertex: 1 where the primitive's open border meets another
+// primitive or instance of the scene (bake/shared_positions.hpp); the bake keeps those at every
+// level unless build.lock_open_borders (then it keeps every open border). geometry[mesh]: the
+// mesh's primitives, empty for a mesh the bake skips.
+std::vector<std::vector<std::vector<std::uint8_t>>> meeting_vertices(
+    const tinygltf::Model& model, const std::vector<std::vector<PrimitiveGeometry>>& geometry);
 
 // Bakes a loaded model in place. Throws BakeError naming the mesh and primitive for geometry it
 // cannot handle; the model is then unusable.

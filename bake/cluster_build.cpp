@@ -71,6 +71,10 @@ class Builder {
 
   ClusterBuildResult run(std::span<const std::uint32_t> source) {
     weld_ = weld_positions(pos_);
+    locked_.assign(pos_.size() / 3, 0);  // per welded vertex
+    for (std::size_t v = 0; v < o_.locked_vertices.size(); ++v)
+      if (o_.locked_vertices[v]) locked_[weld_[v]] = 1;
+    group_of_.assign(pos_.size() / 3, kNone);
     std::vector<std::uint32_t> kept;
     kept.reserve(source.size());
     for (std::size_t t = 0; t < source.size(); t += 3) {
@@ -135,7 +139,7 @@ class Builder {
     }
   }
 
-  // One group: merge, simplify with the border locked, split, then measure against the source.
+  // One group: merge, simplify with its shared border locked, split, then measure against the source.
   // Reads only the clusters' data.
   void simplify_group(const std::vector<std::uint32_t>& members, Scratch& s, Piece& p) const {
     const lod::ClusterHierarchy& h = out_.hierarchy;
@@ -149,12 +153,23 @@ class Builder {
     }
     p.sphere = enclosing_sphere(s.spheres);
     const std::size_t vcount = s.global_of.size();
+    // meshopt 0.18 has no per-vertex lock (vertex_lock came in 0.21), but it never moves a
+    // position that three or more vertices share ("many wedges", Kind_Locked in its
+    // classifyVertices), unreferenced ones included: two unused copies lock a vertex.
+    if (!o_.lock_open_borders)
+      for (std::size_t l = 0; l < vcount; ++l)
+        if (shared_[weld_[s.global_of[l]]]) {
+          const float x = s.local_xyz[3 * l], y = s.local_xyz[3 * l + 1], z = s.local_xyz[3 * l + 2];
+          s.local_xyz.insert(s.local_xyz.end(), {x, y, z, x, y, z});
+        }
     const std::size_t target = 3 * static_cast<std::size_t>(double(s.local.size() / 3) * o_.simplify_ratio);
     s.simplified.resize(s.local.size());
-    const std::size_t n = target < 3 ? 0
-                                     : meshopt_simplify(s.simplified.data(), s.local.data(), s.local.size(),
-                                                        s.local_xyz.data(), vcount, 3 * sizeof(float), target,
-                                                        FLT_MAX, meshopt_SimplifyLockBorder, nullptr);
+    const std::size_t n =
+        target < 3 ? 0
+                   : meshopt_simplify(s.simplified.data(), s.local.data(), s.local.size(), s.local_xyz.data(),
+                                      s.local_xyz.size() / 3, 3 * sizeof(float), target, FLT_MAX,
+                                      o_.lock_open_borders ? unsigned(meshopt_SimplifyLockBorder) : 0u, nullptr);
+    s.local_xyz.resize(3 * vcount);  // the copies go before the split
     if (n > 0 && double(n) <= o_.stuck_ratio * double(s.local.size())) {
       p.simplified = true;
       split(s, std::span<const std::uint32_t>(s.simplified.data(), n), p);
@@ -245,6 +260,7 @@ class Builder {
         grouper.group({out_.indices, weld_, first, count, bounds}, o_.group_size);
     for (auto& g : groups)
       for (std::uint32_t& m : g) m = pending[m];
+    mark_shared(groups);
 
     std::vector<Piece> pieces(groups.size());
     parallel_for(groups.size(), [&](std::size_t g, Scratch& s) { simplify_group(groups[g], s, pieces[g]); });
@@ -254,7 +270,12 @@ class Builder {
       Piece& p = pieces[g];
       for (std::uint32_t c : groups[g]) std::vector<std::uint32_t>().swap(owned_[c]);  // passed on
       if (!p.simplified) {  // stuck: these clusters are the top here
-        for (std::uint32_t c : groups[g]) set_parent(c, p.sphere, lod::kNoParentError, -1);
+        for (std::uint32_t c : groups[g]) {
+          set_parent(c, p.sphere, lod::kNoParentError, -1);
+          // Drawn beside every later level: whatever touches them there must stay.
+          for (std::uint32_t i = h.first_index[c]; i < h.first_index[c] + h.index_count[c]; ++i)
+            locked_[weld_[out_.indices[i]]] = 1;
+        }
         continue;
       }
       const auto id = static_cast<std::int32_t>(out_.groups++);
@@ -264,6 +285,23 @@ class Builder {
       add_clusters(p, depth + 1, id);
     }
     return next;
+  }
+
+  // shared_ per welded vertex: locked_, or used by two groups of this level.
+  void mark_shared(const std::vector<std::vector<std::uint32_t>>& groups) {
+    const lod::ClusterHierarchy& h = out_.hierarchy;
+    shared_ = locked_;
+    for (std::size_t g = 0; g < groups.size(); ++g)
+      for (std::uint32_t c : groups[g])
+        for (std::uint32_t i = h.first_index[c]; i < h.first_index[c] + h.index_count[c]; ++i) {
+          std::uint32_t& owner = group_of_[weld_[out_.indices[i]]];
+          if (owner == kNone) owner = static_cast<std::uint32_t>(g);
+          else if (owner != g) shared_[weld_[out_.indices[i]]] = 1;
+        }
+    for (const auto& members : groups)
+      for (std::uint32_t c : members)
+        for (std::uint32_t i = h.first_index[c]; i < h.first_index[c] + h.index_count[c]; ++i)
+          group_of_[weld_[out_.indices[i]]] = kNone;
   }
 
   // Runs task(i, scratch) for i < count on the configured threads. Every task writes only its
@@ -296,6 +334,10 @@ class Builder {
   std::span<const float> pos_;
   const ClusterBuildOptions& o_;
   std::vector<std::uint32_t> weld_;
+  // Per welded vertex: locked by the caller or by a top cluster; locked at this level (also used
+  // by two groups); the group using it (scratch).
+  std::vector<std::uint8_t> locked_, shared_;
+  std::vector<std::uint32_t> group_of_;
   std::vector<Sphere> self_;  // self spheres, as Sphere (hierarchy holds the same, split up)
   // Per cluster not yet grouped: the source vertices it answers for (measure()).
   std::vector<std::vector<std::uint32_t>> owned_;
@@ -341,6 +383,9 @@ ClusterBuildResult build_cluster_hierarchy(std::span<const float> pos,
         << ", " << pos[3 * v + 2] << ") is not finite";
       throw BakeError(m.str());
     }
+  if (!o.locked_vertices.empty() && o.locked_vertices.size() != vcount)
+    throw BakeError(o.label + ": " + std::to_string(o.locked_vertices.size()) + " locked-vertex flags for " +
+                    std::to_string(vcount) + " vertices");
   for (std::size_t i = 0; i < indices.size(); ++i)
     if (indices[i] >= vcount)
       throw BakeError(o.label + ": index " + std::to_string(i) + " is " + std::to_string(indices[i]) +

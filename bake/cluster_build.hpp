@@ -2,8 +2,11 @@
 // Karis et al. 2021 (Nanite) and meshoptimizer's cluster-LOD demo:
 //   1. the source triangles are split into clusters (bake/cluster_split.hpp);
 //   2. neighbouring clusters are grouped (bake/cluster_group.hpp);
-//   3. each group's triangles are simplified to about half with meshopt_SimplifyLockBorder, so
-//      the group's outer border stays vertex for vertex what its neighbours see;
+//   3. each group's triangles are simplified to about half with every vertex another group of
+//      the level also uses locked, so the border between groups stays vertex for vertex what
+//      the neighbours see (no crack); the mesh's own open border (an edge one triangle uses: a
+//      terrain's rim, a building's open base) is simplified along itself like any other detail,
+//      unless `lock_open_borders`;
 //   4. the result is split into new clusters, which go back to step 2;
 // until one cluster is left or no group simplifies any more (a group that keeps more than
 // `stuck_ratio` of its triangles is not simplified: its clusters are the top of the hierarchy,
@@ -35,12 +38,18 @@
 namespace gazelod::bake {
 
 struct ClusterBuildOptions {
-  std::size_t max_vertices = 64;    // per cluster, 3..255 (meshopt_buildMeshlets)
+  std::size_t max_vertices = 64;    // per cluster, 3..255 (bake/cluster_split.hpp)
   std::size_t max_triangles = 124;  // per cluster, 4..512 and a multiple of 4 (meshopt 0.18)
   std::size_t group_size = 8;       // clusters per group, >= 2
   double simplify_ratio = 0.5;      // each group is simplified to this share of its triangles
   double stuck_ratio = 0.85;        // more than this share left: the group does not simplify
   unsigned threads = 0;             // groups of a level simplified in parallel; 0: all cores
+  // true: every open border stays at source resolution too (meshopt_SimplifyLockBorder), for
+  // parts whose rims meet geometry the bake cannot see.
+  bool lock_open_borders = false;
+  // Empty, or one per input vertex: nonzero keeps that position at every level (a border
+  // shared with another primitive: bake/shared_positions.hpp).
+  std::span<const std::uint8_t> locked_vertices;
   std::string label = "mesh";       // names the mesh in error messages
 };
 
@@ -62,8 +71,8 @@ std::string validate_cluster_options(const ClusterBuildOptions& options);
 
 // positions_xyz: 3 floats per vertex; indices: a triangle list. Throws BakeError
 // "<label>: ..." for bad options, a position that is not finite ("vertex 12 ..."), an index out
-// of range ("index 7 is 40, but there are only 30 vertices") or an index count that is not a
-// multiple of 3. Degenerate triangles are dropped and counted. No triangles left: an empty
+// of range ("index 7 is 40, but there are only 30 vertices"), an index count that is not a
+// multiple of 3 or locked_vertices of the wrong size. Degenerate triangles are dropped and counted. No triangles left: an empty
 // hierarchy. At most one cluster's worth: one cluster, depth 0, parent error kNoParentError.
 ClusterBuildResult build_cluster_hierarchy(std::span<const float> positions_xyz,
                                            std::span<const std::uint32_t> indices,

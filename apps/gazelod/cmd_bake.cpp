@@ -1,8 +1,8 @@
 // gazelod bake IN.gltf|IN.glb -o OUT.glb [--levels N | --ratios r1,r2,...] [--target-error E]
 // [--lock-borders] [--profile 6|18]:
 // an MSFT_lod chain per mesh node (bake/bake.hpp). Progress on stderr, the summary on stdout.
-// gazelod bake --clusters IN OUT.glb (or -o OUT.glb): a cluster hierarchy per mesh primitive
-// instead, stored as GAZELOD_cluster_lod (bake/cluster_bake.hpp, docs/bake.md).
+// gazelod bake --clusters IN OUT.glb (or -o OUT.glb) [--lock-borders]: a cluster hierarchy per
+// mesh primitive instead, stored as GAZELOD_cluster_lod (bake/cluster_bake.hpp, docs/bake.md).
 // --profile renders every level from 6 or 18 viewpoints (Reddy's perceptual profile, Vulkan on
 // lavapipe, bake/profile_render.hpp) and stores extras.gazelod_lod.rendered_cycles_per_diameter;
 // off by default so a plain bake stays fast.
@@ -44,9 +44,10 @@ std::string output_path(const Options& o) {
 int run_clusters(const Options& o, const std::string& out, Io io) {
   for (const auto& [set, name] : {std::pair{o.levels != 0, "--levels"}, {!o.ratios.empty(), "--ratios"},
                                   {!o.target_error.empty(), "--target-error"},
-                                  {o.lock_borders, "--lock-borders"}, {o.profile != 0, "--profile"}})
+                                  {o.profile != 0, "--profile"}})
     if (set) throw UsageError(std::string("--clusters: cannot be combined with ") + name);
   bake::ClusterBakeOptions opts;
+  opts.build.lock_open_borders = o.lock_borders;
   opts.progress = [&io](const std::string& line) { io.err << line << '\n' << std::flush; };
   try {
     io.out << bake::format_cluster_summary(bake::bake_clusters_file(o.input, out, opts));
@@ -134,7 +135,8 @@ const Registrar reg(
                      "cap on meshoptimizer's error estimate per level, relative to the mesh extent (default 1 = no "
                      "limit; the stored error_m is measured and can be larger)");
       app.add_flag("--lock-borders", o->lock_borders,
-                   "keep open borders in place (no cracks between a mesh's primitives)");
+                   "keep open borders in place (chains: no cracks between a mesh's primitives; "
+                   "--clusters: also borders that meet no other primitive, which are simplified by default)");
       app.add_option("--profile", o->profile,
                      "render each level from 6 or 18 viewpoints and store Reddy's rendered "
                      "figure (Vulkan; off by default)");

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -54,13 +55,39 @@ TEST(ClusterBuild, ClosedSphereStaysClosedAtEveryCut) {
     }
 }
 
-TEST(ClusterBuild, OpenGridKeepsItsBorderAtEveryCut) {
+// The grid's rim meets nothing: it is simplified along itself like the rest (meshopt 0.18's
+// LockBorder would keep all 320 rim edges at every level), while what two groups share stays.
+TEST(ClusterBuild, OpenGridSimplifiesItsRimWithoutCrack) {
   const testing::TestMesh m = testing::grid(80, 2.0, 0.2);  // 12800 triangles
   const ClusterBuildResult r = build_cluster_hierarchy(m.positions, m.indices);
-  EXPECT_FALSE(testing::open_edges(m.positions, m.indices).empty());
+  const std::size_t rim = testing::open_edges(m.positions, m.indices).size();
+  EXPECT_EQ(rim, 320u);
   testing::expect_hierarchy_invariants(r, m.positions, m.indices);
   EXPECT_GE(r.levels, 4u);
-  EXPECT_LT(top_triangles(r), m.triangles() / 4);
+  EXPECT_LT(top_triangles(r), m.triangles() / 8);
+  const std::size_t top_rim = testing::open_edges(m.positions, testing::cut(r, FLT_MAX)).size();
+  EXPECT_LT(top_rim, rim / 4) << "the top's rim is simplified too";
+  EXPECT_GE(top_rim, 4u);
+}
+
+// --lock-borders, or every rim vertex flagged as meeting another primitive: the rim stays
+// vertex for vertex at every cut (expect_hierarchy_invariants checks it exactly then).
+TEST(ClusterBuild, LockedRimStaysAtEveryCut) {
+  const testing::TestMesh m = testing::grid(80, 2.0, 0.2);
+  const testing::OpenEdges rim = testing::open_edges(m.positions, m.indices);
+  ClusterBuildOptions all;
+  all.lock_open_borders = true;
+  std::vector<std::uint8_t> flags(m.positions.size() / 3, 0);
+  for (const auto& [e, count] : rim) flags[e.first] = flags[e.second] = 1;  // grid() has no duplicates
+  ClusterBuildOptions flagged;
+  flagged.locked_vertices = flags;
+  for (const ClusterBuildOptions* o : {&all, &flagged}) {
+    SCOPED_TRACE(o == &all ? "lock_open_borders" : "locked_vertices");
+    const ClusterBuildResult r = build_cluster_hierarchy(m.positions, m.indices, *o);
+    testing::expect_hierarchy_invariants(r, m.positions, m.indices, *o);
+    EXPECT_TRUE(testing::open_edges(m.positions, testing::cut(r, FLT_MAX)) == rim);
+    EXPECT_GE(r.levels, 3u);
+  }
 }
 
 TEST(ClusterBuild, SeparatePiecesAreGroupedByPlace) {
@@ -244,6 +271,10 @@ TEST(ClusterBuild, BadInputNamesMeshAndPlace) {
   EXPECT_HAS(build_error(m, o), "mesh 3 'Rock': 25 indices is not a whole number of triangles");
   m.indices.pop_back();
   EXPECT_EQ(build_error(m, o), "");
+  const std::vector<std::uint8_t> flags(8, 1);
+  o.locked_vertices = flags;
+  EXPECT_HAS(build_error(m, o), "mesh 3 'Rock': 8 locked-vertex flags for 9 vertices");
+  o.locked_vertices = {};
   o.max_triangles = 126;
   EXPECT_HAS(build_error(m, o), "max triangles per cluster must be a multiple of 4 in [4, 512], got 126");
   o.max_triangles = 124, o.max_vertices = 256;

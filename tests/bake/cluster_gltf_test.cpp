@@ -67,11 +67,14 @@ TEST(ClusterGltf, RoundTripGivesTheBuiltHierarchy) {
   ASSERT_EQ(scene.cluster_meshes.size(), 2u);
   ASSERT_EQ(scene.cluster_meshes[1].primitives.size(), 2u);
   const tinygltf::Model original = load_gltf(b.in).model;
+  const auto locks = testing::meeting_vertices_of(original);
   for (const BakedClusterMesh& m : scene.cluster_meshes)
     for (const BakedClusterPrimitive& p : m.primitives) {
       SCOPED_TRACE(primitive_label(original, m.mesh, p.primitive));
       const PrimitiveGeometry g = extract_primitive(original, m.mesh, p.primitive);
-      const ClusterBuildResult direct = build_cluster_hierarchy(g.positions_xyz, g.indices);
+      ClusterBuildOptions o;
+      o.locked_vertices = locks[static_cast<std::size_t>(m.mesh)][static_cast<std::size_t>(p.primitive)];
+      const ClusterBuildResult direct = build_cluster_hierarchy(g.positions_xyz, g.indices, o);
       expect_same(p.hierarchy, direct.hierarchy);
       EXPECT_EQ(p.indices, direct.indices);
       EXPECT_EQ(p.levels, direct.levels);

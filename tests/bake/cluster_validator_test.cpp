@@ -92,15 +92,18 @@ TEST(ClusterValidator, RealModelBakesValidatesAndKeepsItsInvariants) {
   const BakedScene scene = load_baked(out);
   EXPECT_EQ(scene.cluster_meshes.size(), 29u);
   const tinygltf::Model original = load_gltf(model).model;
+  const auto locks = testing::meeting_vertices_of(original);
   for (const BakedClusterMesh& m : scene.cluster_meshes)
     for (const BakedClusterPrimitive& p : m.primitives) {
       SCOPED_TRACE(primitive_label(original, m.mesh, p.primitive));
       const PrimitiveGeometry g = extract_primitive(original, m.mesh, p.primitive);
+      ClusterBuildOptions o;
+      o.locked_vertices = locks[static_cast<std::size_t>(m.mesh)][static_cast<std::size_t>(p.primitive)];
       ClusterBuildResult r;  // what was stored, with the group links the file does not keep
-      r = build_cluster_hierarchy(g.positions_xyz, g.indices);
+      r = build_cluster_hierarchy(g.positions_xyz, g.indices, o);
       EXPECT_EQ(r.indices, p.indices);
       EXPECT_EQ(r.hierarchy.parent_error_m, p.hierarchy.parent_error_m);
-      testing::expect_hierarchy_invariants(r, g.positions_xyz, g.indices);
+      testing::expect_hierarchy_invariants(r, g.positions_xyz, g.indices, o);
     }
   if (const std::string node_path = validator_path(); !node_path.empty()) {
     const Validation in = validate(node_path, model), v = validate(node_path, out);

@@ -19,6 +19,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <set>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -180,8 +181,8 @@ TEST_F(ClusterRun, RenderedFrameShowsTheClusters) {
 }
 
 // Undirected edges on exactly one triangle of `drawn`'s clusters, sorted: simplification keeps
-// the source's vertex indices and locks group borders, so a crack leaves an edge single that
-// the source's own border does not have.
+// the source's vertex indices and locks group borders, so a crack leaves an edge single away
+// from the source's own rim.
 std::vector<std::uint64_t> single_edges(const bake::BakedClusterPrimitive& p, std::span<const std::uint8_t> drawn) {
   std::vector<std::uint64_t> keys;
   for (std::size_t c = 0; c < drawn.size(); ++c) {
@@ -213,6 +214,15 @@ TEST_F(ClusterRun, EveryFrameOfAWalkCoversEachLeafExactlyOnce) {
   for (std::size_t c = 0; c < n; ++c) leaves[c] = wall.hierarchy.depth[c] == 0;
   const std::vector<std::uint64_t> border = single_edges(wall, leaves);
   ASSERT_FALSE(border.empty());
+  // The wall's own rim meets nothing, so the bake simplifies it along itself: a cut may leave
+  // single any edge between two rim vertices, and no other (that would be a crack).
+  std::set<std::uint32_t> rim;
+  for (std::uint64_t e : border) rim.insert({static_cast<std::uint32_t>(e >> 32), static_cast<std::uint32_t>(e)});
+  const auto inside = [&](const std::vector<std::uint64_t>& single) {
+    return std::count_if(single.begin(), single.end(), [&](std::uint64_t e) {
+      return !rim.contains(static_cast<std::uint32_t>(e >> 32)) || !rim.contains(static_cast<std::uint32_t>(e));
+    });
+  };
   cli::ClusterCover cover(wall.hierarchy);
   std::vector<cli::LeafCover> covers(cover.leaves().size());
 
@@ -233,7 +243,7 @@ TEST_F(ClusterRun, EveryFrameOfAWalkCoversEachLeafExactlyOnce) {
     ASSERT_EQ(diag.cluster_drawn_perceptual.size(), n);
     for (const auto cut : {d.cluster_drawn, diag.cluster_drawn_perceptual}) {
       EXPECT_EQ(cover.evaluate(cut, covers), 0u) << "leaves not covered exactly once";
-      EXPECT_EQ(single_edges(wall, cut), border) << "a crack or an overlap";
+      EXPECT_EQ(inside(single_edges(wall, cut)), 0) << "a crack";
     }
     coarser += !std::equal(d.cluster_drawn.begin(), d.cluster_drawn.end(), leaves.begin());
   };

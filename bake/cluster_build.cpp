@@ -25,6 +25,9 @@ namespace {
 
 constexpr std::uint32_t kNone = ~0u;
 constexpr std::size_t kMaxDepth = 255;  // depth is stored as uint8
+// meshopt's error estimate (relative to the group's extent) up to which a collapse is free:
+// float noise on coplanar or collinear collapses.
+constexpr float kFreeErrorRel = 1e-5f;
 
 // New clusters made by one parallel task: a chunk of the source mesh split into clusters
 // (spheres: each cluster's own), or one group simplified and split (sphere, error: the group's).
@@ -164,11 +167,16 @@ class Builder {
         }
     const std::size_t target = 3 * static_cast<std::size_t>(double(s.local.size() / 3) * o_.simplify_ratio);
     s.simplified.resize(s.local.size());
-    const std::size_t n =
-        target < 3 ? 0
-                   : meshopt_simplify(s.simplified.data(), s.local.data(), s.local.size(), s.local_xyz.data(),
-                                      s.local_xyz.size() / 3, 3 * sizeof(float), target, FLT_MAX,
-                                      o_.lock_open_borders ? unsigned(meshopt_SimplifyLockBorder) : 0u, nullptr);
+    auto simplify = [&](std::size_t target_indices, float error_limit, float* error_rel) {
+      return meshopt_simplify(s.simplified.data(), s.local.data(), s.local.size(), s.local_xyz.data(),
+                              s.local_xyz.size() / 3, 3 * sizeof(float), target_indices, error_limit,
+                              o_.lock_open_borders ? unsigned(meshopt_SimplifyLockBorder) : 0u, error_rel);
+    };
+    float error_rel = 0.0f;  // meshopt's estimate, relative to the group's extent
+    std::size_t n = target < 3 ? 0 : simplify(target, FLT_MAX, &error_rel);
+    // Reached at no error (flat panels, a box's walls): take every free collapse, past the
+    // target, rather than leave free detail to a level that may have to force collapses.
+    if (n > 0 && error_rel <= kFreeErrorRel) n = simplify(0, kFreeErrorRel, nullptr);
     s.local_xyz.resize(3 * vcount);  // the copies go before the split
     if (n > 0 && double(n) <= o_.stuck_ratio * double(s.local.size())) {
       p.simplified = true;

@@ -44,6 +44,7 @@ ClusterPrimitiveReport bake_primitive(tinygltf::Model& m, int mesh, int primitiv
   rep.build_seconds = seconds_since(t0);
   rep.source_triangles = r.source_triangles;
   rep.degenerate_triangles = r.degenerate_triangles;
+  rep.folded_triangles = r.folded_triangles;
   rep.clusters = r.hierarchy.size();
   rep.groups = r.groups;
   rep.levels = r.levels;
@@ -111,7 +112,7 @@ ClusterBakeReport bake_clusters_model(tinygltf::Model& m, const ClusterBakeOptio
       const std::span<const std::uint8_t> locked = shared[mi].empty() ? std::span<const std::uint8_t>{} : shared[mi][p];
       ClusterPrimitiveReport rep =
           bake_primitive(m, mesh, static_cast<int>(p), geometry[mi][p], locked, o, report.input_triangles);
-      report.shared_vertices += rep.shared_vertices;
+      report.shared_vertices += rep.shared_vertices, report.folded_triangles += rep.folded_triangles;
       tris += rep.source_triangles + rep.degenerate_triangles, degenerate += rep.degenerate_triangles;
       clusters += rep.clusters, top += rep.top_triangles, levels = std::max(levels, rep.levels);
       build_s += rep.build_seconds;
@@ -188,6 +189,9 @@ std::string format_cluster_summary(const ClusterBakeReport& r) {
   if (r.shared_vertices > 0)
     s << "kept at every level: " << r.shared_vertices
       << " vertices where primitives meet (open borders elsewhere are simplified)\n";
+  if (r.folded_triangles > 0)
+    s << "folded over by meshoptimizer 0.18's simplifier (facing against the surface they replace): "
+      << r.folded_triangles << " of the stored simplified triangles\n";
   for (const std::string& w : r.warnings) s << "warning: " << w << "\n";
   return s.str();
 }

@@ -32,6 +32,7 @@ struct ClusterPrimitiveReport {
   std::size_t stored_triangles = 0;    // all levels
   std::uint32_t levels = 0;
   std::size_t shared_vertices = 0;     // where another primitive or instance meets it: locked
+  std::size_t folded_triangles = 0;    // ClusterBuildResult's
   double build_seconds = 0.0;          // build_cluster_hierarchy alone
 };
 
@@ -40,7 +41,7 @@ struct ClusterBakeReport {
   std::vector<std::string> warnings;
   std::size_t meshes = 0;               // meshes used by at least one node
   std::uint64_t input_triangles = 0;    // of those meshes, degenerate ones included
-  std::size_t shared_vertices = 0;      // all primitives' (ClusterPrimitiveReport)
+  std::size_t shared_vertices = 0, folded_triangles = 0;  // all primitives' sums
   double build_seconds = 0.0;           // hierarchy builds, all primitives
   double seconds = 0.0;                 // everything (with reading and writing for a file)
 };

@@ -64,6 +64,9 @@ struct ClusterBuildResult {
   std::uint32_t levels = 0;              // largest depth + 1; 0 for an empty mesh
   std::size_t source_triangles = 0;      // input triangles that were kept
   std::size_t degenerate_triangles = 0;  // dropped: two corners at the same position
+  // Stored triangles of simplified levels that meshopt folded over (bake/cluster_flips.hpp):
+  // a known meshoptimizer 0.18 defect, counted so that a bake says how much of it it holds.
+  std::size_t folded_triangles = 0;
 };
 
 // "" or a message naming the bad option.

@@ -5,6 +5,7 @@
 #include "bake/bake_error.hpp"
 #include "bake/cluster_build.hpp"
 #include "bake/cluster_distance.hpp"
+#include "bake/cluster_flips.hpp"
 #include "bake/cluster_split.hpp"
 #include "tests/bake/cluster_invariants.hpp"
 #include "tests/bake/test_meshes.hpp"
@@ -15,6 +16,7 @@
 #include <array>
 #include <cfloat>
 #include <cmath>
+#include <map>
 #include <cstdio>
 #include <limits>
 #include <random>
@@ -88,6 +90,32 @@ TEST(ClusterBuild, LockedRimStaysAtEveryCut) {
     EXPECT_TRUE(testing::open_edges(m.positions, testing::cut(r, FLT_MAX)) == rim);
     EXPECT_GE(r.levels, 3u);
   }
+}
+
+// A triangle facing against the surface it replaces is a fold; the same triangles are not.
+TEST(ClusterBuild, FoldsAreTrianglesFacingAgainstTheirCorners) {
+  const testing::TestMesh m = testing::grid(4, 1.0, 0.0);  // flat, 32 triangles
+  std::vector<float> normals;
+  EXPECT_EQ(count_flipped(m.positions, m.indices, m.indices, normals), 0u);
+  std::vector<std::uint32_t> turned = m.indices;
+  std::swap(turned[1], turned[2]);    // triangle 0 turned over
+  std::swap(turned[10], turned[11]);  // and triangle 3
+  EXPECT_EQ(count_flipped(m.positions, m.indices, turned, normals), 2u);
+  // A big triangle over the grid's corners faces the same way as the grid: no fold.
+  const std::vector<std::uint32_t> big{m.indices[0], m.indices[1], m.indices[2]};
+  EXPECT_EQ(count_flipped(m.positions, m.indices, big, normals), 0u);
+  // The build counts what meshopt folds, per group (none expected on a gentle sine grid).
+  const testing::TestMesh wavy = testing::grid(80, 2.0, 0.2);
+  const ClusterBuildResult r = build_cluster_hierarchy(wavy.positions, wavy.indices);
+  std::map<std::int32_t, std::vector<std::uint32_t>> members, products;
+  for (std::uint32_t c = 0; c < r.hierarchy.size(); ++c) {
+    if (r.parent_group[c] >= 0) members[r.parent_group[c]].push_back(c);
+    if (r.source_group[c] >= 0) products[r.source_group[c]].push_back(c);
+  }
+  std::size_t folds = 0;
+  for (const auto& [g, in] : members)
+    folds += count_flipped(wavy.positions, testing::triangles_of(r, in), testing::triangles_of(r, products[g]), normals);
+  EXPECT_EQ(r.folded_triangles, folds);
 }
 
 TEST(ClusterBuild, SeparatePiecesAreGroupedByPlace) {

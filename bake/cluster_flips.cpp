@@ -1,0 +1,36 @@
+// count_flipped (cluster_flips.hpp): vertex normals from the triangles before, one dot product
+// per triangle after.
+#include "bake/cluster_flips.hpp"
+
+namespace gazelod::bake {
+namespace {
+
+void face_normal(std::span<const float> p, std::uint32_t a, std::uint32_t b, std::uint32_t c, double n[3]) {
+  const double u[3] = {double(p[3 * b]) - p[3 * a], double(p[3 * b + 1]) - p[3 * a + 1], double(p[3 * b + 2]) - p[3 * a + 2]};
+  const double v[3] = {double(p[3 * c]) - p[3 * a], double(p[3 * c + 1]) - p[3 * a + 1], double(p[3 * c + 2]) - p[3 * a + 2]};
+  n[0] = u[1] * v[2] - u[2] * v[1], n[1] = u[2] * v[0] - u[0] * v[2], n[2] = u[0] * v[1] - u[1] * v[0];
+}
+
+}  // namespace
+
+std::size_t count_flipped(std::span<const float> p, std::span<const std::uint32_t> before,
+                          std::span<const std::uint32_t> after, std::vector<float>& normals) {
+  normals.assign(p.size(), 0.0f);
+  for (std::size_t t = 0; t + 2 < before.size(); t += 3) {
+    double n[3];
+    face_normal(p, before[t], before[t + 1], before[t + 2], n);
+    for (std::size_t k = 0; k < 3; ++k)
+      for (int j = 0; j < 3; ++j) normals[3 * std::size_t{before[t + k]} + j] += static_cast<float>(n[j]);
+  }
+  std::size_t flipped = 0;
+  for (std::size_t t = 0; t + 2 < after.size(); t += 3) {
+    double n[3], dot = 0.0;
+    face_normal(p, after[t], after[t + 1], after[t + 2], n);
+    for (std::size_t k = 0; k < 3; ++k)
+      for (int j = 0; j < 3; ++j) dot += n[j] * normals[3 * std::size_t{after[t + k]} + j];
+    flipped += dot < 0.0;
+  }
+  return flipped;
+}
+
+}  // namespace gazelod::bake

@@ -174,7 +174,7 @@ class Builder {
                               o_.lock_open_borders ? unsigned(meshopt_SimplifyLockBorder) : 0u, error_rel);
     };
     auto folds = [&](std::size_t count) {
-      return count_flipped(s.local_xyz, s.local, std::span<const std::uint32_t>(s.simplified.data(), count), s.normals);
+      return find_folds(s.local_xyz, s.local, std::span<const std::uint32_t>(s.simplified.data(), count), s.normals);
     };
     const std::size_t target = 3 * static_cast<std::size_t>(double(s.local.size() / 3) * o_.simplify_ratio);
     float error_rel = 0.0f;  // meshopt's estimate, relative to the group's extent
@@ -183,20 +183,23 @@ class Builder {
     // target, rather than leave free detail to a level that may have to force collapses;
     // unless that folds a triangle over where the step to the target did not.
     if (n > 0 && error_rel <= kFreeErrorRel) {
-      const std::size_t at_target = folds(n), free = simplify(0, kFreeErrorRel, nullptr);
-      if (free > 0 && folds(free) <= at_target)
+      const std::size_t at_target = folds(n).triangles, free = simplify(0, kFreeErrorRel, nullptr);
+      if (free > 0 && folds(free).triangles <= at_target)
         n = free;
       else
         n = simplify(target, FLT_MAX, nullptr);
     }
-    // meshopt 0.18 folds some triangles over (cluster_flips.hpp): counted, not hidden. (Redoing
-    // such groups in gentler steps halved the build's throughput and still left a third.)
-    if (n > 0) p.folded_triangles = folds(n);
+    // meshopt 0.18 folds some triangles over (cluster_flips.hpp): counted, and the group's error
+    // raised to the width of the hole they may leave. (Redoing folded groups in gentler steps
+    // cost up to half the build's throughput and still left a third to two thirds of them.)
+    const Folds f = n > 0 ? folds(n) : Folds{};
+    p.folded_triangles = f.triangles;
+    const double fold_error_m = f.width_m;
     s.local_xyz.resize(3 * vcount);  // the copies go before the split
     if (n > 0 && double(n) <= o_.stuck_ratio * double(s.local.size())) {
       p.simplified = true;
       split(s, std::span<const std::uint32_t>(s.simplified.data(), n), p);
-      const double error_m = measure(members, child_error_m, s, p);
+      const double error_m = std::max(measure(members, child_error_m, s, p), fold_error_m);
       // Rounded up to a float at least as large, and never below a member's (monotone).
       auto error_f = static_cast<float>(error_m);
       if (double(error_f) < error_m) error_f = std::nextafter(error_f, INFINITY);

@@ -17,7 +17,8 @@
 // cluster holding the triangle found for it (bake/cluster_distance.hpp: its nearest, or the
 // first one no farther than the group's error so far). A group's error is the largest distance
 // from its vertices to those triangles, raised to the largest self error of its members (so
-// parent error >= every member's self error), computed in double and rounded up to float.
+// parent error >= every member's self error) and to the width of any triangle meshopt
+// folded over (bake/cluster_flips.hpp), computed in double and rounded up to float.
 // What it bounds: in any cut (clusters with self error <= t < parent error) every such source
 // vertex lies within the largest self error of the drawn clusters, hence within t, of the drawn
 // triangles. The source is sampled at its vertices (a source triangle's interior is not
@@ -65,7 +66,8 @@ struct ClusterBuildResult {
   std::size_t source_triangles = 0;      // input triangles that were kept
   std::size_t degenerate_triangles = 0;  // dropped: two corners at the same position
   // Stored triangles of simplified levels that meshopt folded over (bake/cluster_flips.hpp):
-  // a known meshoptimizer 0.18 defect, counted so that a bake says how much of it it holds.
+  // a known meshoptimizer 0.18 defect, counted so that a bake says how much of it it holds; each
+  // such group's error is at least the width of its folded triangles.
   std::size_t folded_triangles = 0;
 };
 

@@ -1,6 +1,9 @@
-// count_flipped (cluster_flips.hpp): vertex normals from the triangles before, one dot product
+// find_folds (cluster_flips.hpp): vertex normals from the triangles before, one dot product
 // per triangle after.
 #include "bake/cluster_flips.hpp"
+
+#include <algorithm>
+#include <cmath>
 
 namespace gazelod::bake {
 namespace {
@@ -13,8 +16,8 @@ void face_normal(std::span<const float> p, std::uint32_t a, std::uint32_t b, std
 
 }  // namespace
 
-std::size_t count_flipped(std::span<const float> p, std::span<const std::uint32_t> before,
-                          std::span<const std::uint32_t> after, std::vector<float>& normals) {
+Folds find_folds(std::span<const float> p, std::span<const std::uint32_t> before,
+                 std::span<const std::uint32_t> after, std::vector<float>& normals) {
   normals.assign(p.size(), 0.0f);
   for (std::size_t t = 0; t + 2 < before.size(); t += 3) {
     double n[3];
@@ -22,15 +25,25 @@ std::size_t count_flipped(std::span<const float> p, std::span<const std::uint32_
     for (std::size_t k = 0; k < 3; ++k)
       for (int j = 0; j < 3; ++j) normals[3 * std::size_t{before[t + k]} + j] += static_cast<float>(n[j]);
   }
-  std::size_t flipped = 0;
+  Folds f;
   for (std::size_t t = 0; t + 2 < after.size(); t += 3) {
     double n[3], dot = 0.0;
     face_normal(p, after[t], after[t + 1], after[t + 2], n);
     for (std::size_t k = 0; k < 3; ++k)
       for (int j = 0; j < 3; ++j) dot += n[j] * normals[3 * std::size_t{after[t + k]} + j];
-    flipped += dot < 0.0;
+    if (dot >= 0.0) continue;
+    ++f.triangles;
+    double longest_sq = 0.0;
+    for (std::size_t k = 0; k < 3; ++k) {
+      const std::size_t a = after[t + k], b = after[t + (k + 1) % 3];
+      double d_sq = 0.0;
+      for (int j = 0; j < 3; ++j) d_sq += (double(p[3 * a + j]) - p[3 * b + j]) * (double(p[3 * a + j]) - p[3 * b + j]);
+      longest_sq = std::max(longest_sq, d_sq);
+    }
+    // |n| is twice the area; a triangle with no length has no width.
+    if (longest_sq > 0.0) f.width_m = std::max(f.width_m, std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) / std::sqrt(longest_sq));
   }
-  return flipped;
+  return f;
 }
 
 }  // namespace gazelod::bake

@@ -4,7 +4,9 @@
 // facing against the wall or roof they lie in, overlapping a neighbour and leaving a hole
 // beside it; a 200 k-triangle terrain halved leaves about 1 in 1000 facing down. The distance to
 // the source cannot see that (every source vertex can still lie on the surface), so the build
-// counts them.
+// counts them and raises the group's error to the widest of its folded triangles (its smallest
+// altitude, twice its area over its longest edge): the hole a fold leaves beside it has about
+// its shape, and the selection then draws that level only where a gap that wide is invisible.
 #pragma once
 
 #include <cstdint>
@@ -17,7 +19,11 @@ namespace gazelod::bake {
 // `before`'s triangles give its three corners (a triangle turned over, or one spanning a crease
 // so far that it faces away from every corner's surface). Both are triangle lists over the same
 // vertices (positions_xyz, 3 floats each); `normals` is scratch.
-std::size_t count_flipped(std::span<const float> positions_xyz, std::span<const std::uint32_t> before,
-                          std::span<const std::uint32_t> after, std::vector<float>& normals);
+struct Folds {
+  std::size_t triangles = 0;
+  double width_m = 0.0;  // the largest smallest altitude of the folded triangles; 0: none
+};
+Folds find_folds(std::span<const float> positions_xyz, std::span<const std::uint32_t> before,
+                 std::span<const std::uint32_t> after, std::vector<float>& normals);
 
 }  // namespace gazelod::bake

@@ -7,6 +7,7 @@
 #include "bake/cluster_distance.hpp"
 #include "bake/cluster_flips.hpp"
 #include "bake/cluster_split.hpp"
+#include "bake/terrain_mesh.hpp"
 #include "tests/bake/cluster_invariants.hpp"
 #include "tests/bake/test_meshes.hpp"
 
@@ -96,25 +97,34 @@ TEST(ClusterBuild, LockedRimStaysAtEveryCut) {
 TEST(ClusterBuild, FoldsAreTrianglesFacingAgainstTheirCorners) {
   const testing::TestMesh m = testing::grid(4, 1.0, 0.0);  // flat, 32 triangles
   std::vector<float> normals;
-  EXPECT_EQ(count_flipped(m.positions, m.indices, m.indices, normals), 0u);
+  EXPECT_EQ(find_folds(m.positions, m.indices, m.indices, normals).triangles, 0u);
   std::vector<std::uint32_t> turned = m.indices;
   std::swap(turned[1], turned[2]);    // triangle 0 turned over
   std::swap(turned[10], turned[11]);  // and triangle 3
-  EXPECT_EQ(count_flipped(m.positions, m.indices, turned, normals), 2u);
+  const Folds two = find_folds(m.positions, m.indices, turned, normals);
+  EXPECT_EQ(two.triangles, 2u);
+  EXPECT_NEAR(two.width_m, 0.25 / std::sqrt(2.0), 1e-6);  // half a 0.25 m quad: 2 * area / diagonal
   // A big triangle over the grid's corners faces the same way as the grid: no fold.
   const std::vector<std::uint32_t> big{m.indices[0], m.indices[1], m.indices[2]};
-  EXPECT_EQ(count_flipped(m.positions, m.indices, big, normals), 0u);
-  // The build counts what meshopt folds, per group (none expected on a gentle sine grid).
-  const testing::TestMesh wavy = testing::grid(80, 2.0, 0.2);
+  EXPECT_EQ(find_folds(m.positions, m.indices, big, normals).width_m, 0.0);
+  // The build counts what meshopt folds, per group, and each group's error covers its folds
+  // (a generated terrain, where meshopt 0.18 folds some).
+  TerrainOptions terrain;
+  terrain.triangles = 20'000;
+  const GeneratedMesh wavy = terrain_meshes(terrain).at(0);
   const ClusterBuildResult r = build_cluster_hierarchy(wavy.positions, wavy.indices);
+  EXPECT_GT(r.folded_triangles, 0u) << "no fold to check the errors against";
   std::map<std::int32_t, std::vector<std::uint32_t>> members, products;
   for (std::uint32_t c = 0; c < r.hierarchy.size(); ++c) {
     if (r.parent_group[c] >= 0) members[r.parent_group[c]].push_back(c);
     if (r.source_group[c] >= 0) products[r.source_group[c]].push_back(c);
   }
   std::size_t folds = 0;
-  for (const auto& [g, in] : members)
-    folds += count_flipped(wavy.positions, testing::triangles_of(r, in), testing::triangles_of(r, products[g]), normals);
+  for (const auto& [g, in] : members) {
+    const Folds f = find_folds(wavy.positions, testing::triangles_of(r, in), testing::triangles_of(r, products[g]), normals);
+    folds += f.triangles;
+    EXPECT_GE(double(r.hierarchy.parent_error_m[in[0]]), f.width_m) << "group " << g;
+  }
   EXPECT_EQ(r.folded_triangles, folds);
 }
 

@@ -181,10 +181,11 @@ class Builder {
     std::size_t n = target < 3 ? 0 : simplify(target, FLT_MAX, &error_rel);
     // Reached at no error (flat panels, a box's walls): take every free collapse, past the
     // target, rather than leave free detail to a level that may have to force collapses;
-    // unless that folds a triangle over where the step to the target did not.
+    // unless its folds (cluster_flips.hpp) are wider than the step to the target's.
     if (n > 0 && error_rel <= kFreeErrorRel) {
-      const std::size_t at_target = folds(n).triangles, free = simplify(0, kFreeErrorRel, nullptr);
-      if (free > 0 && folds(free).triangles <= at_target)
+      const double at_target_m = folds(n).width_m;
+      const std::size_t free = simplify(0, kFreeErrorRel, nullptr);
+      if (free > 0 && folds(free).width_m <= at_target_m)
         n = free;
       else
         n = simplify(target, FLT_MAX, nullptr);

@@ -33,15 +33,27 @@ Folds find_folds(std::span<const float> p, std::span<const std::uint32_t> before
       for (int j = 0; j < 3; ++j) dot += n[j] * normals[3 * std::size_t{after[t + k]} + j];
     if (dot >= 0.0) continue;
     ++f.triangles;
+    // Its width in the surface it should lie in: projected on the plane across the corners'
+    // normal (a sliver turned just past upright on a terrain covers almost nothing wrongly; a
+    // panel turned over in a wall does), the smallest altitude, twice its area over its
+    // longest edge.
+    double r[3] = {0.0, 0.0, 0.0};
+    for (std::size_t k = 0; k < 3; ++k)
+      for (int j = 0; j < 3; ++j) r[j] += normals[3 * std::size_t{after[t + k]} + j];
+    const double r_len = std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
+    if (!(r_len > 0.0)) continue;
+    for (double& x : r) x /= r_len;
+    const double twice_area = std::fabs(n[0] * r[0] + n[1] * r[1] + n[2] * r[2]);
     double longest_sq = 0.0;
     for (std::size_t k = 0; k < 3; ++k) {
       const std::size_t a = after[t + k], b = after[t + (k + 1) % 3];
-      double d_sq = 0.0;
-      for (int j = 0; j < 3; ++j) d_sq += (double(p[3 * a + j]) - p[3 * b + j]) * (double(p[3 * a + j]) - p[3 * b + j]);
-      longest_sq = std::max(longest_sq, d_sq);
+      double e[3];
+      for (int j = 0; j < 3; ++j) e[j] = double(p[3 * b + j]) - p[3 * a + j];
+      const double along = e[0] * r[0] + e[1] * r[1] + e[2] * r[2];
+      for (int j = 0; j < 3; ++j) e[j] -= along * r[j];
+      longest_sq = std::max(longest_sq, e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
     }
-    // |n| is twice the area; a triangle with no length has no width.
-    if (longest_sq > 0.0) f.width_m = std::max(f.width_m, std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) / std::sqrt(longest_sq));
+    if (longest_sq > 0.0) f.width_m = std::max(f.width_m, twice_area / std::sqrt(longest_sq));
   }
   return f;
 }

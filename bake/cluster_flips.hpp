@@ -4,9 +4,10 @@
 // facing against the wall or roof they lie in, overlapping a neighbour and leaving a hole
 // beside it; a 200 k-triangle terrain halved leaves about 1 in 1000 facing down. The distance to
 // the source cannot see that (every source vertex can still lie on the surface), so the build
-// counts them and raises the group's error to the widest of its folded triangles (its smallest
-// altitude, twice its area over its longest edge): the hole a fold leaves beside it has about
-// its shape, and the selection then draws that level only where a gap that wide is invisible.
+// counts them and raises the group's error to the widest of its folded triangles, seen along
+// the surface's normal (projected across its corners' normal: the smallest altitude, twice the
+// area over the longest edge): the hole a fold leaves beside it has about its shape, and the
+// selection then draws that level only where a gap that wide is invisible.
 #pragma once
 
 #include <cstdint>
@@ -21,7 +22,7 @@ namespace gazelod::bake {
 // vertices (positions_xyz, 3 floats each); `normals` is scratch.
 struct Folds {
   std::size_t triangles = 0;
-  double width_m = 0.0;  // the largest smallest altitude of the folded triangles; 0: none
+  double width_m = 0.0;  // the widest folded triangle's width, as above; 0: none
 };
 Folds find_folds(std::span<const float> positions_xyz, std::span<const std::uint32_t> before,
                  std::span<const std::uint32_t> after, std::vector<float>& normals);

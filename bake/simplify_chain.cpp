@@ -3,6 +3,7 @@
 #include "bake/simplify_chain.hpp"
 
 #include "bake/cluster_distance.hpp"
+#include "bake/cluster_flips.hpp"
 
 #include <meshoptimizer.h>
 
@@ -88,6 +89,7 @@ PrimitiveChain simplify_chain(std::span<const float> pos, std::span<const std::u
   std::vector<std::uint32_t> dst(idx.size()), sloppy(idx.size());
   TriangleGrid grid;
   std::vector<std::uint8_t> used(vcount, 0);
+  std::vector<float> normals;  // find_folds scratch
   for (double ratio : options.ratios) {
     const SimplifiedLevel& prev = chain.levels.back();
     SimplifiedLevel level;
@@ -121,7 +123,12 @@ PrimitiveChain simplify_chain(std::span<const float> pos, std::span<const std::u
     // The error measured against the source, as the cluster hierarchy's (bake/cluster_build.hpp):
     // meshopt's estimate (`err`) is a quadric mean that falls several times below the largest
     // distance. A coarser level is never reported as more accurate than a finer one.
-    const double error_m = n == 0 ? double(chain.scale_m) : largest_source_distance_m(pos, idx, level.indices, grid, used);
+    // And at least the width of any triangle meshopt folded over (bake/cluster_flips.hpp): the
+    // distance from the source's vertices cannot see the hole beside a fold.
+    const Folds folds = find_folds(pos, idx, level.indices, normals);
+    level.folded_triangles = folds.triangles;
+    const double error_m = n == 0 ? double(chain.scale_m)
+                                  : std::max(largest_source_distance_m(pos, idx, level.indices, grid, used), folds.width_m);
     level.error_m = std::max(error_m, prev.error_m);
     level.error_rel = chain.scale_m > 0.0 ? level.error_m / chain.scale_m : 0.0;
     chain.levels.push_back(std::move(level));

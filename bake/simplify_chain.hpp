@@ -27,11 +27,13 @@ struct ChainOptions {
 struct SimplifiedLevel {
   std::vector<std::uint32_t> indices;  // triangle list into the original vertices
   std::uint32_t vertices = 0;          // distinct vertices the indices use
-  // The largest distance from a source vertex to the level's triangles, in the positions' units
-  // (a running maximum over levels; the whole extent for an empty level), and over scale_m.
+  // The largest distance from a source vertex to the level's triangles, or the width of a
+  // triangle meshopt folded over if larger (bake/cluster_flips.hpp), in the positions' units (a
+  // running maximum over levels; the whole extent for an empty level), and over scale_m.
   double error_m = 0.0;
   double error_rel = 0.0;
   bool sloppy = false;                 // reached with meshopt_simplifySloppy
+  std::size_t folded_triangles = 0;    // facing against the source they replace
 };
 
 struct PrimitiveChain {

@@ -3,7 +3,7 @@
 #   bash scripts/setup.sh run    install, build, run the main job
 #   bash scripts/setup.sh test   install, build, run every test (also under ASan + UBSan, TSan)
 # Build folders: build/ (release), build-asan/ (ASan+UBSan, unit tests only), build-tsan/
-# (ThreadSanitizer, the HID reader thread's tests).
+# (ThreadSanitizer, the HID reader thread's tests and the cluster bake's thread pool).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 what="${1:-}"
@@ -41,11 +41,13 @@ case "$what" in
       "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -g1 -DGAZELOD_NO_CLONES" -- gazelod_unit_tests
     ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
       ctest --test-dir build-asan --output-on-failure -j"$jobs" -L unit --timeout 600
-    echo "== HID reader thread under ThreadSanitizer =="
+    echo "== HID reader thread and the cluster bake's thread pool under ThreadSanitizer =="
     build build-tsan -DGAZELOD_TSAN=ON -DGAZELOD_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=Debug \
-      "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -g1" -- test_hid test_faults
+      "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -g1" -- test_hid test_faults test_bake_clusters
     TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 ./build-tsan/tests/hid/test_hid
     TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 ./build-tsan/tests/faults/test_faults --gtest_filter='HidFaults.*'
+    TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 ./build-tsan/tests/bake/test_bake_clusters \
+      --gtest_filter='ClusterBuild.SameHierarchyOnAnyThreadCount:ClusterBuild.OpenGridSimplifiesItsRimWithoutCrack:SharedPositions.TiledTerrainKeepsTileSeamsAndSimplifiesTheRim'
     ;;
   *)
     echo "usage: bash scripts/setup.sh run|test" >&2

@@ -192,7 +192,7 @@ class Builder {
     }
     // meshopt 0.18 folds some triangles over (cluster_flips.hpp): counted, and the group's error
     // raised to the width of the hole they may leave. (Redoing folded groups in gentler steps
-    // cost up to half the build's throughput and still left a third to two thirds of them.)
+    // cost 30 to 40 % of the build's throughput and still left a third to three quarters.)
     const Folds f = n > 0 ? folds(n) : Folds{};
     p.folded_triangles = f.triangles;
     const double fold_error_m = f.width_m;

@@ -67,6 +67,9 @@ const Registrar reg("run", "Run an OpenXR session with gaze-contingent LOD and w
   app.add_flag("--quiet", opt->quiet, "No progress lines");
   app.add_option("--decisions", opt->decisions_path,
                  "Write the drawn level of every object in every frame to this CSV (frame,t_ns,<object>...)");
+  app.add_option("--cluster-decisions", opt->cluster_decisions_path,
+                 "Write every frame's drawn cut of the cluster meshes to this CSV, one row per drawn cluster "
+                 "(frame,t_ns,mesh,cluster,depth,triangles,limited_by,held)");
   auto no_audit = std::make_shared<bool>(false);
   app.add_flag("--no-audit", *no_audit, "Skip the visibility audit against the simulator's true gaze");
   return [=, &app](Io io) {

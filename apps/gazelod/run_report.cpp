@@ -291,9 +291,22 @@ Plot audit_plot(const RunInfo& info, const AuditSummary& s, const std::vector<Fr
   PlotSeries degraded{"coarser than oracle", "#d62728", {}}, excess{"max excess (levels)", "#ff7f0e", {}};
   PlotSeries switches{"LOD switches", "#1f77b4", {}};
   PlotSeries drawn{"drawn", "#d62728", {}}, oracle{"oracle", "#2ca02c", {}};
+  // Cluster meshes: the same per leaf (source cluster) in view, from the cluster audit.
+  PlotSeries leaf_degraded{"coarser than oracle", "#d62728", {}}, leaf_excess{"max excess (depth)", "#ff7f0e", {}};
+  PlotSeries leaf_switches{"cluster switches", "#1f77b4", {}}, leaf_miscovered{"not covered once", "#9467bd", {}};
+  PlotSeries cluster_drawn{"drawn", "#d62728", {}}, cluster_oracle{"oracle", "#2ca02c", {}};
+  bool clusters_audited = false;
   const double nan = std::nan("");
   for (std::size_t i = 0; i < frames.size(); ++i) {
     const FrameRecord& f = frames[i];
+    const ClusterAuditFrame& c = f.cluster_audit;
+    clusters_audited = clusters_audited || c.available;
+    leaf_degraded.y.push_back(c.available ? static_cast<double>(c.degraded) : nan);
+    leaf_excess.y.push_back(c.available ? static_cast<double>(c.excess_depth_max) : nan);
+    leaf_switches.y.push_back(c.available ? static_cast<double>(c.switches) : nan);
+    leaf_miscovered.y.push_back(c.available ? static_cast<double>(c.miscovered) : nan);
+    cluster_drawn.y.push_back(c.available ? static_cast<double>(c.drawn_triangles) : nan);
+    cluster_oracle.y.push_back(c.available ? static_cast<double>(c.oracle_triangles) : nan);
     const AuditFrame& a = f.audit;
     plot.x.push_back(f.t_s);
     degraded.y.push_back(a.available ? static_cast<double>(a.degraded) : nan);
@@ -312,6 +325,11 @@ Plot audit_plot(const RunInfo& info, const AuditSummary& s, const std::vector<Fr
   plot.panels.push_back({"in-view objects", {degraded, excess}});
   plot.panels.push_back({"switches per frame", {switches}});
   plot.panels.push_back({"triangles in view", {drawn, oracle}});
+  if (clusters_audited) {
+    plot.panels.push_back({"in-view cluster leaves", {leaf_degraded, leaf_excess, leaf_miscovered}});
+    plot.panels.push_back({"leaf switches per frame", {leaf_switches}});
+    plot.panels.push_back({"cluster triangles in view", {cluster_drawn, cluster_oracle}});
+  }
   plot.span_legend = "suppression window";
   return plot;
 }

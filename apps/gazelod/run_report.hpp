@@ -130,7 +130,9 @@ void write_report_files(const std::filesystem::path& dir, const RunInfo& info,
                         const RunSummary& s, const std::vector<FrameRecord>& frames);
 
 // audit.svg: in-view objects drawn coarser than the oracle (and the largest excess), LOD
-// switches and triangles in view (drawn, oracle) over time, suppression windows shaded.
+// switches and triangles in view (drawn, oracle) over time, suppression windows shaded; with a
+// cluster audit in any frame, the same per in-view leaf of the cluster meshes (coarser than
+// the oracle's cut, largest excess depth, leaves not covered exactly once, switches, triangles).
 Plot audit_plot(const RunInfo& info, const AuditSummary& s, const std::vector<FrameRecord>& frames);
 
 // One CSV field as RFC 4180 wants it: quoted (quotes doubled) when it holds a comma, a quote,

@@ -6,6 +6,7 @@
 #include "apps/gazelod/eval_lod_map.hpp"
 #include "apps/gazelod/run_audit.hpp"
 #include "apps/gazelod/run_cluster_audit.hpp"
+#include "apps/gazelod/run_cluster_decisions.hpp"
 #include "apps/gazelod/run_cluster_scene.hpp"
 #include "apps/gazelod/run_render.hpp"
 #include "apps/gazelod/run_report.hpp"
@@ -103,6 +104,13 @@ int run_session(const RunOptions& opt, Io io) {
     std::vector<std::string> names;
     for (std::size_t i : plain) names.push_back(scenario.objects[i].name);
     decisions.emplace(opt.decisions_path, names);
+  }
+  std::optional<ClusterDecisionsFile> cluster_decisions;
+  if (!opt.cluster_decisions_path.empty()) {
+    if (clusters.empty())
+      throw UsageError("--cluster-decisions: the scene has no cluster meshes (--scene with a file from "
+                       "gazelod bake --clusters)");
+    cluster_decisions.emplace(opt.cluster_decisions_path, clusters);
   }
 
   std::optional<xr_host::XrApp> app;
@@ -314,6 +322,7 @@ int run_session(const RunOptions& opt, Io io) {
     std::copy_n(d.lod.begin(), std::min(d.lod.size(), previous_lod.size()), previous_lod.begin());
     previous_t_s = t_s;
     if (decisions) decisions->write(r.index, t_ns, d.lod);
+    if (cluster_decisions) cluster_decisions->write(r.index, t_ns, d);
     if (opt.frame_observer) opt.frame_observer(d, diag);
     const std::uint64_t frame_cluster_triangles = r.cluster_triangles_drawn;
     frames.push_back(std::move(r));
@@ -362,6 +371,10 @@ int run_session(const RunOptions& opt, Io io) {
   if (decisions) {
     decisions->commit();
     io.out << ", " << decisions->path().string();
+  }
+  if (cluster_decisions) {
+    cluster_decisions->commit();
+    io.out << ", " << cluster_decisions->path();
   }
   io.out << "\n";
   return 0;

@@ -32,6 +32,7 @@ struct RunOptions {
   bool quiet = false;                  // no progress lines
   bool audit = true;                   // the visibility audit against the simulator's truth (run_audit.hpp)
   std::string decisions_path;          // "" = none; else the drawn levels per frame (DecisionsFile, run_report.hpp)
+  std::string cluster_decisions_path;  // "" = none; else the drawn cut per frame (run_cluster_decisions.hpp)
   // Tests only (no option): called with each counted frame's decisions and diagnostics, after
   // the frame is drawn; the spans are valid during the call.
   std::function<void(const FrameDecisions&, const FrameDiagnostics&)> frame_observer;

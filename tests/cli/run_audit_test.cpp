@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -236,6 +237,35 @@ TEST(RunAudit, ReportWritesColumnsSummaryAndPlotWithShadedWindows) {
   const std::string svg = read(dir / "audit.svg");
   EXPECT_EQ(count(svg, "class=\"span\""), 3u) << "one window, shaded in each of the three panels";
   EXPECT_NE(svg.find("suppression window"), std::string::npos);
+}
+
+TEST(RunAudit, PlotHasClusterPanelsOnlyWhenClustersWereAudited) {
+  std::vector<FrameRecord> frames;
+  for (int i = 0; i < 6; ++i) frames.push_back(record(i, true, i == 2));
+  const RunInfo info{"default", "questpro", "sim", "none", "size,eccentricity,velocity", 0.0};
+  const RunSummary s = summarize(frames, 0.0);
+  EXPECT_EQ(audit_plot(info, s.audit, frames).panels.size(), 3u) << "no cluster audit: objects only";
+
+  for (FrameRecord& f : frames) {
+    f.cluster_audit.available = f.index != 4;  // one frame without: a gap, not a zero
+    f.cluster_audit.degraded = 2 + f.index;
+    f.cluster_audit.excess_depth_max = 1;
+    f.cluster_audit.drawn_triangles = 700;
+    f.cluster_audit.oracle_triangles = 900;
+    f.cluster_audit.switches = 3;
+  }
+  const Plot plot = audit_plot(info, s.audit, frames);
+  ASSERT_EQ(plot.panels.size(), 6u);
+  EXPECT_EQ(plot.panels[3].y_label, "in-view cluster leaves");
+  EXPECT_EQ(plot.panels[5].y_label, "cluster triangles in view");
+  const std::vector<double>& degraded = plot.panels[3].series[0].y;
+  ASSERT_EQ(degraded.size(), frames.size());
+  EXPECT_EQ(degraded[5], 7.0);
+  EXPECT_TRUE(std::isnan(degraded[4]));
+  EXPECT_EQ(plot.panels[5].series[1].y[0], 900.0);
+  std::ostringstream svg;
+  write_svg(plot, svg);
+  EXPECT_EQ(count(svg.str(), "class=\"span\""), 6u) << "the window shaded in all six panels";
 }
 
 TEST(RunAudit, ReportWithoutGroundTruthLeavesCellsEmptyAndSaysWhy) {

@@ -85,6 +85,18 @@ class ClusterRun : public ::testing::Test {
     std::filesystem::remove_all(dir_, ignored);
   }
   void SetUp() override { use_simulated_runtime(""); }
+  // The walk on the wall in its file placement, selection only, for run_session.
+  static cli::RunOptions walk_options(std::int64_t frames) {
+    cli::RunOptions opt;
+    opt.frames = frames;
+    opt.scenario_path = scenario_;
+    opt.scene_path = baked_;
+    opt.scene_placement = "file";
+    opt.render = false;
+    opt.quiet = true;
+    opt.out_dir = scratch_dir();
+    return opt;
+  }
 
   static std::filesystem::path dir_;
   static std::string baked_, scenario_;
@@ -134,6 +146,9 @@ TEST_F(ClusterRun, NoRenderRunReportsClusterFiguresAndTheirAudit) {
   EXPECT_TRUE(std::isfinite(ratio));
   EXPECT_GT(ratio, 0.0);
   EXPECT_EQ(audit.at("miscovered_leaf_frames").get<std::int64_t>(), 0);
+  const std::string svg = read_text(out / "audit.svg");
+  for (const char* panel : {"in-view cluster leaves", "leaf switches per frame", "cluster triangles in view"})
+    EXPECT_NE(svg.find(panel), std::string::npos) << "audit.svg has the cluster panel " << panel;
 
   // frames.csv: a column of cluster triangles, never above full detail, below it once the
   // switch policy has let the periphery go.
@@ -226,14 +241,7 @@ TEST_F(ClusterRun, EveryFrameOfAWalkCoversEachLeafExactlyOnce) {
   cli::ClusterCover cover(wall.hierarchy);
   std::vector<cli::LeafCover> covers(cover.leaves().size());
 
-  cli::RunOptions opt;
-  opt.frames = 90;
-  opt.scenario_path = scenario_;
-  opt.scene_path = baked_;
-  opt.scene_placement = "file";
-  opt.render = false;
-  opt.quiet = true;
-  opt.out_dir = scratch_dir();
+  cli::RunOptions opt = walk_options(90);
   int frames = 0, coarser = 0;
   opt.frame_observer = [&](const FrameDecisions& d, const FrameDiagnostics& diag) {
     SCOPED_TRACE("frame " + std::to_string(frames));
@@ -251,6 +259,73 @@ TEST_F(ClusterRun, EveryFrameOfAWalkCoversEachLeafExactlyOnce) {
   ASSERT_EQ(cli::run_session(opt, cli::Io{out, err}), 0) << err.str();
   EXPECT_EQ(frames, 90);
   EXPECT_GT(coarser, 0) << "the walk never drew anything but the finest cut: the check proved nothing";
+}
+
+// --cluster-decisions: one row per drawn cluster per frame, exactly the cut the plugin returned
+// (seen through the frame observer), with the hierarchy's depth and triangle counts, and the
+// frame's rows summing to frames.csv's cluster triangles.
+TEST_F(ClusterRun, ClusterDecisionsListEveryFramesCut) {
+  const bake::BakedScene scene = bake::load_baked(baked_);
+  const lod::ClusterHierarchy& h = scene.cluster_meshes.at(0).primitives.at(0).hierarchy;
+  std::vector<std::set<std::uint32_t>> cuts;
+  cli::RunOptions opt = walk_options(30);
+  opt.cluster_decisions_path = (opt.out_dir / "cut.csv").string();
+  opt.frame_observer = [&](const FrameDecisions& d, const FrameDiagnostics&) {
+    std::set<std::uint32_t> cut;
+    for (std::uint32_t c = 0; c < d.cluster_drawn.size(); ++c)
+      if (d.cluster_drawn[c]) cut.insert(c);
+    cuts.push_back(std::move(cut));
+  };
+  std::ostringstream out, err;
+  ASSERT_EQ(cli::run_session(opt, cli::Io{out, err}), 0) << err.str();
+  ASSERT_EQ(cuts.size(), 30u);
+  EXPECT_NE(out.str().find("cut.csv"), std::string::npos) << out.str();
+
+  std::ifstream csv(opt.cluster_decisions_path);
+  std::string line;
+  ASSERT_TRUE(std::getline(csv, line));
+  EXPECT_EQ(line, "frame,t_ns,mesh,cluster,depth,triangles,limited_by,held");
+  std::vector<std::set<std::uint32_t>> listed(cuts.size());
+  std::vector<std::uint64_t> triangles(cuts.size(), 0);
+  std::set<std::string> reasons;
+  while (std::getline(csv, line)) {
+    const auto cells = split(line + ",");  // a trailing empty cell survives getline
+    ASSERT_GE(cells.size(), 7u) << line;
+    const std::size_t frame = std::stoul(cells[0]);
+    ASSERT_LT(frame, cuts.size()) << line;
+    EXPECT_EQ(cells[2], "Wall primitive 0") << line;
+    const std::uint32_t c = static_cast<std::uint32_t>(std::stoul(cells[3]));
+    ASSERT_LT(c, h.size()) << line;
+    EXPECT_TRUE(listed[frame].insert(c).second) << "listed twice: " << line;
+    EXPECT_EQ(std::stoul(cells[4]), h.depth[c]) << line;
+    EXPECT_EQ(std::stoull(cells[5]), h.index_count[c] / 3) << line;
+    triangles[frame] += std::stoull(cells[5]);
+    reasons.insert(cells[6]);
+    if (h.depth[c] == 0) {
+      EXPECT_EQ(cells[6], "none") << "a source cluster has no error to let go: " << line;
+    }
+  }
+  for (std::size_t f = 0; f < cuts.size(); ++f) EXPECT_EQ(listed[f], cuts[f]) << "frame " << f;
+  EXPECT_GT(reasons.size(), 1u) << "the coarser clusters name what let them go";
+
+  std::ifstream frames(opt.out_dir / "frames.csv");
+  ASSERT_TRUE(std::getline(frames, line));
+  const auto header = split(line);
+  const auto col = static_cast<std::size_t>(
+      std::find(header.begin(), header.end(), "cluster_triangles_drawn") - header.begin());
+  ASSERT_LT(col, header.size());
+  for (std::size_t f = 0; f < cuts.size(); ++f) {
+    ASSERT_TRUE(std::getline(frames, line));
+    EXPECT_EQ(std::stoull(split(line).at(col)), triangles[f]) << "frame " << f;
+  }
+
+  // Without cluster meshes there is nothing to list: a usage error, before any frame.
+  const auto plain = scratch_dir();
+  const CliResult r = run_cli({"run", "--no-render", "--frames", "5", "--cluster-decisions",
+                               (plain / "cut.csv").string(), "--out", plain.string()});
+  EXPECT_EQ(r.rc, 2) << r.err;
+  EXPECT_NE(r.err.find("--cluster-decisions: the scene has no cluster meshes"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(plain / "cut.csv"));
 }
 
 TEST_F(ClusterRun, BadPlacementIsAUsageError) {

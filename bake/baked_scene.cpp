@@ -23,6 +23,7 @@ struct Reader {
   const tinygltf::Model& m;
   const std::vector<BakedClusterMesh>& clusters;
   const std::vector<int>& cluster_mesh_of;  // per mesh: index into `clusters`, or -1
+  bool level_geometry = false;
 
   [[noreturn]] void fail(const std::string& where, const std::string& what) const {
     throw BakeError(path + ": " + where + ": " + what);
@@ -83,6 +84,25 @@ struct Reader {
     return l;
   }
 
+  // The mesh's triangle primitives as one list (vertices of later primitives after earlier ones).
+  BakedLevelMesh level_mesh(int mesh) const {
+    BakedLevelMesh out;
+    for (std::size_t p = 0; p < m.meshes[static_cast<std::size_t>(mesh)].primitives.size(); ++p) {
+      PrimitiveGeometry g;
+      try {
+        g = extract_primitive(m, mesh, static_cast<int>(p));
+      } catch (const BakeError& e) {
+        throw BakeError(path + ": " + e.what());
+      }
+      const std::size_t base = out.positions_xyz.size() / 3;
+      if (base + g.positions_xyz.size() / 3 > 0xffffffffu)
+        fail(primitive_label(m, mesh, static_cast<int>(p)), "the mesh has more than 2^32 - 1 vertices");
+      out.positions_xyz.insert(out.positions_xyz.end(), g.positions_xyz.begin(), g.positions_xyz.end());
+      for (std::uint32_t i : g.indices) out.indices.push_back(static_cast<std::uint32_t>(base + i));
+    }
+    return out;
+  }
+
   // World-space sphere around the box centre of the transformed full-detail positions.
   void sphere(int node, const glm::dmat4& world, BakedObject& o) const {
     const tinygltf::Mesh& mesh = m.meshes[static_cast<std::size_t>(m.nodes[static_cast<std::size_t>(node)].mesh)];
@@ -111,6 +131,7 @@ struct Reader {
     o.mesh = n.mesh;
     o.name = n.name.empty() ? "node " + std::to_string(node) : n.name;
     o.lods.push_back(level(node, 0));
+    std::vector<int> meshes{n.mesh};
     const auto ext = n.extensions.find("MSFT_lod");
     if (ext != n.extensions.end()) {
       const std::string where = "/nodes/" + std::to_string(node) + "/extensions/MSFT_lod/ids";
@@ -124,10 +145,16 @@ struct Reader {
           fail(w, "not a node index");
         if (m.nodes[static_cast<std::size_t>(id.GetNumberAsInt())].mesh < 0) fail(w, "node has no mesh");
         o.lods.push_back(level(id.GetNumberAsInt(), static_cast<int>(k + 1)));
+        meshes.push_back(m.nodes[static_cast<std::size_t>(id.GetNumberAsInt())].mesh);
       }
     }
     if (std::string e = lod::validate_chain(o.lods); !e.empty())
       fail("/nodes/" + std::to_string(node), "LOD chain: " + e);
+    if (level_geometry)
+      for (int mesh : meshes) {
+        if (static_cast<std::size_t>(mesh) >= m.meshes.size()) fail("/meshes", "no mesh " + std::to_string(mesh));
+        o.level_meshes.push_back(level_mesh(mesh));
+      }
     sphere(node, world, o);
     o.world = world;
     out.push_back(std::move(o));
@@ -159,7 +186,7 @@ const BakedClusterMesh* BakedScene::clusters_of(const BakedObject& object) const
   return nullptr;
 }
 
-BakedScene load_baked(const std::string& path) {
+BakedScene load_baked(const std::string& path, BakedLoad what) {
   LoadedGltf g = load_gltf(path);
   BakedScene scene;
   std::vector<int> cluster_mesh_of(g.model.meshes.size(), -1);
@@ -182,7 +209,7 @@ BakedScene load_baked(const std::string& path) {
     cluster_mesh_of[mi] = static_cast<int>(scene.cluster_meshes.size());
     scene.cluster_meshes.push_back(std::move(c));
   }
-  const Reader r{path, g.model, scene.cluster_meshes, cluster_mesh_of};
+  const Reader r{path, g.model, scene.cluster_meshes, cluster_mesh_of, what == BakedLoad::with_level_geometry};
   std::vector<bool> on_path(g.model.nodes.size(), false);
   const auto& scenes = g.model.scenes;
   for (std::size_t s = 0; s < scenes.size(); ++s) {

@@ -16,6 +16,13 @@
 
 namespace gazelod::bake {
 
+// One LOD level's geometry: its mesh's triangle primitives merged into one triangle list
+// (strips and fans as lists), positions in the mesh's own space (x, y, z per vertex).
+struct BakedLevelMesh {
+  std::vector<float> positions_xyz;
+  std::vector<std::uint32_t> indices;
+};
+
 struct BakedObject {
   std::string name;           // node name, or "node N"
   int node = -1;              // glTF node index of the finest level
@@ -26,6 +33,9 @@ struct BakedObject {
   // lods[0] is the full mesh; detail is removed cycles per diameter (0 at level 0), from the
   // geometric error (detail.hpp); passes lod::validate_chain.
   std::vector<lod::LodLevel> lods;
+  // Per level, with BakedLoad::with_level_geometry (else empty): its mesh (the level's node's,
+  // drawn with this node's `world`, as MSFT_lod replaces the mesh, not the transform).
+  std::vector<BakedLevelMesh> level_meshes;
 };
 
 // One primitive's cluster hierarchy (bake/cluster_lod_gltf.hpp): cluster c is the triangle
@@ -56,9 +66,12 @@ struct BakedScene {
 
 // Throws BakeError "PATH: /nodes/3/extras/gazelod_lod/triangles: ..." for a file that is not a
 // gazelod bake output or is inconsistent (bad ids, missing extras, chain that fails validation,
-// a malformed GAZELOD_cluster_lod). A node whose mesh has cluster hierarchies needs no
+// a malformed GAZELOD_cluster_lod; with level geometry, a level's mesh that is not triangles or
+// holds a bad accessor: BakeError "PATH: mesh 2 'Body' primitive 0: ..."). A node whose mesh has cluster hierarchies needs no
 // extras.gazelod_lod: its chain is then one level, the full mesh.
-BakedScene load_baked(const std::string& path);
+// What load_baked reads beside the chains, bounds and cluster hierarchies.
+enum class BakedLoad { chains, with_level_geometry };
+BakedScene load_baked(const std::string& path, BakedLoad what = BakedLoad::chains);
 // load_baked(path).objects.
 std::vector<BakedObject> load_baked_scene(const std::string& path);
 

@@ -9,10 +9,13 @@
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 namespace gazelod::cli {
 namespace {
@@ -46,20 +49,47 @@ void unit_positions(const ClusterMesh& m, std::vector<glm::vec3>& unit, glm::dve
   for (std::size_t v = 0; v < world.size(); ++v) unit[v] = glm::vec3((world[v] - center_m) / radius_m);
 }
 
+// A baked level's positions posed by the object's world transform, in the unit frame of its
+// bounding sphere; its triangles turned over where the transform mirrors (the renderer's front
+// faces are counter-clockwise).
+void unit_level(const bake::BakedObject& o, const bake::BakedLevelMesh& level, std::vector<glm::vec3>& unit,
+                std::vector<std::uint32_t>& indices) {
+  const std::vector<float>& xyz = level.positions_xyz;
+  unit.resize(xyz.size() / 3);
+  for (std::size_t v = 0; v < unit.size(); ++v) {
+    const glm::dvec3 world(o.world * glm::dvec4(xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2], 1.0));
+    unit[v] = glm::vec3((world - o.center_m) / o.radius_m);
+  }
+  indices = level.indices;
+  if (glm::determinant(glm::dmat3(o.world)) < 0.0)
+    for (std::size_t t = 0; t + 2 < indices.size(); t += 3) std::swap(indices[t + 1], indices[t + 2]);
+}
+
 }  // namespace
 
 RunRenderer::RunRenderer(xr_host::XrApp& app, const std::vector<std::vector<lod::LodLevel>>& chains,
-                         const ClusterScene* clusters) {
+                         const ClusterScene* clusters, std::span<const bake::BakedObject* const> baked) {
   std::size_t max_items = 0;
   mesh_ids_.reserve(chains.size());
-  for (const auto& chain : chains) {
+  std::vector<glm::vec3> unit;
+  std::vector<std::uint32_t> indices;
+  for (std::size_t i = 0; i < chains.size(); ++i) {
+    const bake::BakedObject* o = i < baked.size() ? baked[i] : nullptr;
+    const bool own = o != nullptr && o->level_meshes.size() == chains[i].size() && o->radius_m > 0.0 &&
+                     std::isfinite(o->radius_m);
     std::vector<std::uint32_t> ids;
-    for (const lod::LodLevel& level : chain) ids.push_back(meshes_.add_sphere(level.triangles));
+    for (std::size_t l = 0; l < chains[i].size(); ++l) {
+      if (!own) {
+        ids.push_back(meshes_.add_sphere(chains[i][l].triangles));
+        continue;
+      }
+      unit_level(*o, o->level_meshes[l], unit, indices);
+      ids.push_back(meshes_.add_mesh(unit, indices));
+    }
     mesh_ids_.push_back(std::move(ids));
     ++max_items;
   }
   if (clusters != nullptr) {
-    std::vector<glm::vec3> unit;
     for (std::size_t k = 0; k < clusters->meshes.size(); ++k) {
       const ClusterMesh& m = clusters->meshes[k];
       const lod::ClusterHierarchy& h = m.primitive->hierarchy;

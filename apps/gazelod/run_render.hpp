@@ -1,5 +1,7 @@
-// `gazelod run`'s drawing: each eye's swapchain image gets every object as a stand-in sphere
-// at the LOD the plugin chose, tinted by level, and every cluster mesh (--scene with cluster
+// `gazelod run`'s drawing: each eye's swapchain image gets every object at the LOD the plugin
+// chose, tinted by level (a --scene object with its levels' own triangles; a scenario's
+// generated object, which has no geometry, as a stand-in sphere of the level's triangle
+// count), and every cluster mesh (--scene with cluster
 // hierarchies) as its drawn cut with the clusters' real triangles, one DrawItem per drawn
 // cluster in cluster order, tinted by the cluster's depth (render/; the renderer merges runs of
 // clusters that follow each other in the index buffer at one depth into one draw). Thin
@@ -25,11 +27,15 @@ namespace gazelod::cli {
 
 class RunRenderer {
  public:
-  // One mesh per (object, level), from the level's triangle count, and one per cluster of
-  // each of `clusters`' meshes (its positions posed in LOCAL space; null: none); one renderer
-  // per swapchain. Throws render::RenderError (unsupported swapchain format, Vulkan failure).
+  // One mesh per (object, level) and one per cluster of each of `clusters`' meshes (its
+  // positions posed in LOCAL space; null: none); one renderer per swapchain. baked[i] (when
+  // `baked` has an entry i that is not null and holds one BakedLevelMesh per level of chain i)
+  // gives object i's levels their own triangles, posed by its world transform in the frame of
+  // its bounding sphere (the scenario object's position and radius); otherwise a stand-in
+  // sphere of the level's triangle count. Throws render::RenderError (unsupported swapchain
+  // format, Vulkan failure, a level mesh the renderer refuses).
   RunRenderer(xr_host::XrApp& app, const std::vector<std::vector<lod::LodLevel>>& chains,
-              const ClusterScene* clusters = nullptr);
+              const ClusterScene* clusters = nullptr, std::span<const bake::BakedObject* const> baked = {});
   ~RunRenderer();
   RunRenderer(const RunRenderer&) = delete;
   RunRenderer& operator=(const RunRenderer&) = delete;

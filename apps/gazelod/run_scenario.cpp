@@ -152,7 +152,9 @@ PreparedScenario prepare_scenario(const RunOptions& opt) {
     if (opt.scene_placement != "in-front" && opt.scene_placement != "file")
       throw UsageError("--scene-placement: '" + opt.scene_placement + "' (use in-front or file)");
     try {
-      p.baked = bake::load_baked(opt.scene_path);
+      // Drawn with its levels' own triangles (RunRenderer), which only a rendered run needs.
+      p.baked = bake::load_baked(opt.scene_path,
+                                 opt.render ? bake::BakedLoad::with_level_geometry : bake::BakedLoad::chains);
     } catch (const bake::BakeError& e) {
       throw UsageError(std::string("--scene: ") + e.what());
     }

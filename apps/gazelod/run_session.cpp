@@ -174,7 +174,13 @@ int run_session(const RunOptions& opt, Io io) {
   const std::vector<std::uint8_t> full_detail(chains.size(), 0);
   const std::uint64_t triangles_full = triangles(chains, full_detail);
   std::optional<RunRenderer> renderer;
-  if (opt.render) renderer.emplace(*app, chains, clusters.empty() ? nullptr : &clusters);
+  // --scene objects are drawn with their levels' own triangles (the scenario's objects are the
+  // baked file's, in order); generated objects as stand-in spheres.
+  std::vector<const bake::BakedObject*> baked_of_plain;
+  if (prepared.baked)
+    for (std::size_t i : plain)
+      baked_of_plain.push_back(i < prepared.baked->objects.size() ? &prepared.baked->objects[i] : nullptr);
+  if (opt.render) renderer.emplace(*app, chains, clusters.empty() ? nullptr : &clusters, baked_of_plain);
 
   const double rate = scenario.frame_rate_hz > 0 ? scenario.frame_rate_hz : 90.0;
   const std::int64_t planned = opt.frames > 0 ? opt.frames : static_cast<std::int64_t>(std::llround(scenario.duration_s * rate));

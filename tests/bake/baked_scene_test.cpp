@@ -122,5 +122,39 @@ TEST(BakedScene, BrokenIdsAndChainsAreNamedByJsonPath) {
   EXPECT_HAS(load_error(dir + "/none.glb"), "none.glb: cannot open for reading");
 }
 
+// With the level geometry (what `gazelod run` draws): one triangle list per level, as many
+// triangles as the chain says, in the mesh's own space (the sphere mesh within radius 0.5);
+// none without it; a level mesh that is not triangles is named.
+TEST(BakedScene, LevelGeometryMatchesTheChain) {
+  const std::string path = baked("geometry");
+  EXPECT_TRUE(load_baked(path).objects.at(0).level_meshes.empty());
+  const BakedScene scene = load_baked(path, BakedLoad::with_level_geometry);
+  for (const BakedObject& o : scene.objects) {
+    SCOPED_TRACE(o.name);
+    ASSERT_EQ(o.level_meshes.size(), o.lods.size());
+    for (std::size_t l = 0; l < o.lods.size(); ++l) {
+      const BakedLevelMesh& g = o.level_meshes[l];
+      EXPECT_EQ(g.indices.size(), 3 * std::size_t{o.lods[l].triangles}) << "level " << l;
+      for (std::uint32_t i : g.indices) ASSERT_LT(i, g.positions_xyz.size() / 3);
+    }
+  }
+  for (std::size_t v = 0; v < scene.objects[0].level_meshes[0].positions_xyz.size(); ++v)
+    ASSERT_LE(std::abs(scene.objects[0].level_meshes[0].positions_xyz[v]), 0.5f + 1e-5f);
+
+  const std::string dir = path.substr(0, path.rfind('/'));
+  tinygltf::Model m = load_gltf(path).model;
+  const int lod1 = m.nodes[1].extensions["MSFT_lod"].Get("ids").Get(0).GetNumberAsInt();
+  const int mesh = m.nodes[std::size_t(lod1)].mesh;
+  m.meshes[std::size_t(mesh)].primitives[0].mode = TINYGLTF_MODE_POINTS;
+  testing::write_model(m, dir + "/points.glb");
+  EXPECT_NO_THROW(load_baked(dir + "/points.glb")) << "the chains alone do not read the geometry";
+  try {
+    load_baked(dir + "/points.glb", BakedLoad::with_level_geometry);
+    ADD_FAILURE() << "a points primitive was read as triangles";
+  } catch (const BakeError& e) {
+    EXPECT_HAS(std::string(e.what()), "points.glb: mesh " + std::to_string(mesh));
+  }
+}
+
 }  // namespace
 }  // namespace gazelod::bake

@@ -42,6 +42,7 @@ struct Piece {
   float error_m = 0.0f;
   bool simplified = false;
   std::size_t folded_triangles = 0;  // in the result (cluster_flips.hpp)
+  std::size_t dropped_triangles = 0;  // source chunks: degenerate triangles left out
 };
 
 // Per-thread buffers. A task works on a compact copy of its vertices, because meshopt 0.18's
@@ -75,29 +76,27 @@ class Builder {
   Builder(std::span<const float> pos, const ClusterBuildOptions& o) : pos_(pos), o_(o) {}
 
   ClusterBuildResult run(std::span<const std::uint32_t> source) {
-    weld_ = weld_positions(pos_);
+    // The weld and the source chunks (which degenerate triangles do not disturb) side by side.
+    std::vector<std::vector<std::uint32_t>> chunks;
+    parallel_for(2, [&](std::size_t i, Scratch&) {
+      if (i == 0) weld_ = weld_positions(pos_);
+      else chunks = source_chunks(pos_, source);
+    });
     locked_.assign(pos_.size() / 3, 0);  // per welded vertex
     for (std::size_t v = 0; v < o_.locked_vertices.size(); ++v)
       if (o_.locked_vertices[v]) locked_[weld_[v]] = 1;
     group_of_.assign(pos_.size() / 3, kNone);
-    std::vector<std::uint32_t> kept;
-    kept.reserve(source.size());
-    for (std::size_t t = 0; t < source.size(); t += 3) {
-      const std::uint32_t a = weld_[source[t]], b = weld_[source[t + 1]], c = weld_[source[t + 2]];
-      if (a == b || b == c || c == a) {
-        ++out_.degenerate_triangles;
-        continue;
-      }
-      kept.insert(kept.end(), source.begin() + static_cast<std::ptrdiff_t>(t),
-                  source.begin() + static_cast<std::ptrdiff_t>(t + 3));
-    }
-    out_.source_triangles = kept.size() / 3;
-    if (kept.empty()) return std::move(out_);
+    // All levels hold about twice the source's triangles (each level about half the last).
+    out_.indices.reserve(2 * source.size() + 3 * o_.max_triangles);
 
-    const std::vector<std::vector<std::uint32_t>> chunks = source_chunks(pos_, kept);
     std::vector<Piece> pieces(chunks.size());
-    parallel_for(chunks.size(), [&](std::size_t i, Scratch& s) { split_chunk(kept, chunks[i], s, pieces[i]); });
-    for (Piece& p : pieces) add_clusters(p, 0, -1);
+    parallel_for(chunks.size(), [&](std::size_t i, Scratch& s) { split_chunk(source, chunks[i], s, pieces[i]); });
+    for (Piece& p : pieces) {
+      out_.degenerate_triangles += p.dropped_triangles;
+      add_clusters(p, 0, -1);
+    }
+    out_.source_triangles = source.size() / 3 - out_.degenerate_triangles;
+    if (out_.source_triangles == 0) return std::move(out_);
     // Each source vertex is owned by the first source cluster using it (distance 0).
     {
       std::vector<bool> taken(pos_.size() / 3, false);
@@ -125,11 +124,19 @@ class Builder {
     for (std::size_t i = at; i < p.indices.size(); ++i) p.indices[i] = s.global_of[p.indices[i]];
   }
 
-  // Source clusters of one chunk, each with its own sphere.
-  void split_chunk(std::span<const std::uint32_t> kept, std::span<const std::uint32_t> chunk,
+  // Source clusters of one chunk, each with its own sphere; degenerate triangles (two corners
+  // welded together) dropped and counted.
+  void split_chunk(std::span<const std::uint32_t> source, std::span<const std::uint32_t> chunk,
                    Scratch& s, Piece& p) const {
-    for (std::uint32_t t : chunk)
-      for (int k = 0; k < 3; ++k) s.local.push_back(s.localise(kept[3 * t + k], pos_));
+    for (std::uint32_t t : chunk) {
+      const std::uint32_t* v = &source[3 * std::size_t{t}];
+      if (weld_[v[0]] == weld_[v[1]] || weld_[v[1]] == weld_[v[2]] || weld_[v[2]] == weld_[v[0]]) {
+        ++p.dropped_triangles;
+        continue;
+      }
+      for (int k = 0; k < 3; ++k) s.local.push_back(s.localise(v[k], pos_));
+    }
+    if (s.local.empty()) return;
     split(s, s.local, p);
     s.clear();
     std::size_t at = 0;
@@ -315,21 +322,28 @@ class Builder {
     return next;
   }
 
-  // shared_ per welded vertex: locked_, or used by two groups of this level.
+  // shared_ per welded vertex: locked_, or used by two groups of this level. In parallel: the
+  // first group to claim a vertex owns it, any other that finds it claimed marks it shared
+  // (the same marks in any order).
   void mark_shared(const std::vector<std::vector<std::uint32_t>>& groups) {
     const lod::ClusterHierarchy& h = out_.hierarchy;
     shared_ = locked_;
-    for (std::size_t g = 0; g < groups.size(); ++g)
+    auto each_vertex = [&](std::size_t g, auto&& f) {
       for (std::uint32_t c : groups[g])
-        for (std::uint32_t i = h.first_index[c]; i < h.first_index[c] + h.index_count[c]; ++i) {
-          std::uint32_t& owner = group_of_[weld_[out_.indices[i]]];
-          if (owner == kNone) owner = static_cast<std::uint32_t>(g);
-          else if (owner != g) shared_[weld_[out_.indices[i]]] = 1;
-        }
-    for (const auto& members : groups)
-      for (std::uint32_t c : members)
-        for (std::uint32_t i = h.first_index[c]; i < h.first_index[c] + h.index_count[c]; ++i)
-          group_of_[weld_[out_.indices[i]]] = kNone;
+        for (std::uint32_t i = h.first_index[c]; i < h.first_index[c] + h.index_count[c]; ++i) f(weld_[out_.indices[i]]);
+    };
+    parallel_for(groups.size(), [&](std::size_t g, Scratch&) {
+      each_vertex(g, [&](std::uint32_t w) {
+        std::uint32_t owner = kNone;
+        if (!std::atomic_ref<std::uint32_t>(group_of_[w]).compare_exchange_strong(owner, static_cast<std::uint32_t>(g),
+                                                                                  std::memory_order_relaxed) &&
+            owner != g)
+          std::atomic_ref<std::uint8_t>(shared_[w]).store(1, std::memory_order_relaxed);
+      });
+    });
+    parallel_for(groups.size(), [&](std::size_t g, Scratch&) {
+      each_vertex(g, [&](std::uint32_t w) { std::atomic_ref<std::uint32_t>(group_of_[w]).store(kNone, std::memory_order_relaxed); });
+    });
   }
 
   // Runs task(i, scratch) for i < count on the configured threads. Every task writes only its

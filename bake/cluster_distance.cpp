@@ -146,6 +146,7 @@ void TriangleGrid::build(std::span<const float> pos, std::span<const std::uint32
     each_cell(t, [&](std::size_t c) { items_[fill[c]++] = static_cast<std::uint32_t>(t); });
   stamp_.assign(count, 0);
   query_ = 0;
+  std::fill(std::begin(recent_), std::end(recent_), ~0u);
 }
 
 NearestTriangle TriangleGrid::nearest(const float point[3], double good_enough_m, std::uint32_t hint) {
@@ -160,6 +161,21 @@ NearestTriangle TriangleGrid::nearest(const float point[3], double good_enough_m
     if (best.distance_m <= enough_sq) return done();
     stamp_[hint] = query_;
   }
+  // The last answers found by a search: a query near the previous ones is often near one of them.
+  if (good_enough_m > 0.0)
+    for (std::uint32_t t : recent_) {
+      if (t >= stamp_.size() || stamp_[t] == query_) continue;
+      stamp_[t] = query_;
+      const double d = distance_sq(t, p, best.distance_m);
+      if (d < best.distance_m) {
+        best = {d, t};
+        if (d <= enough_sq) return done();
+      }
+    }
+  auto found = [&] {
+    recent_[recent_next_++ % kRecent] = best.triangle;
+    return done();
+  };
   int c[3];
   cell_of(p, c);
   const int max_ring = std::max({dim_[0], dim_[1], dim_[2]});
@@ -194,13 +210,13 @@ NearestTriangle TriangleGrid::nearest(const float point[3], double good_enough_m
             const double d = distance_sq(t, p, best.distance_m);
             if (d < best.distance_m) {
               best = {d, t};
-              if (d <= enough_sq) return done();
+              if (d <= enough_sq) return found();
             }
           }
         }
       }
   }
-  return done();
+  return found();
 }
 
 }  // namespace gazelod::bake

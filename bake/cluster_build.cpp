@@ -333,16 +333,21 @@ class Builder {
         for (std::uint32_t i = h.first_index[c]; i < h.first_index[c] + h.index_count[c]; ++i) f(weld_[out_.indices[i]]);
     };
     parallel_for(groups.size(), [&](std::size_t g, Scratch&) {
+      const auto me = static_cast<std::uint32_t>(g);
       each_vertex(g, [&](std::uint32_t w) {
-        std::uint32_t owner = kNone;
-        if (!std::atomic_ref<std::uint32_t>(group_of_[w]).compare_exchange_strong(owner, static_cast<std::uint32_t>(g),
-                                                                                  std::memory_order_relaxed) &&
-            owner != g)
-          std::atomic_ref<std::uint8_t>(shared_[w]).store(1, std::memory_order_relaxed);
+        std::atomic_ref<std::uint32_t> owner_of(group_of_[w]);
+        // A plain load first: most visits are the group's own repeats, which need no claim.
+        std::uint32_t owner = owner_of.load(std::memory_order_relaxed);
+        if (owner == me) return;
+        if (owner == kNone && owner_of.compare_exchange_strong(owner, me, std::memory_order_relaxed)) return;
+        if (owner != me) std::atomic_ref<std::uint8_t>(shared_[w]).store(1, std::memory_order_relaxed);
       });
     });
     parallel_for(groups.size(), [&](std::size_t g, Scratch&) {
-      each_vertex(g, [&](std::uint32_t w) { std::atomic_ref<std::uint32_t>(group_of_[w]).store(kNone, std::memory_order_relaxed); });
+      each_vertex(g, [&](std::uint32_t w) {
+        std::atomic_ref<std::uint32_t> owner_of(group_of_[w]);
+        if (owner_of.load(std::memory_order_relaxed) != kNone) owner_of.store(kNone, std::memory_order_relaxed);
+      });
     });
   }
 

@@ -13,6 +13,7 @@ std::uint32_t ClusterMeshes::add(const ClusterMeshDesc& desc) {
   const std::uint32_t id = store_.add_mesh(desc.hierarchy, desc.pose, desc.velocity_m_s, desc.index_count);
   const std::size_t n = store_.size();
   first_.push_back(static_cast<std::uint32_t>(first));
+  local_.push_back(desc.hierarchy);
   for (auto* v : {&perceptual_, &limited_, &invisible_, &drawn_, &held_, &record_held_}) v->resize(n, 0);
   self_window_s_.resize(n, 0.0);
   parent_window_s_.resize(n, 0.0);
@@ -29,6 +30,17 @@ std::uint32_t ClusterMeshes::add(const ClusterMeshDesc& desc) {
   draw_finest(std::span(drawn_).subspan(first, count), first);
   new_from_ = std::min(new_from_, first);
   return id;
+}
+
+void ClusterMeshes::set_motion(std::uint32_t id, const lod::InstanceTransform& pose, const glm::dvec3& velocity_m_s) {
+  if (id >= local_.size())
+    throw std::out_of_range("gazelod plugin: cluster mesh " + std::to_string(id) + " is not registered (" +
+                            std::to_string(local_.size()) + " are)");
+  try {
+    store_.set_pose(id, local_[id], pose, velocity_m_s);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument("gazelod plugin: cluster mesh " + std::to_string(id) + ": " + e.what());
+  }
 }
 
 void ClusterMeshes::draw_finest(std::span<std::uint8_t> out, std::size_t first) const {

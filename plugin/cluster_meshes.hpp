@@ -19,6 +19,8 @@ class ClusterMeshes {
  public:
   // Throws std::invalid_argument with the reason (nothing registered then).
   std::uint32_t add(const ClusterMeshDesc& desc);
+  // LodPlugin::set_cluster_mesh_motion: the mesh's records re-posed from its own hierarchy.
+  void set_motion(std::uint32_t id, const lod::InstanceTransform& pose, const glm::dvec3& velocity_m_s);
   std::size_t mesh_count() const { return store_.mesh_count(); }
   std::size_t cluster_count() const { return store_.size(); }
 
@@ -37,6 +39,7 @@ class ClusterMeshes {
   void draw_finest(std::span<std::uint8_t> out, std::size_t first) const;
 
   lod::ClusterStore store_;
+  std::vector<lod::ClusterHierarchy> local_;  // per mesh, its own space: what set_motion re-poses
   std::vector<std::uint32_t> first_;
   std::vector<std::uint8_t> perceptual_, limited_, invisible_, drawn_, held_, record_held_;
   std::vector<double> self_window_s_, parent_window_s_;

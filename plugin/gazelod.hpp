@@ -71,6 +71,12 @@ class LodPlugin {
   // FrameDecisions::cluster_drawn[cluster_first[id] ...]. Throws std::invalid_argument with
   // the reason for an inconsistent hierarchy (lod::validate_cluster_hierarchy) or pose.
   virtual std::uint32_t add_cluster_mesh(const ClusterMeshDesc& desc) = 0;
+  // A cluster mesh moved (per frame, no allocation; linear in its clusters): its new pose and
+  // velocity, both in the base space, as in ClusterMeshDesc. Throws std::out_of_range for an
+  // unknown id, std::invalid_argument for a pose or velocity that is not finite (or a zero
+  // rotation, a scale <= 0); the mesh keeps its previous pose then.
+  virtual void set_cluster_mesh_motion(std::uint32_t id, const lod::InstanceTransform& pose,
+                                       const glm::dvec3& velocity_m_s) = 0;
   virtual std::size_t cluster_mesh_count() const = 0;
 
   // Called when the session state changes (from the application's xrPollEvent loop).

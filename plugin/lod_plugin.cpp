@@ -94,6 +94,9 @@ class LodPluginImpl final : public LodPlugin {
     publish_clusters();
     return id;
   }
+  void set_cluster_mesh_motion(std::uint32_t id, const lod::InstanceTransform& pose, const glm::dvec3& v) override {
+    clusters_.set_motion(id, pose, v);
+  }
   std::size_t cluster_mesh_count() const override { return clusters_.mesh_count(); }
 
   void on_session_state(XrSessionState state, XrTime time) override {

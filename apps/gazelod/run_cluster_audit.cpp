@@ -48,6 +48,7 @@ ClusterAuditOracle::ClusterAuditOracle(const ClusterScene& scene) {
     try {
       const std::uint32_t id = store_.add_mesh(h, m.pose, glm::dvec3(0.0), m.primitive->indices.size());
       first_.push_back(store_.first_cluster(id));
+      local_.push_back(&h);
       covers_.emplace_back(h);
     } catch (const std::invalid_argument& e) {
       throw std::invalid_argument("cluster audit: " + m.label + ": " + e.what());
@@ -64,6 +65,11 @@ ClusterAuditOracle::ClusterAuditOracle(const ClusterScene& scene) {
   previous_cover_.assign(drawn_cover_.size(), kNoCluster);
   leaf_in_view_.assign(drawn_cover_.size(), 0);
   for (auto* v : {&oracle_drawn_, &limited_, &in_view_}) v->assign(store_.size(), 0);
+}
+
+void ClusterAuditOracle::set_pose(std::size_t mesh, const lod::InstanceTransform& pose, const glm::dvec3& velocity_m_s) {
+  if (mesh >= local_.size()) throw std::out_of_range("cluster audit: mesh " + std::to_string(mesh) + " out of range");
+  store_.set_pose(static_cast<std::uint32_t>(mesh), *local_[mesh], pose, velocity_m_s);
 }
 
 ClusterAuditFrame ClusterAuditOracle::audit(const lod::Viewer& truth, const glm::dvec3& eye_m, const glm::dquat& head,

@@ -74,8 +74,13 @@ class ClusterAuditOracle {
 
   std::span<const std::uint8_t> oracle_drawn() const { return oracle_drawn_; }
 
+  // Mesh `mesh` (the scene's order) moved: the same pose and velocity the plugin got. Throws
+  // std::invalid_argument or std::out_of_range as lod::ClusterStore::set_pose.
+  void set_pose(std::size_t mesh, const lod::InstanceTransform& pose, const glm::dvec3& velocity_m_s);
+
  private:
   lod::ClusterStore store_;
+  std::vector<const lod::ClusterHierarchy*> local_;  // per mesh: its own space (the scene's)
   std::vector<ClusterCover> covers_;            // per mesh
   std::vector<std::uint32_t> first_, count_;    // per mesh: clusters
   std::vector<std::uint32_t> leaf_first_;       // per mesh: into the per-leaf arrays

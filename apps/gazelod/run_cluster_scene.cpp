@@ -5,7 +5,6 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/mat3x3.hpp>
-#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -86,16 +85,28 @@ ClusterScene make_cluster_scene(const bake::BakedScene& baked, const glm::dvec3&
       scene.meshes.push_back(std::move(m));
     }
   }
-  for (const sim::EffectSpec& e : scenario.effects) {
-    if (e.type != "object_motion") continue;
-    const nlohmann::json params = nlohmann::json::parse(e.params_json, nullptr, false);
-    const std::string name = params.is_object() ? params.value("object", std::string()) : std::string();
-    for (std::size_t i = 0; i < n; ++i)
-      if (scene.drawn_as_clusters[i] && (name == "*" || name == scenario.objects[i].name))
-        scene.notes.push_back(e.json_path + " (object_motion) does not move cluster mesh '" + scenario.objects[i].name +
-                              "': cluster meshes stay where the scene puts them");
-  }
   return scene;
+}
+
+ClusterMotion::ClusterMotion(const ClusterScene& scene)
+    : scene_(scene), shift_(scene.meshes.size(), glm::dvec3(0.0)), velocity_(scene.meshes.size(), glm::dvec3(0.0)) {
+  for (const ClusterMesh& m : scene.meshes) pose_.push_back(m.pose);
+  changed_.reserve(scene.meshes.size());
+}
+
+std::span<const std::size_t> ClusterMotion::update(const sim::Scenario& scenario, std::span<const sim::ObjectState> now) {
+  changed_.clear();
+  for (std::size_t k = 0; k < scene_.meshes.size(); ++k) {
+    const ClusterMesh& m = scene_.meshes[k];
+    if (m.object >= now.size() || m.object >= scenario.objects.size()) continue;
+    const glm::dvec3 shift = now[m.object].position_m - scenario.objects[m.object].position_m;
+    const glm::dvec3 velocity = now[m.object].velocity_m_s;
+    if (shift == shift_[k] && velocity == velocity_[k]) continue;  // still: nothing to re-pose
+    shift_[k] = shift, velocity_[k] = velocity;
+    pose_[k].translation_m = m.pose.translation_m + shift;
+    changed_.push_back(k);
+  }
+  return changed_;
 }
 
 void register_cluster_meshes(const ClusterScene& scene, LodPlugin& plugin) {

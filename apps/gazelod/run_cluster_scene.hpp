@@ -3,8 +3,8 @@
 // registration with the plugin (LodPlugin::add_cluster_mesh) and their triangle counts.
 //
 // Every node whose mesh has GAZELOD_cluster_lod becomes one cluster mesh per such primitive,
-// static (velocity 0), posed by the node's world transform followed by the --scene-placement
-// shift. The plugin's pose is rotation, translation and a uniform scale; a node whose world
+// posed by the node's world transform followed by the --scene-placement shift, and moved
+// with its scenario object (an object_motion effect moves positions only: ClusterMotion). The plugin's pose is rotation, translation and a uniform scale; a node whose world
 // transform has a non-uniform scale, a shear, a mirror or a projective row cannot be posed so
 // and stays a plain object (its one-level chain), with a note saying why.
 #pragma once
@@ -57,8 +57,7 @@ struct ClusterScene {
 };
 
 // The cluster meshes of a baked scene whose objects are the scenario's objects (in order),
-// moved by shift_m (--scene-placement). `baked` must outlive the result. An object_motion
-// effect that names a cluster mesh (or "*") gets a note: cluster meshes stay where they are.
+// moved by shift_m (--scene-placement). `baked` must outlive the result.
 ClusterScene make_cluster_scene(const bake::BakedScene& baked, const glm::dvec3& shift_m,
                                 const sim::Scenario& scenario);
 
@@ -66,6 +65,26 @@ ClusterScene make_cluster_scene(const bake::BakedScene& baked, const glm::dvec3&
 // cluster numbering matches first_cluster. Throws UsageError naming the mesh when the plugin
 // refuses it (an inconsistent hierarchy).
 void register_cluster_meshes(const ClusterScene& scene, LodPlugin& plugin);
+
+// Where each cluster mesh is this frame: its pose translated by its scenario object's
+// displacement from the scenario's own position, and the object's velocity.
+class ClusterMotion {
+ public:
+  explicit ClusterMotion(const ClusterScene& scene);
+  // The meshes whose displacement or velocity changed since the last call (all that moved
+  // at all on the first), given every scenario object's state now; re-pose those (plugin,
+  // audit) with pose(k) and velocity_m_s(k). No allocation after the first call.
+  std::span<const std::size_t> update(const sim::Scenario& scenario, std::span<const sim::ObjectState> now);
+  const lod::InstanceTransform& pose(std::size_t mesh) const { return pose_[mesh]; }
+  const glm::dvec3& velocity_m_s(std::size_t mesh) const { return velocity_[mesh]; }
+  std::span<const glm::dvec3> shift_m() const { return shift_; }  // per mesh, LOCAL (for the renderer)
+
+ private:
+  const ClusterScene& scene_;
+  std::vector<lod::InstanceTransform> pose_;
+  std::vector<glm::dvec3> shift_, velocity_;
+  std::vector<std::size_t> changed_;
+};
 
 // Whether the plugin's FrameDecisions::cluster_first lays the clusters out as `scene` does.
 bool same_cluster_layout(const ClusterScene& scene, std::span<const std::uint32_t> cluster_first);

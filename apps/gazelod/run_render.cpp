@@ -137,7 +137,8 @@ render::FrameRenderer& RunRenderer::renderer(std::size_t eye) const {
 
 void RunRenderer::render_eye(std::size_t eye, std::uint32_t image_index, const XrView& view,
                              std::span<const glm::dvec3> positions_m, std::span<const double> radii_m,
-                             const FrameDecisions& decisions, const FrameDiagnostics& diagnostics) {
+                             const FrameDecisions& decisions, const FrameDiagnostics& diagnostics,
+                             std::span<const glm::dvec3> cluster_shift_m) {
   render::FrameRenderer& r = renderer(eye);
   const std::size_t n = std::min({positions_m.size(), radii_m.size(), mesh_ids_.size(), decisions.lod.size()});
   items_.clear();
@@ -148,13 +149,15 @@ void RunRenderer::render_eye(std::size_t eye, std::uint32_t image_index, const X
     items_.push_back({glm::vec3(positions_m[i]), static_cast<float>(radii_m[i]), ids[level],
                       static_cast<std::uint32_t>(level)});
   }
-  for (const ClusterDraw& m : clusters_) {
+  for (std::size_t k = 0; k < clusters_.size(); ++k) {
+    const ClusterDraw& m = clusters_[k];
     if (m.first_cluster >= decisions.cluster_drawn.size()) continue;  // not registered: nothing drawn
     const std::span<const std::uint8_t> drawn = decisions.cluster_drawn.subspan(
         m.first_cluster, std::min(m.depth.size(), decisions.cluster_drawn.size() - m.first_cluster));
+    const glm::vec3 center = k < cluster_shift_m.size() ? m.center_m + glm::vec3(cluster_shift_m[k]) : m.center_m;
     for (std::size_t c = 0; c < drawn.size(); ++c)
       if (drawn[c] != 0)
-        items_.push_back({m.center_m, m.radius_m, m.first_mesh + static_cast<std::uint32_t>(c), m.depth[c]});
+        items_.push_back({center, m.radius_m, m.first_mesh + static_cast<std::uint32_t>(c), m.depth[c]});
   }
   const render::EyeView eye_view = to_eye_view(view);
   if (foveal_circle_) {

@@ -43,10 +43,12 @@ class RunRenderer {
   // Draws into swapchains()[eye].images[image_index] (acquired and waited on by the caller)
   // and waits for the GPU, so the image can be released right after. positions_m/radii_m are
   // bounding spheres in LOCAL space; decisions.lod[i] is object i's level (clamped to its chain);
-  // decisions.cluster_drawn the cluster meshes' cuts (in the ClusterScene's layout).
+  // decisions.cluster_drawn the cluster meshes' cuts (in the ClusterScene's layout), each mesh
+  // moved by cluster_shift_m[k] (LOCAL; missing entries: not moved).
   void render_eye(std::size_t eye, std::uint32_t image_index, const XrView& view,
                   std::span<const glm::dvec3> positions_m, std::span<const double> radii_m,
-                  const FrameDecisions& decisions, const FrameDiagnostics& diagnostics);
+                  const FrameDecisions& decisions, const FrameDiagnostics& diagnostics,
+                  std::span<const glm::dvec3> cluster_shift_m = {});
 
   // The image last drawn by render_eye as a PNG; call before releasing it. Throws
   // render::RenderError naming the file.

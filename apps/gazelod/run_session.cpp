@@ -196,6 +196,7 @@ int run_session(const RunOptions& opt, Io io) {
   bool ground_truth = false;
   std::optional<AuditOracle> oracle;
   std::optional<ClusterAuditOracle> cluster_oracle;
+  ClusterMotion cluster_motion(clusters);
   bool layout_checked = clusters.empty();
   std::vector<std::uint8_t> previous_lod(chains.size(), 0);
   double previous_t_s = 0.0;
@@ -239,6 +240,10 @@ int run_session(const RunOptions& opt, Io io) {
       plugin->set_object_motion(static_cast<std::uint32_t>(k), objects[k].position_m, objects[k].velocity_m_s);
       positions[k] = objects[k].position_m;
     }
+    for (std::size_t k : cluster_motion.update(scenario, all_objects)) {
+      plugin->set_cluster_mesh_motion(static_cast<std::uint32_t>(k), cluster_motion.pose(k), cluster_motion.velocity_m_s(k));
+      if (cluster_oracle) cluster_oracle->set_pose(k, cluster_motion.pose(k), cluster_motion.velocity_m_s(k));
+    }
     const FrameDecisions& d = plugin->begin_frame(fs.predictedDisplayTime);
     const FrameDiagnostics& diag = plugin->diagnostics();
     const double select_ms = ms_since(t0);
@@ -255,7 +260,7 @@ int run_session(const RunOptions& opt, Io io) {
         const bool save = counting && static_cast<std::int64_t>(frames.size()) == capture;
         for (std::size_t eye = 0; eye < views.size(); ++eye) {
           const std::uint32_t index = app->acquire(eye);
-          renderer->render_eye(eye, index, views[eye], positions, radii, d, diag);
+          renderer->render_eye(eye, index, views[eye], positions, radii, d, diag, cluster_motion.shift_m());
           if (save && eye == 0) renderer->save_png(eye, index, opt.out_dir / "frame.png");
           app->release(eye);
         }

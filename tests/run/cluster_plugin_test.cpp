@@ -158,6 +158,37 @@ TEST(PluginClusters, EveryFramesCutIsConsistentAndFollowsTheGaze) {
   EXPECT_GT(finer_than_top, 100) << "and keeps detail the user can";
   ASSERT_GT(gaze_frames, 30);
   EXPECT_GE(gaze_finer, gaze_frames * 9 / 10) << "the cut is finest where the gaze is";
+
+  // The wall moves: 5 km away its cut coarsens to the top (once the switch policy lets it,
+  // within its longest deferral); back at 6 m it refines at once (refining never waits).
+  EXPECT_THROW(plugin->set_cluster_mesh_motion(1, desc.pose, glm::dvec3(0.0)), std::out_of_range);
+  lod::InstanceTransform nan_pose = desc.pose;
+  nan_pose.translation_m.x = std::nan("");
+  EXPECT_THROW(plugin->set_cluster_mesh_motion(0, nan_pose, glm::dvec3(0.0)), std::invalid_argument);
+  const auto run_frames = [&](int n) {
+    std::size_t drawn = 0;
+    for (int k = 0; k < n && app.poll_events([&](XrSessionState s, XrTime t) { plugin->on_session_state(s, t); });) {
+      if (!app.session_running()) continue;
+      const XrFrameState fs = app.wait_frame();
+      app.begin_frame();
+      const FrameDecisions& d = plugin->begin_frame(fs.predictedDisplayTime);
+      drawn = triangles(d.cluster_drawn);
+      EXPECT_EQ(group_drawn_both_ways(built, d.cluster_drawn), -1) << "an overlap after a move";
+      app.end_frame(fs.predictedDisplayTime, {});
+      plugin->end_frame(1.0);
+      ++k;
+    }
+    return drawn;
+  };
+  const std::size_t near_triangles = run_frames(1);
+  lod::InstanceTransform far = desc.pose;
+  far.translation_m.z = -5000.0;
+  plugin->set_cluster_mesh_motion(0, far, glm::dvec3(0.0));
+  const std::size_t far_triangles = run_frames(200);
+  EXPECT_EQ(far_triangles, top_triangles) << "5 km away the wall is drawn at the hierarchy's top";
+  EXPECT_LT(far_triangles, near_triangles);
+  plugin->set_cluster_mesh_motion(0, desc.pose, glm::dvec3(0.0));
+  EXPECT_GT(run_frames(1), far_triangles) << "back at 6 m the cut refines in the next frame";
 }
 
 }  // namespace

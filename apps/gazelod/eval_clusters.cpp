@@ -32,6 +32,7 @@ struct ClusterEvalFlags {
   int tiles = 1;
   std::int64_t frames = 0;   // 0: the scenario's duration
   int render_frames = 60;    // 0: no rendered runs
+  int render_rounds = 3;     // rendered runs per column, the columns taking turns
 };
 
 // The work folder, removed on the way out when it is a temporary one.
@@ -133,10 +134,10 @@ int run_eval_clusters(const ClusterEvalFlags& flags, const CLI::App& app, Io io)
   }
   // The three bakes: per-object LOD as `gazelod bake` makes it (the baseline), the same chains
   // under the cluster rule (eval_clusters_baseline.hpp), and the cluster hierarchy.
-  report.columns = {{"per_object", "per-object LOD (bake: MSFT_lod chain, object rule)", false, {}, "", 0.0, 0.0},
+  report.columns = {{"per_object", "per-object LOD (bake: MSFT_lod chain, object rule)", false, {}, "", {}, 0.0, 0.0},
                     {"per_object_cluster_rule", "per-object LOD under the cluster rule (the same chain, one cluster per level)",
-                     true, {}, "", 0.0, 0.0},
-                    {"clusters", "cluster LOD (bake --clusters)", true, {}, "", 0.0, 0.0}};
+                     true, {}, "", {}, 0.0, 0.0},
+                    {"clusters", "cluster LOD (bake --clusters)", true, {}, "", {}, 0.0, 0.0}};
   const std::string glbs[3] = {(w / "per-object.glb").string(), (w / "per-object-cluster-rule.glb").string(),
                                (w / "clusters.glb").string()};
   const std::string dirs[3] = {"per-object", "per-object-cluster-rule", "clusters"};
@@ -169,16 +170,22 @@ int run_eval_clusters(const ClusterEvalFlags& flags, const CLI::App& app, Io io)
     }
   }
   if (flags.render_frames > 0) {
+    // The columns take turns, round after round, so that a machine that slows down or speeds
+    // up during the eval moves every column alike; each column's figure is its rounds' median.
     report.rendered_frames = flags.render_frames;
-    for (std::size_t i = 0; i < 3; ++i) {
-      ClusterEvalColumn& c = report.columns[i];
-      if (!c.side) continue;
-      const fs::path dir = w / (dirs[i] + "-rendered");
-      step(run_args(glbs[i], dir, true));
-      c.frame_ms = read_mean_frame_ms(dir);
-      c.rendered_triangles = read_cluster_eval_side(dir, c.clusters).triangles_per_frame;
-      progress(c.title + fmt(" rendered: mean frame %.1f ms, %.0f triangles per frame", c.frame_ms, c.rendered_triangles));
-    }
+    report.rendered_rounds = flags.render_rounds;
+    for (int round = 0; round < flags.render_rounds; ++round)
+      for (std::size_t i = 0; i < 3; ++i) {
+        ClusterEvalColumn& c = report.columns[i];
+        if (!c.side) continue;
+        const fs::path dir = w / (dirs[i] + "-rendered-" + std::to_string(round + 1));
+        step(run_args(glbs[i], dir, true));
+        c.frame_ms_rounds.push_back(read_mean_frame_ms(dir));
+        c.rendered_triangles = read_cluster_eval_side(dir, c.clusters).triangles_per_frame;
+        progress(c.title + " rendered, round " + std::to_string(round + 1) +
+                 fmt(": mean frame %.1f ms, %.0f triangles per frame", c.frame_ms_rounds.back(), c.rendered_triangles));
+      }
+    for (ClusterEvalColumn& c : report.columns) c.frame_ms = median_of(c.frame_ms_rounds);
   }
 
   const std::string md = "<!-- written by: gazelod eval clusters -->\n\n" + cluster_eval_markdown(report);
@@ -217,6 +224,9 @@ EvalSubcommand add_eval_clusters(CLI::App& eval) {
       ->check(CLI::Range(std::int64_t{1}, std::int64_t{10'000'000}));
   app->add_option("--render-frames", flags->render_frames, "Frames of each rendered run (default 60; 0: none)")
       ->check(CLI::Range(0, 100000));
+  app->add_option("--render-rounds", flags->render_rounds,
+                  "Rendered runs per column, the columns taking turns; the median counts (default 3)")
+      ->check(CLI::Range(1, 20));
   return {app, [flags, app](Io io) { return run_eval_clusters(*flags, *app, io); }};
 }
 

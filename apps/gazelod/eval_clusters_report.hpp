@@ -40,6 +40,9 @@ ClusterEvalSide read_cluster_eval_side(const std::filesystem::path& dir, bool cl
 // Mean frame time (ms) from DIR/summary.json of a rendered run.
 double read_mean_frame_ms(const std::filesystem::path& dir);
 
+// The median (the mean of the middle two for an even count; 0 for none).
+double median_of(std::vector<double> values);
+
 // One column of the comparison: a bake of the scene and its runs.
 struct ClusterEvalColumn {
   std::string key;    // "per_object", "per_object_cluster_rule", "clusters" (clusters.json)
@@ -47,7 +50,8 @@ struct ClusterEvalColumn {
   bool clusters = false;             // read the run's cluster figures (units: leaves)
   std::optional<ClusterEvalSide> side;
   std::string missing;               // why `side` is empty
-  double frame_ms = 0.0;             // rendered run: mean frame time (0: not measured)
+  std::vector<double> frame_ms_rounds;  // rendered runs: each round's mean frame time
+  double frame_ms = 0.0;             // their median (0: not measured)
   double rendered_triangles = 0.0;   // rendered run: triangles per frame
 };
 
@@ -60,6 +64,7 @@ struct ClusterEvalReport {
   std::string machine;        // CPU model
   std::vector<ClusterEvalColumn> columns;  // per-object, per-object under the cluster rule, clusters
   int rendered_frames = 0;    // 0: no rendered runs
+  int rendered_rounds = 1;    // rendered runs per column (ClusterEvalColumn::frame_ms_rounds)
 
   // Column a's triangles per frame over column b's (0 when either is missing).
   double triangle_ratio(std::size_t a, std::size_t b) const;

@@ -114,5 +114,31 @@ TEST(EvalClustersReport, TableTargetAndJson) {
   EXPECT_EQ(cluster_eval_json(r)["triangle_ratio"], 0.0);
 }
 
+// Rendered rounds: each column's figure is the median of its rounds, shown with their range.
+TEST(EvalClustersReport, RenderedRoundsGiveTheMedianAndTheRange) {
+  EXPECT_EQ(median_of({}), 0.0);
+  EXPECT_EQ(median_of({5.0}), 5.0);
+  EXPECT_EQ(median_of({9.0, 1.0, 4.0}), 4.0);
+  EXPECT_EQ(median_of({4.0, 1.0, 9.0, 2.0}), 3.0);
+  ClusterEvalReport r;
+  r.columns.resize(3);
+  for (auto& c : r.columns) c.side = ClusterEvalSide{};
+  r.columns[kPerObjectColumn].key = "per_object";
+  r.columns[kSameRuleColumn].key = "per_object_cluster_rule";
+  r.columns[kClustersColumn].key = "clusters";
+  r.rendered_frames = 20;
+  r.rendered_rounds = 3;
+  r.columns[kClustersColumn].frame_ms_rounds = {150.0, 120.0, 210.0};
+  r.columns[kClustersColumn].frame_ms = median_of(r.columns[kClustersColumn].frame_ms_rounds);
+  const std::string md = cluster_eval_markdown(r);
+  EXPECT_HAS(md, "rendered (3 interleaved rounds of 20 frames)");
+  EXPECT_HAS(md, "150.0 ms (120.0-210.0)");
+  const auto j = cluster_eval_json(r)["clusters"]["rendered"];
+  EXPECT_EQ(j["frame_ms"], 150.0);
+  EXPECT_EQ(j["rounds"], 3);
+  EXPECT_EQ(j["frame_ms_rounds"].size(), 3u);
+  EXPECT_FALSE(cluster_eval_json(r)["per_object"].contains("rendered")) << "a column not rendered has none";
+}
+
 }  // namespace
 }  // namespace gazelod::cli

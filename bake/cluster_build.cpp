@@ -85,7 +85,7 @@ class Builder {
     locked_.assign(pos_.size() / 3, 0);  // per welded vertex
     for (std::size_t v = 0; v < o_.locked_vertices.size(); ++v)
       if (o_.locked_vertices[v]) locked_[weld_[v]] = 1;
-    group_of_.assign(pos_.size() / 3, kNone);
+    group_of_.assign(pos_.size() / 3, 0);
     // All levels hold about twice the source's triangles (each level about half the last).
     out_.indices.reserve(2 * source.size() + 3 * o_.max_triangles);
 
@@ -324,31 +324,28 @@ class Builder {
 
   // shared_ per welded vertex: locked_, or used by two groups of this level. In parallel: the
   // first group to claim a vertex owns it, any other that finds it claimed marks it shared
-  // (the same marks in any order).
+  // (the same marks in any order). Claims carry ids from group_base_ up, so that an earlier
+  // level's (below it) reads as unclaimed and needs no reset.
   void mark_shared(const std::vector<std::vector<std::uint32_t>>& groups) {
     const lod::ClusterHierarchy& h = out_.hierarchy;
     shared_ = locked_;
-    auto each_vertex = [&](std::size_t g, auto&& f) {
+    if (groups.size() >= kNone - group_base_) throw BakeError(o_.label + ": more than 2^32 - 2 groups in all levels");
+    const std::uint32_t base = group_base_;
+    parallel_for(groups.size(), [&](std::size_t g, Scratch&) {
+      const auto me = static_cast<std::uint32_t>(base + g);
       for (std::uint32_t c : groups[g])
-        for (std::uint32_t i = h.first_index[c]; i < h.first_index[c] + h.index_count[c]; ++i) f(weld_[out_.indices[i]]);
-    };
-    parallel_for(groups.size(), [&](std::size_t g, Scratch&) {
-      const auto me = static_cast<std::uint32_t>(g);
-      each_vertex(g, [&](std::uint32_t w) {
-        std::atomic_ref<std::uint32_t> owner_of(group_of_[w]);
-        // A plain load first: most visits are the group's own repeats, which need no claim.
-        std::uint32_t owner = owner_of.load(std::memory_order_relaxed);
-        if (owner == me) return;
-        if (owner == kNone && owner_of.compare_exchange_strong(owner, me, std::memory_order_relaxed)) return;
-        if (owner != me) std::atomic_ref<std::uint8_t>(shared_[w]).store(1, std::memory_order_relaxed);
-      });
+        for (std::uint32_t i = h.first_index[c]; i < h.first_index[c] + h.index_count[c]; ++i) {
+          const std::uint32_t w = weld_[out_.indices[i]];
+          std::atomic_ref<std::uint32_t> owner_of(group_of_[w]);
+          // A plain load first: most visits are the group's own repeats, which need no claim.
+          std::uint32_t owner = owner_of.load(std::memory_order_relaxed);
+          if (owner == me) continue;
+          // A failed claim leaves the claiming group's id (this level's, not ours) in `owner`.
+          if (owner < base && owner_of.compare_exchange_strong(owner, me, std::memory_order_relaxed)) continue;
+          std::atomic_ref<std::uint8_t>(shared_[w]).store(1, std::memory_order_relaxed);
+        }
     });
-    parallel_for(groups.size(), [&](std::size_t g, Scratch&) {
-      each_vertex(g, [&](std::uint32_t w) {
-        std::atomic_ref<std::uint32_t> owner_of(group_of_[w]);
-        if (owner_of.load(std::memory_order_relaxed) != kNone) owner_of.store(kNone, std::memory_order_relaxed);
-      });
-    });
+    group_base_ += static_cast<std::uint32_t>(groups.size());
   }
 
   // Runs task(i, scratch) for i < count on the configured threads. Every task writes only its
@@ -382,9 +379,10 @@ class Builder {
   const ClusterBuildOptions& o_;
   std::vector<std::uint32_t> weld_;
   // Per welded vertex: locked by the caller or by a top cluster; locked at this level (also used
-  // by two groups); the group using it (scratch).
+  // by two groups); the group claiming it (mark_shared()).
   std::vector<std::uint8_t> locked_, shared_;
   std::vector<std::uint32_t> group_of_;
+  std::uint32_t group_base_ = 1;  // the first claim id of the next level
   std::vector<Sphere> self_;  // self spheres, as Sphere (hierarchy holds the same, split up)
   // Per cluster not yet grouped: the source vertices it answers for (measure()).
   std::vector<std::vector<std::uint32_t>> owned_;

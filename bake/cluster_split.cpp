@@ -8,6 +8,7 @@ namespace {
 
 constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 constexpr std::size_t kJumpScan = 512;
+constexpr std::uint32_t kRanks = 5;  // a frontier triangle's rank, 0 to 4 (split())
 
 }  // namespace
 
@@ -39,11 +40,31 @@ void ClusterSplitter::split(std::span<const float> pos, std::size_t vertex_count
   in_cluster_.assign(vertex_count, kNone);
   frontier_of_.assign(n, kNone);
   score_.assign(n, 0);
+  arrival_.resize(n);
   done_.assign(n, 0);
 
   live_.assign(vertex_count, 0);
   for (std::size_t t = 0; t < n; ++t)
     for (int k = 0; k < 3; ++k) live_[tris[3 * t + k]] += distinct(t, k);
+  // A frontier triangle's rank, the order meshopt takes them in: no new vertex (0), one that
+  // would be left dangling (1: the last triangle left using one of its corners), then by new
+  // vertices (2 to 4). A rank only falls while a cluster grows; each frontier triangle is in
+  // the bucket of every rank it has had in this cluster (the earlier ones stale).
+  auto rank_of = [&](std::uint32_t t) -> std::uint32_t { return score_[t] == 0 ? 0 : dangling_[t] ? 1 : score_[t] + 1; };
+  for (auto& b : bucket_) b.clear();
+  std::uint32_t cluster = 0;
+  dangling_.assign(n, 0);
+  auto flag_last = [&](std::uint32_t v) {
+    for (std::uint32_t i = first_[v]; i < first_[v + 1]; ++i)
+      if (const std::uint32_t u = adjacent_[i]; !done_[u]) {
+        if (dangling_[u]) return;
+        dangling_[u] = 1;
+        if (frontier_of_[u] == cluster && score_[u] > 0) bucket_[1].push_back(u);
+        return;
+      }
+  };
+  for (std::uint32_t v = 0; v < vertex_count; ++v)
+    if (live_[v] == 1) flag_last(v);
   // In float: only an order among nearby triangles, and the hot loop of the scan (about a fifth
   // of a build in double).
   auto distance_sq = [&](std::uint32_t t, const float c[3]) {
@@ -52,7 +73,7 @@ void ClusterSplitter::split(std::span<const float> pos, std::size_t vertex_count
   };
   float last[3] = {0.0f, 0.0f, 0.0f};  // the previous cluster's centroid
   std::size_t cursor = 0, emitted = 0;
-  for (std::uint32_t cluster = 0; emitted < n; ++cluster) {
+  for (; emitted < n; ++cluster) {
     // Seed: of the triangles the previous cluster left on its frontier, the one nearest its
     // centroid (meshopt starts the next meshlet there too); else the first one left.
     std::uint32_t seed = kNone;
@@ -67,6 +88,8 @@ void ClusterSplitter::split(std::span<const float> pos, std::size_t vertex_count
       seed = static_cast<std::uint32_t>(cursor);
     }
     frontier_.clear();
+    for (auto& b : bucket_) b.clear();
+    std::uint32_t arrivals = 0;
     std::size_t vertices = 0, triangles = 0;
     double sum[3] = {0.0, 0.0, 0.0};
     auto add = [&](std::uint32_t t) {
@@ -76,7 +99,7 @@ void ClusterSplitter::split(std::span<const float> pos, std::size_t vertex_count
       for (int k = 0; k < 3; ++k) {
         const std::uint32_t v = tris[3 * t + k];
         out.push_back(v);
-        if (distinct(t, k)) --live_[v];
+        if (distinct(t, k) && --live_[v] == 1) flag_last(v);
         if (in_cluster_[v] == cluster) continue;
         in_cluster_[v] = cluster;
         ++vertices;
@@ -84,14 +107,18 @@ void ClusterSplitter::split(std::span<const float> pos, std::size_t vertex_count
           const std::uint32_t u = adjacent_[i];
           if (done_[u]) continue;
           if (frontier_of_[u] == cluster) {
+            const std::uint32_t was = rank_of(u);
             --score_[u];
+            if (const std::uint32_t r = rank_of(u); r != was) bucket_[r].push_back(u);
             continue;
           }
           frontier_of_[u] = cluster;
           frontier_.push_back(u);
+          arrival_[u] = arrivals++;
           std::uint32_t fresh = 0;
           for (int c = 0; c < 3; ++c) fresh += distinct(u, c) && in_cluster_[tris[3 * u + c]] != cluster;
           score_[u] = fresh;
+          bucket_[rank_of(u)].push_back(u);
         }
       }
     };
@@ -99,25 +126,22 @@ void ClusterSplitter::split(std::span<const float> pos, std::size_t vertex_count
     while (triangles < max_triangles) {
       const float centre[3] = {float(sum[0] / double(triangles)), float(sum[1] / double(triangles)),
                                float(sum[2] / double(triangles))};
-      std::uint32_t best = kNone, best_rank = 0;
+      std::uint32_t best = kNone;
       float best_sq = 0.0f;
-      std::size_t kept = 0;
-      for (std::uint32_t t : frontier_) {
-        if (done_[t]) continue;
-        frontier_[kept++] = t;  // drop the triangles already taken
-        // meshopt's order: no new vertex, then a triangle that would be left dangling (a corner
-        // no other triangle uses), then by new vertices.
-        std::uint32_t rank = score_[t];
-        if (rank > 0 && best != kNone && best_rank == 0) continue;
-        if (rank > 0) {
-          const bool dangling = live_[tris[3 * t]] == 1 || live_[tris[3 * t + 1]] == 1 || live_[tris[3 * t + 2]] == 1;
-          rank = dangling ? 1 : rank + 1;
+      // The lowest rank first, then the nearest to the centroid, then the earliest on the
+      // frontier: the first non-empty bucket decides.
+      for (std::uint32_t r = 0; r < kRanks && best == kNone; ++r) {
+        std::vector<std::uint32_t>& b = bucket_[r];
+        std::size_t kept = 0;
+        for (std::uint32_t t : b) {
+          if (done_[t] || rank_of(t) != r) continue;  // taken, or fallen to a lower rank
+          b[kept++] = t;
+          const float d_sq = distance_sq(t, centre);
+          if (best == kNone || d_sq < best_sq || (d_sq == best_sq && arrival_[t] < arrival_[best]))
+            best = t, best_sq = d_sq;
         }
-        if (best != kNone && rank > best_rank) continue;
-        const float d_sq = distance_sq(t, centre);
-        if (best == kNone || rank < best_rank || d_sq < best_sq) best = t, best_rank = rank, best_sq = d_sq;
+        b.resize(kept);
       }
-      frontier_.resize(kept);
       if (best == kNone && emitted < n) {  // nothing touches the cluster: the nearest triangle left
         while (done_[cursor]) ++cursor;
         // At most kJumpScan triangles from the first one left: bounded work on a triangle soup.

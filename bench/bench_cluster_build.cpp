@@ -3,14 +3,18 @@
 // sines up to 4 m). Baseline in the same process, registered first: one meshopt_simplify of the
 // whole mesh to half its triangles. Counters: triangles_per_s = input triangles / wall time;
 // x_simplify = the build's wall time over the baseline's (how many whole-mesh halvings the
-// hierarchy costs). The build runs with 1 thread and with all cores (threads 0).
+// hierarchy costs); digest = an FNV-1a hash of the hierarchy's indices and errors (48 bits), the
+// same for any thread count and across a change that must not alter the output. The build
+// runs with 1 thread and with all cores (threads 0).
 #include "bake/cluster_build.hpp"
 #include "tests/bake/test_meshes.hpp"
 
 #include <benchmark/benchmark.h>
 #include <meshoptimizer.h>
 
+#include <bit>
 #include <chrono>
+#include <cstdint>
 #include <cmath>
 #include <numbers>
 
@@ -40,6 +44,21 @@ const testing::TestMesh& terrain() {
 double& baseline_s() {  // seconds per meshopt_simplify to half, set by the baseline
   static double s = 0.0;
   return s;
+}
+
+// FNV-1a over the indices and the self and parent errors' bits, folded to 48 bits (exact in a
+// double counter).
+double digest(const ClusterBuildResult& r) {
+  std::uint64_t h = 1469598103934665603ull;
+  auto mix = [&](std::uint32_t x) {
+    for (int b = 0; b < 4; ++b) h = (h ^ ((x >> (8 * b)) & 0xffu)) * 1099511628211ull;
+  };
+  for (std::uint32_t i : r.indices) mix(i);
+  for (std::size_t c = 0; c < r.hierarchy.size(); ++c) {
+    mix(std::bit_cast<std::uint32_t>(r.hierarchy.self_error_m[c]));
+    mix(std::bit_cast<std::uint32_t>(r.hierarchy.parent_error_m[c]));
+  }
+  return static_cast<double>((h ^ (h >> 48)) & ((std::uint64_t{1} << 48) - 1));
 }
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
@@ -73,15 +92,17 @@ void BM_ClusterBuild(benchmark::State& state) {
   ClusterBuildOptions o;
   o.threads = static_cast<unsigned>(state.range(0));
   std::size_t clusters = 0, levels = 0;
+  double hash = 0.0;
   const auto t0 = std::chrono::steady_clock::now();
   for (auto _ : state) {
     const ClusterBuildResult r = build_cluster_hierarchy(m.positions, m.indices, o);
-    clusters = r.hierarchy.size(), levels = r.levels;
+    clusters = r.hierarchy.size(), levels = r.levels, hash = digest(r);
     benchmark::DoNotOptimize(r.indices.data());
   }
   report(state, seconds_since(t0));
   state.counters["clusters"] = static_cast<double>(clusters);
   state.counters["levels"] = static_cast<double>(levels);
+  state.counters["digest"] = hash;
 }
 
 BENCHMARK(BM_MeshoptSimplifyHalf)->Unit(benchmark::kMillisecond)->UseRealTime();

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cfloat>
 #include <cmath>
 #include <exception>
@@ -25,10 +26,29 @@ namespace gazelod::bake {
 namespace {
 
 constexpr std::uint32_t kNone = ~0u;
+
 constexpr std::size_t kMaxDepth = 255;  // depth is stored as uint8
 // meshopt's error estimate (relative to the group's extent) up to which a collapse is free:
 // float noise on coplanar or collinear collapses.
 constexpr float kFreeErrorRel = 1e-5f;
+constexpr std::size_t kPrefetch = 16;  // measure(): queries ahead whose vertex data is fetched
+// A level with fewer groups than this measures each group's source vertices in slices of
+// kMeasureSlice in parallel (the top levels: few groups, each answering for many vertices).
+constexpr std::size_t kSlicedBelowGroups = 8;
+constexpr std::size_t kMeasureSlice = 16384;
+
+// Adds the wall seconds since construction to `into` when destroyed.
+class PhaseTimer {
+ public:
+  explicit PhaseTimer(double& into) : into_(into), start_(std::chrono::steady_clock::now()) {}
+  ~PhaseTimer() { into_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
+  PhaseTimer(const PhaseTimer&) = delete;
+  PhaseTimer& operator=(const PhaseTimer&) = delete;
+
+ private:
+  double& into_;
+  std::chrono::steady_clock::time_point start_;
+};
 
 // New clusters made by one parallel task: a chunk of the source mesh split into clusters
 // (spheres: each cluster's own), or one group simplified and split (sphere, error: the group's).
@@ -40,6 +60,9 @@ struct Piece {
   std::vector<std::vector<std::uint32_t>> owned;
   Sphere sphere;
   float error_m = 0.0f;
+  // Until measured: the largest member error and the width of the folds (the error's floors).
+  float child_error_m = 0.0f;
+  double fold_error_m = 0.0;
   bool simplified = false;
   std::size_t folded_triangles = 0;  // in the result (cluster_flips.hpp)
   std::size_t dropped_triangles = 0;  // source chunks: degenerate triangles left out
@@ -52,6 +75,7 @@ struct Scratch {
   std::vector<std::uint32_t> local_of, global_of, local, simplified;
   std::vector<std::uint32_t> cluster_of, region, triangle_cluster;  // cluster_of: per welded vertex
   TriangleGrid grid;
+  GridSearch search;
   ClusterSplitter splitter;
   std::vector<float> local_xyz, normals;
   std::vector<Sphere> spheres;
@@ -78,10 +102,14 @@ class Builder {
   ClusterBuildResult run(std::span<const std::uint32_t> source) {
     // The weld and the source chunks (which degenerate triangles do not disturb) side by side.
     std::vector<std::vector<std::uint32_t>> chunks;
-    parallel_for(2, [&](std::size_t i, Scratch&) {
-      if (i == 0) weld_ = weld_positions(pos_);
-      else chunks = source_chunks(pos_, source);
-    });
+    ClusterBuildResult::Phases& time = out_.phases;
+    {
+      PhaseTimer timer(time.weld_s);
+      parallel_for(2, [&](std::size_t i, Scratch&) {
+        if (i == 0) weld_ = weld_positions(pos_);
+        else chunks = source_chunks(pos_, source);
+      });
+    }
     locked_.assign(pos_.size() / 3, 0);  // per welded vertex
     for (std::size_t v = 0; v < o_.locked_vertices.size(); ++v)
       if (o_.locked_vertices[v]) locked_[weld_[v]] = 1;
@@ -90,7 +118,10 @@ class Builder {
     out_.indices.reserve(2 * source.size() + 3 * o_.max_triangles);
 
     std::vector<Piece> pieces(chunks.size());
-    parallel_for(chunks.size(), [&](std::size_t i, Scratch& s) { split_chunk(source, chunks[i], s, pieces[i]); });
+    {
+      PhaseTimer timer(time.source_clusters_s);
+      parallel_for(chunks.size(), [&](std::size_t i, Scratch& s) { split_chunk(source, chunks[i], s, pieces[i]); });
+    }
     for (Piece& p : pieces) {
       out_.degenerate_triangles += p.dropped_triangles;
       add_clusters(p, 0, -1);
@@ -202,25 +233,58 @@ class Builder {
     // cost 30 to 40 % of the build's throughput and still left a third to three quarters.)
     const Folds f = n > 0 ? folds(n) : Folds{};
     p.folded_triangles = f.triangles;
-    const double fold_error_m = f.width_m;
+    p.fold_error_m = f.width_m;
+    p.child_error_m = child_error_m;
     s.local_xyz.resize(3 * vcount);  // the copies go before the split
     if (n > 0 && double(n) <= o_.stuck_ratio * double(s.local.size())) {
       p.simplified = true;
       split(s, std::span<const std::uint32_t>(s.simplified.data(), n), p);
-      const double error_m = std::max(measure(members, child_error_m, s, p), fold_error_m);
-      // Rounded up to a float at least as large, and never below a member's (monotone).
-      auto error_f = static_cast<float>(error_m);
-      if (double(error_f) < error_m) error_f = std::nextafter(error_f, INFINITY);
-      p.error_m = std::max(child_error_m, error_f);
     }
     s.clear();
   }
 
-  // The largest distance from the source vertices the members own to the group's new triangles;
-  // each vertex goes to the new cluster holding its nearest triangle (or a corner at it).
-  // Vertices are only searched until a triangle within the largest error so far (at least the
-  // members' error, which the group keeps anyway) is found: that bounds them as well.
-  double measure(const std::vector<std::uint32_t>& members, double floor_m, Scratch& s, Piece& p) const {
+  // The group's error from its largest distance to the source (measure()), rounded up to a
+  // float at least as large, and never below a member's (monotone).
+  static void set_error(double distance_m, Piece& p) {
+    const double error_m = std::max(distance_m, p.fold_error_m);
+    auto error_f = static_cast<float>(error_m);
+    if (double(error_f) < error_m) error_f = std::nextafter(error_f, INFINITY);
+    p.error_m = std::max(p.child_error_m, error_f);
+  }
+
+  // A simplified group's distance to the source, measured by one task.
+  void measure_group(const std::vector<std::uint32_t>& members, Scratch& s, Piece& p) const {
+    prepare_measure(members, s, p);
+    p.owned.assign(p.index_count.size(), {});
+    set_error(measure(s.region, s, s.search, p.child_error_m, p.owned), p);
+    finish_measure(s, p);
+  }
+
+  // The same, the source vertices cut into slices measured in parallel (for levels with few
+  // groups, each answering for many vertices). The slices' bounds do not depend on the thread
+  // count, so neither does the result.
+  void measure_group_sliced(const std::vector<std::uint32_t>& members, Piece& p) {
+    Scratch& s = *shared_scratch_;
+    prepare_measure(members, s, p);
+    const std::size_t slices = (s.region.size() + kMeasureSlice - 1) / kMeasureSlice;
+    std::vector<std::vector<std::vector<std::uint32_t>>> owned(slices);
+    std::vector<double> distance_m(slices, 0.0);
+    parallel_for(slices, [&](std::size_t i, Scratch& t) {
+      const std::size_t at = i * kMeasureSlice;
+      owned[i].assign(p.index_count.size(), {});
+      distance_m[i] = measure(std::span<const std::uint32_t>(s.region).subspan(at, std::min(kMeasureSlice, s.region.size() - at)),
+                              s, t.search, p.child_error_m, owned[i]);
+    });
+    p.owned.assign(p.index_count.size(), {});
+    for (std::size_t k = 0; k < p.index_count.size(); ++k)
+      for (std::size_t i = 0; i < slices; ++i) p.owned[k].insert(p.owned[k].end(), owned[i][k].begin(), owned[i][k].end());
+    set_error(slices ? *std::max_element(distance_m.begin(), distance_m.end()) : 0.0, p);
+    finish_measure(s, p);
+  }
+
+  // In s: the source vertices the members own (region), which new cluster each new vertex is
+  // in (cluster_of) and each new triangle's cluster, and the new triangles' grid.
+  void prepare_measure(const std::vector<std::uint32_t>& members, Scratch& s, const Piece& p) const {
     s.region.clear();
     for (std::uint32_t c : members) s.region.insert(s.region.end(), owned_[c].begin(), owned_[c].end());
     s.triangle_cluster.clear();
@@ -232,20 +296,40 @@ class Builder {
       s.triangle_cluster.insert(s.triangle_cluster.end(), p.index_count[k] / 3, k);
     }
     s.grid.build(pos_, p.indices);
-    p.owned.assign(p.index_count.size(), {});
+  }
+
+  void finish_measure(Scratch& s, const Piece& p) const {
+    for (std::uint32_t v : p.indices) s.cluster_of[weld_[v]] = kNone;
+  }
+
+  // The largest distance from the source vertices `region` to the group's new triangles (as
+  // prepared in `in`), at least floor_m; each vertex goes to owned[k] of the new cluster k
+  // holding its nearest triangle (or a corner at it). Vertices are only searched until a
+  // triangle within the largest distance so far (at least the members' error, which the group
+  // keeps anyway) is found: that bounds them as well. The distance comes out the same in any
+  // order (which cluster a vertex goes to may not).
+  double measure(std::span<const std::uint32_t> region, const Scratch& in, GridSearch& search, double floor_m,
+                 std::vector<std::vector<std::uint32_t>>& owned) const {
     double error_m = floor_m;
     std::uint32_t hint = kNone;
-    for (std::uint32_t v : s.region) {
-      if (s.cluster_of[v] != kNone) {
-        p.owned[s.cluster_of[v]].push_back(v);
+    const std::size_t count = region.size();
+    for (std::size_t i = 0; i < count; ++i) {
+      // The region's vertices are scattered over the mesh: fetch a few queries ahead.
+      if (i + kPrefetch < count) {
+        const std::uint32_t ahead = region[i + kPrefetch];
+        __builtin_prefetch(&in.cluster_of[ahead]);
+        __builtin_prefetch(&pos_[3 * std::size_t{ahead}]);
+      }
+      const std::uint32_t v = region[i];
+      if (in.cluster_of[v] != kNone) {
+        owned[in.cluster_of[v]].push_back(v);
         continue;
       }
-      const NearestTriangle t = s.grid.nearest(&pos_[3 * std::size_t{v}], error_m, hint);
+      const NearestTriangle t = search.nearest(in.grid, &pos_[3 * std::size_t{v}], error_m, hint);
       hint = t.triangle;
-      p.owned[s.triangle_cluster[t.triangle]].push_back(v);
+      owned[in.triangle_cluster[t.triangle]].push_back(v);
       error_m = std::max(error_m, t.distance_m);
     }
-    for (std::uint32_t v : p.indices) s.cluster_of[weld_[v]] = kNone;
     return error_m;
   }
 
@@ -290,14 +374,33 @@ class Builder {
     std::vector<Sphere> bounds;
     for (std::uint32_t c : pending)
       first.push_back(h.first_index[c]), count.push_back(h.index_count[c]), bounds.push_back(self_[c]);
-    std::vector<std::vector<std::uint32_t>> groups =
-        grouper.group({out_.indices, weld_, first, count, bounds}, o_.group_size);
+    std::vector<std::vector<std::uint32_t>> groups;
+    {
+      PhaseTimer timer(out_.phases.grouping_s);
+      groups = grouper.group({out_.indices, weld_, first, count, bounds}, o_.group_size);
+    }
     for (auto& g : groups)
       for (std::uint32_t& m : g) m = pending[m];
-    mark_shared(groups);
+    {
+      PhaseTimer timer(out_.phases.shared_s);
+      mark_shared(groups);
+    }
 
     std::vector<Piece> pieces(groups.size());
-    parallel_for(groups.size(), [&](std::size_t g, Scratch& s) { simplify_group(groups[g], s, pieces[g]); });
+    {
+      PhaseTimer timer(out_.phases.groups_s);
+      const bool sliced = groups.size() < kSlicedBelowGroups;
+      parallel_for(groups.size(), [&](std::size_t g, Scratch& s) {
+        simplify_group(groups[g], s, pieces[g]);
+        if (!sliced && pieces[g].simplified) measure_group(groups[g], s, pieces[g]);
+      });
+      if (sliced) {
+        PhaseTimer sliced_timer(out_.phases.sliced_measure_s);
+        if (!shared_scratch_) shared_scratch_ = std::make_unique<Scratch>(pos_.size() / 3);
+        for (std::size_t g = 0; g < groups.size(); ++g)
+          if (pieces[g].simplified) measure_group_sliced(groups[g], pieces[g]);
+      }
+    }
 
     std::vector<std::uint32_t> next;
     for (std::size_t g = 0; g < groups.size(); ++g) {
@@ -387,6 +490,7 @@ class Builder {
   // Per cluster not yet grouped: the source vertices it answers for (measure()).
   std::vector<std::vector<std::uint32_t>> owned_;
   std::vector<std::unique_ptr<Scratch>> scratch_;
+  std::unique_ptr<Scratch> shared_scratch_;  // a sliced measure's (read by every slice)
   ClusterBuildResult out_;
 };
 

@@ -69,6 +69,15 @@ struct ClusterBuildResult {
   // a known meshoptimizer 0.18 defect, counted so that a bake says how much of it it holds; each
   // such group's error is at least the width of its folded triangles.
   std::size_t folded_triangles = 0;
+  // Wall seconds per phase, for finding where a build's time goes (the bench prints them).
+  struct Phases {
+    double weld_s = 0.0;            // welding and cutting the source into chunks
+    double source_clusters_s = 0.0;  // splitting the chunks into clusters
+    double grouping_s = 0.0;         // every level's grouping (one thread)
+    double shared_s = 0.0;           // every level's shared-vertex marks
+    double groups_s = 0.0;           // simplifying, splitting and measuring the groups
+    double sliced_measure_s = 0.0;   // of that, the few-group levels' measures in slices
+  } phases;
 };
 
 // "" or a message naming the bad option.

@@ -2,6 +2,7 @@
 #include "bake/cluster_distance.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 
@@ -53,8 +54,6 @@ double point_triangle_distance(const double p[3], const double a[3], const doubl
   const double q[3] = {a[0] + ab[0] * v + ac[0] * w, a[1] + ab[1] * v + ac[1] * w, a[2] + ab[2] * v + ac[2] * w};
   return distance_to(p, q);
 }
-
-constexpr std::size_t kStride = 22;  // doubles per triangle in tri_
 
 void TriangleGrid::cell_of(const double p[3], int c[3]) const {
   for (int k = 0; k < 3; ++k) {  // truncation is floor once negatives are clamped to 0
@@ -140,16 +139,21 @@ void TriangleGrid::build(std::span<const float> pos, std::span<const std::uint32
   for (std::size_t t = 0; t < count; ++t) each_cell(t, [&](std::size_t c) { ++first_[c + 1]; });
   for (std::size_t c = 1; c <= cells; ++c) first_[c] += first_[c - 1];
   items_.resize(first_[cells]);
-  std::vector<std::uint32_t>& fill = stamp_;  // reused as the fill cursor, then reset
-  fill.assign(first_.begin(), first_.end() - 1);
+  fill_.assign(first_.begin(), first_.end() - 1);
   for (std::size_t t = 0; t < count; ++t)
-    each_cell(t, [&](std::size_t c) { items_[fill[c]++] = static_cast<std::uint32_t>(t); });
-  stamp_.assign(count, 0);
-  query_ = 0;
-  std::fill(std::begin(recent_), std::end(recent_), ~0u);
+    each_cell(t, [&](std::size_t c) { items_[fill_[c]++] = static_cast<std::uint32_t>(t); });
+  static std::atomic<std::uint64_t> builds{0};
+  build_ = ++builds;
 }
 
-NearestTriangle TriangleGrid::nearest(const float point[3], double good_enough_m, std::uint32_t hint) {
+NearestTriangle GridSearch::nearest(const TriangleGrid& g, const float point[3], double good_enough_m,
+                                    std::uint32_t hint) {
+  if (grid_ != &g || build_ != g.build_) {
+    grid_ = &g, build_ = g.build_;
+    stamp_.assign(g.triangles(), 0);
+    query_ = 0;
+    std::fill(std::begin(recent_), std::end(recent_), ~0u);
+  }
   if (++query_ == 0) std::fill(stamp_.begin(), stamp_.end(), 0u), query_ = 1;
   const double p[3] = {point[0], point[1], point[2]};
   // Squared distances until the answer.
@@ -157,7 +161,7 @@ NearestTriangle TriangleGrid::nearest(const float point[3], double good_enough_m
   NearestTriangle best{std::numeric_limits<double>::infinity(), 0};
   auto done = [&] { return NearestTriangle{std::sqrt(best.distance_m), best.triangle}; };
   if (hint < stamp_.size()) {
-    best = {distance_sq(hint, p, std::numeric_limits<double>::infinity()), hint};
+    best = {g.distance_sq(hint, p, std::numeric_limits<double>::infinity()), hint};
     if (best.distance_m <= enough_sq) return done();
     stamp_[hint] = query_;
   }
@@ -166,7 +170,7 @@ NearestTriangle TriangleGrid::nearest(const float point[3], double good_enough_m
     for (std::uint32_t t : recent_) {
       if (t >= stamp_.size() || stamp_[t] == query_) continue;
       stamp_[t] = query_;
-      const double d = distance_sq(t, p, best.distance_m);
+      const double d = g.distance_sq(t, p, best.distance_m);
       if (d < best.distance_m) {
         best = {d, t};
         if (d <= enough_sq) return done();
@@ -177,19 +181,19 @@ NearestTriangle TriangleGrid::nearest(const float point[3], double good_enough_m
     return done();
   };
   int c[3];
-  cell_of(p, c);
-  const int max_ring = std::max({dim_[0], dim_[1], dim_[2]});
+  g.cell_of(p, c);
+  const int max_ring = std::max({g.dim_[0], g.dim_[1], g.dim_[2]});
   for (int r = 0; r <= max_ring; ++r) {
     // Cells of ring r are at least (r - 1) cells from the point's (clamped) cell.
-    const double ring_m = double(r - 1) * cell_m_;
+    const double ring_m = double(r - 1) * g.cell_m_;
     if (r > 0 && ring_m * ring_m >= best.distance_m) break;
-    const int z0 = std::max(c[2] - r, 0), z1 = std::min(c[2] + r, dim_[2] - 1);
-    const int y0 = std::max(c[1] - r, 0), y1 = std::min(c[1] + r, dim_[1] - 1);
+    const int z0 = std::max(c[2] - r, 0), z1 = std::min(c[2] + r, g.dim_[2] - 1);
+    const int y0 = std::max(c[1] - r, 0), y1 = std::min(c[1] + r, g.dim_[1] - 1);
     for (int z = z0; z <= z1; ++z)
       for (int y = y0; y <= y1; ++y) {
         // Inside the ring's faces in z and y, only its two x faces are on the ring.
         const bool shell = std::abs(z - c[2]) == r || std::abs(y - c[1]) == r;
-        const int x0 = std::max(c[0] - r, 0), x1 = std::min(c[0] + r, dim_[0] - 1);
+        const int x0 = std::max(c[0] - r, 0), x1 = std::min(c[0] + r, g.dim_[0] - 1);
         const int step = shell || r == 0 ? 1 : 2 * r;
         for (int x = shell ? x0 : c[0] - r; x <= x1; x += step) {
           if (x < x0) continue;
@@ -197,17 +201,17 @@ NearestTriangle TriangleGrid::nearest(const float point[3], double good_enough_m
           const int cc[3] = {x, y, z};
           double box_sq = 0.0;
           for (int k = 0; k < 3; ++k) {
-            const double a = lo_[k] + cc[k] * cell_m_, b = a + cell_m_;
+            const double a = g.lo_[k] + cc[k] * g.cell_m_, b = a + g.cell_m_;
             const double d = p[k] < a ? a - p[k] : (p[k] > b ? p[k] - b : 0.0);
             box_sq += d * d;
           }
           if (box_sq >= best.distance_m) continue;
-          const std::size_t cell = (std::size_t(z) * dim_[1] + y) * dim_[0] + x;
-          for (std::uint32_t i = first_[cell]; i < first_[cell + 1]; ++i) {
-            const std::uint32_t t = items_[i];
+          const std::size_t cell = (std::size_t(z) * g.dim_[1] + y) * g.dim_[0] + x;
+          for (std::uint32_t i = g.first_[cell]; i < g.first_[cell + 1]; ++i) {
+            const std::uint32_t t = g.items_[i];
             if (stamp_[t] == query_) continue;
             stamp_[t] = query_;
-            const double d = distance_sq(t, p, best.distance_m);
+            const double d = g.distance_sq(t, p, best.distance_m);
             if (d < best.distance_m) {
               best = {d, t};
               if (d <= enough_sq) return found();

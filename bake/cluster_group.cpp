@@ -32,8 +32,7 @@ std::uint32_t morton(const Sphere& s, const double lo[3], const double size[3]) 
 
 }  // namespace
 
-ClusterGrouper::ClusterGrouper(std::size_t vertex_count)
-    : owner_(vertex_count, kNone), seen_(vertex_count, kNone) {}
+ClusterGrouper::ClusterGrouper(std::size_t vertex_count) : owner_(vertex_count, 0), seen_(vertex_count, 0) {}
 
 void ClusterGrouper::build_adjacency(const ClusterSet& set) {
   const std::size_t n = set.first_index.size();
@@ -43,29 +42,31 @@ void ClusterGrouper::build_adjacency(const ClusterSet& set) {
       if (e.cluster == b) return void(++e.shared_vertices);
     adjacency_[a].push_back({b, 1});
   };
+  // owner_ and seen_ hold base_ + cluster: anything below base_ is from an earlier call (unused).
+  if (n >= kNone - base_) {
+    std::fill(owner_.begin(), owner_.end(), 0u), std::fill(seen_.begin(), seen_.end(), 0u);
+    base_ = 1;
+  }
+  const std::uint32_t base = base_;
+  base_ += static_cast<std::uint32_t>(n);
   // One pass: the first cluster to use a welded vertex owns it; every later cluster using it
   // is linked to the owner (and to the cluster before it there, so a vertex shared by three
   // clusters links all of them along a chain). seen_ stops a cluster counting a vertex twice.
   for (std::size_t c = 0; c < n; ++c) {
-    const auto cc = static_cast<std::uint32_t>(c);
+    const auto cc = static_cast<std::uint32_t>(base + c);
     const std::uint32_t end = set.first_index[c] + set.index_count[c];
     for (std::uint32_t i = set.first_index[c]; i < end; ++i) {
       const std::uint32_t w = set.weld[set.indices[i]];
       if (seen_[w] == cc) continue;
-      if (owner_[w] == kNone) {
+      if (owner_[w] < base) {
         owner_[w] = seen_[w] = cc;
         continue;
       }
-      add(owner_[w], cc), add(cc, owner_[w]);
-      if (seen_[w] != owner_[w]) add(seen_[w], cc), add(cc, seen_[w]);
+      const std::uint32_t owner = owner_[w] - base, me = cc - base, last = seen_[w] - base;
+      add(owner, me), add(me, owner);
+      if (last != owner) add(last, me), add(me, last);
       seen_[w] = cc;
     }
-  }
-  // Leave the per-vertex arrays as the constructor made them, touching only what was used.
-  for (std::size_t c = 0; c < n; ++c) {
-    const std::uint32_t end = set.first_index[c] + set.index_count[c];
-    for (std::uint32_t i = set.first_index[c]; i < end; ++i)
-      owner_[set.weld[set.indices[i]]] = seen_[set.weld[set.indices[i]]] = kNone;
   }
 }
 

@@ -37,7 +37,8 @@ class ClusterGrouper {
     std::uint32_t cluster, shared_vertices;
   };
   void build_adjacency(const ClusterSet& set);
-  std::vector<std::uint32_t> owner_, seen_;  // per welded vertex; reset after each call
+  std::vector<std::uint32_t> owner_, seen_;  // per welded vertex (build_adjacency())
+  std::uint32_t base_ = 1;
   std::vector<std::vector<Neighbour>> adjacency_;
 };
 

@@ -4,8 +4,9 @@
 // whole mesh to half its triangles. Counters: triangles_per_s = input triangles / wall time;
 // x_simplify = the build's wall time over the baseline's (how many whole-mesh halvings the
 // hierarchy costs); digest = an FNV-1a hash of the hierarchy's indices and errors (48 bits), the
-// same for any thread count and across a change that must not alter the output. The build
-// runs with 1 thread and with all cores (threads 0).
+// same for any thread count and across a change that must not alter the output; *_ms = wall
+// milliseconds per phase of the last iteration (ClusterBuildResult::Phases). The build runs
+// with 1 thread and with all cores (threads 0).
 #include "bake/cluster_build.hpp"
 #include "tests/bake/test_meshes.hpp"
 
@@ -93,16 +94,24 @@ void BM_ClusterBuild(benchmark::State& state) {
   o.threads = static_cast<unsigned>(state.range(0));
   std::size_t clusters = 0, levels = 0;
   double hash = 0.0;
+  ClusterBuildResult::Phases phases;  // of the last iteration
   const auto t0 = std::chrono::steady_clock::now();
   for (auto _ : state) {
     const ClusterBuildResult r = build_cluster_hierarchy(m.positions, m.indices, o);
-    clusters = r.hierarchy.size(), levels = r.levels, hash = digest(r);
+    clusters = r.hierarchy.size(), levels = r.levels, hash = digest(r), phases = r.phases;
     benchmark::DoNotOptimize(r.indices.data());
   }
   report(state, seconds_since(t0));
   state.counters["clusters"] = static_cast<double>(clusters);
   state.counters["levels"] = static_cast<double>(levels);
   state.counters["digest"] = hash;
+  // Milliseconds per phase (ClusterBuildResult::Phases), the last iteration's.
+  state.counters["weld_ms"] = 1e3 * phases.weld_s;
+  state.counters["source_ms"] = 1e3 * phases.source_clusters_s;
+  state.counters["grouping_ms"] = 1e3 * phases.grouping_s;
+  state.counters["shared_ms"] = 1e3 * phases.shared_s;
+  state.counters["groups_ms"] = 1e3 * phases.groups_s;
+  state.counters["sliced_ms"] = 1e3 * phases.sliced_measure_s;
 }
 
 BENCHMARK(BM_MeshoptSimplifyHalf)->Unit(benchmark::kMillisecond)->UseRealTime();

@@ -9,6 +9,7 @@
 #include "bake/cluster_source.hpp"
 #include "bake/cluster_sphere.hpp"
 #include "bake/cluster_split.hpp"
+#include "bake/parallel_for.hpp"
 
 #include <meshoptimizer.h>
 
@@ -17,10 +18,8 @@
 #include <chrono>
 #include <cfloat>
 #include <cmath>
-#include <exception>
 #include <memory>
 #include <sstream>
-#include <thread>
 
 namespace gazelod::bake {
 namespace {
@@ -58,6 +57,8 @@ struct Piece {
   std::vector<Sphere> spheres;
   // Per new cluster of a group: the source vertices (welded ids) it answers for (measure()).
   std::vector<std::vector<std::uint32_t>> owned;
+  // Per new cluster: its distinct welded vertices (list_welded()), welded_count of them each.
+  std::vector<std::uint32_t> welded, welded_count;
   Sphere sphere;
   float error_m = 0.0f;
   // Until measured: the largest member error and the width of the folds (the error's floors).
@@ -71,9 +72,12 @@ struct Piece {
 // Per-thread buffers. A task works on a compact copy of its vertices, because meshopt 0.18's
 // simplifier (and the splitter's per-vertex arrays) allocate and scan the whole vertex buffer.
 struct Scratch {
-  explicit Scratch(std::size_t vertex_count) : local_of(vertex_count, kNone), cluster_of(vertex_count, kNone) {}
+  explicit Scratch(std::size_t vertex_count)
+      : local_of(vertex_count, kNone), cluster_of(vertex_count, kNone), seen(vertex_count, 0) {}
   std::vector<std::uint32_t> local_of, global_of, local, simplified;
   std::vector<std::uint32_t> cluster_of, region, triangle_cluster;  // cluster_of: per welded vertex
+  std::vector<std::uint32_t> seen;  // per welded vertex: the stamp of the last cluster listing it
+  std::uint32_t stamp = 0;
   TriangleGrid grid;
   GridSearch search;
   ClusterSplitter splitter;
@@ -85,7 +89,7 @@ struct Scratch {
     if (local_of[v] == kNone) {
       local_of[v] = static_cast<std::uint32_t>(global_of.size());
       global_of.push_back(v);
-      local_xyz.insert(local_xyz.end(), {pos[3 * v], pos[3 * v + 1], pos[3 * v + 2]});
+      local_xyz.push_back(pos[3 * v]), local_xyz.push_back(pos[3 * v + 1]), local_xyz.push_back(pos[3 * v + 2]);
     }
     return local_of[v];
   }
@@ -155,6 +159,20 @@ class Builder {
     for (std::size_t i = at; i < p.indices.size(); ++i) p.indices[i] = s.global_of[p.indices[i]];
   }
 
+  // Each new cluster's distinct welded vertices, in the order its triangles use them (the
+  // grouping and the shared marks visit each once).
+  void list_welded(Scratch& s, Piece& p) const {
+    std::size_t at = 0;
+    for (std::uint32_t k : p.index_count) {
+      if (++s.stamp == 0) std::fill(s.seen.begin(), s.seen.end(), 0u), s.stamp = 1;
+      const std::size_t before = p.welded.size();
+      for (std::size_t i = at; i < at + k; ++i)
+        if (const std::uint32_t w = weld_[p.indices[i]]; s.seen[w] != s.stamp) s.seen[w] = s.stamp, p.welded.push_back(w);
+      p.welded_count.push_back(static_cast<std::uint32_t>(p.welded.size() - before));
+      at += k;
+    }
+  }
+
   // Source clusters of one chunk, each with its own sphere; degenerate triangles (two corners
   // welded together) dropped and counted.
   void split_chunk(std::span<const std::uint32_t> source, std::span<const std::uint32_t> chunk,
@@ -170,6 +188,7 @@ class Builder {
     if (s.local.empty()) return;
     split(s, s.local, p);
     s.clear();
+    list_welded(s, p);
     std::size_t at = 0;
     for (std::uint32_t k : p.index_count) {
       s.spheres.clear();
@@ -239,6 +258,7 @@ class Builder {
     if (n > 0 && double(n) <= o_.stuck_ratio * double(s.local.size())) {
       p.simplified = true;
       split(s, std::span<const std::uint32_t>(s.simplified.data(), n), p);
+      list_welded(s, p);
     }
     s.clear();
   }
@@ -334,8 +354,12 @@ class Builder {
   }
 
   void add_clusters(Piece& p, std::size_t depth, std::int32_t source_group) {
-    std::uint32_t at = 0;
+    std::uint32_t at = 0, welded_at = 0;
     for (std::size_t c = 0; c < p.index_count.size(); ++c) {
+      welded_first_.push_back(static_cast<std::uint32_t>(welded_.size()));
+      welded_count_.push_back(p.welded_count[c]);
+      welded_.insert(welded_.end(), p.welded.begin() + welded_at, p.welded.begin() + welded_at + p.welded_count[c]);
+      welded_at += p.welded_count[c];
       const Sphere& self = p.spheres.empty() ? p.sphere : p.spheres[c];
       const float self_error_m = p.spheres.empty() ? p.error_m : 0.0f;
       lod::ClusterHierarchy& h = out_.hierarchy;
@@ -369,15 +393,14 @@ class Builder {
 
   std::vector<std::uint32_t> level(const std::vector<std::uint32_t>& pending, std::size_t depth,
                                    ClusterGrouper& grouper) {
-    const lod::ClusterHierarchy& h = out_.hierarchy;
     std::vector<std::uint32_t> first, count;
     std::vector<Sphere> bounds;
     for (std::uint32_t c : pending)
-      first.push_back(h.first_index[c]), count.push_back(h.index_count[c]), bounds.push_back(self_[c]);
+      first.push_back(welded_first_[c]), count.push_back(welded_count_[c]), bounds.push_back(self_[c]);
     std::vector<std::vector<std::uint32_t>> groups;
     {
       PhaseTimer timer(out_.phases.grouping_s);
-      groups = grouper.group({out_.indices, weld_, first, count, bounds}, o_.group_size);
+      groups = grouper.group({welded_, first, count, bounds}, o_.group_size);
     }
     for (auto& g : groups)
       for (std::uint32_t& m : g) m = pending[m];
@@ -411,8 +434,7 @@ class Builder {
         for (std::uint32_t c : groups[g]) {
           set_parent(c, p.sphere, lod::kNoParentError, -1);
           // Drawn beside every later level: whatever touches them there must stay.
-          for (std::uint32_t i = h.first_index[c]; i < h.first_index[c] + h.index_count[c]; ++i)
-            locked_[weld_[out_.indices[i]]] = 1;
+          for (std::uint32_t w : welded_of(c)) locked_[w] = 1;
         }
         continue;
       }
@@ -430,17 +452,15 @@ class Builder {
   // (the same marks in any order). Claims carry ids from group_base_ up, so that an earlier
   // level's (below it) reads as unclaimed and needs no reset.
   void mark_shared(const std::vector<std::vector<std::uint32_t>>& groups) {
-    const lod::ClusterHierarchy& h = out_.hierarchy;
     shared_ = locked_;
     if (groups.size() >= kNone - group_base_) throw BakeError(o_.label + ": more than 2^32 - 2 groups in all levels");
     const std::uint32_t base = group_base_;
     parallel_for(groups.size(), [&](std::size_t g, Scratch&) {
       const auto me = static_cast<std::uint32_t>(base + g);
       for (std::uint32_t c : groups[g])
-        for (std::uint32_t i = h.first_index[c]; i < h.first_index[c] + h.index_count[c]; ++i) {
-          const std::uint32_t w = weld_[out_.indices[i]];
+        for (std::uint32_t w : welded_of(c)) {
           std::atomic_ref<std::uint32_t> owner_of(group_of_[w]);
-          // A plain load first: most visits are the group's own repeats, which need no claim.
+          // A plain load first: a vertex inside the group is visited by each member using it.
           std::uint32_t owner = owner_of.load(std::memory_order_relaxed);
           if (owner == me) continue;
           // A failed claim leaves the claiming group's id (this level's, not ours) in `owner`.
@@ -451,31 +471,12 @@ class Builder {
     group_base_ += static_cast<std::uint32_t>(groups.size());
   }
 
-  // Runs task(i, scratch) for i < count on the configured threads. Every task writes only its
-  // own output, so the result is the same for any thread count.
+  // Runs task(i, scratch) for i < count on the configured threads (bake/parallel_for.hpp).
   template <typename Task>
   void parallel_for(std::size_t count, Task&& task) {
-    unsigned threads = o_.threads ? o_.threads : std::max(1u, std::thread::hardware_concurrency());
-    threads = static_cast<unsigned>(std::min<std::size_t>(threads, count));
-    while (scratch_.size() < std::max(threads, 1u))
-      scratch_.push_back(std::make_unique<Scratch>(pos_.size() / 3));
-    std::atomic<std::size_t> next{0};
-    std::vector<std::exception_ptr> failed(std::max(threads, 1u));  // e.g. bad_alloc
-    auto work = [&](unsigned t) {
-      try {
-        for (std::size_t i; (i = next.fetch_add(1)) < count;) task(i, *scratch_[t]);
-      } catch (...) {
-        failed[t] = std::current_exception();
-        next = count;
-      }
-    };
-    {
-      std::vector<std::jthread> pool;
-      for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work, t);
-      work(0);
-    }
-    for (const std::exception_ptr& e : failed)
-      if (e) std::rethrow_exception(e);
+    const unsigned threads = static_cast<unsigned>(std::min<std::size_t>(thread_count(o_.threads), std::max<std::size_t>(count, 1)));
+    while (scratch_.size() < threads) scratch_.push_back(std::make_unique<Scratch>(pos_.size() / 3));
+    bake::parallel_for(count, threads, [&](std::size_t i, unsigned t) { task(i, *scratch_[t]); });
   }
 
   std::span<const float> pos_;
@@ -487,6 +488,11 @@ class Builder {
   std::vector<std::uint32_t> group_of_;
   std::uint32_t group_base_ = 1;  // the first claim id of the next level
   std::vector<Sphere> self_;  // self spheres, as Sphere (hierarchy holds the same, split up)
+  // Per cluster: its distinct welded vertices at welded_[welded_first_[c]] on (list_welded()).
+  std::vector<std::uint32_t> welded_, welded_first_, welded_count_;
+  std::span<const std::uint32_t> welded_of(std::uint32_t c) const {
+    return std::span<const std::uint32_t>(welded_).subspan(welded_first_[c], welded_count_[c]);
+  }
   // Per cluster not yet grouped: the source vertices it answers for (measure()).
   std::vector<std::vector<std::uint32_t>> owned_;
   std::vector<std::unique_ptr<Scratch>> scratch_;

@@ -34,8 +34,8 @@ std::uint32_t morton(const Sphere& s, const double lo[3], const double size[3]) 
 
 ClusterGrouper::ClusterGrouper(std::size_t vertex_count) : owner_(vertex_count, 0), seen_(vertex_count, 0) {}
 
-void ClusterGrouper::build_adjacency(const ClusterSet& set) {
-  const std::size_t n = set.first_index.size();
+void ClusterGrouper::build_adjacency(const GroupingInput& set) {
+  const std::size_t n = set.first.size();
   adjacency_.assign(n, {});
   auto add = [&](std::uint32_t a, std::uint32_t b) {
     for (Neighbour& e : adjacency_[a])
@@ -51,13 +51,10 @@ void ClusterGrouper::build_adjacency(const ClusterSet& set) {
   base_ += static_cast<std::uint32_t>(n);
   // One pass: the first cluster to use a welded vertex owns it; every later cluster using it
   // is linked to the owner (and to the cluster before it there, so a vertex shared by three
-  // clusters links all of them along a chain). seen_ stops a cluster counting a vertex twice.
+  // clusters links all of them along a chain); seen_: that cluster before.
   for (std::size_t c = 0; c < n; ++c) {
     const auto cc = static_cast<std::uint32_t>(base + c);
-    const std::uint32_t end = set.first_index[c] + set.index_count[c];
-    for (std::uint32_t i = set.first_index[c]; i < end; ++i) {
-      const std::uint32_t w = set.weld[set.indices[i]];
-      if (seen_[w] == cc) continue;
+    for (std::uint32_t w : set.vertices.subspan(set.first[c], set.count[c])) {
       if (owner_[w] < base) {
         owner_[w] = seen_[w] = cc;
         continue;
@@ -70,9 +67,9 @@ void ClusterGrouper::build_adjacency(const ClusterSet& set) {
   }
 }
 
-std::vector<std::vector<std::uint32_t>> ClusterGrouper::group(const ClusterSet& set,
+std::vector<std::vector<std::uint32_t>> ClusterGrouper::group(const GroupingInput& set,
                                                                std::size_t group_size) {
-  const std::size_t n = set.first_index.size();
+  const std::size_t n = set.first.size();
   std::vector<std::vector<std::uint32_t>> groups;
   if (n == 0) return groups;
   if (n <= group_size) {

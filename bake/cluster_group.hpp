@@ -16,11 +16,11 @@
 
 namespace gazelod::bake {
 
-struct ClusterSet {
-  std::span<const std::uint32_t> indices;  // the hierarchy's index buffer (triangle lists)
-  std::span<const std::uint32_t> weld;     // vertex -> the first vertex with the same position
-  // The clusters to group: index ranges into `indices` and their bounds (centres break ties).
-  std::span<const std::uint32_t> first_index, index_count;
+struct GroupingInput {
+  // The clusters to group: each one's distinct welded vertices (a vertex -> the first vertex
+  // with its position), in the order its triangles first use them, at vertices[first[c]] on,
+  // count[c] of them; and their bounds (centres break ties).
+  std::span<const std::uint32_t> vertices, first, count;
   std::span<const Sphere> bounds;
 };
 
@@ -30,13 +30,13 @@ class ClusterGrouper {
   explicit ClusterGrouper(std::size_t vertex_count);
   // Groups of about `group_size` (>= 2) clusters, as positions in `set`; every cluster is in
   // exactly one group. A set of at most `group_size` clusters is one group.
-  std::vector<std::vector<std::uint32_t>> group(const ClusterSet& set, std::size_t group_size);
+  std::vector<std::vector<std::uint32_t>> group(const GroupingInput& set, std::size_t group_size);
 
  private:
   struct Neighbour {
     std::uint32_t cluster, shared_vertices;
   };
-  void build_adjacency(const ClusterSet& set);
+  void build_adjacency(const GroupingInput& set);
   std::vector<std::uint32_t> owner_, seen_;  // per welded vertex (build_adjacency())
   std::uint32_t base_ = 1;
   std::vector<std::vector<Neighbour>> adjacency_;

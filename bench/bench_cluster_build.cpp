@@ -92,20 +92,18 @@ void BM_ClusterBuild(benchmark::State& state) {
   const testing::TestMesh& m = terrain();
   ClusterBuildOptions o;
   o.threads = static_cast<unsigned>(state.range(0));
-  std::size_t clusters = 0, levels = 0;
-  double hash = 0.0;
-  ClusterBuildResult::Phases phases;  // of the last iteration
+  ClusterBuildResult r;  // the last iteration's, looked at after the timing
   const auto t0 = std::chrono::steady_clock::now();
   for (auto _ : state) {
-    const ClusterBuildResult r = build_cluster_hierarchy(m.positions, m.indices, o);
-    clusters = r.hierarchy.size(), levels = r.levels, hash = digest(r), phases = r.phases;
+    r = build_cluster_hierarchy(m.positions, m.indices, o);
     benchmark::DoNotOptimize(r.indices.data());
   }
   report(state, seconds_since(t0));
-  state.counters["clusters"] = static_cast<double>(clusters);
-  state.counters["levels"] = static_cast<double>(levels);
-  state.counters["digest"] = hash;
-  // Milliseconds per phase (ClusterBuildResult::Phases), the last iteration's.
+  state.counters["clusters"] = static_cast<double>(r.hierarchy.size());
+  state.counters["levels"] = static_cast<double>(r.levels);
+  state.counters["digest"] = digest(r);
+  const ClusterBuildResult::Phases& phases = r.phases;
+  // Milliseconds per phase, the last iteration's.
   state.counters["weld_ms"] = 1e3 * phases.weld_s;
   state.counters["source_ms"] = 1e3 * phases.source_clusters_s;
   state.counters["grouping_ms"] = 1e3 * phases.grouping_s;

@@ -189,12 +189,13 @@ class Builder {
     split(s, s.local, p);
     s.clear();
     list_welded(s, p);
+    // Each cluster's sphere around its positions, each once (in the order its triangles use them).
     std::size_t at = 0;
-    for (std::uint32_t k : p.index_count) {
+    for (std::uint32_t k : p.welded_count) {
       s.spheres.clear();
       for (std::size_t i = at; i < at + k; ++i) {
-        const std::uint32_t v = p.indices[i];
-        s.spheres.push_back({pos_[3 * v], pos_[3 * v + 1], pos_[3 * v + 2], 0.0f});
+        const std::uint32_t w = p.welded[i];
+        s.spheres.push_back({pos_[3 * w], pos_[3 * w + 1], pos_[3 * w + 2], 0.0f});
       }
       p.spheres.push_back(enclosing_sphere(s.spheres));
       at += k;
@@ -332,6 +333,7 @@ class Builder {
                  std::vector<std::vector<std::uint32_t>>& owned) const {
     double error_m = floor_m;
     std::uint32_t hint = kNone;
+    search.restart();  // what a slice finds must not depend on the slices its thread did before
     const std::size_t count = region.size();
     for (std::size_t i = 0; i < count; ++i) {
       // The region's vertices are scattered over the mesh: fetch a few queries ahead.

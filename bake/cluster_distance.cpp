@@ -123,15 +123,17 @@ void TriangleGrid::build(std::span<const float> pos, std::span<const std::uint32
   for (int k = 0; k < 3; ++k) dim_[k] = static_cast<int>(std::floor((hi[k] - lo_[k]) / cell_m_)) + 1;
   const std::size_t cells = std::size_t(dim_[0]) * dim_[1] * dim_[2];
   first_.assign(cells + 1, 0);
-  auto range = [&](std::size_t t, int c0[3], int c1[3]) {
+  // Each triangle's range of cells (its box's corners' cells), for both passes below.
+  range_.resize(6 * count);
+  for (std::size_t t = 0; t < count; ++t) {
     const double* q = &tri_[kStride * t];
     const double mn[3] = {std::min({q[0], q[16], q[19]}), std::min({q[1], q[17], q[20]}), std::min({q[2], q[18], q[21]})};
     const double mx[3] = {std::max({q[0], q[16], q[19]}), std::max({q[1], q[17], q[20]}), std::max({q[2], q[18], q[21]})};
-    cell_of(mn, c0), cell_of(mx, c1);
-  };
+    cell_of(mn, &range_[6 * t]), cell_of(mx, &range_[6 * t + 3]);
+  }
   auto each_cell = [&](std::size_t t, auto&& f) {
-    int c0[3], c1[3];
-    range(t, c0, c1);
+    const int* c0 = &range_[6 * t];
+    const int* c1 = c0 + 3;
     for (int z = c0[2]; z <= c1[2]; ++z)
       for (int y = c0[1]; y <= c1[1]; ++y)
         for (int x = c0[0]; x <= c1[0]; ++x) f((std::size_t(z) * dim_[1] + y) * dim_[0] + x);
@@ -152,7 +154,10 @@ NearestTriangle GridSearch::nearest(const TriangleGrid& g, const float point[3],
     grid_ = &g, build_ = g.build_;
     stamp_.assign(g.triangles(), 0);
     query_ = 0;
+    // All of the last answers' state: where the next one goes decides the order they are
+    // tried in, so a search must not inherit it from another grid's queries.
     std::fill(std::begin(recent_), std::end(recent_), ~0u);
+    recent_next_ = 0;
   }
   if (++query_ == 0) std::fill(stamp_.begin(), stamp_.end(), 0u), query_ = 1;
   const double p[3] = {point[0], point[1], point[2]};

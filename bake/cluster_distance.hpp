@@ -21,7 +21,7 @@ class TriangleGrid;
 
 // One caller's searches in a grid: its per-triangle visit stamps and its last answers. Several
 // threads may search one grid at once, each with its own GridSearch; a search starts afresh when
-// given a grid (or a build of it) other than its last.
+// given a grid (or a build of it) other than its last, or after restart().
 class GridSearch {
  public:
   // The nearest triangle, or, when `good_enough_m` > 0, the first one found within that distance
@@ -30,6 +30,9 @@ class GridSearch {
   // spatial runs).
   NearestTriangle nearest(const TriangleGrid& grid, const float point[3], double good_enough_m = 0.0,
                           std::uint32_t hint = ~0u);
+  // Forgets the last answers, as if given a new grid: a run of queries that must not depend on
+  // the runs before it (another thread's, another order's) starts with this.
+  void restart() { grid_ = nullptr; }
 
  private:
   const TriangleGrid* grid_ = nullptr;
@@ -60,6 +63,7 @@ class TriangleGrid {
   double lo_[3] = {0, 0, 0}, cell_m_ = 1.0, per_cell_ = 1.0;
   int dim_[3] = {1, 1, 1};
   std::vector<std::uint32_t> first_, items_, fill_;  // per cell: first item; items; build scratch
+  std::vector<int> range_;  // build scratch: per triangle, its first and last cell (x, y, z)
   // Per triangle: corner a, edges ab and ac, unit normal, ab.ab, ab.ac, ac.ac, 1 / Gram
   // determinant (0: degenerate), then corners b and c.
   std::vector<double> tri_;

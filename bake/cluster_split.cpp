@@ -71,6 +71,20 @@ void ClusterSplitter::split(std::span<const float> pos, std::size_t vertex_count
     const float dx = centroid_[3 * t] - c[0], dy = centroid_[3 * t + 1] - c[1], dz = centroid_[3 * t + 2] - c[2];
     return dx * dx + dy * dy + dz * dz;
   };
+  // The first triangle from t on not yet taken (n if none), along skip_ links that jump over
+  // taken ones (shortened on the way, so a scan past taken triangles is paid once).
+  skip_.resize(n);
+  for (std::size_t t = 0; t < n; ++t) skip_[t] = static_cast<std::uint32_t>(t + 1);
+  auto alive_from = [&](std::size_t t) {
+    std::size_t r = t;
+    while (r < n && done_[r]) r = skip_[r];
+    while (t < r) {
+      const std::size_t next = skip_[t];
+      skip_[t] = static_cast<std::uint32_t>(r);
+      t = next;
+    }
+    return r;
+  };
   float last[3] = {0.0f, 0.0f, 0.0f};  // the previous cluster's centroid
   std::size_t cursor = 0, emitted = 0;
   for (; emitted < n; ++cluster) {
@@ -84,7 +98,7 @@ void ClusterSplitter::split(std::span<const float> pos, std::size_t vertex_count
         if (seed == kNone || d_sq < seed_sq) seed = t, seed_sq = d_sq;
       }
     if (seed == kNone) {
-      while (done_[cursor]) ++cursor;
+      cursor = alive_from(cursor);
       seed = static_cast<std::uint32_t>(cursor);
     }
     frontier_.clear();
@@ -143,11 +157,9 @@ void ClusterSplitter::split(std::span<const float> pos, std::size_t vertex_count
         b.resize(kept);
       }
       if (best == kNone && emitted < n) {  // nothing touches the cluster: the nearest triangle left
-        while (done_[cursor]) ++cursor;
+        cursor = alive_from(cursor);
         // At most kJumpScan triangles from the first one left: bounded work on a triangle soup.
-        for (std::size_t t = cursor, seen = 0; t < n && seen < kJumpScan; ++t) {
-          if (done_[t]) continue;
-          ++seen;
+        for (std::size_t t = cursor, seen = 0; t < n && seen < kJumpScan; t = alive_from(t + 1), ++seen) {
           const float d_sq = distance_sq(static_cast<std::uint32_t>(t), centre);
           if (best == kNone || d_sq < best_sq) best = static_cast<std::uint32_t>(t), best_sq = d_sq;
         }

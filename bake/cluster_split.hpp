@@ -29,7 +29,7 @@ class ClusterSplitter {
   std::vector<std::uint32_t> first_, adjacent_, in_cluster_, frontier_, score_, frontier_of_, live_;
   // Frontier triangles by rank (split()); per triangle, its place in the order it joined the
   // cluster's frontier.
-  std::vector<std::uint32_t> bucket_[5], arrival_;
+  std::vector<std::uint32_t> bucket_[5], arrival_, skip_;
   std::vector<float> centroid_;
   std::vector<std::uint8_t> done_, dangling_;
 };

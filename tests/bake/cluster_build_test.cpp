@@ -211,6 +211,28 @@ TEST(ClusterBuild, TriangleGridFindsTheNearestTriangle) {
   }
 }
 
+// A search's answers on one grid must not depend on what it answered on another before (the
+// bake's threads each reuse one GridSearch for whichever groups they take).
+TEST(ClusterBuild, GridSearchAnswersDoNotDependOnEarlierGrids) {
+  const testing::TestMesh other = testing::icosphere(2, 1.0), sphere = testing::icosphere(3, 1.0);
+  TriangleGrid a, b;
+  a.build(other.positions, other.indices);
+  b.build(sphere.positions, sphere.indices);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> u(-1.2f, 1.2f);
+  std::vector<std::array<float, 3>> points(300);
+  for (auto& p : points) p = {u(rng), u(rng), u(rng)};
+  GridSearch fresh, used;
+  for (int i = 0; i < 7; ++i) used.nearest(a, points[i].data());  // 7 answers: not a multiple of 4
+  std::size_t same = 0;
+  for (const auto& p : points) {
+    // Far enough that several of the last answers qualify: which one comes first decides.
+    const NearestTriangle x = fresh.nearest(b, p.data(), 0.6), y = used.nearest(b, p.data(), 0.6);
+    same += x.triangle == y.triangle && x.distance_m == y.distance_m;
+  }
+  EXPECT_EQ(same, points.size());
+}
+
 TEST(ClusterBuild, SplitterKeepsLimitsAndEveryTriangleOnce) {
   // Full clusters but the last few: a grid's hold about 64 vertices (~90 triangles), a soup's
   // 21 triangles of 3 vertices each.
@@ -248,6 +270,26 @@ TEST(ClusterBuild, SameHierarchyOnAnyThreadCount) {
   EXPECT_EQ(a.hierarchy.parent_error_m, b.hierarchy.parent_error_m);
   EXPECT_EQ(a.hierarchy.self_radius_m, b.hierarchy.self_radius_m);
   EXPECT_EQ(a.parent_group, b.parent_group);
+}
+
+// The few-group top levels measure their source vertices in slices (more than 16384 here):
+// which thread takes which slice must not matter either.
+TEST(ClusterBuild, SameHierarchyOnAnyThreadCountWithSlicedLevels) {
+  TerrainOptions t;
+  t.triangles = 100'000;
+  const GeneratedMesh m = terrain_meshes(t).at(0);  // 50,721 vertices
+  ClusterBuildOptions o;
+  o.threads = 1;
+  const ClusterBuildResult a = build_cluster_hierarchy(m.positions, m.indices, o);
+  for (unsigned threads : {2u, 3u}) {
+    o.threads = threads;
+    const ClusterBuildResult b = build_cluster_hierarchy(m.positions, m.indices, o);
+    EXPECT_EQ(a.indices, b.indices) << threads;
+    EXPECT_EQ(a.hierarchy.self_error_m, b.hierarchy.self_error_m) << threads;
+    EXPECT_EQ(a.hierarchy.parent_error_m, b.hierarchy.parent_error_m) << threads;
+    EXPECT_EQ(a.parent_group, b.parent_group) << threads;
+  }
+  EXPECT_GT(a.phases.sliced_measure_s, 0.0);  // the sliced path ran
 }
 
 TEST(ClusterBuild, SmallMeshIsOneCluster) {

@@ -1,8 +1,9 @@
 // gazelod bake IN.gltf|IN.glb -o OUT.glb [--levels N | --ratios r1,r2,...] [--target-error E]
 // [--lock-borders] [--profile 6|18]:
 // an MSFT_lod chain per mesh node (bake/bake.hpp). Progress on stderr, the summary on stdout.
-// gazelod bake --clusters IN OUT.glb (or -o OUT.glb) [--lock-borders]: a cluster hierarchy per
-// mesh primitive instead, stored as GAZELOD_cluster_lod (bake/cluster_bake.hpp, docs/bake.md).
+// gazelod bake --clusters IN OUT.glb (or -o OUT.glb) [--lock-borders] [--threads N]: a cluster
+// hierarchy per mesh primitive instead, stored as GAZELOD_cluster_lod (bake/cluster_bake.hpp,
+// docs/bake.md).
 // --profile renders every level from 6 or 18 viewpoints (Reddy's perceptual profile, Vulkan on
 // lavapipe, bake/profile_render.hpp) and stores extras.gazelod_lod.rendered_cycles_per_diameter;
 // off by default so a plain bake stays fast.
@@ -27,6 +28,7 @@ struct Options {
   std::string input, output, output_argument, ratios, target_error;
   int levels = 0;
   int profile = 0;
+  int threads = -1;  // unset
   bool lock_borders = false;
   bool clusters = false;
 };
@@ -48,6 +50,7 @@ int run_clusters(const Options& o, const std::string& out, Io io) {
     if (set) throw UsageError(std::string("--clusters: cannot be combined with ") + name);
   bake::ClusterBakeOptions opts;
   opts.build.lock_open_borders = o.lock_borders;
+  if (o.threads >= 0) opts.build.threads = static_cast<unsigned>(o.threads);
   opts.progress = [&io](const std::string& line) { io.err << line << '\n' << std::flush; };
   try {
     io.out << bake::format_cluster_summary(bake::bake_clusters_file(o.input, out, opts));
@@ -89,6 +92,7 @@ void print_profile(const bake::BakeReport& report, std::ostream& out) {
 int run_bake(const Options& o, Io io) {
   const std::string out = output_path(o);
   if (o.clusters) return run_clusters(o, out, io);
+  if (o.threads >= 0) throw UsageError("--threads: only with --clusters (a chain is baked on one thread)");
   if (o.profile != 0 && o.profile != 6 && o.profile != 18)
     throw UsageError("--profile: must be 6 or 18 viewpoints, got " + std::to_string(o.profile));
   if (o.levels != 0 && !o.ratios.empty()) throw UsageError("--levels: give either --levels or --ratios, not both");
@@ -137,6 +141,10 @@ const Registrar reg(
       app.add_flag("--lock-borders", o->lock_borders,
                    "keep open borders in place (chains: no cracks between a mesh's primitives; "
                    "--clusters: also borders that meet no other primitive, which are simplified by default)");
+      app.add_option("--threads", o->threads,
+                     "--clusters: threads for the hierarchy build (default 0: one per core); the "
+                     "hierarchy is the same for any count")
+          ->check(CLI::Range(0, 1024));
       app.add_option("--profile", o->profile,
                      "render each level from 6 or 18 viewpoints and store Reddy's rendered "
                      "figure (Vulkan; off by default)");

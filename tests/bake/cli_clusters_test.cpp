@@ -8,6 +8,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 namespace gazelod::cli {
 namespace {
@@ -62,6 +64,36 @@ TEST(CliBakeClusters, UsageErrors) {
   EXPECT_EQ(r.rc, 2);
   EXPECT_HAS(r.err, "--output: missing");
   EXPECT_FALSE(std::filesystem::exists(p.out));
+}
+
+// --threads changes how long a bake takes, not what it writes: byte for byte, on a terrain
+// large enough that every level but the last few has groups for several threads.
+TEST(CliBakeClusters, SameFileOnAnyThreadCount) {
+  const std::string dir = bake::testing::temp_dir("cli_clusters_threads");
+  const std::string in = dir + "/terrain.glb";
+  ASSERT_EQ(run_cli({"scene", "generate", "terrain", in, "--triangles", "100000"}).rc, 0);
+  auto bytes = [](const std::string& path) {
+    std::ifstream f(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(f), {});
+  };
+  std::string first;
+  for (const char* threads : {"1", "3", "0"}) {
+    const std::string out = dir + "/out" + threads + ".glb";
+    const test::CliResult r = run_cli({"bake", "--clusters", in, out, "--threads", threads});
+    ASSERT_EQ(r.rc, 0) << r.err;
+    const std::string b = bytes(out);
+    ASSERT_GT(b.size(), 1000u);
+    if (first.empty()) first = b;
+    EXPECT_TRUE(b == first) << "--threads " << threads << " wrote a different file";
+  }
+  test::CliResult r = run_cli({"bake", "--clusters", in, dir + "/bad.glb", "--threads", "-1"});
+  EXPECT_EQ(r.rc, 2);
+  EXPECT_HAS(r.err, "--threads");
+  r = run_cli({"bake", in, dir + "/chain.glb", "--threads", "2"});
+  EXPECT_EQ(r.rc, 2);
+  EXPECT_HAS(r.err, "--threads: only with --clusters");
+  EXPECT_FALSE(std::filesystem::exists(dir + "/bad.glb"));
+  EXPECT_FALSE(std::filesystem::exists(dir + "/chain.glb"));
 }
 
 TEST(CliBakeClusters, InputAndOutputErrorsHaveDistinctExitCodes) {

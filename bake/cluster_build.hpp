@@ -44,7 +44,7 @@ struct ClusterBuildOptions {
   std::size_t group_size = 8;       // clusters per group, >= 2
   double simplify_ratio = 0.5;      // each group is simplified to this share of its triangles
   double stuck_ratio = 0.85;        // more than this share left: the group does not simplify
-  unsigned threads = 0;             // groups of a level simplified in parallel; 0: all cores
+  unsigned threads = 0;  // source chunks, groups and slices in parallel; 0: all cores; same result for any
   // true: every open border stays at source resolution too (meshopt_SimplifyLockBorder), for
   // parts whose rims meet geometry the bake cannot see.
   bool lock_open_borders = false;

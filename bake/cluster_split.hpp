@@ -2,8 +2,9 @@
 // meshopt_buildMeshlets rescores every triangle around every vertex of the growing cluster for
 // each triangle it adds, which made it the largest cost of the build; this greedy builder keeps
 // each frontier triangle's count of vertices not yet in the cluster up to date instead, and adds
-// the frontier triangle needing fewest new vertices (one that would be left dangling first;
-// ties: nearest the cluster's centroid), as meshopt does without its cone term; when nothing
+// the frontier triangle needing no new vertex, else one that would be left dangling, else the
+// one needing fewest (ties: nearest the cluster's centroid), as meshopt does without its cone
+// term; when nothing
 // touches the cluster, the nearest triangle left. The frontier is kept in buckets by that rank,
 // so a step compares only the best rank's triangles. A cluster ends when the next triangle would
 // pass a limit; the next one starts at a triangle the last one left on its frontier.

@@ -4,10 +4,10 @@
 // each frontier triangle's count of vertices not yet in the cluster up to date instead, and adds
 // the frontier triangle needing no new vertex, else one that would be left dangling, else the
 // one needing fewest (ties: nearest the cluster's centroid), as meshopt does without its cone
-// term; when nothing
-// touches the cluster, the nearest triangle left. The frontier is kept in buckets by that rank,
-// so a step compares only the best rank's triangles. A cluster ends when the next triangle would
-// pass a limit; the next one starts at a triangle the last one left on its frontier.
+// term; when nothing touches the cluster, the nearest triangle left. The frontier is kept in
+// buckets by that rank, so a step compares only the best rank's triangles. A cluster ends when
+// the next triangle would pass a limit; the next one starts at a triangle the last one left on
+// its frontier.
 #pragma once
 
 #include <cstdint>

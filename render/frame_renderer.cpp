@@ -195,8 +195,14 @@ void FrameRenderer::draw(std::uint32_t image_index, const EyeView& view, std::sp
   for (const DrawItem& item : items) {
     const bool finite = std::isfinite(item.center_m.x) && std::isfinite(item.center_m.y) &&
                         std::isfinite(item.center_m.z) && std::isfinite(item.radius_m);
-    if (!finite || !(item.radius_m > 0.0f) || !culler.visible(glm::dvec3(item.center_m), item.radius_m)) continue;
+    if (!finite || !(item.radius_m > 0.0f)) continue;
     const MeshRange& mesh = meshes_.range(item.mesh);
+    // The range's own sphere placed like its positions: a cluster outside the view is skipped.
+    const double radius_m = item.radius_m;
+    const glm::dvec3 bound_center_unit = cull_ranges_ ? glm::dvec3(mesh.bound_center_unit) : glm::dvec3(0.0);
+    const double bound_radius_unit = cull_ranges_ ? mesh.bound_radius_unit : 1.0;
+    if (!culler.visible(glm::dvec3(item.center_m) + radius_m * bound_center_unit, radius_m * bound_radius_unit))
+      continue;
     if (item.lod_level != kMarkerLevel) triangles += mesh.triangles();
     const glm::vec4 center_radius(item.center_m, item.radius_m);
     const glm::vec4 colour(to_target(lod_colour(item.lod_level), srgb_), 1.0f);

@@ -43,8 +43,8 @@ class FrameRenderer {
   FrameRenderer(const FrameRenderer&) = delete;
   FrameRenderer& operator=(const FrameRenderer&) = delete;
 
-  // Clears and draws `items` (skipping those with a non-finite centre, a radius <= 0, or
-  // entirely outside the view)
+  // Clears and draws `items` (skipping those with a non-finite centre, a radius <= 0, or whose
+  // mesh range's sphere, MeshRange::bound_center_unit placed by the item, is outside the view)
   // into images[image_index], leaving it in COLOR_ATTACHMENT_OPTIMAL. Throws RenderError for a
   // bad index or mesh id.
   void draw(std::uint32_t image_index, const EyeView& view, std::span<const DrawItem> items);
@@ -62,6 +62,10 @@ class FrameRenderer {
   // one vkCmdDrawIndexedIndirect, in item order, so the image is unchanged. Off, or without the
   // feature: a loop of vkCmdDrawIndexed.
   void set_multi_draw(bool on) { multi_draw_ = on; }
+  // On (the default), an item is culled by its mesh range's own sphere (a cluster's); off, by
+  // the item's sphere alone, as a whole mesh is: the reference the tests and benchmarks compare
+  // against (the same image, more triangles submitted).
+  void set_cull_ranges(bool on) { cull_ranges_ = on; }
   bool multi_draw_active() const { return merge_draws_ && multi_draw_ && ctx_.multi_draw_indirect; }
   // Indexed draws (merged ranges) and draw commands (an indirect command counts once) recorded
   // by the last draw, markers included.
@@ -92,7 +96,7 @@ class FrameRenderer {
   HostBuffer readback_;
   std::uint64_t triangles_last_frame_ = 0;
   std::uint32_t draws_last_frame_ = 0, draw_commands_last_frame_ = 0;
-  bool merge_draws_ = true, multi_draw_ = true;
+  bool merge_draws_ = true, multi_draw_ = true, cull_ranges_ = true;
   HostBuffer indirect_;  // VkDrawIndexedIndirectCommand per merged draw, grown to the item count
   std::uint32_t max_draw_indirect_count_ = 1;
 };

@@ -2,12 +2,41 @@
 
 #include "render/render_error.hpp"
 
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <string>
 
 namespace gazelod::render {
+namespace {
+
+// The sphere around the box of a cluster's corners, in double and then rounded outwards to
+// float, so that no corner the shader places lies outside it; a cluster with no triangles
+// keeps the unit sphere.
+void cluster_bound(std::span<const glm::vec3> positions_unit, std::span<const std::uint32_t> indices,
+                   MeshRange& range) {
+  if (indices.empty()) return;
+  glm::dvec3 lo(positions_unit[indices[0]]), hi = lo;
+  for (std::uint32_t i : indices) {
+    lo = glm::min(lo, glm::dvec3(positions_unit[i]));
+    hi = glm::max(hi, glm::dvec3(positions_unit[i]));
+  }
+  const glm::vec3 center(0.5 * (lo + hi));
+  double radius_squared = 0.0;
+  for (std::uint32_t i : indices) {
+    const glm::dvec3 d = glm::dvec3(positions_unit[i]) - glm::dvec3(center);
+    radius_squared = std::max(radius_squared, glm::dot(d, d));
+  }
+  range.bound_center_unit = center;
+  // A relative margin over float rounding of the centre and of the shader's placement.
+  range.bound_radius_unit = static_cast<float>(std::sqrt(radius_squared) * (1.0 + 1e-5) + 1e-6);
+}
+
+}  // namespace
 
 std::uint32_t MeshLibrary::add_sphere(std::uint32_t target_triangles) {
   if (uploaded()) throw RenderError("MeshLibrary::add_sphere after upload()");
@@ -94,6 +123,7 @@ std::uint32_t MeshLibrary::add_cluster_mesh(std::span<const glm::vec3> positions
     range.first_index = base + first_index[c];
     range.index_count = index_count[c];
     range.vertex_offset = vertex_offset;
+    cluster_bound(positions_unit, indices.subspan(first_index[c], index_count[c]), range);
     ranges_.push_back(range);
   }
   return first_id;

@@ -21,6 +21,11 @@ struct MeshRange {
   std::uint32_t first_index = 0;
   std::uint32_t index_count = 0;
   std::int32_t vertex_offset = 0;
+  // A sphere holding the range's triangles, in the unit frame of its positions: the unit
+  // sphere for a whole mesh, each cluster's own (smaller) sphere for a cluster mesh, so that a
+  // cut's clusters outside an eye's view are not submitted (FrameRenderer::draw).
+  glm::vec3 bound_center_unit{0.0f};
+  float bound_radius_unit = 1.0f;
   std::uint32_t triangles() const { return index_count / 3; }
 };
 
@@ -45,6 +50,7 @@ class MeshLibrary {
   // mesh (returned + c), so a cut is drawn with one DrawItem per drawn cluster, all with the
   // same centre and radius (the frame of positions_unit, as for add_mesh); cluster c + 1's range
   // starts where cluster c's ends when the input's do, so FrameRenderer merges their draws.
+  // Each cluster's range gets the sphere around its box (MeshRange::bound_center_unit).
   // Throws RenderError after upload(), for no clusters, spans of different lengths, a range
   // outside `indices` or not of whole triangles, an index out of range or a non-finite position.
   std::uint32_t add_cluster_mesh(std::span<const glm::vec3> positions_unit,

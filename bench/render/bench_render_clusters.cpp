@@ -15,7 +15,10 @@
 //              (FrameRenderer::set_multi_draw(false); what `gazelod run` draws: the OpenXR
 //              host's device has no multiDrawIndirect);
 //   MergedIndirect  the same merged draws, one vkCmdDrawIndexedIndirect per tint (the default
-//              where the device has multiDrawIndirect, as lavapipe's OffscreenDevice does).
+//              where the device has multiDrawIndirect, as lavapipe's OffscreenDevice does);
+//   Culled     MergedIndirect less the clusters whose own sphere is outside the eye's view
+//              (FrameRenderer::set_cull_ranges, on by default: what `gazelod run` draws). The
+//              cases before it cull by the terrain's sphere only, as before per-cluster culling.
 // Before the cases it prints the left eye's triangles by screen size (outside the view, under
 // one pixel, covering a pixel or more): what the triangles cost depends on which kind they are.
 // Counters: ms_per_frame (real time per iteration), triangles, draws (indexed ranges) and
@@ -237,7 +240,7 @@ Scene* scene() {
   return s.get();
 }
 
-enum class Case { empty, coarse, whole, per_cluster, merged, merged_indirect };
+enum class Case { empty, coarse, whole, per_cluster, merged, merged_indirect, culled };
 std::map<std::pair<Case, bool>, double> ms_of;  // what earlier cases measured, for the ratios
 
 void run(benchmark::State& state, Case which) {
@@ -254,7 +257,8 @@ void run(benchmark::State& state, Case which) {
       which == Case::empty ? none : which == Case::coarse ? s->coarse : which == Case::whole ? s->whole : s->cut;
   for (auto& eye : s->eyes) {
     eye->set_merge_draws(which != Case::per_cluster);
-    eye->set_multi_draw(which == Case::merged_indirect);
+    eye->set_multi_draw(which == Case::merged_indirect || which == Case::culled);
+    eye->set_cull_ranges(which == Case::culled);
   }
   const auto started = std::chrono::steady_clock::now();
   for (auto _ : state)
@@ -317,7 +321,7 @@ void BM_Interleaved(benchmark::State& state) {
   const Entry entries[] = {{"Empty", Case::empty, false},        {"EmptyReadback", Case::empty, true},
                            {"Coarse", Case::coarse, false},      {"Whole", Case::whole, false},
                            {"PerCluster", Case::per_cluster, false}, {"Merged", Case::merged, false},
-                           {"MergedIndirect", Case::merged_indirect, false}};
+                           {"MergedIndirect", Case::merged_indirect, false}, {"Culled", Case::culled, false}};
   constexpr std::size_t kCases = std::size(entries);
   const auto rounds = static_cast<std::size_t>(state.range(0));
   std::array<std::vector<double>, kCases> ms;
@@ -334,7 +338,8 @@ void BM_Interleaved(benchmark::State& state) {
                                                                            : s->cut;
         for (auto& eye : s->eyes) {
           eye->set_merge_draws(e.which != Case::per_cluster);
-          eye->set_multi_draw(e.which == Case::merged_indirect);
+          eye->set_multi_draw(e.which == Case::merged_indirect || e.which == Case::culled);
+          eye->set_cull_ranges(e.which == Case::culled);
         }
         const auto started = std::chrono::steady_clock::now();
         for (int eye = 0; eye < 2; ++eye) {
@@ -379,6 +384,7 @@ GAZELOD_FRAME_CASE(Whole, Case::whole);
 GAZELOD_FRAME_CASE(PerCluster, Case::per_cluster);
 GAZELOD_FRAME_CASE(Merged, Case::merged);
 GAZELOD_FRAME_CASE(MergedIndirect, Case::merged_indirect);
+GAZELOD_FRAME_CASE(Culled, Case::culled);
 // Arg: rounds.
 BENCHMARK(BM_Interleaved)->Arg(40)->Iterations(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 

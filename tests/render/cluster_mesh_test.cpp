@@ -137,5 +137,51 @@ TEST_F(ClusterMeshRender, EachDrawnClusterShowsItsOwnTrianglesInItsDepthTint) {
   EXPECT_EQ(renderer.triangles_last_frame(), 2u);
 }
 
+// Per-cluster culling (FrameRenderer::set_cull_ranges): a strip of 10 one-quad clusters across
+// x = -0.4..0.4 at z = 0.9 in the unit frame (inside the unit sphere, facing +Z so the radial
+// shading lights it), 4 m ahead, seen through a 0.1 rad wide view (|x| < 0.2 m there). The
+// clusters whose own sphere is outside are not submitted, and the image is the one drawn with
+// every cluster submitted.
+TEST_F(ClusterMeshRender, ClustersOutsideTheViewAreNotSubmittedAndTheImageIsTheSame) {
+  std::vector<glm::vec3> positions;
+  std::vector<std::uint32_t> indices, first, count;
+  for (int q = 0; q < 10; ++q) {
+    const float x0 = -0.4f + 0.08f * static_cast<float>(q), x1 = x0 + 0.08f;
+    const auto v = static_cast<std::uint32_t>(positions.size());
+    positions.insert(positions.end(), {{x0, -0.04f, 0.9f}, {x1, -0.04f, 0.9f}, {x1, 0.04f, 0.9f}, {x0, 0.04f, 0.9f}});
+    first.push_back(static_cast<std::uint32_t>(indices.size()));
+    indices.insert(indices.end(), {v, v + 1, v + 2, v, v + 2, v + 3});  // counter-clockwise from +Z
+    count.push_back(6);
+  }
+  MeshLibrary strip;
+  const std::uint32_t id = strip.add_cluster_mesh(positions, indices, first, count);
+  strip.upload(device_->context());
+  // The bound of cluster 0 (x -0.4..-0.32): the sphere around its box.
+  EXPECT_NEAR(strip.range(id).bound_center_unit.x, -0.36f, 1e-6f);
+  EXPECT_NEAR(strip.range(id).bound_center_unit.z, 0.9f, 1e-6f);
+  EXPECT_NEAR(strip.range(id).bound_radius_unit, std::sqrt(0.0032f), 1e-5f);
+
+  std::vector<DrawItem> items;
+  for (std::uint32_t c = 0; c < 10; ++c) items.push_back({{0.0f, 0.0f, -4.9f}, 1.0f, id + c, c % 3});
+  EyeView narrow;
+  narrow.fov = {-0.05, 0.05, 0.05, -0.05};
+  OffscreenTarget target(device_->context(), 64, 64);
+  FrameRenderer renderer(device_->context(), strip, target.target());
+  renderer.set_cull_ranges(false);
+  renderer.draw(0, narrow, items);
+  const RgbaImage all = renderer.read_back(0);
+  EXPECT_EQ(renderer.triangles_last_frame(), 20u);
+  renderer.set_cull_ranges(true);
+  renderer.draw(0, narrow, items);
+  const RgbaImage culled = renderer.read_back(0);
+  // Clusters 2..7: 3..6 in the view, 2 and 7 reaching its edge; 0, 1, 8, 9 culled.
+  EXPECT_EQ(renderer.triangles_last_frame(), 12u);
+  EXPECT_EQ(culled.pixels, all.pixels);
+  // Not an empty picture: clusters 4 and 5 on the middle row in their tints, background above.
+  EXPECT_EQ(nearest_lod(culled.rgb(25, 32)), 4 % 3);
+  EXPECT_EQ(nearest_lod(culled.rgb(38, 32)), 5 % 3);
+  EXPECT_EQ(nearest_lod(culled.rgb(32, 4)), -1);
+}
+
 }  // namespace
 }  // namespace gazelod::render

@@ -38,6 +38,8 @@
 
 namespace gazelod::bake {
 
+inline constexpr unsigned kMaxFoldRetries = 8;
+
 struct ClusterBuildOptions {
   std::size_t max_vertices = 64;    // per cluster, 3..255 (bake/cluster_split.hpp)
   std::size_t max_triangles = 124;  // per cluster, 4..512 and a multiple of 4 (meshopt 0.18)
@@ -45,6 +47,9 @@ struct ClusterBuildOptions {
   double simplify_ratio = 0.5;      // each group is simplified to this share of its triangles
   double stuck_ratio = 0.85;        // more than this share left: the group does not simplify
   unsigned threads = 0;  // source chunks, groups and slices in parallel; 0: all cores; same result for any
+  // A group meshopt 0.18 folded is simplified again, up to this many times, with the folds'
+  // surroundings locked (bake/cluster_flips.hpp, lock_around_folds); 0..kMaxFoldRetries.
+  unsigned fold_retries = 2;
   // true: every open border stays at source resolution too (meshopt_SimplifyLockBorder), for
   // parts whose rims meet geometry the bake cannot see.
   bool lock_open_borders = false;

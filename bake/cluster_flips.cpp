@@ -2,6 +2,8 @@
 // per triangle after.
 #include "bake/cluster_flips.hpp"
 
+#include "bake/meshopt_lock.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -17,7 +19,8 @@ void face_normal(std::span<const float> p, std::uint32_t a, std::uint32_t b, std
 }  // namespace
 
 Folds find_folds(std::span<const float> p, std::span<const std::uint32_t> before,
-                 std::span<const std::uint32_t> after, std::vector<float>& normals) {
+                 std::span<const std::uint32_t> after, std::vector<float>& normals,
+                 std::vector<std::uint32_t>* folded_corners) {
   normals.assign(p.size(), 0.0f);
   for (std::size_t t = 0; t + 2 < before.size(); t += 3) {
     double n[3];
@@ -33,6 +36,7 @@ Folds find_folds(std::span<const float> p, std::span<const std::uint32_t> before
       for (int j = 0; j < 3; ++j) dot += n[j] * normals[3 * std::size_t{after[t + k]} + j];
     if (dot >= 0.0) continue;
     ++f.triangles;
+    if (folded_corners) folded_corners->insert(folded_corners->end(), {after[t], after[t + 1], after[t + 2]});
     // Its width in the surface it should lie in: projected on the plane across the corners'
     // normal (a sliver turned just past upright on a terrain covers almost nothing wrongly; a
     // panel turned over in a wall does), the smallest altitude, twice its area over its
@@ -56,6 +60,23 @@ Folds find_folds(std::span<const float> p, std::span<const std::uint32_t> before
     if (longest_sq > 0.0) f.width_m = std::max(f.width_m, twice_area / std::sqrt(longest_sq));
   }
   return f;
+}
+
+std::size_t lock_around_folds(std::vector<float>& positions_xyz, std::size_t vertex_count,
+                              std::span<const std::uint32_t> before, std::span<const std::uint32_t> corners,
+                              std::vector<std::uint8_t>& marks) {
+  marks.assign(vertex_count, 0);
+  for (std::uint32_t v : corners) marks[v] = 1;  // 1: a corner; 2: touches one
+  for (std::size_t t = 0; t + 2 < before.size(); t += 3)
+    if ((marks[before[t]] | marks[before[t + 1]] | marks[before[t + 2]]) & 1)
+      for (std::size_t k = 0; k < 3; ++k) marks[before[t + k]] |= 2;
+  std::size_t locked = 0;
+  for (std::size_t v = 0; v < vertex_count; ++v) {
+    if (!marks[v]) continue;
+    lock_position(positions_xyz, v);
+    ++locked;
+  }
+  return locked;
 }
 
 }  // namespace gazelod::bake

@@ -19,12 +19,23 @@ namespace gazelod::bake {
 // Triangles of `after` whose normal points against the summed area-weighted normals that
 // `before`'s triangles give its three corners (a triangle turned over, or one spanning a crease
 // so far that it faces away from every corner's surface). Both are triangle lists over the same
-// vertices (positions_xyz, 3 floats each); `normals` is scratch.
+// vertices (positions_xyz, 3 floats each); `normals` is scratch. With `folded_corners`, the
+// folded triangles' corners are appended to it.
 struct Folds {
   std::size_t triangles = 0;
   double width_m = 0.0;  // the widest folded triangle's width, as above; 0: none
 };
 Folds find_folds(std::span<const float> positions_xyz, std::span<const std::uint32_t> before,
-                 std::span<const std::uint32_t> after, std::vector<float>& normals);
+                 std::span<const std::uint32_t> after, std::vector<float>& normals,
+                 std::vector<std::uint32_t>* folded_corners = nullptr);
+
+// For a retry of the simplification that folded: locks the positions around the folds, the
+// folded triangles' corners (`corners`, vertices of `before`) and every vertex of a `before`
+// triangle touching one, so that nothing collapses into or across them: lock_position
+// (meshopt_lock.hpp) on `positions_xyz`, whose first `vertex_count` vertices are `before`'s.
+// `marks` is scratch. Returns the vertices locked.
+std::size_t lock_around_folds(std::vector<float>& positions_xyz, std::size_t vertex_count,
+                              std::span<const std::uint32_t> before, std::span<const std::uint32_t> corners,
+                              std::vector<std::uint8_t>& marks);
 
 }  // namespace gazelod::bake

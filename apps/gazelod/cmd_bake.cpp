@@ -1,7 +1,7 @@
 // gazelod bake IN.gltf|IN.glb -o OUT.glb [--levels N | --ratios r1,r2,...] [--target-error E]
 // [--lock-borders] [--profile 6|18]:
 // an MSFT_lod chain per mesh node (bake/bake.hpp). Progress on stderr, the summary on stdout.
-// gazelod bake --clusters IN OUT.glb (or -o OUT.glb) [--lock-borders] [--threads N]: a cluster
+// gazelod bake --clusters IN OUT.glb (or -o OUT.glb) [--lock-borders] [--fold-retries N] [--threads N]: a cluster
 // hierarchy per mesh primitive instead, stored as GAZELOD_cluster_lod (bake/cluster_bake.hpp,
 // docs/bake.md).
 // --profile renders every level from 6 or 18 viewpoints (Reddy's perceptual profile, Vulkan on
@@ -29,6 +29,7 @@ struct Options {
   int levels = 0;
   int profile = 0;
   int threads = -1;  // unset
+  int fold_retries = -1;  // unset
   bool lock_borders = false;
   bool clusters = false;
 };
@@ -50,6 +51,7 @@ int run_clusters(const Options& o, const std::string& out, Io io) {
     if (set) throw UsageError(std::string("--clusters: cannot be combined with ") + name);
   bake::ClusterBakeOptions opts;
   opts.build.lock_open_borders = o.lock_borders;
+  if (o.fold_retries >= 0) opts.build.fold_retries = static_cast<unsigned>(o.fold_retries);
   if (o.threads >= 0) opts.build.threads = static_cast<unsigned>(o.threads);
   opts.progress = [&io](const std::string& line) { io.err << line << '\n' << std::flush; };
   try {
@@ -93,6 +95,9 @@ int run_bake(const Options& o, Io io) {
   const std::string out = output_path(o);
   if (o.clusters) return run_clusters(o, out, io);
   if (o.threads >= 0) throw UsageError("--threads: only with --clusters (a chain is baked on one thread)");
+  if (o.fold_retries >= 0)
+    throw UsageError("--fold-retries: only with --clusters (a chain's levels are simplified from the source, "
+                     "where retrying with the folds' surroundings locked did not help)");
   if (o.profile != 0 && o.profile != 6 && o.profile != 18)
     throw UsageError("--profile: must be 6 or 18 viewpoints, got " + std::to_string(o.profile));
   if (o.levels != 0 && !o.ratios.empty()) throw UsageError("--levels: give either --levels or --ratios, not both");
@@ -141,6 +146,11 @@ const Registrar reg(
       app.add_flag("--lock-borders", o->lock_borders,
                    "keep open borders in place (chains: no cracks between a mesh's primitives; "
                    "--clusters: also borders that meet no other primitive, which are simplified by default)");
+      app.add_option("--fold-retries", o->fold_retries,
+                     "--clusters: simplify a group that meshoptimizer 0.18 folded over again, up to N times, with "
+                     "the folds' surroundings locked (default 2; 0: keep the first result, its folds counted in "
+                     "its error)")
+          ->check(CLI::Range(0, 8));
       app.add_option("--threads", o->threads,
                      "--clusters: threads for the hierarchy build (default 0: one per core); the "
                      "hierarchy is the same for any count")

@@ -18,9 +18,10 @@
 // no coarser than another over L when that error is no larger. Both need one pass over the
 // groups per frame (parents before children), no allocation.
 //
-// Two groups with bit-identical records would be merged; that only happens for a group that
-// passed one cluster through unchanged (its output's self record equals its parent record);
-// such a cluster is never drawn (both records decide alike) and is left out of the graph.
+// Two groups with bit-identical records would be merged. The bake never writes one (a group
+// that would repeat a member's record gets its radius one float step larger: bake/cluster_build.cpp);
+// a file from another writer may: a cluster whose self record equals its parent record is
+// never drawn (both records decide alike) and is left out of the graph.
 #pragma once
 
 #include "lod/cluster_hierarchy.hpp"

@@ -96,6 +96,35 @@ TEST(CliBakeClusters, SameFileOnAnyThreadCount) {
   EXPECT_FALSE(std::filesystem::exists(dir + "/chain.glb"));
 }
 
+// --fold-retries: 0 keeps meshopt's first result per group (more folds counted in the
+// summary), the default 2 retries folded groups; out of range or without --clusters: refused.
+TEST(CliBakeClusters, FoldRetriesOption) {
+  const std::string dir = bake::testing::temp_dir("cli_clusters_folds");
+  const std::string in = dir + "/city.glb";
+  ASSERT_EQ(run_cli({"scene", "generate", "city", in, "--triangles", "30000"}).rc, 0);
+  const auto folded = [](const std::string& summary) {
+    const std::string key = "folded over by meshoptimizer 0.18's simplifier";
+    const std::size_t at = summary.find(key);
+    if (at == std::string::npos) return std::size_t{0};
+    const std::size_t colon = summary.find(": ", at);
+    return static_cast<std::size_t>(std::stoul(summary.substr(colon + 2)));
+  };
+  const test::CliResult none = run_cli({"bake", "--clusters", in, dir + "/r0.glb", "--fold-retries", "0"});
+  ASSERT_EQ(none.rc, 0) << none.err;
+  const test::CliResult two = run_cli({"bake", "--clusters", in, dir + "/r2.glb"});
+  ASSERT_EQ(two.rc, 0) << two.err;
+  EXPECT_GT(folded(none.out), 0u) << none.out;
+  EXPECT_LT(folded(two.out), folded(none.out)) << two.out;
+  test::CliResult r = run_cli({"bake", "--clusters", in, dir + "/bad.glb", "--fold-retries", "9"});
+  EXPECT_EQ(r.rc, 2);
+  EXPECT_HAS(r.err, "--fold-retries");
+  r = run_cli({"bake", in, dir + "/chain.glb", "--fold-retries", "1"});
+  EXPECT_EQ(r.rc, 2);
+  EXPECT_HAS(r.err, "--fold-retries: only with --clusters");
+  EXPECT_FALSE(std::filesystem::exists(dir + "/bad.glb"));
+  EXPECT_FALSE(std::filesystem::exists(dir + "/chain.glb"));
+}
+
 TEST(CliBakeClusters, InputAndOutputErrorsHaveDistinctExitCodes) {
   const Paths p = scene("cli_clusters_io");
   test::CliResult r = run_cli({"bake", "--clusters", p.dir + "/missing.glb", p.out});

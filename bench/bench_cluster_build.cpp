@@ -5,8 +5,9 @@
 // x_simplify = the build's wall time over the baseline's (how many whole-mesh halvings the
 // hierarchy costs); digest = an FNV-1a hash of the hierarchy's indices and errors (48 bits), the
 // same for any thread count and across a change that must not alter the output; *_ms = wall
-// milliseconds per phase of the last iteration (ClusterBuildResult::Phases). The build runs
-// with 1 thread and with all cores (threads 0).
+// milliseconds per phase of the last iteration (ClusterBuildResult::Phases); folded = the
+// folds left (ClusterBuildResult::folded_triangles). The build runs with 1 thread and with all
+// cores (threads 0), and with all cores without fold retries (fold_retries 0: their cost).
 #include "bake/cluster_build.hpp"
 #include "tests/bake/test_meshes.hpp"
 
@@ -92,6 +93,7 @@ void BM_ClusterBuild(benchmark::State& state) {
   const testing::TestMesh& m = terrain();
   ClusterBuildOptions o;
   o.threads = static_cast<unsigned>(state.range(0));
+  o.fold_retries = static_cast<unsigned>(state.range(1));
   ClusterBuildResult r;  // the last iteration's, looked at after the timing
   const auto t0 = std::chrono::steady_clock::now();
   for (auto _ : state) {
@@ -101,6 +103,7 @@ void BM_ClusterBuild(benchmark::State& state) {
   report(state, seconds_since(t0));
   state.counters["clusters"] = static_cast<double>(r.hierarchy.size());
   state.counters["levels"] = static_cast<double>(r.levels);
+  state.counters["folded"] = static_cast<double>(r.folded_triangles);
   state.counters["digest"] = digest(r);
   const ClusterBuildResult::Phases& phases = r.phases;
   // Milliseconds per phase, the last iteration's.
@@ -113,7 +116,14 @@ void BM_ClusterBuild(benchmark::State& state) {
 }
 
 BENCHMARK(BM_MeshoptSimplifyHalf)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_ClusterBuild)->ArgName("threads")->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime();
+// Args: threads (0: all cores), fold retries (the default 2, and 0: what they cost).
+BENCHMARK(BM_ClusterBuild)
+    ->ArgNames({"threads", "fold_retries"})
+    ->Args({1, 2})
+    ->Args({0, 2})
+    ->Args({0, 0})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 }  // namespace
 }  // namespace gazelod::bake

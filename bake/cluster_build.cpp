@@ -254,8 +254,15 @@ class Builder {
     Folds f = n > 0 ? folds(n) : Folds{};
     // Up to fold_retries times: the same step again with the folds' surroundings locked
     // (lock_around_folds), kept when its widest fold is narrower. On the generated city this
-    // leaves 1,383 of 5,607 folds; the rest fold elsewhere or can only be avoided by stopping.
-    for (unsigned retry = 0; retry < o_.fold_retries && f.triangles > 0; ++retry) {
+    // leaves 1,458 of 5,607 folds; the rest fold elsewhere or can only be avoided by stopping.
+    // Only where the folds would set the group's error: wider than meshopt's own estimate (a
+    // quadric mean, below the largest distance the measure will find). A narrower fold (the
+    // slivers on a terrain) costs nothing in the error, and its retry, constrained by the
+    // locks, tends to raise the distance: skipping those made the build 15 % faster on the
+    // evaluation's terrain and its cut 2 % smaller.
+    const double estimate_m =
+        f.triangles > 0 ? double(error_rel) * meshopt_simplifyScale(s.local_xyz.data(), vcount, 3 * sizeof(float)) : 0.0;
+    for (unsigned retry = 0; retry < o_.fold_retries && f.triangles > 0 && f.width_m > estimate_m; ++retry) {
       s.corners.clear();
       find_folds(s.local_xyz, s.local, std::span<const std::uint32_t>(s.simplified.data(), n), s.normals, &s.corners);
       lock_around_folds(s.local_xyz, vcount, s.local, s.corners, s.marks);

@@ -136,6 +136,9 @@ void expect_hierarchy_invariants(const ClusterBuildResult& r, std::span<const fl
     }
     if (r.parent_group[c] >= 0) {
       children[r.parent_group[c]].push_back(c);
+      // Readers derive the groups from record equality: a group never repeats a member's record.
+      EXPECT_FALSE(same(parent_sphere(h, c), self_sphere(h, c)) && h.parent_error_m[c] == h.self_error_m[c])
+          << "the parent record repeats the self record";
     } else {
       EXPECT_EQ(h.parent_error_m[c], lod::kNoParentError);
     }

@@ -147,10 +147,10 @@ const Registrar reg(
                    "keep open borders in place (chains: no cracks between a mesh's primitives; "
                    "--clusters: also borders that meet no other primitive, which are simplified by default)");
       app.add_option("--fold-retries", o->fold_retries,
-                     "--clusters: simplify a group that meshoptimizer 0.18 folded over again, up to N times, with "
-                     "the folds' surroundings locked (default 2; 0: keep the first result, its folds counted in "
-                     "its error)")
-          ->check(CLI::Range(0, 8));
+                     "--clusters: simplify a group that meshoptimizer 0.18 folded over (folds wider than its "
+                     "error estimate) again, up to N times, with the folds' surroundings locked (default 2; 0: keep "
+                     "the first result, its folds counted in its error)")
+          ->check(CLI::Range(0, static_cast<int>(bake::kMaxFoldRetries)));
       app.add_option("--threads", o->threads,
                      "--clusters: threads for the hierarchy build (default 0: one per core); the "
                      "hierarchy is the same for any count")

@@ -45,6 +45,7 @@ ClusterPrimitiveReport bake_primitive(tinygltf::Model& m, int mesh, int primitiv
   rep.source_triangles = r.source_triangles;
   rep.degenerate_triangles = r.degenerate_triangles;
   rep.folded_triangles = r.folded_triangles;
+  rep.groups_across_seams = r.groups_across_seams;
   rep.clusters = r.hierarchy.size();
   rep.groups = r.groups;
   rep.levels = r.levels;
@@ -113,6 +114,7 @@ ClusterBakeReport bake_clusters_model(tinygltf::Model& m, const ClusterBakeOptio
       ClusterPrimitiveReport rep =
           bake_primitive(m, mesh, static_cast<int>(p), geometry[mi][p], locked, o, report.input_triangles);
       report.shared_vertices += rep.shared_vertices, report.folded_triangles += rep.folded_triangles;
+      report.groups_across_seams += rep.groups_across_seams;
       tris += rep.source_triangles + rep.degenerate_triangles, degenerate += rep.degenerate_triangles;
       clusters += rep.clusters, top += rep.top_triangles, levels = std::max(levels, rep.levels);
       build_s += rep.build_seconds;
@@ -192,6 +194,9 @@ std::string format_cluster_summary(const ClusterBakeReport& r) {
   if (r.folded_triangles > 0)
     s << "folded over by meshoptimizer 0.18's simplifier (facing against the surface they replace): "
       << r.folded_triangles << " of the stored simplified triangles\n";
+  if (r.groups_across_seams > 0)
+    s << "simplified across attribute seams (stuck with them kept; --keep-seams: never): " << r.groups_across_seams
+      << " groups\n";
   for (const std::string& w : r.warnings) s << "warning: " << w << "\n";
   return s.str();
 }

@@ -33,6 +33,7 @@ struct ClusterPrimitiveReport {
   std::uint32_t levels = 0;
   std::size_t shared_vertices = 0;     // where another primitive or instance meets it: locked
   std::size_t folded_triangles = 0;    // ClusterBuildResult's
+  std::size_t groups_across_seams = 0;  // ClusterBuildResult's
   double build_seconds = 0.0;          // build_cluster_hierarchy alone
 };
 
@@ -41,7 +42,7 @@ struct ClusterBakeReport {
   std::vector<std::string> warnings;
   std::size_t meshes = 0;               // meshes used by at least one node
   std::uint64_t input_triangles = 0;    // of those meshes, degenerate ones included
-  std::size_t shared_vertices = 0, folded_triangles = 0;  // all primitives' sums
+  std::size_t shared_vertices = 0, folded_triangles = 0, groups_across_seams = 0;  // all primitives' sums
   double build_seconds = 0.0;           // hierarchy builds, all primitives
   double seconds = 0.0;                 // everything (with reading and writing for a file)
 };

@@ -11,6 +11,7 @@
 #include "bake/cluster_split.hpp"
 #include "bake/meshopt_lock.hpp"
 #include "bake/parallel_for.hpp"
+#include "bake/seam_copies.hpp"
 
 #include <meshoptimizer.h>
 
@@ -67,6 +68,7 @@ struct Piece {
   float child_error_m = 0.0f;
   double fold_error_m = 0.0;
   bool simplified = false;
+  bool across_seams = false;  // simplified on welded positions (stuck_across_seams)
   std::size_t folded_triangles = 0;  // in the result (cluster_flips.hpp)
   std::size_t dropped_triangles = 0;  // source chunks: degenerate triangles left out
 };
@@ -114,7 +116,10 @@ class Builder {
     {
       PhaseTimer timer(time.weld_s);
       parallel_for(2, [&](std::size_t i, Scratch&) {
-        if (i == 0) weld_ = weld_positions(pos_);
+        if (i == 0) {
+          weld_ = weld_positions(pos_);
+          if (o_.stuck_across_seams) seams_ = std::make_unique<SeamCopies>(pos_, weld_, source);
+        }
         else chunks = source_chunks(pos_, source);
       });
     }
@@ -206,9 +211,23 @@ class Builder {
     }
   }
 
-  // One group: merge, simplify with its shared border locked, split, then measure against the source.
-  // Reads only the clusters' data.
+  // One group: merge, simplify with its shared border locked, split, then measure against the
+  // source; a group stuck at its attribute seams is tried again across them. Reads only the
+  // clusters' data.
   void simplify_group(const std::vector<std::uint32_t>& members, Scratch& s, Piece& p) const {
+    simplify_group(members, s, p, false);
+    const auto seam = [&](std::uint32_t c) {
+      const auto w = welded_of(c);
+      return std::any_of(w.begin(), w.end(), [&](std::uint32_t v) { return seams_->copies(v) > 1; });
+    };
+    if (!p.simplified && seams_ && std::any_of(members.begin(), members.end(), seam)) {
+      p = Piece{};
+      simplify_group(members, s, p, true);
+      p.across_seams = p.simplified;
+    }
+  }
+
+  void simplify_group(const std::vector<std::uint32_t>& members, Scratch& s, Piece& p, bool across_seams) const {
     const lod::ClusterHierarchy& h = out_.hierarchy;
     float child_error_m = 0.0f;
     s.spheres.clear();
@@ -216,7 +235,7 @@ class Builder {
       s.spheres.push_back(self_[c]);
       child_error_m = std::max(child_error_m, h.self_error_m[c]);
       for (std::uint32_t i = h.first_index[c]; i < h.first_index[c] + h.index_count[c]; ++i)
-        s.local.push_back(s.localise(out_.indices[i], pos_));
+        s.local.push_back(s.localise(across_seams ? weld_[out_.indices[i]] : out_.indices[i], pos_));
     }
     p.sphere = enclosing_sphere(s.spheres);
     const std::size_t vcount = s.global_of.size();
@@ -282,6 +301,12 @@ class Builder {
     s.local_xyz.resize(3 * vcount);  // the copies go before the split
     if (n > 0 && double(n) <= o_.stuck_ratio * double(s.local.size())) {
       p.simplified = true;
+      if (across_seams) {  // each corner gets a copy back; the split sees those (its vertex limit)
+        for (std::size_t i = 0; i < n; ++i) s.simplified[i] = s.global_of[s.simplified[i]];
+        seams_->choose(std::span<std::uint32_t>(s.simplified.data(), n));
+        s.clear();
+        for (std::size_t i = 0; i < n; ++i) s.simplified[i] = s.localise(s.simplified[i], pos_);
+      }
       split(s, std::span<const std::uint32_t>(s.simplified.data(), n), p);
       list_welded(s, p);
     }
@@ -454,7 +479,7 @@ class Builder {
     std::vector<std::uint32_t> next;
     for (std::size_t g = 0; g < groups.size(); ++g) {
       Piece& p = pieces[g];
-      if (p.simplified) out_.folded_triangles += p.folded_triangles;
+      if (p.simplified) out_.folded_triangles += p.folded_triangles, out_.groups_across_seams += p.across_seams;
       for (std::uint32_t c : groups[g]) std::vector<std::uint32_t>().swap(owned_[c]);  // passed on
       if (!p.simplified) {  // stuck: these clusters are the top here
         for (std::uint32_t c : groups[g]) {
@@ -517,6 +542,7 @@ class Builder {
   std::span<const float> pos_;
   const ClusterBuildOptions& o_;
   std::vector<std::uint32_t> weld_;
+  std::unique_ptr<SeamCopies> seams_;  // stuck_across_seams: the copies of each seam position
   // Per welded vertex: locked by the caller or by a top cluster; locked at this level (also used
   // by two groups); the group claiming it (mark_shared()).
   std::vector<std::uint8_t> locked_, shared_;

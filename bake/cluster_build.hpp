@@ -9,8 +9,8 @@
 //      unless `lock_open_borders`;
 //   4. the result is split into new clusters, which go back to step 2;
 // until one cluster is left or no group simplifies any more (a group that keeps more than
-// `stuck_ratio` of its triangles is not simplified: its clusters are the top of the hierarchy,
-// parent error kNoParentError).
+// `stuck_ratio` of its triangles, also across its attribute seams when `stuck_across_seams`, is
+// not simplified: its clusters are the top of the hierarchy, parent error kNoParentError).
 // Errors in the positions' units (metres), measured against the SOURCE, not summed per level:
 // every vertex of a kept source triangle (one per welded position) is owned by one cluster of
 // each level it reaches; a group owns what its members own and hands each vertex to the new
@@ -50,6 +50,11 @@ struct ClusterBuildOptions {
   // A group meshopt 0.18 folded is simplified again, up to this many times, with the folds'
   // surroundings locked (bake/cluster_flips.hpp, lock_around_folds); 0..kMaxFoldRetries.
   unsigned fold_retries = 2;
+  // true: a group that does not simplify with its attribute seams kept (positions several
+  // vertices share with different normals or UVs: meshopt 0.18 keeps them, which stopped CAD
+  // parts' hierarchies at a third to half of their triangles) is simplified again across them,
+  // each new corner taking back the copy from its triangle's side (bake/seam_copies.hpp).
+  bool stuck_across_seams = true;
   // true: every open border stays at source resolution too (meshopt_SimplifyLockBorder), for
   // parts whose rims meet geometry the bake cannot see.
   bool lock_open_borders = false;
@@ -67,6 +72,7 @@ struct ClusterBuildResult {
   // top of the hierarchy / source cluster). Groups are numbered in build order.
   std::vector<std::int32_t> parent_group, source_group;
   std::size_t groups = 0;                // groups that were simplified
+  std::size_t groups_across_seams = 0;   // of those, across their attribute seams (stuck_across_seams)
   std::uint32_t levels = 0;              // largest depth + 1; 0 for an empty mesh
   std::size_t source_triangles = 0;      // input triangles that were kept
   std::size_t degenerate_triangles = 0;  // dropped: two corners at the same position

@@ -1,7 +1,8 @@
 // gazelod bake IN.gltf|IN.glb -o OUT.glb [--levels N | --ratios r1,r2,...] [--target-error E]
 // [--lock-borders] [--profile 6|18]:
 // an MSFT_lod chain per mesh node (bake/bake.hpp). Progress on stderr, the summary on stdout.
-// gazelod bake --clusters IN OUT.glb (or -o OUT.glb) [--lock-borders] [--fold-retries N] [--threads N]: a cluster
+// gazelod bake --clusters IN OUT.glb (or -o OUT.glb) [--lock-borders] [--fold-retries N] [--keep-seams]
+// [--threads N]: a cluster
 // hierarchy per mesh primitive instead, stored as GAZELOD_cluster_lod (bake/cluster_bake.hpp,
 // docs/bake.md).
 // --profile renders every level from 6 or 18 viewpoints (Reddy's perceptual profile, Vulkan on
@@ -31,6 +32,7 @@ struct Options {
   int threads = -1;  // unset
   int fold_retries = -1;  // unset
   bool lock_borders = false;
+  bool keep_seams = false;
   bool clusters = false;
 };
 
@@ -51,6 +53,7 @@ int run_clusters(const Options& o, const std::string& out, Io io) {
     if (set) throw UsageError(std::string("--clusters: cannot be combined with ") + name);
   bake::ClusterBakeOptions opts;
   opts.build.lock_open_borders = o.lock_borders;
+  opts.build.stuck_across_seams = !o.keep_seams;
   if (o.fold_retries >= 0) opts.build.fold_retries = static_cast<unsigned>(o.fold_retries);
   if (o.threads >= 0) opts.build.threads = static_cast<unsigned>(o.threads);
   opts.progress = [&io](const std::string& line) { io.err << line << '\n' << std::flush; };
@@ -95,6 +98,9 @@ int run_bake(const Options& o, Io io) {
   const std::string out = output_path(o);
   if (o.clusters) return run_clusters(o, out, io);
   if (o.threads >= 0) throw UsageError("--threads: only with --clusters (a chain is baked on one thread)");
+  if (o.keep_seams)
+    throw UsageError("--keep-seams: only with --clusters (a chain's levels always keep attribute seams; "
+                     "its sloppy fallback ignores them)");
   if (o.fold_retries >= 0)
     throw UsageError("--fold-retries: only with --clusters (a chain's levels are simplified from the source, "
                      "where retrying with the folds' surroundings locked did not help)");
@@ -151,6 +157,10 @@ const Registrar reg(
                      "error estimate) again, up to N times, with the folds' surroundings locked (default 2; 0: keep "
                      "the first result, its folds counted in its error)")
           ->check(CLI::Range(0, static_cast<int>(bake::kMaxFoldRetries)));
+      app.add_flag("--keep-seams", o->keep_seams,
+                   "--clusters: never simplify across attribute seams (positions vertices share with "
+                   "different normals or UVs); by default a group that does not simplify with them kept "
+                   "is simplified across them, each new corner taking the copy from its side");
       app.add_option("--threads", o->threads,
                      "--clusters: threads for the hierarchy build (default 0: one per core); the "
                      "hierarchy is the same for any count")

@@ -125,6 +125,26 @@ TEST(CliBakeClusters, FoldRetriesOption) {
   EXPECT_FALSE(std::filesystem::exists(dir + "/chain.glb"));
 }
 
+// A generated city's boxes have hard edges (split vertices): some groups only simplify across
+// them, which the summary counts; --keep-seams never does; without --clusters it is refused.
+TEST(CliBakeClusters, KeepSeamsOption) {
+  const std::string dir = bake::testing::temp_dir("cli_clusters_seams");
+  const std::string in = dir + "/city.glb";
+  ASSERT_EQ(run_cli({"scene", "generate", "city", in, "--triangles", "30000"}).rc, 0);
+  const std::string key = "simplified across attribute seams";
+  const test::CliResult across = run_cli({"bake", "--clusters", in, dir + "/across.glb"});
+  ASSERT_EQ(across.rc, 0) << across.err;
+  EXPECT_HAS(across.out, key);
+  const test::CliResult kept = run_cli({"bake", "--clusters", in, dir + "/kept.glb", "--keep-seams"});
+  ASSERT_EQ(kept.rc, 0) << kept.err;
+  EXPECT_EQ(kept.out.find(key), std::string::npos) << kept.out;
+  EXPECT_NE(kept.out, across.out);
+  const test::CliResult r = run_cli({"bake", in, dir + "/chain.glb", "--keep-seams"});
+  EXPECT_EQ(r.rc, 2);
+  EXPECT_HAS(r.err, "--keep-seams: only with --clusters");
+  EXPECT_FALSE(std::filesystem::exists(dir + "/chain.glb"));
+}
+
 TEST(CliBakeClusters, InputAndOutputErrorsHaveDistinctExitCodes) {
   const Paths p = scene("cli_clusters_io");
   test::CliResult r = run_cli({"bake", "--clusters", p.dir + "/missing.glb", p.out});

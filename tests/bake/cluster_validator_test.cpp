@@ -88,6 +88,20 @@ TEST(ClusterValidator, RealModelBakesValidatesAndKeepsItsInvariants) {
   std::size_t degenerate = 0;
   for (const auto& p : rep.primitives) degenerate += p.degenerate_triangles;
   EXPECT_GT(degenerate, 0u) << "the model has degenerate triangles (the validator counts them)";
+  // CAD parts with hard edges everywhere: with seams kept the hierarchies stop at about a third
+  // of the source; stuck groups simplified across them take the tops under 5 %.
+  const auto top_share = [](const ClusterBakeReport& r) {
+    std::size_t top = 0, source = 0;
+    for (const auto& p : r.primitives) top += p.top_triangles, source += p.source_triangles;
+    return double(top) / double(source);
+  };
+  ClusterBakeOptions keep;
+  keep.build.stuck_across_seams = false;
+  const double kept_share = top_share(bake_clusters_file(model, out + ".kept.glb", keep));
+  std::printf("top clusters: %.3f of the source triangles, %.3f with seams kept\n", top_share(rep), kept_share);
+  EXPECT_LT(top_share(rep), 0.05);
+  EXPECT_GT(kept_share, 0.2);
+  EXPECT_GT(rep.groups_across_seams, 0u);
 
   const BakedScene scene = load_baked(out);
   EXPECT_EQ(scene.cluster_meshes.size(), 29u);

@@ -9,12 +9,16 @@
 #include "bake/gltf_pack.hpp"
 #include "bake/mesh_extract.hpp"
 #include "bake/node_world.hpp"
+#include "bake/parallel_for.hpp"
 #include "bake/shared_positions.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <exception>
+#include <mutex>
+#include <optional>
 #include <sstream>
 
 namespace gazelod::bake {
@@ -28,19 +32,30 @@ double seconds_since(Clock::time_point t0) {
 
 double per_second(double n, double seconds) { return seconds > 0.0 ? n / seconds : 0.0; }
 
-ClusterPrimitiveReport bake_primitive(tinygltf::Model& m, int mesh, int primitive, const PrimitiveGeometry& g,
-                                      std::span<const std::uint8_t> locked, const ClusterBakeOptions& o,
-                                      std::uint64_t& input_triangles) {
+// A primitive of at least this many triangles is built alone with every thread (its levels
+// have groups enough for them); smaller ones are built side by side, one thread each, which on
+// many small meshes (a city's blocks, a CAD model's parts) keeps the cores busy where a single
+// mesh's top levels have too few groups.
+constexpr std::size_t kAloneFromTriangles = std::size_t{1} << 17;
+
+// One primitive's hierarchy and its report (all but the storing).
+struct BuiltPrimitive {
   ClusterPrimitiveReport rep;
+  ClusterBuildResult result;
+};
+
+BuiltPrimitive build_primitive(const tinygltf::Model& m, int mesh, int primitive, const PrimitiveGeometry& g,
+                               std::span<const std::uint8_t> locked, ClusterBuildOptions b) {
+  BuiltPrimitive out;
+  ClusterPrimitiveReport& rep = out.rep;
   rep.mesh = mesh, rep.primitive = primitive;
   rep.label = primitive_label(m, mesh, primitive);
-  input_triangles += g.indices.size() / 3;
-  ClusterBuildOptions b = o.build;
   b.label = rep.label;
   b.locked_vertices = locked;
   rep.shared_vertices = static_cast<std::size_t>(std::count_if(locked.begin(), locked.end(), [](std::uint8_t f) { return f != 0; }));
   const auto t0 = Clock::now();
-  const ClusterBuildResult r = build_cluster_hierarchy(g.positions_xyz, g.indices, b);
+  out.result = build_cluster_hierarchy(g.positions_xyz, g.indices, b);
+  const ClusterBuildResult& r = out.result;
   rep.build_seconds = seconds_since(t0);
   rep.source_triangles = r.source_triangles;
   rep.degenerate_triangles = r.degenerate_triangles;
@@ -53,9 +68,7 @@ ClusterPrimitiveReport bake_primitive(tinygltf::Model& m, int mesh, int primitiv
   for (std::size_t c = 0; c < r.hierarchy.size(); ++c)
     if (r.hierarchy.parent_error_m[c] == lod::kNoParentError)
       ++rep.top_clusters, rep.top_triangles += r.hierarchy.index_count[c] / 3;
-  if (rep.clusters > 0)
-    write_cluster_lod(m, mesh, primitive, r.hierarchy, r.indices, g.positions_xyz.size() / 3);
-  return rep;
+  return out;
 }
 
 }  // namespace
@@ -97,47 +110,107 @@ ClusterBakeReport bake_clusters_model(tinygltf::Model& m, const ClusterBakeOptio
         geometry[mi].push_back(extract_primitive(m, static_cast<int>(mi), static_cast<int>(p)));
   const auto shared = o.build.lock_open_borders ? std::vector<std::vector<std::vector<std::uint8_t>>>(m.meshes.size())
                                                 : meeting_vertices(m, geometry);
-  std::size_t done = 0;
-  for (std::size_t mi = 0; mi < m.meshes.size(); ++mi) {
-    if (!used[mi]) continue;
-    const auto mesh = static_cast<int>(mi);
-    const std::size_t prims = m.meshes[mi].primitives.size();
-    if (o.progress)
-      o.progress("bake: mesh " + std::to_string(done + 1) + "/" + std::to_string(report.meshes) + " " +
-                 mesh_label(m, mesh) + " (" + std::to_string(prims) + " primitives) ...");
-    const auto tm = Clock::now();
+  // The primitives to build, in mesh order; large ones first, alone, then the rest side by side.
+  struct Task {
+    std::size_t mesh, primitive;
+  };
+  std::vector<Task> tasks;
+  for (std::size_t mi = 0; mi < m.meshes.size(); ++mi)
+    for (std::size_t p = 0; p < geometry[mi].size(); ++p) tasks.push_back({mi, p});
+  for (const Task& t : tasks) report.input_triangles += geometry[t.mesh][t.primitive].indices.size() / 3;
+  const auto is_alone = [&](const Task& t) {
+    return geometry[t.mesh][t.primitive].indices.size() / 3 >= kAloneFromTriangles;
+  };
+  std::vector<std::size_t> alone, side_by_side;
+  for (std::size_t i = 0; i < tasks.size(); ++i) (is_alone(tasks[i]) ? alone : side_by_side).push_back(i);
+
+  // Finished builds are stored in task order (so the file is the same for any thread count),
+  // each as soon as every earlier one is; progress per mesh as its last primitive is built.
+  std::vector<std::optional<BuiltPrimitive>> built(tasks.size());
+  std::vector<ClusterPrimitiveReport> reps(tasks.size());  // for the progress lines
+  std::vector<std::exception_ptr> failed(tasks.size());
+  std::vector<std::size_t> left(m.meshes.size(), 0);
+  for (const Task& t : tasks) ++left[t.mesh];
+  std::size_t stored = 0, meshes_done = 0;
+  std::mutex mutex;
+  const auto store_ready = [&] {  // under mutex
+    for (; stored < tasks.size() && built[stored]; ++stored) {
+      BuiltPrimitive& b = *built[stored];
+      ClusterPrimitiveReport& rep = b.rep;
+      report.shared_vertices += rep.shared_vertices, report.folded_triangles += rep.folded_triangles;
+      report.groups_across_seams += rep.groups_across_seams;
+      if (rep.clusters == 0) {
+        report.warnings.push_back(rep.label + ": no triangles left, no cluster hierarchy");
+      } else {
+        write_cluster_lod(m, rep.mesh, rep.primitive, b.result.hierarchy, b.result.indices,
+                          geometry[tasks[stored].mesh][tasks[stored].primitive].positions_xyz.size() / 3);
+        report.primitives.push_back(std::move(rep));
+      }
+      built[stored].reset();
+      PrimitiveGeometry().positions_xyz.swap(geometry[tasks[stored].mesh][tasks[stored].primitive].positions_xyz);
+      PrimitiveGeometry().indices.swap(geometry[tasks[stored].mesh][tasks[stored].primitive].indices);
+    }
+  };
+  const auto mesh_done = [&](std::size_t mi) {  // under mutex
+    ++meshes_done;
+    if (!o.progress) return;
     std::size_t tris = 0, degenerate = 0, clusters = 0, top = 0;
     std::uint32_t levels = 0;
     double build_s = 0.0;
-    for (std::size_t p = 0; p < prims; ++p) {
-      const std::span<const std::uint8_t> locked = shared[mi].empty() ? std::span<const std::uint8_t>{} : shared[mi][p];
-      ClusterPrimitiveReport rep =
-          bake_primitive(m, mesh, static_cast<int>(p), geometry[mi][p], locked, o, report.input_triangles);
-      report.shared_vertices += rep.shared_vertices, report.folded_triangles += rep.folded_triangles;
-      report.groups_across_seams += rep.groups_across_seams;
+    for (std::size_t i = 0; i < tasks.size(); ++i) {
+      if (tasks[i].mesh != mi) continue;
+      const ClusterPrimitiveReport& rep = reps[i];
       tris += rep.source_triangles + rep.degenerate_triangles, degenerate += rep.degenerate_triangles;
       clusters += rep.clusters, top += rep.top_triangles, levels = std::max(levels, rep.levels);
       build_s += rep.build_seconds;
-      if (rep.clusters == 0)
-        report.warnings.push_back(rep.label + ": no triangles left, no cluster hierarchy");
-      else
-        report.primitives.push_back(std::move(rep));
     }
-    report.build_seconds += build_s;
-    std::vector<PrimitiveGeometry>().swap(geometry[mi]);
-    ++done;
-    if (o.progress) {
-      char line[320];
-      std::snprintf(line, sizeof line,
-                    "bake: mesh %zu/%zu done: %zu triangles -> %zu clusters in %u levels, top %zu "
-                    "triangles%s in %ld ms (hierarchy %.3g input triangles/s); overall %zu%%",
-                    done, report.meshes, tris, clusters, levels, top,
-                    degenerate ? (", " + std::to_string(degenerate) + " degenerate dropped").c_str() : "",
-                    std::lround(seconds_since(tm) * 1000.0), per_second(double(tris), build_s),
-                    100 * done / std::max<std::size_t>(report.meshes, 1));
-      o.progress(line);
+    char line[320];
+    std::snprintf(line, sizeof line,
+                  "bake: mesh %zu/%zu done: %s: %zu triangles -> %zu clusters in %u levels, top %zu "
+                  "triangles%s in %ld ms (hierarchy %.3g input triangles/s); overall %zu%%",
+                  meshes_done, report.meshes, mesh_label(m, static_cast<int>(mi)).c_str(), tris, clusters, levels,
+                  top, degenerate ? (", " + std::to_string(degenerate) + " degenerate dropped").c_str() : "",
+                  std::lround(build_s * 1000.0), per_second(double(tris), build_s),
+                  100 * meshes_done / std::max<std::size_t>(report.meshes, 1));
+    o.progress(line);
+  };
+  const auto run = [&](std::size_t i, unsigned threads) {
+    const Task& t = tasks[i];
+    const std::span<const std::uint8_t> locked =
+        shared[t.mesh].empty() ? std::span<const std::uint8_t>{} : shared[t.mesh][t.primitive];
+    ClusterBuildOptions b = o.build;
+    b.threads = threads;
+    std::optional<BuiltPrimitive> result;
+    try {
+      result = build_primitive(m, static_cast<int>(t.mesh), static_cast<int>(t.primitive),
+                               geometry[t.mesh][t.primitive], locked, b);
+    } catch (...) {
+      failed[i] = std::current_exception();
     }
+    const std::lock_guard<std::mutex> lock(mutex);
+    if (failed[i]) return;
+    reps[i] = result->rep;
+    built[i] = std::move(result);
+    if (--left[t.mesh] == 0) mesh_done(t.mesh);
+    if (std::none_of(failed.begin(), failed.end(), [](const std::exception_ptr& e) { return bool(e); })) store_ready();
+  };
+  if (o.progress)
+    o.progress("bake: building " + std::to_string(tasks.size()) + " primitives of " + std::to_string(report.meshes) +
+               " meshes (" + std::to_string(alone.size()) + " large ones alone, the rest side by side on " +
+               std::to_string(thread_count(o.build.threads)) + " threads) ...");
+  const auto tb = Clock::now();
+  for (std::size_t i : alone) {
+    if (o.progress)
+      o.progress("bake: " + primitive_label(m, static_cast<int>(tasks[i].mesh), static_cast<int>(tasks[i].primitive)) +
+                 ": " + std::to_string(geometry[tasks[i].mesh][tasks[i].primitive].indices.size() / 3) +
+                 " triangles, alone on every thread ...");
+    run(i, o.build.threads);
   }
+  parallel_for(side_by_side.size(), thread_count(o.build.threads), [&](std::size_t k, unsigned) { run(side_by_side[k], 1); });
+  report.build_seconds = seconds_since(tb);
+  // The first failing primitive in mesh order, whichever thread met it first.
+  for (const std::exception_ptr& e : failed)
+    if (e) std::rethrow_exception(e);
   std::size_t degenerate = 0, with = 0;
   for (const ClusterPrimitiveReport& p : report.primitives)
     degenerate += p.degenerate_triangles, with += p.degenerate_triangles > 0;

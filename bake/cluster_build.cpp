@@ -87,6 +87,9 @@ struct Scratch {
   ClusterSplitter splitter;
   std::vector<float> local_xyz, normals;
   std::vector<std::uint32_t> corners, kept;  // fold retries: folded corners, the step before
+  // Across seams: the members' corners and the copies they use (seam_copies.hpp).
+  std::vector<std::uint32_t> member_corners;
+  std::vector<std::uint64_t> seam_pairs;
   std::vector<std::uint8_t> marks;
   std::vector<Sphere> spheres;
 
@@ -303,7 +306,12 @@ class Builder {
       p.simplified = true;
       if (across_seams) {  // each corner gets a copy back; the split sees those (its vertex limit)
         for (std::size_t i = 0; i < n; ++i) s.simplified[i] = s.global_of[s.simplified[i]];
-        seams_->choose(std::span<std::uint32_t>(s.simplified.data(), n));
+        s.member_corners.clear();  // the members' triangles: their copies are the candidates
+        for (std::uint32_t c : members)
+          s.member_corners.insert(s.member_corners.end(), out_.indices.begin() + h.first_index[c],
+                                  out_.indices.begin() + h.first_index[c] + h.index_count[c]);
+        seams_->collect(s.member_corners, s.seam_pairs);
+        seams_->choose(std::span<std::uint32_t>(s.simplified.data(), n), s.seam_pairs);
         s.clear();
         for (std::size_t i = 0; i < n; ++i) s.simplified[i] = s.localise(s.simplified[i], pos_);
       }

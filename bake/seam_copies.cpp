@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <ranges>
 
 namespace gazelod::bake {
 namespace {
@@ -9,6 +10,9 @@ namespace {
 // Copies whose source triangles face within about 11 degrees of the best are told apart by
 // distance instead (both sides of a UV seam on a smooth surface face alike).
 constexpr float kSameFacingCos = 0.98f;
+// A position with more copies than this (a flat-shaded fan's apex) is given one of those the
+// group's own triangles use, so that the work per corner stays bounded; others pick from all.
+constexpr std::uint32_t kAllCopiesUpTo = 64;
 
 struct Vec {
   float x, y, z;
@@ -34,7 +38,8 @@ SeamCopies::SeamCopies(std::span<const float> pos, std::span<const std::uint32_t
   const std::size_t n = weld.size();
   // Which vertices the source's kept triangles use, and each one's slot among its position's copies.
   constexpr std::uint32_t kUnused = UINT32_MAX;
-  std::vector<std::uint32_t> slot(n, kUnused);
+  std::vector<std::uint32_t>& slot = slot_;
+  slot.assign(n, kUnused);
   first_.assign(n + 1, 0);
   auto kept = [&](std::size_t t) {
     const std::uint32_t* v = &source[3 * t];
@@ -70,7 +75,15 @@ SeamCopies::SeamCopies(std::span<const float> pos, std::span<const std::uint32_t
   }
 }
 
-void SeamCopies::choose(std::span<std::uint32_t> triangles) const {
+void SeamCopies::collect(std::span<const std::uint32_t> group, std::vector<std::uint64_t>& pairs) const {
+  pairs.clear();
+  for (std::uint32_t v : group)
+    if (slot_[v] != UINT32_MAX) pairs.push_back(std::uint64_t{weld_[v]} << 32 | slot_[v]);
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+}
+
+void SeamCopies::choose(std::span<std::uint32_t> triangles, std::span<const std::uint64_t> pairs) const {
   for (std::size_t t = 0; t + 2 < triangles.size(); t += 3) {
     std::uint32_t* v = &triangles[t];
     const Vec nrm = face_normal(pos_, v), c = centroid(pos_, v);
@@ -82,20 +95,34 @@ void SeamCopies::choose(std::span<std::uint32_t> triangles) const {
       const float m_len = std::sqrt(dot(m, m));
       return len > 0.0f && m_len > 0.0f ? dot(nrm, m) / (len * m_len) : 1.0f;
     };
+    // The best of a list of copy slots (at least two).
+    auto best = [&](auto first, auto last, auto slot) {
+      float best_cos = -1.0f;
+      for (auto it = first; it != last; ++it) best_cos = std::max(best_cos, facing(slot(*it)));
+      float best_d2 = INFINITY;
+      std::uint32_t chosen = slot(*first);
+      for (auto it = first; it != last; ++it) {
+        const std::uint32_t s = slot(*it);
+        if (facing(s) < best_cos - (1.0f - kSameFacingCos)) continue;
+        const float inv = 1.0f / static_cast<float>(std::max<std::uint32_t>(triangles_of_[s], 1));
+        const Vec d = sub(c, Vec{centroid_sum_[3 * s] * inv, centroid_sum_[3 * s + 1] * inv, centroid_sum_[3 * s + 2] * inv});
+        if (const float d2 = dot(d, d); d2 < best_d2) best_d2 = d2, chosen = s;
+      }
+      return copies_[chosen];
+    };
     std::uint32_t chosen[3];
     for (int k = 0; k < 3; ++k) {
       const std::uint32_t w = weld_[v[k]], b = first_[w], e = first_[w + 1];
       chosen[k] = b < e ? copies_[b] : v[k];
       if (e - b < 2) continue;
-      float best_cos = -1.0f;
-      for (std::uint32_t s = b; s < e; ++s) best_cos = std::max(best_cos, facing(s));
-      float best_d2 = INFINITY;
-      for (std::uint32_t s = b; s < e; ++s) {
-        if (facing(s) < best_cos - (1.0f - kSameFacingCos)) continue;
-        const float inv = 1.0f / static_cast<float>(std::max<std::uint32_t>(triangles_of_[s], 1));
-        const Vec d = sub(c, Vec{centroid_sum_[3 * s] * inv, centroid_sum_[3 * s + 1] * inv, centroid_sum_[3 * s + 2] * inv});
-        if (const float d2 = dot(d, d); d2 < best_d2) best_d2 = d2, chosen[k] = copies_[s];
+      if (e - b <= kAllCopiesUpTo) {
+        const auto all = std::views::iota(b, e);
+        chosen[k] = best(all.begin(), all.end(), [](std::uint32_t s) { return s; });
+        continue;
       }
+      const auto lo = std::lower_bound(pairs.begin(), pairs.end(), std::uint64_t{w} << 32);
+      const auto hi = std::lower_bound(lo, pairs.end(), (std::uint64_t{w} + 1) << 32);
+      if (lo != hi) chosen[k] = best(lo, hi, [](std::uint64_t pair) { return static_cast<std::uint32_t>(pair); });
     }
     v[0] = chosen[0], v[1] = chosen[1], v[2] = chosen[2];
   }

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <set>
 
 namespace gazelod::bake {
@@ -34,14 +35,48 @@ TEST(SeamCopies, ACornerTakesTheCopyOfTheSideItsTriangleFaces) {
   EXPECT_EQ(seams.seam_positions(), 2u);  // the edge's two positions
   EXPECT_EQ(seams.copies(0), 2u);
   EXPECT_EQ(seams.copies(2), 1u) << "the unused vertex 8 is no copy";
+  std::vector<std::uint64_t> pairs;
+  seams.collect(m.tris, pairs);
+  EXPECT_EQ(pairs.size(), 8u) << "every used vertex once";
   // One triangle over the floor and one over the wall, written with the representatives.
   std::vector<std::uint32_t> t{0, 2, 1, 0, 1, 6};
-  seams.choose(t);
+  seams.choose(t, pairs);
   EXPECT_EQ(t, (std::vector<std::uint32_t>{0, 2, 1, 4, 5, 6}));
   // The wall triangle first, and wall copies asked for a floor triangle: the facing decides.
   t = {4, 5, 6, 4, 2, 5};
-  seams.choose(t);
+  seams.choose(t, pairs);
   EXPECT_EQ(t, (std::vector<std::uint32_t>{4, 5, 6, 0, 2, 1}));
+}
+
+// Where many vertices share one position (a flat-shaded fan's apex: 100 copies), only the copies
+// the group's own triangles use are candidates (the work per corner stays bounded).
+TEST(SeamCopies, AManyCopyPositionChoosesAmongTheGroupsCopies) {
+  std::vector<float> pos;
+  std::vector<std::uint32_t> tris;
+  for (int i = 0; i < 100; ++i) {  // triangle i: apex, rim i, rim i + 1, its own three vertices
+    const double a0 = 2 * M_PI * i / 100, a1 = 2 * M_PI * (i + 1) / 100;
+    const float t[9] = {0, 0, 0, float(std::cos(a0)), float(std::sin(a0)), 0,
+                        float(std::cos(a1)), float(std::sin(a1)), 0};
+    for (int k = 0; k < 3; ++k) {
+      tris.push_back(static_cast<std::uint32_t>(pos.size() / 3));
+      pos.insert(pos.end(), t + 3 * k, t + 3 * k + 3);
+    }
+  }
+  const std::vector<std::uint32_t> weld = weld_positions(pos);
+  const SeamCopies seams(pos, weld, tris);
+  EXPECT_EQ(seams.copies(0), 100u);
+  std::vector<std::uint64_t> all, group_0_to_9;
+  seams.collect(tris, all);
+  seams.collect(std::span<const std::uint32_t>(tris).subspan(0, 30), group_0_to_9);
+  // A triangle over fan triangle 50 (apex, its rim corners): all copies give triangle 50's apex.
+  const std::vector<std::uint32_t> over_50{0, weld[tris[150 + 1]], weld[tris[150 + 2]]};
+  std::vector<std::uint32_t> t = over_50;
+  seams.choose(t, all);
+  EXPECT_EQ(t[0], tris[150]);
+  t = over_50;
+  seams.choose(t, group_0_to_9);
+  EXPECT_LT(t[0], 30u) << "an apex copy of the group's triangles 0..9";
+  EXPECT_EQ(pos[3 * t[0]], 0.0f);
 }
 
 // A UV seam on a flat strip: both sides face alike, so the side the triangle lies on decides.
@@ -55,11 +90,13 @@ TEST(SeamCopies, OnAFlatSeamTheNearerSideWins) {
   const SeamCopies seams(pos, weld, tris);
   EXPECT_EQ(seams.seam_positions(), 2u);
   // A triangle over the right half, written with the left copies (the representatives).
+  std::vector<std::uint64_t> pairs;
+  seams.collect(tris, pairs);
   std::vector<std::uint32_t> t{1, 5, 3};
-  seams.choose(t);
+  seams.choose(t, pairs);
   EXPECT_EQ(t, (std::vector<std::uint32_t>{4, 5, 6}));
   t = {0, 1, 3};
-  seams.choose(t);
+  seams.choose(t, pairs);
   EXPECT_EQ(t, (std::vector<std::uint32_t>{0, 1, 3}));
 }
 

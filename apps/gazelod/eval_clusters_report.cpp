@@ -84,6 +84,7 @@ nlohmann::json side_json(const ClusterEvalSide& s) {
           {"full_triangles_per_frame", s.full_triangles_per_frame},
           {"share_of_full", ratio(s.triangles_per_frame, s.full_triangles_per_frame)},
           {"drawn_over_oracle", s.drawn_over_oracle},
+          {"in_view_triangles_per_frame", s.in_view_triangles_per_frame},
           {"audit_unit_frames", s.audit_unit_frames},
           {"visible_degradations_share", s.degraded_share},
           {"switches_per_unit_second", s.switches_per_unit_s}};
@@ -126,6 +127,7 @@ ClusterEvalSide read_cluster_eval_side(const std::filesystem::path& dir, bool cl
       !j.at(nlohmann::json::json_pointer(audit + "/available")).get<bool>())
     throw UsageError(src + ": " + audit + ": the visibility audit is not available", 1);
   s.drawn_over_oracle = number_at(j, audit + "/triangles_in_view/drawn_over_oracle", src);
+  s.in_view_triangles_per_frame = number_at(j, audit + "/triangles_in_view/drawn", src) / frames;
   const std::string unit = clusters ? "leaf" : "object";
   s.audit_unit_frames = static_cast<std::int64_t>(number_at(j, audit + "/visible_degradations/" + unit + "_frames", src));
   s.degraded_share = number_at(j, audit + "/visible_degradations/share", src);
@@ -146,8 +148,9 @@ double median_of(std::vector<double> v) {
   return v.size() % 2 == 1 ? v[h] : 0.5 * (v[h - 1] + v[h]);
 }
 
-double ClusterEvalReport::triangle_ratio(std::size_t a, std::size_t b) const {
+double ClusterEvalReport::triangle_ratio(std::size_t a, std::size_t b, bool in_view) const {
   if (a >= columns.size() || b >= columns.size() || !columns[a].side || !columns[b].side) return 0.0;
+  if (in_view) return ratio(columns[a].side->in_view_triangles_per_frame, columns[b].side->in_view_triangles_per_frame);
   return ratio(columns[a].side->triangles_per_frame, columns[b].side->triangles_per_frame);
 }
 
@@ -182,6 +185,13 @@ std::string cluster_eval_markdown(const ClusterEvalReport& r) {
     const auto& k = r.columns[kClustersColumn];
     return k.side ? fmt("%.3f", ratio(k.side->triangles_per_frame, c.side->triangles_per_frame)) : std::string("n/a");
   });
+  row("of those, in the first eye's view (sphere in view: what a renderer culling by sphere draws)",
+      [](const auto& c) { return fmt("%.0f", c.side->in_view_triangles_per_frame); });
+  row("cluster LOD's in-view triangles over this column's", [&](const auto& c) {
+    const auto& k = r.columns[kClustersColumn];
+    return k.side ? fmt("%.3f", ratio(k.side->in_view_triangles_per_frame, c.side->in_view_triangles_per_frame))
+                  : std::string("n/a");
+  });
   row("in view: drawn / what the true gaze needs (its oracle)", [](const auto& c) { return fmt("%.3f", c.side->drawn_over_oracle); });
   row("visible degradations outside suppression", [](const auto& c) {
     return fmt("%.3f%%", 100 * c.side->degraded_share) + " of " + std::to_string(c.side->audit_unit_frames) +
@@ -211,7 +221,8 @@ std::string cluster_eval_markdown(const ClusterEvalReport& r) {
     md << "not measured\n";
   else
     md << (r.target_met() ? "met" : "MISSED") << " (ratio " << fmt("%.3f", r.triangle_ratio(kClustersColumn, kPerObjectColumn))
-       << ", degradations " << fmt("%.3f%%", 100 * k.side->degraded_share) << ")\n";
+       << ", degradations " << fmt("%.3f%%", 100 * k.side->degraded_share) << "; in the first eye's view "
+       << fmt("%.3f", r.triangle_ratio(kClustersColumn, kPerObjectColumn, true)) << ")\n";
   return md.str();
 }
 
@@ -230,6 +241,7 @@ nlohmann::json cluster_eval_json(const ClusterEvalReport& r) {
   }
   j["triangle_ratio"] = r.triangle_ratio(kClustersColumn, kPerObjectColumn);
   j["triangle_ratio_same_rule"] = r.triangle_ratio(kClustersColumn, kSameRuleColumn);
+  j["in_view_triangle_ratio"] = r.triangle_ratio(kClustersColumn, kPerObjectColumn, true);
   j["target"] = {{"triangle_ratio_max", kClusterTriangleRatioTarget},
                  {"degradations_max", kClusterDegradationTarget},
                  {"met", r.target_met()}};

@@ -25,6 +25,9 @@ struct ClusterEvalSide {
   double triangles_per_frame = 0.0;       // drawn, mean per frame, per eye
   double full_triangles_per_frame = 0.0;  // everything at full detail
   double drawn_over_oracle = 0.0;         // in view: drawn / what the true gaze needs
+  // Drawn in the first eye's view (objects, or clusters, whose sphere is in it: what a renderer
+  // culling by sphere submits), mean per frame; the rest is chosen by eccentricity and culled.
+  double in_view_triangles_per_frame = 0.0;
   std::int64_t audit_unit_frames = 0;     // object-frames or leaf-cluster-frames outside suppression
   double degraded_share = 0.0;            // of those, drawn coarser than the oracle allows
   double switches_per_unit_s = 0.0;       // outside suppression
@@ -66,8 +69,9 @@ struct ClusterEvalReport {
   int rendered_frames = 0;    // 0: no rendered runs
   int rendered_rounds = 1;    // rendered runs per column (ClusterEvalColumn::frame_ms_rounds)
 
-  // Column a's triangles per frame over column b's (0 when either is missing).
-  double triangle_ratio(std::size_t a, std::size_t b) const;
+  // Column a's triangles per frame over column b's (0 when either is missing); in_view: of
+  // those drawn in the first eye's view.
+  double triangle_ratio(std::size_t a, std::size_t b, bool in_view = false) const;
   // Clusters draw at most a third of per-object LOD's triangles at <= 0.5 % degradations.
   bool target_met() const;
 };

@@ -57,7 +57,11 @@ TEST(EvalClusters, ThreeColumnsSideBySide) {
     EXPECT_GT(share, 0.0);
     EXPECT_LE(share, 1.0);
     EXPECT_GE(j[key]["audit_unit_frames"].get<double>(), 1.0);
+    const double in_view = j[key]["in_view_triangles_per_frame"];  // a part of what is drawn
+    EXPECT_GT(in_view, 0.0);
+    EXPECT_LE(in_view, j[key]["triangles_per_frame"].get<double>());
   }
+  EXPECT_GT(j["in_view_triangle_ratio"].get<double>(), 0.0);
   // One mesh around the viewer: under the cluster rule its one level must be the finest
   // (the nearest point is under the eye); the clusters draw less than that.
   EXPECT_DOUBLE_EQ(j["per_object_cluster_rule"]["share_of_full"], 1.0);

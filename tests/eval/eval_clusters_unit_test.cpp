@@ -47,7 +47,7 @@ TEST(EvalClustersBaseline, ChainBecomesOneClusterPerLevel) {
 TEST(EvalClustersReport, ReadsASideAndNamesWhatIsMissing) {
   const auto dir = scratch("read");
   nlohmann::json audit = {{"available", true},
-                          {"triangles_in_view", {{"drawn_over_oracle", 1.25}}},
+                          {"triangles_in_view", {{"drawn_over_oracle", 1.25}, {"drawn", 120}}},
                           {"visible_degradations", {{"object_frames", 40}, {"leaf_frames", 400}, {"share", 0.01}}},
                           {"switches", {{"outside_suppression", {{"per_object_second", 0.5}, {"per_leaf_second", 0.7}}}}}};
   nlohmann::json j = {{"frames", 2}, {"triangles_drawn", 300}, {"triangles_full", 1000}, {"audit", audit}};
@@ -58,6 +58,7 @@ TEST(EvalClustersReport, ReadsASideAndNamesWhatIsMissing) {
   EXPECT_DOUBLE_EQ(s.triangles_per_frame, 150.0);
   EXPECT_DOUBLE_EQ(s.full_triangles_per_frame, 500.0);
   EXPECT_DOUBLE_EQ(s.drawn_over_oracle, 1.25);
+  EXPECT_DOUBLE_EQ(s.in_view_triangles_per_frame, 60.0);
   EXPECT_EQ(s.audit_unit_frames, 40);
   EXPECT_DOUBLE_EQ(s.switches_per_unit_s, 0.5);
   EXPECT_EQ(s.triangles, (std::vector<double>{100, 200}));
@@ -101,9 +102,14 @@ TEST(EvalClustersReport, TableTargetAndJson) {
   r.columns[kSameRuleColumn].side->triangles_per_frame = 900.0;
   r.columns[kClustersColumn].side->triangles_per_frame = 90.0;
   r.columns[kClustersColumn].side->degraded_share = 0.004;
+  r.columns[kPerObjectColumn].side->in_view_triangles_per_frame = 200.0;
+  r.columns[kClustersColumn].side->in_view_triangles_per_frame = 50.0;
   EXPECT_DOUBLE_EQ(r.triangle_ratio(kClustersColumn, kPerObjectColumn), 0.3);
+  EXPECT_DOUBLE_EQ(r.triangle_ratio(kClustersColumn, kPerObjectColumn, true), 0.25);
   EXPECT_TRUE(r.target_met());
-  EXPECT_HAS(cluster_eval_markdown(r), "met (ratio 0.300, degradations 0.400%)");
+  EXPECT_HAS(cluster_eval_markdown(r), "met (ratio 0.300, degradations 0.400%; in the first eye's view 0.250)");
+  EXPECT_HAS(cluster_eval_markdown(r), "| of those, in the first eye's view");
+  EXPECT_EQ(cluster_eval_json(r)["in_view_triangle_ratio"], 0.25);
   r.columns[kClustersColumn].side->degraded_share = 0.006;  // too many degradations
   EXPECT_FALSE(r.target_met());
   EXPECT_HAS(cluster_eval_markdown(r), "MISSED");

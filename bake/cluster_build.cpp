@@ -122,6 +122,7 @@ class Builder {
         if (i == 0) {
           weld_ = weld_positions(pos_);
           if (o_.stuck_across_seams) seams_ = std::make_unique<SeamCopies>(pos_, weld_, source);
+          if (seams_ && seams_->seam_positions() == 0) seams_.reset();  // nothing to cross
         }
         else chunks = source_chunks(pos_, source);
       });

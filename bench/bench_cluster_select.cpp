@@ -7,8 +7,8 @@
 // little (bench/lod's viewer). dense 0: errors of 4 mm at the first level (the cut at 0.04 % of
 // the clusters at 1M); dense 1: errors 100 times larger, so that far more of each tile is
 // visible (the cut at 9 %) and far fewer records are decided by size alone (the screen);
-// per_criterion: also the three per-criterion cuts (every record fully evaluated, no screen:
-// the worst case). Counters: ns_per_cluster (or ns_per_object) = this
+// per_criterion: also the three per-criterion cuts (every record fully evaluated but those of
+// error 0 or +inf: the worst case). Counters: ns_per_cluster (or ns_per_object) = this
 // thread's CPU time / (iterations x count); ratio_vs_select_lods = ns_per_cluster /
 // ns_per_object at the same count (run first); drawn_pct = clusters in the cut;
 // visible_parent_pct = clusters whose parent error is visible (about the share of records

@@ -205,12 +205,15 @@ std::string select_clusters(const Viewer& viewer, const ClusterSet& c, const Clu
     const std::size_t end = std::size_t{c.mesh_first_cluster[k]} + c.mesh_cluster_count[k];
     for (std::size_t base = c.mesh_first_cluster[k]; base < end; base += detail::kClusterBlock) {
       const std::size_t m = std::min(detail::kClusterBlock, end - base);
-      // The size screen only where no per-criterion cut needs every record's E and v. The
-      // parent first: where it is invisible the cluster is not drawn and its self record is
-      // invisible too (nesting), so that is not evaluated.
-      detail::evaluate_records(frame, mesh, parent_in, base, m, per_criterion, !per_criterion,
-                               nullptr, parent_blk);
-      detail::evaluate_records(frame, mesh, self_in, base, m, true, !per_criterion,
+      // The size screen only where no per-criterion cut needs every record's E and v (with
+      // one, only the trivial records are screened). The parent first: where it is invisible
+      // the cluster is not drawn and its self record is invisible too (nesting), so that is not
+      // evaluated.
+      const detail::RecordScreen screen =
+          per_criterion ? detail::RecordScreen::trivial : detail::RecordScreen::by_size;
+      detail::evaluate_records(frame, mesh, parent_in, base, m, per_criterion, screen, nullptr,
+                               parent_blk);
+      detail::evaluate_records(frame, mesh, self_in, base, m, true, screen,
                                per_criterion ? nullptr : parent_blk.combined, self_blk);
       const detail::ClusterOutput o{
           out.drawn.data() + base, out.limited_by.data() + base,

@@ -92,7 +92,7 @@ struct ClusterDecisions {
   // Optional: bit 0 the self error, bit 1 the parent error invisible under the combined rule
   // (the input of apply_cluster_switch_policy, lod/cluster_switch_policy.hpp). Without the
   // per-criterion outputs, a self record under an invisible parent is set, not evaluated (the
-  // nesting implies it); with them, every record is evaluated.
+  // nesting implies it); with them, every record's bits are those of its full evaluation.
   std::span<std::uint8_t> record_invisible;
 };
 

@@ -72,12 +72,13 @@ struct Geometry {
   return f.static_limit_cpd * (e * f.error_factor) < dn;
 }
 
-// The screen (with screen_by_size): every record whose decisions need no eccentricity or
-// velocity (invalid, error 0 or +inf, or invisible by size alone) is decided here; the rest are
-// flagged for the full evaluation below. Where size decides, the eccentricity-alone and
-// velocity-alone outputs are set only for an error of 0 (invisible under any criterion): the
-// limiting criterion is size there whatever they would be, so they are not computed.
-template <bool kAll>
+// The screen (RecordScreen::trivial or by_size, cluster_select_kernel.hpp): every record whose
+// decisions need no eccentricity or velocity is decided here; the rest are flagged for the full
+// evaluation below. Trivial ones (invalid, error 0 or +inf) get every output as the full path
+// gives it. Where size decides (kBySize), the eccentricity-alone and velocity-alone outputs are
+// set only for an error of 0 (invisible under any criterion): the limiting criterion is size
+// there whatever they would be, so they are not computed.
+template <bool kAll, bool kBySize>
 [[gnu::always_inline]] inline void screen_loop(const ClusterFrame& f, const RecordInput& in,
                                                std::size_t begin, std::size_t count,
                                                RecordBlock& out) {
@@ -91,7 +92,7 @@ GAZELOD_IVDEP  // no overlap (select_kernel.hpp)
   for (std::size_t i = 0; i < count; ++i) {
     const float e = err[i];
     const Geometry g = geometry(f, cx[i], cy[i], cz[i], rad[i], e);
-    const bool zero = e == 0.0f, never = e == kInfF, size_ok = by_size(f, e, g.dn);
+    const bool zero = e == 0.0f, never = e == kInfF, size_ok = kBySize && by_size(f, e, g.dn);
     const bool decided = !g.ok | zero | never | size_ok;
     const bool invisible = g.ok & (zero | size_ok);
     out.combined[i] = invisible ? 1.0f : 0.0f;
@@ -243,9 +244,11 @@ GAZELOD_IVDEP
 template <bool kAll>
 [[gnu::always_inline]] inline void evaluate(const ClusterFrame& f, const ClusterMeshFrame& m,
                                             const RecordInput& in, std::size_t begin,
-                                            std::size_t count, bool screen,
+                                            std::size_t count, RecordScreen how,
                                             const float* implied, RecordBlock& out) {
-  if (screen) screen_loop<kAll>(f, in, begin, count, out);
+  const bool screen = how != RecordScreen::none;
+  if (how == RecordScreen::by_size) screen_loop<kAll, true>(f, in, begin, count, out);
+  if (how == RecordScreen::trivial) screen_loop<kAll, false>(f, in, begin, count, out);
   // A record implied invisible is left out of the full evaluation (and set below, after it).
   const bool imply = screen && implied != nullptr;
   if (imply) {
@@ -343,10 +346,10 @@ __attribute__((target_clones("default", "arch=x86-64-v3", "arch=x86-64-v4")))
 #endif
 void evaluate_records(const ClusterFrame& frame, const ClusterMeshFrame& mesh,
                       const RecordInput& in, std::size_t begin, std::size_t count,
-                      bool all_criteria, bool screen_by_size, const float* implied_invisible,
+                      bool all_criteria, RecordScreen screen, const float* implied_invisible,
                       RecordBlock& out) {
-  if (all_criteria) evaluate<true>(frame, mesh, in, begin, count, screen_by_size, implied_invisible, out);
-  else evaluate<false>(frame, mesh, in, begin, count, screen_by_size, implied_invisible, out);
+  if (all_criteria) evaluate<true>(frame, mesh, in, begin, count, screen, implied_invisible, out);
+  else evaluate<false>(frame, mesh, in, begin, count, screen, implied_invisible, out);
 }
 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GAZELOD_NO_CLONES)

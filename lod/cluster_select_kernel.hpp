@@ -95,19 +95,26 @@ struct RecordBlock {
   float near_m[kClusterBlock], ecc_deg[kClusterBlock], vel_dps[kClusterBlock];
 };
 
-// screen_by_size: decide first, cheaply, every record that needs no eccentricity or velocity
-// (error 0 or +inf, invalid, or invisible by size alone, which implies the combined rule), and
-// run the full evaluation only on the others (gathered, or the whole block where most are). The
-// decisions are the same either way (the combined rule contains the size comparison,
-// computed alike), but the eccentricity and velocity flags of records size decides are then 0:
-// only for callers that need no per-criterion cut (limited_by is size there either way).
-// implied_invisible (with the screen; may be null): per record of the block, 1 where the record
+// How much evaluate_records decides before the full evaluation (which then runs on the records
+// left, gathered, or on the whole block where most are left):
+//   none:    nothing, every record fully evaluated;
+//   trivial: the records whose every output is known without E or v (error 0: invisible under
+//            any criterion; error +inf: visible under all; invalid), with every output exactly
+//            what the full evaluation gives: for the per-criterion cuts (leaves, error 0, are
+//            about half of a hierarchy's clusters);
+//   by_size: also the records invisible by size alone (which implies the combined rule). The
+//            decisions are the same as the full evaluation's (the combined rule contains the
+//            size comparison, computed alike), but the eccentricity and velocity flags of records
+//            size decides are then 0: only for callers that need no per-criterion cut
+//            (limited_by is size there either way).
+enum class RecordScreen { none, trivial, by_size };
+// implied_invisible (with a screen; may be null): per record of the block, 1 where the record
 // is known to be invisible without evaluating it (the cluster's parent record is invisible, and
 // a parent invisible implies its children's records are, cluster_select.hpp): such a record,
 // if valid, is invisible and never fully evaluated (its other flags stay the screen's).
 void evaluate_records(const ClusterFrame& frame, const ClusterMeshFrame& mesh,
                       const RecordInput& in, std::size_t begin, std::size_t count,
-                      bool all_criteria, bool screen_by_size, const float* implied_invisible,
+                      bool all_criteria, RecordScreen screen, const float* implied_invisible,
                       RecordBlock& out);
 
 // Where combine_records writes (cluster_select.hpp's ClusterDecisions, offset to the block);

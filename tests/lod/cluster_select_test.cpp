@@ -167,9 +167,10 @@ void expect_kernel_matches_reference(const Viewer& vw, const ClusterSet& cs, std
       const std::size_t end = std::size_t{cs.mesh_first_cluster[k]} + cs.mesh_cluster_count[k];
       for (std::size_t base = cs.mesh_first_cluster[k]; base < end; base += detail::kClusterBlock) {
         const std::size_t n = std::min(detail::kClusterBlock, end - base);
-        detail::RecordBlock full, screened;
-        detail::evaluate_records(f, m, in, base, n, true, false, nullptr, full);
-        detail::evaluate_records(f, m, in, base, n, true, true, nullptr, screened);
+        detail::RecordBlock full, screened, trivial;
+        detail::evaluate_records(f, m, in, base, n, true, detail::RecordScreen::none, nullptr, full);
+        detail::evaluate_records(f, m, in, base, n, true, detail::RecordScreen::by_size, nullptr, screened);
+        detail::evaluate_records(f, m, in, base, n, true, detail::RecordScreen::trivial, nullptr, trivial);
         for (std::size_t j = 0; j < n; ++j) {
           const test::RecordRef ref = test::reference_record(vw, cs, base + j, parent);
           const bool kc = full.combined[j] > 0.5f, ks = full.size[j] > 0.5f,
@@ -183,6 +184,13 @@ void expect_kernel_matches_reference(const Viewer& vw, const ClusterSet& cs, std
           };
           ASSERT_EQ(screened.combined[j], full.combined[j]) << where();
           ASSERT_EQ(screened.size[j], full.size[j]) << where();
+          // The trivial screen (the per-criterion path's) leaves every output as it was.
+          ASSERT_EQ(trivial.combined[j], full.combined[j]) << where();
+          ASSERT_EQ(trivial.size[j], full.size[j]) << where();
+          ASSERT_EQ(trivial.eccentricity[j], full.eccentricity[j]) << where();
+          ASSERT_EQ(trivial.velocity[j], full.velocity[j]) << where();
+          ASSERT_EQ(trivial.positive[j], full.positive[j]) << where();
+          ASSERT_EQ(trivial.invalid[j], full.invalid[j]) << where();
           // Never coarser: invisible to the kernel only where invisible to the exact rule.
           ASSERT_TRUE(!kc || ref.combined) << where();
           ASSERT_TRUE(!ks || ref.size) << where();

@@ -102,12 +102,22 @@ ClusterBakeReport bake_clusters_model(tinygltf::Model& m, const ClusterBakeOptio
     if (n.mesh >= 0 && static_cast<std::size_t>(n.mesh) < m.meshes.size())
       used[static_cast<std::size_t>(n.mesh)] = true;
   report.meshes = static_cast<std::size_t>(std::count(used.begin(), used.end(), true));
-  // Every used primitive's geometry first: where meshes meet is locked in each of them.
+  // Every used primitive's geometry first: where meshes meet is locked in each of them. Points
+  // and lines stay as they are (no geometry, no task), said in a warning.
   std::vector<std::vector<PrimitiveGeometry>> geometry(m.meshes.size());
   for (std::size_t mi = 0; mi < m.meshes.size(); ++mi)
     if (used[mi])
-      for (std::size_t p = 0; p < m.meshes[mi].primitives.size(); ++p)
-        geometry[mi].push_back(extract_primitive(m, static_cast<int>(mi), static_cast<int>(p)));
+      for (std::size_t p = 0; p < m.meshes[mi].primitives.size(); ++p) {
+        const auto mesh = static_cast<int>(mi), prim = static_cast<int>(p);
+        if (draws_triangles(m.meshes[mi].primitives[p])) {
+          geometry[mi].push_back(extract_primitive(m, mesh, prim));
+          continue;
+        }
+        geometry[mi].emplace_back();
+        report.warnings.push_back(primitive_label(m, mesh, prim) + ": " +
+                                  mode_label(m.meshes[mi].primitives[p].mode) +
+                                  " kept as it is (only triangles get a cluster hierarchy)");
+      }
   const auto shared = o.build.lock_open_borders ? std::vector<std::vector<std::vector<std::uint8_t>>>(m.meshes.size())
                                                 : meeting_vertices(m, geometry);
   // The primitives to build, in mesh order; large ones first, alone, then the rest side by side.
@@ -116,7 +126,11 @@ ClusterBakeReport bake_clusters_model(tinygltf::Model& m, const ClusterBakeOptio
   };
   std::vector<Task> tasks;
   for (std::size_t mi = 0; mi < m.meshes.size(); ++mi)
-    for (std::size_t p = 0; p < geometry[mi].size(); ++p) tasks.push_back({mi, p});
+    for (std::size_t p = 0; p < geometry[mi].size(); ++p)
+      if (draws_triangles(m.meshes[mi].primitives[p])) tasks.push_back({mi, p});
+  if (tasks.empty())
+    throw BakeError(report.meshes == 0 ? "nothing to bake: no node uses a mesh"
+                                       : "nothing to bake: the meshes the nodes use have no triangle primitive");
   for (const Task& t : tasks) report.input_triangles += geometry[t.mesh][t.primitive].indices.size() / 3;
   const auto is_alone = [&](const Task& t) {
     return geometry[t.mesh][t.primitive].indices.size() / 3 >= kAloneFromTriangles;
@@ -131,6 +145,7 @@ ClusterBakeReport bake_clusters_model(tinygltf::Model& m, const ClusterBakeOptio
   std::vector<std::exception_ptr> failed(tasks.size());
   std::vector<std::size_t> left(m.meshes.size(), 0);
   for (const Task& t : tasks) ++left[t.mesh];
+  const auto meshes_to_build = static_cast<std::size_t>(std::count_if(left.begin(), left.end(), [](std::size_t n) { return n > 0; }));
   std::size_t stored = 0, meshes_done = 0;
   std::mutex mutex;
   const auto store_ready = [&] {  // under mutex
@@ -168,10 +183,10 @@ ClusterBakeReport bake_clusters_model(tinygltf::Model& m, const ClusterBakeOptio
     std::snprintf(line, sizeof line,
                   "bake: mesh %zu/%zu done: %s: %zu triangles -> %zu clusters in %u levels, top %zu "
                   "triangles%s in %ld ms (hierarchy %.3g input triangles/s); overall %zu%%",
-                  meshes_done, report.meshes, mesh_label(m, static_cast<int>(mi)).c_str(), tris, clusters, levels,
+                  meshes_done, meshes_to_build, mesh_label(m, static_cast<int>(mi)).c_str(), tris, clusters, levels,
                   top, degenerate ? (", " + std::to_string(degenerate) + " degenerate dropped").c_str() : "",
                   std::lround(build_s * 1000.0), per_second(double(tris), build_s),
-                  100 * meshes_done / std::max<std::size_t>(report.meshes, 1));
+                  100 * meshes_done / std::max<std::size_t>(meshes_to_build, 1));
     o.progress(line);
   };
   const auto run = [&](std::size_t i, unsigned threads) {
@@ -195,7 +210,7 @@ ClusterBakeReport bake_clusters_model(tinygltf::Model& m, const ClusterBakeOptio
     if (std::none_of(failed.begin(), failed.end(), [](const std::exception_ptr& e) { return bool(e); })) store_ready();
   };
   if (o.progress)
-    o.progress("bake: building " + std::to_string(tasks.size()) + " primitives of " + std::to_string(report.meshes) +
+    o.progress("bake: building " + std::to_string(tasks.size()) + " primitives of " + std::to_string(meshes_to_build) +
                " meshes (" + std::to_string(alone.size()) + " large ones alone, the rest side by side on " +
                std::to_string(thread_count(o.build.threads)) + " threads) ...");
   const auto tb = Clock::now();

@@ -3,6 +3,9 @@
 
 #include "bake/bake_error.hpp"
 
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
@@ -45,6 +48,27 @@ std::string trim(std::string s) {
   return s;
 }
 
+// Geometry compressed by an extension the file requires cannot be read without decoding it
+// (tinygltf does not; it fails on the accessors, "accessor[0] invalid bufferView", or reads
+// nothing): named up front instead.
+void refuse_compressed_geometry(const std::string& path, const std::vector<unsigned char>& bytes, bool glb) {
+  std::size_t begin = 0, end = bytes.size();
+  if (glb) {
+    if (bytes.size() < 20) return;
+    begin = 20, end = std::min<std::size_t>(bytes.size(), 20 + std::size_t{le32(bytes.data() + 12)});
+  }
+  const nlohmann::json doc = nlohmann::json::parse(bytes.begin() + static_cast<std::ptrdiff_t>(begin),
+                                                   bytes.begin() + static_cast<std::ptrdiff_t>(end), nullptr, false);
+  if (!doc.is_object()) return;  // tinygltf says what is wrong with it
+  const auto required = doc.find("extensionsRequired");
+  if (required == doc.end() || !required->is_array()) return;
+  for (const nlohmann::json& e : *required)
+    for (const char* compressed : {"KHR_draco_mesh_compression", "EXT_meshopt_compression", "KHR_meshopt_compression"})
+      if (e.is_string() && e.get<std::string>() == compressed)
+        throw BakeError(path + ": /extensionsRequired: " + compressed +
+                        " (compressed geometry), which gazelod does not decode; decompress the file first");
+}
+
 }  // namespace
 
 LoadedGltf load_gltf(const std::string& path) {
@@ -62,6 +86,8 @@ LoadedGltf load_gltf(const std::string& path) {
   }
   if (bytes.size() > UINT32_MAX) throw BakeError(path + ": larger than 4 GiB");
 
+  refuse_compressed_geometry(path, bytes, glb);
+
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(keep_image_bytes, nullptr);
   LoadedGltf out;
@@ -75,6 +101,13 @@ LoadedGltf load_gltf(const std::string& path) {
   if (!ok || !err.empty())
     throw BakeError(path + ": " + (glb ? "invalid GLB: " : "invalid glTF: ") +
                     (err.empty() ? std::string("tinygltf rejected the file") : trim(err)));
+  // tinygltf reads a mesh whose "primitives" is not an array as a mesh without primitives;
+  // glTF requires at least one (and a bake would write an invalid mesh back).
+  for (std::size_t i = 0; i < out.model.meshes.size(); ++i)
+    if (out.model.meshes[i].primitives.empty())
+      throw BakeError(path + ": /meshes/" + std::to_string(i) +
+                      "/primitives: a mesh needs at least one primitive (missing, empty or not an "
+                      "array)");
   std::istringstream w(warn);
   for (std::string line; std::getline(w, line);)
     if (!line.empty()) out.warnings.push_back(path + ": " + line);

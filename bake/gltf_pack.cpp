@@ -61,7 +61,8 @@ std::vector<std::string> pack_single_buffer(tinygltf::Model& model) {
   }
   for (std::size_t i = 0; i < model.images.size(); ++i) {
     tinygltf::Image& im = model.images[i];
-    if (im.uri.empty() || im.bufferView >= 0) continue;
+    // tinygltf clears the uri of a data: URI image it decoded: its bytes are all there is.
+    if (im.bufferView >= 0 || (im.uri.empty() && im.image.empty())) continue;
     if (im.image.empty()) {
       warnings.push_back("image " + std::to_string(i) + " ('" + im.uri.substr(0, 80) +
                          "') could not be read; the output keeps the URI as a reference");

@@ -147,14 +147,20 @@ std::vector<float> read_positions(const tinygltf::Model& m, int accessor,
   return out;
 }
 
+bool draws_triangles(const tinygltf::Primitive& p) {
+  return p.mode == TINYGLTF_MODE_TRIANGLES || p.mode == TINYGLTF_MODE_TRIANGLE_STRIP ||
+         p.mode == TINYGLTF_MODE_TRIANGLE_FAN;
+}
+
+std::string mode_label(int mode) { return "mode " + std::to_string(mode) + " (" + mode_name(mode) + ")"; }
+
 PrimitiveGeometry extract_primitive(const tinygltf::Model& m, int mesh, int primitive) {
   const std::string where = primitive_label(m, mesh, primitive);
   const tinygltf::Primitive& p = m.meshes.at(static_cast<std::size_t>(mesh))
                                      .primitives.at(static_cast<std::size_t>(primitive));
-  if (p.mode != TINYGLTF_MODE_TRIANGLES && p.mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
-      p.mode != TINYGLTF_MODE_TRIANGLE_FAN)
-    throw BakeError(where + ": mode " + std::to_string(p.mode) + " (" + mode_name(p.mode) +
-                    ") is not supported; only triangles (TRIANGLES 4, TRIANGLE_STRIP 5, "
+  if (!draws_triangles(p))
+    throw BakeError(where + ": " + mode_label(p.mode) +
+                    " is not supported; only triangles (TRIANGLES 4, TRIANGLE_STRIP 5, "
                     "TRIANGLE_FAN 6) can be simplified");
   const auto pos = p.attributes.find("POSITION");
   if (pos == p.attributes.end()) throw BakeError(where + ": has no POSITION attribute");

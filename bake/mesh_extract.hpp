@@ -24,6 +24,13 @@ std::vector<std::uint32_t> fan_to_list(const std::vector<std::uint32_t>& fan);
 std::string mesh_label(const tinygltf::Model& model, int mesh);
 std::string primitive_label(const tinygltf::Model& model, int mesh, int primitive);
 
+// Whether a primitive's mode draws triangles (TRIANGLES, TRIANGLE_STRIP, TRIANGLE_FAN): what
+// the bakes can simplify; points and lines cannot be.
+bool draws_triangles(const tinygltf::Primitive& primitive);
+
+// "mode 1 (LINES)": how messages name a primitive's mode.
+std::string mode_label(int mode);
+
 // TRIANGLE_STRIP and TRIANGLE_FAN primitives come out as triangle lists.
 // Throws BakeError "<label>: ..." for: no POSITION, a non-float or non-VEC3 POSITION, a sparse
 // accessor, a mode that is not triangles (points, lines), an accessor/bufferView outside its

@@ -123,6 +123,44 @@ TEST(ClusterGltf, SideBySideBuildsWriteTheSameFile) {
           << mesh;
 }
 
+std::string base64(const std::vector<unsigned char>& bytes) {
+  static const char* k = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  for (std::size_t i = 0; i < bytes.size(); i += 3) {
+    const std::uint32_t n = std::uint32_t(bytes[i]) << 16 | (i + 1 < bytes.size() ? std::uint32_t(bytes[i + 1]) << 8 : 0) |
+                            (i + 2 < bytes.size() ? bytes[i + 2] : 0);
+    out += k[n >> 18 & 63], out += k[n >> 12 & 63];
+    out += i + 1 < bytes.size() ? k[n >> 6 & 63] : '=';
+    out += i + 2 < bytes.size() ? k[n & 63] : '=';
+  }
+  return out;
+}
+
+TEST(ClusterGltf, DataUriImageIsEmbeddedUnchangedByBothBakes) {
+  // tinygltf reads a data: URI image into bytes and clears its uri: those bytes are all there
+  // is, and both bakes must embed them (before, the output's image had neither bufferView nor
+  // uri, and the texture was lost).
+  const std::string dir = testing::temp_dir("cl_data_uri");
+  tinygltf::Model m = testing::scene_model();
+  m.images[0].bufferView = -1;
+  m.images[0].mimeType.clear();
+  m.images[0].uri = "data:image/png;base64," + base64(testing::image_bytes());
+  const std::string in = testing::write_model(m, dir + "/in.gltf");
+  ASSERT_TRUE(load_gltf(in).model.images.at(0).uri.empty()) << "tinygltf keeps the data: URI now";
+  bake_clusters_file(in, dir + "/clusters.glb", ClusterBakeOptions{});
+  bake_file(in, dir + "/chains.glb", BakeOptions{});
+  for (const char* name : {"/clusters.glb", "/chains.glb"}) {
+    SCOPED_TRACE(name);
+    const tinygltf::Model out = load_gltf(dir + name).model;
+    ASSERT_EQ(out.images.size(), 1u);
+    EXPECT_EQ(out.images[0].mimeType, "image/png");
+    ASSERT_GE(out.images[0].bufferView, 0);
+    const auto& iv = out.bufferViews[static_cast<std::size_t>(out.images[0].bufferView)];
+    const auto* bytes = out.buffers[0].data.data() + iv.byteOffset;
+    EXPECT_EQ(std::vector<unsigned char>(bytes, bytes + iv.byteLength), testing::image_bytes());
+  }
+}
+
 TEST(ClusterGltf, TheRestOfTheFileIsUnchanged) {
   const Baked b = bake("cl_rest", testing::scene_model());
   const tinygltf::Model in = load_gltf(b.in).model, out = load_gltf(b.out).model;
@@ -246,7 +284,77 @@ TEST(ClusterGltf, BadGeometryNamesFileMeshAndVertex) {
   std::memcpy(m.buffers[0].data.data() + m.bufferViews[std::size_t(ia.bufferView)].byteOffset + 4 * 5, &big, 4);
   EXPECT_HAS(bake_error(m, "cl_range"), "in.glb: mesh 0 'M' primitive 0: index 5 is 1000, but there are only 42 vertices");
   m.meshes[0].primitives[0].mode = TINYGLTF_MODE_LINE;
-  EXPECT_HAS(bake_error(m, "cl_lines"), "mode 1 (LINES) is not supported");
+  EXPECT_HAS(bake_error(m, "cl_lines"), "in.glb: nothing to bake: the meshes the nodes use have no triangle primitive");
+  m.nodes[0].mesh = -1;
+  EXPECT_HAS(bake_error(m, "cl_nomesh"), "in.glb: nothing to bake: no node uses a mesh");
+}
+
+TEST(ClusterGltf, PointsAndLinesBesideTrianglesAreKeptAsTheyAre) {
+  // A CAD export's edges as a LINES primitive next to the faces: the faces get a hierarchy,
+  // the lines stay as they are, and the bake says so.
+  tinygltf::Model m = testing::single_mesh_model(testing::icosphere(2, 1.0));
+  tinygltf::Primitive lines = m.meshes[0].primitives[0];
+  lines.mode = TINYGLTF_MODE_LINE;  // 960 indices: 480 segments
+  m.meshes[0].primitives.push_back(lines);
+  tinygltf::Primitive points = lines;
+  points.mode = TINYGLTF_MODE_POINTS;
+  m.meshes[0].primitives.push_back(points);
+  const std::string dir = testing::temp_dir("cl_keep_lines");
+  const std::string in = testing::write_model(m, dir + "/in.glb"), out = dir + "/out.glb";
+  const ClusterBakeReport rep = bake_clusters_file(in, out, ClusterBakeOptions{});
+  ASSERT_EQ(rep.primitives.size(), 1u);
+  EXPECT_EQ(rep.primitives[0].primitive, 0);
+  const auto warned = [&](const std::string& what) {
+    return std::any_of(rep.warnings.begin(), rep.warnings.end(),
+                       [&](const std::string& w) { return w.find(what) != std::string::npos; });
+  };
+  EXPECT_TRUE(warned("mesh 0 'M' primitive 1: mode 1 (LINES) kept as it is"));
+  EXPECT_TRUE(warned("mesh 0 'M' primitive 2: mode 0 (POINTS) kept as it is"));
+  const tinygltf::Model a = load_gltf(in).model, b = load_gltf(out).model;
+  ASSERT_EQ(b.meshes[0].primitives.size(), 3u);
+  EXPECT_EQ(b.meshes[0].primitives[0].extensions.count(kClusterLodExtension), 1u);
+  for (std::size_t p = 1; p < 3; ++p) {
+    const tinygltf::Primitive &pa = a.meshes[0].primitives[p], &pb = b.meshes[0].primitives[p];
+    EXPECT_EQ(pb.mode, pa.mode);
+    EXPECT_TRUE(pb.extensions.empty());
+    EXPECT_EQ(pb.attributes, pa.attributes);
+    EXPECT_EQ(read_index_accessor(b, pb.indices, 1u << 20, "out"), read_index_accessor(a, pa.indices, 1u << 20, "in"));
+  }
+  const BakedScene scene = load_baked(out);
+  ASSERT_EQ(scene.cluster_meshes.size(), 1u);
+  EXPECT_EQ(scene.cluster_meshes[0].primitives.size(), 1u);
+}
+
+TEST(ClusterGltf, EmptyNodesAndScenesStayObjects) {
+  // tinygltf writes an object with no properties as null, which glTF forbids.
+  tinygltf::Model m = testing::single_mesh_model(testing::icosphere(1, 1.0));
+  m.nodes.emplace_back();
+  m.scenes.emplace_back();
+  const std::string dir = testing::temp_dir("cl_empty_objects");
+  const std::string in = dir + "/in.gltf", out = dir + "/out.glb";
+  {  // tinygltf writes the test's input with the same nulls: `{}` put back by hand
+    std::ifstream f(testing::write_model(m, dir + "/raw.gltf"));
+    std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+    for (std::size_t at; (at = text.find("null")) != std::string::npos;) text.replace(at, 4, "{}");
+    std::ofstream(in) << text;
+  }
+  ASSERT_EQ(load_gltf(in).model.nodes.size(), 2u);
+  bake_clusters_file(in, out, ClusterBakeOptions{});
+  std::ifstream f(out, std::ios::binary);
+  const std::string glb((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  ASSERT_GT(glb.size(), 20u);
+  std::uint32_t json_length = 0, total = 0;
+  std::memcpy(&json_length, glb.data() + 12, 4);
+  std::memcpy(&total, glb.data() + 8, 4);
+  EXPECT_EQ(total, glb.size());
+  EXPECT_EQ(json_length % 4, 0u);
+  const std::string json = glb.substr(20, json_length);
+  EXPECT_EQ(json.find("null"), std::string::npos) << json.substr(0, 400);
+  EXPECT_NE(json.find("\"nodes\":[{\"mesh\":0,\"name\":\"N\"},{}]"), std::string::npos) << json.substr(0, 400);
+  const tinygltf::Model b = load_gltf(out).model;  // the BIN chunk still where it was
+  EXPECT_EQ(b.nodes.size(), 2u);
+  EXPECT_EQ(b.scenes.size(), 2u);
+  EXPECT_EQ(load_baked(out).cluster_meshes.size(), 1u);
 }
 
 // Bakes the sphere, edits the output's extension or data, and returns load_baked's error.

@@ -3,6 +3,7 @@
 // real model: Debian's assimp-testmodels ship Khronos's 2CylinderEngine (29 meshes, 75730
 // triangles, some degenerate) and the glTF-Asset-Generator's strip and fan primitives. Tests
 // skip, saying why, when node, the validator or the models are missing.
+#include "bake/bake_error.hpp"
 #include "bake/baked_scene.hpp"
 #include "bake/cluster_bake.hpp"
 #include "bake/gltf_load.hpp"
@@ -12,7 +13,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
+#include <map>
+#include <set>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -142,6 +146,89 @@ TEST(ClusterValidator, RealStripAndFanPrimitives) {
       const Validation v = validate(node_path, out);
       EXPECT_EQ(v.rc, 0) << v.output;
     }
+  }
+}
+
+// Each file's "error codes: ..." line of a gltf_validate.js run on several files, by file.
+std::map<std::string, std::set<std::string>> error_codes(const std::string& node_path,
+                                                         const std::vector<std::string>& files,
+                                                         const std::string& log) {
+  std::string cmd = "NODE_PATH='" + node_path + "' node '" GAZELOD_SOURCE_DIR "/tests/bake/gltf_validate.js'";
+  for (const std::string& f : files) cmd += " '" + f + "'";
+  cmd += " >'" + log + "' 2>&1";
+  (void)std::system(cmd.c_str());  // exit 1 when any file has an error: read the log instead
+  std::ifstream in(log);
+  std::map<std::string, std::set<std::string>> out;
+  std::string file;
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("== ", 0) == 0) file = line.substr(3);
+    if (line.rfind("error codes:", 0) != 0) continue;
+    std::istringstream codes(line.substr(12));
+    std::set<std::string>& set = out[file];
+    for (std::string c; codes >> c;) set.insert(c);
+  }
+  return out;
+}
+
+std::vector<unsigned char> image_bytes_of(const tinygltf::Model& m, const tinygltf::Image& im) {
+  if (im.bufferView < 0) return im.image;
+  const tinygltf::BufferView& v = m.bufferViews.at(static_cast<std::size_t>(im.bufferView));
+  const auto* b = m.buffers.at(static_cast<std::size_t>(v.buffer)).data.data() + v.byteOffset;
+  return {b, b + v.byteLength};
+}
+
+TEST(ClusterValidator, EveryAssimpModelBakesOrSaysWhy) {
+  // Every glTF 2.0 file assimp-testmodels ships (Khronos samples, the Asset Generator's modes,
+  // and malformed files): bake --clusters either succeeds, keeping every image's bytes and every
+  // point or line primitive as it was and adding no validator error the input did not have, or
+  // fails with a message that starts with the file's path, leaving no output.
+  if (!fs::exists(kModels)) GTEST_SKIP() << kModels << " missing (Debian package assimp-testmodels)";
+  std::vector<std::string> models;
+  for (const auto& e : fs::recursive_directory_iterator(kModels))
+    if (e.path().extension() == ".glb" || e.path().extension() == ".gltf") models.push_back(e.path().string());
+  std::sort(models.begin(), models.end());
+  ASSERT_GE(models.size(), 40u);
+  const std::string dir = testing::temp_dir("clv_every_model");
+  std::vector<std::string> validate_files;
+  std::size_t baked = 0, refused = 0;
+  for (std::size_t i = 0; i < models.size(); ++i) {
+    SCOPED_TRACE(models[i]);
+    const std::string out = dir + "/out" + std::to_string(i) + ".glb";
+    try {
+      bake_clusters_file(models[i], out, ClusterBakeOptions{});
+    } catch (const BakeError& e) {
+      ++refused;
+      EXPECT_EQ(std::string(e.what()).rfind(models[i] + ": ", 0), 0u) << e.what();
+      EXPECT_FALSE(fs::exists(out));
+      continue;
+    }
+    ++baked;
+    const tinygltf::Model a = load_gltf(models[i]).model, b = load_gltf(out).model;
+    ASSERT_EQ(b.images.size(), a.images.size());
+    for (std::size_t k = 0; k < a.images.size(); ++k) {
+      EXPECT_EQ(image_bytes_of(b, b.images[k]), image_bytes_of(a, a.images[k])) << "image " << k;
+    }
+    ASSERT_EQ(b.meshes.size(), a.meshes.size());
+    for (std::size_t mi = 0; mi < a.meshes.size(); ++mi)
+      for (std::size_t p = 0; p < a.meshes[mi].primitives.size(); ++p)
+        if (!draws_triangles(a.meshes[mi].primitives[p])) {
+          EXPECT_EQ(b.meshes[mi].primitives[p].mode, a.meshes[mi].primitives[p].mode);
+          EXPECT_TRUE(b.meshes[mi].primitives[p].extensions.empty());
+        }
+    validate_files.push_back(models[i]);
+    validate_files.push_back(out);
+  }
+  std::printf("%zu models: %zu baked, %zu refused with a reason\n", models.size(), baked, refused);
+  EXPECT_GE(baked, 25u);
+  const std::string node_path = validator_path();
+  if (node_path.empty()) return;
+  const auto codes = error_codes(node_path, validate_files, dir + "/validator.txt");
+  for (std::size_t k = 0; k + 1 < validate_files.size(); k += 2) {
+    const std::string &in = validate_files[k], &out = validate_files[k + 1];
+    ASSERT_TRUE(codes.count(in) && codes.count(out)) << "no validator report for " << in << " or " << out;
+    for (const std::string& c : codes.at(out))
+      EXPECT_TRUE(codes.at(in).count(c)) << out << " (from " << in << "): validator error " << c
+                                          << " that the input does not have";
   }
 }
 

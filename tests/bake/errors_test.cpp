@@ -120,6 +120,23 @@ TEST(BakeErrors, UnsupportedModes) {
   EXPECT_HAS(lines, "mode 1 (LINES) is not supported");
 }
 
+TEST(BakeErrors, MeshWithoutPrimitivesNamesItsJsonPath) {
+  // Read as no primitives (as tinygltf reads a "primitives" that is not an array): refused on
+  // load, before a bake could write the invalid mesh back.
+  const std::string m = bake_edited("noprims", [](tinygltf::Model& g) { g.meshes[0].primitives.clear(); });
+  EXPECT_HAS(m, "in.glb: /meshes/0/primitives: a mesh needs at least one primitive");
+}
+
+TEST(BakeErrors, CompressedGeometryIsNamed) {
+  // As assimp-testmodels' draco/2CylinderEngine.gltf: tinygltf alone says "accessor[0] invalid
+  // bufferView".
+  const std::string m = bake_edited("draco", [](tinygltf::Model& g) {
+    g.extensionsUsed = {"KHR_draco_mesh_compression"};
+    g.extensionsRequired = {"KHR_draco_mesh_compression"};
+  });
+  EXPECT_HAS(m, "in.glb: /extensionsRequired: KHR_draco_mesh_compression (compressed geometry), which gazelod does not decode");
+}
+
 TEST(BakeErrors, IndexOutOfRange) {
   const std::string m = bake_edited("index", [](tinygltf::Model& g) {
     const auto& a = g.accessors[std::size_t(g.meshes[0].primitives[0].indices)];

@@ -48,7 +48,7 @@ struct Reader {
         cluster_mesh_of[static_cast<std::size_t>(n.mesh)] >= 0)
       return full_mesh_level(clusters[static_cast<std::size_t>(cluster_mesh_of[static_cast<std::size_t>(n.mesh)])]);
     if (!n.extras.IsObject() || !n.extras.Has("gazelod_lod"))
-      fail(where, "missing (not written by gazelod bake?)");
+      fail(where, "missing: --scene takes what gazelod bake writes (gazelod bake IN OUT.glb, or bake --clusters)");
     const Value& e = n.extras.Get("gazelod_lod");
     if (!e.IsObject()) fail(where, "must be an object");
     if (number(e, "level", where) != expect_level)

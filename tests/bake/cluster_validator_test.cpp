@@ -3,6 +3,7 @@
 // real model: Debian's assimp-testmodels ship Khronos's 2CylinderEngine (29 meshes, 75730
 // triangles, some degenerate) and the glTF-Asset-Generator's strip and fan primitives. Tests
 // skip, saying why, when node, the validator or the models are missing.
+#include "bake/bake.hpp"
 #include "bake/bake_error.hpp"
 #include "bake/baked_scene.hpp"
 #include "bake/cluster_bake.hpp"
@@ -179,9 +180,10 @@ std::vector<unsigned char> image_bytes_of(const tinygltf::Model& m, const tinygl
 
 TEST(ClusterValidator, EveryAssimpModelBakesOrSaysWhy) {
   // Every glTF 2.0 file assimp-testmodels ships (Khronos samples, the Asset Generator's modes,
-  // and malformed files): bake --clusters either succeeds, keeping every image's bytes and every
-  // point or line primitive as it was and adding no validator error the input did not have, or
-  // fails with a message that starts with the file's path, leaving no output.
+  // and malformed files), through both bakes: each either succeeds, keeping every image's bytes
+  // (and, --clusters, every point or line primitive as it was) and adding no validator error
+  // the input did not have, or fails with a message that starts with the file's path, leaving
+  // no output.
   if (!fs::exists(kModels)) GTEST_SKIP() << kModels << " missing (Debian package assimp-testmodels)";
   std::vector<std::string> models;
   for (const auto& e : fs::recursive_directory_iterator(kModels))
@@ -190,36 +192,40 @@ TEST(ClusterValidator, EveryAssimpModelBakesOrSaysWhy) {
   ASSERT_GE(models.size(), 40u);
   const std::string dir = testing::temp_dir("clv_every_model");
   std::vector<std::string> validate_files;
-  std::size_t baked = 0, refused = 0;
-  for (std::size_t i = 0; i < models.size(); ++i) {
-    SCOPED_TRACE(models[i]);
-    const std::string out = dir + "/out" + std::to_string(i) + ".glb";
-    try {
-      bake_clusters_file(models[i], out, ClusterBakeOptions{});
-    } catch (const BakeError& e) {
-      ++refused;
-      EXPECT_EQ(std::string(e.what()).rfind(models[i] + ": ", 0), 0u) << e.what();
-      EXPECT_FALSE(fs::exists(out));
-      continue;
+  std::size_t baked = 0, refused = 0, chains_baked = 0;
+  for (std::size_t i = 0; i < models.size(); ++i)
+    for (const bool clusters : {true, false}) {
+      SCOPED_TRACE(models[i] + (clusters ? " (--clusters)" : " (chains)"));
+      const std::string out = dir + "/out" + std::to_string(i) + (clusters ? "c" : "") + ".glb";
+      try {
+        if (clusters) bake_clusters_file(models[i], out, ClusterBakeOptions{});
+        else bake_file(models[i], out, BakeOptions{});
+      } catch (const BakeError& e) {
+        refused += clusters;
+        EXPECT_EQ(std::string(e.what()).rfind(models[i] + ": ", 0), 0u) << e.what();
+        EXPECT_FALSE(fs::exists(out));
+        continue;
+      }
+      (clusters ? baked : chains_baked) += 1;
+      const tinygltf::Model a = load_gltf(models[i]).model, b = load_gltf(out).model;
+      ASSERT_EQ(b.images.size(), a.images.size());
+      for (std::size_t k = 0; k < a.images.size(); ++k) {
+        EXPECT_EQ(image_bytes_of(b, b.images[k]), image_bytes_of(a, a.images[k])) << "image " << k;
+      }
+      ASSERT_GE(b.meshes.size(), a.meshes.size());
+      for (std::size_t mi = 0; clusters && mi < a.meshes.size(); ++mi)
+        for (std::size_t p = 0; p < a.meshes[mi].primitives.size(); ++p)
+          if (!draws_triangles(a.meshes[mi].primitives[p])) {
+            EXPECT_EQ(b.meshes[mi].primitives[p].mode, a.meshes[mi].primitives[p].mode);
+            EXPECT_TRUE(b.meshes[mi].primitives[p].extensions.empty());
+          }
+      validate_files.push_back(models[i]);
+      validate_files.push_back(out);
     }
-    ++baked;
-    const tinygltf::Model a = load_gltf(models[i]).model, b = load_gltf(out).model;
-    ASSERT_EQ(b.images.size(), a.images.size());
-    for (std::size_t k = 0; k < a.images.size(); ++k) {
-      EXPECT_EQ(image_bytes_of(b, b.images[k]), image_bytes_of(a, a.images[k])) << "image " << k;
-    }
-    ASSERT_EQ(b.meshes.size(), a.meshes.size());
-    for (std::size_t mi = 0; mi < a.meshes.size(); ++mi)
-      for (std::size_t p = 0; p < a.meshes[mi].primitives.size(); ++p)
-        if (!draws_triangles(a.meshes[mi].primitives[p])) {
-          EXPECT_EQ(b.meshes[mi].primitives[p].mode, a.meshes[mi].primitives[p].mode);
-          EXPECT_TRUE(b.meshes[mi].primitives[p].extensions.empty());
-        }
-    validate_files.push_back(models[i]);
-    validate_files.push_back(out);
-  }
-  std::printf("%zu models: %zu baked, %zu refused with a reason\n", models.size(), baked, refused);
+  std::printf("%zu models: --clusters %zu baked, %zu refused with a reason; chains %zu baked\n", models.size(),
+              baked, refused, chains_baked);
   EXPECT_GE(baked, 25u);
+  EXPECT_GE(chains_baked, 25u);
   const std::string node_path = validator_path();
   if (node_path.empty()) return;
   const auto codes = error_codes(node_path, validate_files, dir + "/validator.txt");

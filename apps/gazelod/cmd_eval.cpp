@@ -6,6 +6,7 @@
 #include "apps/gazelod/command.hpp"
 #include "apps/gazelod/eval_clusters.hpp"
 #include "apps/gazelod/eval_experiments.hpp"
+#include "apps/gazelod/eval_gltfpack.hpp"
 #include "apps/gazelod/eval_tables.hpp"
 
 #include <chrono>
@@ -91,7 +92,12 @@ const Registrar reg("eval", "Reproduce Reddy 1998's experiments (frame rate, ave
       ->check(CLI::Range(0.01, 100.0));
   app.add_flag("--no-render", flags->no_render, "Skip the rendered frame-rate runs (Figure 5)");
   const EvalSubcommand clusters = add_eval_clusters(app);  // gazelod eval clusters (eval_clusters.hpp)
-  return [=](Io io) { return clusters.app->parsed() ? clusters.action(io) : run_eval(*flags, io); };
+  const EvalSubcommand gltfpack = add_eval_gltfpack(app);  // gazelod eval gltfpack (eval_gltfpack.hpp)
+  return [=](Io io) {
+    if (clusters.app->parsed()) return clusters.action(io);
+    if (gltfpack.app->parsed()) return gltfpack.action(io);
+    return run_eval(*flags, io);
+  };
 });
 
 }  // namespace

@@ -2,7 +2,7 @@
 
 #include "apps/gazelod/eval_clusters_baseline.hpp"
 #include "apps/gazelod/eval_clusters_report.hpp"
-#include "gaze/atomic_file.hpp"
+#include "apps/gazelod/eval_work.hpp"
 
 #include <unistd.h>
 
@@ -35,30 +35,6 @@ struct ClusterEvalFlags {
   int render_rounds = 3;     // rendered runs per column, the columns taking turns
 };
 
-// The work folder, removed on the way out when it is a temporary one.
-class WorkDir {
- public:
-  explicit WorkDir(const std::string& given) : temporary_(given.empty()) {
-    path_ = temporary_ ? fs::temp_directory_path() / ("gazelod-eval-clusters-" + std::to_string(::getpid()))
-                       : fs::path(given);
-    std::error_code ec;
-    if (temporary_) fs::remove_all(path_, ec);
-    fs::create_directories(path_, ec);
-    if (ec) throw UsageError("--work: cannot create '" + path_.string() + "': " + ec.message());
-  }
-  ~WorkDir() {
-    std::error_code ec;
-    if (temporary_) fs::remove_all(path_, ec);
-  }
-  WorkDir(const WorkDir&) = delete;
-  WorkDir& operator=(const WorkDir&) = delete;
-  const fs::path& path() const { return path_; }
-
- private:
-  bool temporary_;
-  fs::path path_;
-};
-
 std::string join(const std::vector<std::string>& args) {
   std::string s = "gazelod";
   for (const std::string& a : args) s += " " + a;
@@ -74,16 +50,6 @@ void invoke(const std::vector<std::string>& args) {
     while (!why.empty() && why.back() == '\n') why.pop_back();
     throw UsageError("`" + join(args) + "` failed (exit " + std::to_string(rc) + "): " + why, rc == 2 ? 2 : 1);
   }
-}
-
-std::string cpu_model() {
-  std::ifstream in("/proc/cpuinfo");
-  for (std::string line; std::getline(in, line);)
-    if (line.rfind("model name", 0) == 0) {
-      const std::size_t colon = line.find(':');
-      return colon == std::string::npos ? line : line.substr(colon + 2);
-    }
-  return "";
 }
 
 std::string fmt(const char* format, double a, double b = 0.0) {
@@ -106,7 +72,7 @@ int run_eval_clusters(const ClusterEvalFlags& flags, const CLI::App& app, Io io)
   std::error_code ec;
   fs::create_directories(out, ec);
   if (ec) throw UsageError("--out: cannot create '" + out.string() + "': " + ec.message());
-  const WorkDir work(flags.work);
+  const WorkDir work(flags.work, "gazelod-eval-clusters");
   const fs::path& w = work.path();
 
   const auto started = std::chrono::steady_clock::now();
@@ -189,12 +155,7 @@ int run_eval_clusters(const ClusterEvalFlags& flags, const CLI::App& app, Io io)
   }
 
   const std::string md = "<!-- written by: gazelod eval clusters -->\n\n" + cluster_eval_markdown(report);
-  try {
-    gaze::write_file_atomic((out / "clusters.md").string(), md);
-    gaze::write_file_atomic((out / "clusters.json").string(), cluster_eval_json(report).dump(2) + "\n");
-  } catch (const gaze::WriteError& e) {
-    throw UsageError(std::string("--out: ") + e.what(), 1);
-  }
+  write_report(out, {{"clusters.md", md}, {"clusters.json", cluster_eval_json(report).dump(2) + "\n"}});
   write_cluster_eval_svg(report, out / "clusters.svg");
   io.out << md << "\nfiles: clusters.md, clusters.json, clusters.svg in " << out.string() << "\n";
   for (const ClusterEvalColumn& c : report.columns)

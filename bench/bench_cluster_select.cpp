@@ -7,8 +7,10 @@
 // little (bench/lod's viewer). dense 0: errors of 4 mm at the first level (the cut at 0.04 % of
 // the clusters at 1M); dense 1: errors 100 times larger, so that far more of each tile is
 // visible (the cut at 9 %) and far fewer records are decided by size alone (the screen);
-// per_criterion: also the three per-criterion cuts (every record fully evaluated but those of
-// error 0 or +inf: the worst case). Counters: ns_per_cluster (or ns_per_object) = this
+// per_criterion 1: also the three per-criterion cuts, every cluster's two records fully
+// evaluated but those of error 0 or +inf (the set without its distinct records); 2: the same
+// cuts over the store's distinct records, each evaluated once (ClusterDecisions::record_flags).
+// Counters: records = distinct records; ns_per_cluster (or ns_per_object) = this
 // thread's CPU time / (iterations x count); ratio_vs_select_lods = ns_per_cluster /
 // ns_per_object at the same count (run first); drawn_pct = clusters in the cut;
 // visible_parent_pct = clusters whose parent error is visible (about the share of records
@@ -173,12 +175,19 @@ void BM_SelectLodsBaseline(benchmark::State& state) {
 
 void BM_SelectClusters(benchmark::State& state) {
   const std::size_t target = static_cast<std::size_t>(state.range(0));
-  const bool dense = state.range(1) != 0, per_criterion = state.range(2) != 0;
-  const ClusterSet cs = cluster_scene(target, dense).view();
-  const std::size_t n = cs.size();
+  const bool dense = state.range(1) != 0, per_criterion = state.range(2) != 0, by_record = state.range(2) == 2;
+  ClusterSet cs = cluster_scene(target, dense).view();
+  const std::size_t n = cs.size(), records = cs.record_count();
   std::vector<std::uint8_t> drawn(n), why(n), s(n), e(n), v(n);
+  std::vector<std::uint32_t> flags(records);
   ClusterDecisions out{drawn, why, {}, {}, {}, {}};
   if (per_criterion) out.drawn_size_only = s, out.drawn_eccentricity_only = e, out.drawn_velocity_only = v;
+  if (by_record) out.record_flags = flags;
+  if (!by_record) {  // the set without its distinct records: every cluster's own two
+    cs.record_center_x_m = {}, cs.record_center_y_m = {}, cs.record_center_z_m = {}, cs.record_radius_m = {};
+    cs.record_error_m = {}, cs.self_record = {}, cs.parent_record = {};
+    cs.mesh_first_record = {}, cs.mesh_record_count = {};
+  }
   const Viewer vw = viewer();
   if (const std::string err = validate_clusters(cs); !err.empty()) state.SkipWithError(err.c_str());
   const double t0 = thread_cpu_ns();
@@ -193,6 +202,7 @@ void BM_SelectClusters(benchmark::State& state) {
   select_clusters(vw, cs, {drawn, why, {}, {}, {}, bits});
   for (auto b : bits) parent_visible += (b & 2) == 0;
   state.counters["clusters"] = double(n);
+  state.counters["records"] = double(records);
   state.counters["visible_parent_pct"] = 100.0 * double(parent_visible) / double(n);
   state.counters["ns_per_cluster"] = ns;
   if (auto it = object_ns().find(target); it != object_ns().end())
@@ -203,7 +213,7 @@ void BM_SelectClusters(benchmark::State& state) {
 BENCHMARK(BM_SelectLodsBaseline)->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_SelectClusters)
     ->Args({10000, 0, 0})->Args({100000, 0, 0})->Args({1000000, 0, 0})
-    ->Args({1000000, 1, 0})->Args({1000000, 0, 1})
+    ->Args({1000000, 1, 0})->Args({1000000, 0, 1})->Args({1000000, 0, 2})
     ->ArgNames({"clusters", "dense", "per_criterion"})->Unit(benchmark::kMicrosecond);
 
 }  // namespace

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <numbers>
 #include <optional>
@@ -59,6 +60,58 @@ std::string check_lengths(const ClusterSet& c) {
   }
   if (next != n)
     return "meshes cover " + std::to_string(next) + " clusters, the arrays hold " + std::to_string(n);
+  if (!c.has_records()) return {};
+  // The distinct records: their arrays, one range per mesh (none empty where the mesh has
+  // clusters), back to back over all of them.
+  const std::size_t r = c.record_count();
+  for (std::span<const float> s :
+       {c.record_center_x_m, c.record_center_y_m, c.record_center_z_m, c.record_radius_m})
+    if (s.size() != r) return "record arrays differ in length (record_error_m has " + std::to_string(r) + ")";
+  if (c.self_record.size() != n || c.parent_record.size() != n)
+    return "self_record and parent_record must have one entry per cluster (" + std::to_string(n) + ")";
+  if (c.mesh_first_record.size() != m || c.mesh_record_count.size() != m)
+    return "mesh record arrays differ in length (mesh_cluster_count has " + std::to_string(m) + ")";
+  next = 0;
+  for (std::size_t k = 0; k < m; ++k) {
+    if (c.mesh_first_record[k] != next || (c.mesh_record_count[k] == 0 && c.mesh_cluster_count[k] > 0))
+      return "mesh " + std::to_string(k) + ": its record range [" + std::to_string(c.mesh_first_record[k]) +
+             ", +" + std::to_string(c.mesh_record_count[k]) + ") must start at " + std::to_string(next) +
+             " and hold a record where the mesh has clusters";
+    next += c.mesh_record_count[k];
+  }
+  if (next != r)
+    return "meshes cover " + std::to_string(next) + " records, the arrays hold " + std::to_string(r);
+  return {};
+}
+
+// "" or the first cluster whose record indices leave its mesh's range or name a record that
+// differs from its own fields (bit for bit: equal inputs are what makes the decisions equal).
+std::string record_index_problem(const ClusterSet& c) {
+  const auto same = [](float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+  for (std::size_t k = 0; k < c.mesh_count(); ++k) {
+    const std::size_t lo = c.mesh_first_record[k], hi = lo + c.mesh_record_count[k];
+    const std::size_t first = c.mesh_first_cluster[k], end = first + c.mesh_cluster_count[k];
+    for (std::size_t i = first; i < end; ++i)
+      for (int which = 0; which < 2; ++which) {
+        const std::uint32_t at = which == 0 ? c.self_record[i] : c.parent_record[i];
+        const char* name = which == 0 ? "self_record" : "parent_record";
+        if (at < lo || at >= hi)
+          return "cluster " + std::to_string(i) + ": " + name + " " + std::to_string(at) +
+                 " is outside its mesh's records [" + std::to_string(lo) + ", " + std::to_string(hi) + ")";
+        const bool equal =
+            which == 0
+                ? same(c.record_center_x_m[at], c.self_center_x_m[i]) && same(c.record_center_y_m[at], c.self_center_y_m[i]) &&
+                      same(c.record_center_z_m[at], c.self_center_z_m[i]) && same(c.record_radius_m[at], c.self_radius_m[i]) &&
+                      same(c.record_error_m[at], c.self_error_m[i])
+                : same(c.record_center_x_m[at], c.parent_center_x_m[i]) &&
+                      same(c.record_center_y_m[at], c.parent_center_y_m[i]) &&
+                      same(c.record_center_z_m[at], c.parent_center_z_m[i]) &&
+                      same(c.record_radius_m[at], c.parent_radius_m[i]) && same(c.record_error_m[at], c.parent_error_m[i]);
+        if (!equal)
+          return "cluster " + std::to_string(i) + ": " + name + " " + std::to_string(at) +
+                 " differs from the cluster's own " + (which == 0 ? "self" : "parent") + " record";
+      }
+  }
   return {};
 }
 
@@ -157,6 +210,8 @@ std::string validate_clusters(const ClusterSet& c) {
   if (std::string e = check_lengths(c); !e.empty()) return e;
   for (std::size_t i = 0; i < c.size(); ++i)
     if (std::string e = record_problem(c, i); !e.empty()) return e;
+  if (c.has_records())
+    if (std::string e = record_index_problem(c); !e.empty()) return e;
   const bool moving = !c.mesh_vel_x_m_s.empty();
   for (std::size_t k = 0; k < c.mesh_count(); ++k) {
     const std::string where = "mesh " + std::to_string(k) + ": ";
@@ -177,6 +232,20 @@ std::string validate_clusters(const ClusterSet& c) {
   return {};
 }
 
+namespace {
+
+// Where the block of clusters from `base` on writes its outcomes.
+detail::ClusterOutput output_at(const ClusterDecisions& out, std::size_t base, bool per_criterion,
+                                bool records) {
+  return {out.drawn.data() + base, out.limited_by.data() + base,
+          per_criterion ? out.drawn_size_only.data() + base : nullptr,
+          per_criterion ? out.drawn_eccentricity_only.data() + base : nullptr,
+          per_criterion ? out.drawn_velocity_only.data() + base : nullptr,
+          records ? out.record_invisible.data() + base : nullptr};
+}
+
+}  // namespace
+
 std::string select_clusters(const Viewer& viewer, const ClusterSet& c, const ClusterDecisions& out) {
   if (std::string e = validate_viewer(viewer); !e.empty()) return "viewer: " + e;
   if (std::string e = check_lengths(c); !e.empty()) return "clusters: " + e;
@@ -192,6 +261,8 @@ std::string select_clusters(const Viewer& viewer, const ClusterSet& c, const Clu
   if (records && out.record_invisible.size() < n)
     return "decisions: record_invisible is shorter than the cluster count";
 
+  const bool by_record = per_criterion && c.has_records() && out.record_flags.size() >= c.record_count();
+
   const detail::ClusterFrame frame = detail::make_cluster_frame(viewer);
   const detail::RecordInput self_in{c.self_center_x_m.data(), c.self_center_y_m.data(),
                                     c.self_center_z_m.data(), c.self_radius_m.data(),
@@ -199,10 +270,32 @@ std::string select_clusters(const Viewer& viewer, const ClusterSet& c, const Clu
   const detail::RecordInput parent_in{c.parent_center_x_m.data(), c.parent_center_y_m.data(),
                                       c.parent_center_z_m.data(), c.parent_radius_m.data(),
                                       c.parent_error_m.data()};
+  const detail::RecordInput table_in{c.record_center_x_m.data(), c.record_center_y_m.data(),
+                                     c.record_center_z_m.data(), c.record_radius_m.data(),
+                                     c.record_error_m.data()};
   detail::RecordBlock self_blk, parent_blk;  // 10 KiB each, reused per block
   for (std::size_t k = 0; k < c.mesh_count(); ++k) {
     const detail::ClusterMeshFrame mesh = detail::make_cluster_mesh_frame(viewer, c, k);
     const std::size_t end = std::size_t{c.mesh_first_cluster[k]} + c.mesh_cluster_count[k];
+    if (by_record && end > c.mesh_first_cluster[k]) {
+      // Each distinct record once (fully: every criterion's outcome), then every cluster from
+      // its two records' outcomes.
+      const std::size_t lo = c.mesh_first_record[k], hi = lo + c.mesh_record_count[k];
+      for (std::size_t base = lo; base < hi; base += detail::kClusterBlock) {
+        const std::size_t m = std::min(detail::kClusterBlock, hi - base);
+        detail::evaluate_records(frame, mesh, table_in, base, m, true, detail::RecordScreen::trivial,
+                                 nullptr, self_blk);
+        detail::pack_record_flags(m, self_blk, out.record_flags.data() + base);
+      }
+      const auto first = static_cast<std::uint32_t>(lo), last = static_cast<std::uint32_t>(hi - 1);
+      for (std::size_t base = c.mesh_first_cluster[k]; base < end; base += detail::kClusterBlock) {
+        const std::size_t m = std::min(detail::kClusterBlock, end - base);
+        detail::combine_record_flags(m, out.record_flags.data(), c.self_record.data() + base,
+                                     c.parent_record.data() + base, first, last,
+                                     output_at(out, base, true, records));
+      }
+      continue;
+    }
     for (std::size_t base = c.mesh_first_cluster[k]; base < end; base += detail::kClusterBlock) {
       const std::size_t m = std::min(detail::kClusterBlock, end - base);
       // The size screen only where no per-criterion cut needs every record's E and v (with
@@ -215,13 +308,7 @@ std::string select_clusters(const Viewer& viewer, const ClusterSet& c, const Clu
                                parent_blk);
       detail::evaluate_records(frame, mesh, self_in, base, m, true, screen,
                                per_criterion ? nullptr : parent_blk.combined, self_blk);
-      const detail::ClusterOutput o{
-          out.drawn.data() + base, out.limited_by.data() + base,
-          per_criterion ? out.drawn_size_only.data() + base : nullptr,
-          per_criterion ? out.drawn_eccentricity_only.data() + base : nullptr,
-          per_criterion ? out.drawn_velocity_only.data() + base : nullptr,
-          records ? out.record_invisible.data() + base : nullptr};
-      detail::combine_records(m, self_blk, parent_blk, o);
+      detail::combine_records(m, self_blk, parent_blk, output_at(out, base, per_criterion, records));
     }
   }
   return {};

@@ -8,6 +8,8 @@
 //   ClusterDecisions out{drawn, limited_by};           // caller-owned spans of n bytes
 //   std::string err = select_clusters(viewer, store.view(), out);  // per frame, "" on success
 //   draw cluster i when drawn[i] == 1.
+//   With the per-criterion cuts (drawn_size_only, ...), also give out.record_flags
+//   (store.record_count() words of scratch): each distinct record is then evaluated once.
 // (A ClusterSet assembled otherwise: validate_clusters once at registration.) Per frame: no
 // allocation, about 40 KiB of stack, linear time.
 //
@@ -80,8 +82,24 @@ struct ClusterSet {
   // +inf allowed where it has none finite); sets the size-off distance.
   std::span<const double> mesh_finest_error_m;
 
+  // Optional, all or none (ClusterStore fills them): the set's distinct records, each mesh's
+  // back to back (mesh m's are [mesh_first_record[m], + mesh_record_count[m])), and per cluster
+  // the index of its self and of its parent record among them, whose fields equal the cluster's
+  // own bit for bit (validate_clusters checks). With them and ClusterDecisions::record_flags,
+  // the per-criterion cuts evaluate each distinct record once (a group's record is shared by its
+  // members and by the clusters it produced) instead of twice per cluster; the decisions are
+  // the same.
+  std::span<const float> record_center_x_m, record_center_y_m, record_center_z_m, record_radius_m,
+      record_error_m;
+  std::span<const std::uint32_t> self_record, parent_record;
+  std::span<const std::uint32_t> mesh_first_record, mesh_record_count;
+
   std::size_t size() const { return self_error_m.size(); }
   std::size_t mesh_count() const { return mesh_cluster_count.size(); }
+  std::size_t record_count() const { return record_error_m.size(); }
+  bool has_records() const {
+    return !record_error_m.empty() || !self_record.empty() || !mesh_first_record.empty();
+  }
 };
 
 struct ClusterDecisions {
@@ -94,6 +112,10 @@ struct ClusterDecisions {
   // per-criterion outputs, a self record under an invisible parent is set, not evaluated (the
   // nesting implies it); with them, every record's bits are those of its full evaluation.
   std::span<std::uint8_t> record_invisible;
+  // Optional scratch, one word per distinct record (ClusterSet::record_count): given with the
+  // per-criterion outputs and a set that has its distinct records, each of them is evaluated
+  // once into it (afterwards it holds their outcomes, a bit per criterion: not an interface).
+  std::span<std::uint32_t> record_flags;
 };
 
 // The smallest positive error among the records (+inf if there is none finite): a mesh's
@@ -105,7 +127,8 @@ double finest_cluster_error_m(std::span<const float> self_error_m,
 // field: span lengths, finite centres, radii and errors >= 0 (parent error +inf allowed), self
 // error <= parent error, the parent sphere containing the self sphere (to float rounding) where
 // the parent error is finite, mesh ranges back to back over all clusters, finite velocities,
-// mesh_finest_error_m as above. Linear time: run it at registration, not per frame.
+// mesh_finest_error_m as above; with distinct records, their ranges back to back over all of
+// them and every cluster's two indices inside its mesh's range, on records equal to its own. Linear time: run it at registration, not per frame.
 std::string validate_clusters(const ClusterSet& clusters);
 
 // One frame. Refuses an invalid Viewer, spans of the wrong length or mesh ranges that do not

@@ -355,6 +355,69 @@ void evaluate_records(const ClusterFrame& frame, const ClusterMeshFrame& mesh,
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GAZELOD_NO_CLONES)
 __attribute__((target_clones("default", "arch=x86-64-v3", "arch=x86-64-v4")))
 #endif
+void pack_record_flags(std::size_t count, const RecordBlock& in, std::uint32_t* __restrict flags) {
+GAZELOD_IVDEP
+  for (std::size_t j = 0; j < count; ++j) {
+    const float bits = in.combined[j] + 2.0f * in.size[j] + 4.0f * in.eccentricity[j] +
+                       8.0f * in.velocity[j] + 16.0f * in.positive[j] + 32.0f * in.invalid[j];
+    flags[j] = static_cast<std::uint32_t>(static_cast<std::int32_t>(bits));
+  }
+}
+
+namespace {
+
+template <bool kRecords>
+// The outputs as restrict parameters (see combine_loop: a byte store may alias them).
+[[gnu::always_inline]] inline void combine_flags_loop(std::size_t count, const std::uint32_t* __restrict flags,
+                                                      const std::uint32_t* __restrict self_index,
+                                                      const std::uint32_t* __restrict parent_index,
+                                                      std::uint32_t lo, std::uint32_t hi,
+                                                      std::uint8_t* __restrict drawn, std::uint8_t* __restrict why_out,
+                                                      std::uint8_t* __restrict only_s, std::uint8_t* __restrict only_e,
+                                                      std::uint8_t* __restrict only_v, std::uint8_t* __restrict bits_out) {
+  constexpr auto kNone = static_cast<std::uint32_t>(Criterion::none);
+  constexpr auto kInvalid = static_cast<std::uint32_t>(Criterion::invalid_input);
+GAZELOD_IVDEP
+  for (std::size_t j = 0; j < count; ++j) {
+    // combine_loop's arithmetic on the packed bits (the same limiting_criterion, on 0/1 words).
+    const std::uint32_t sb = flags[std::min(std::max(self_index[j], lo), hi)];
+    const std::uint32_t pb = flags[std::min(std::max(parent_index[j], lo), hi)];
+    const std::uint32_t valid = (((sb | pb) >> 5) & 1u) ^ 1u;
+    const std::uint32_t sc = sb & 1u, pc = pb & 1u;
+    const std::uint32_t draw = sc & (pc ^ 1u) & valid;
+    const std::uint32_t chosen = sc & (sb >> 4) & 1u;  // invisible and positive
+    std::uint32_t why = limiting_criterion<std::uint32_t>(chosen, (sb >> 1) & 1u, (sb >> 2) & 1u, (sb >> 3) & 1u);
+    why = draw != 0u ? why : kNone;
+    why = valid != 0u ? why : kInvalid;
+    const std::uint32_t only = sb & ~pb & (0u - valid);  // per criterion: self invisible, parent not
+    drawn[j] = static_cast<std::uint8_t>(draw);
+    why_out[j] = static_cast<std::uint8_t>(why);
+    only_s[j] = static_cast<std::uint8_t>((only >> 1) & 1u);
+    only_e[j] = static_cast<std::uint8_t>((only >> 2) & 1u);
+    only_v[j] = static_cast<std::uint8_t>((only >> 3) & 1u);
+    if constexpr (kRecords) bits_out[j] = static_cast<std::uint8_t>((sc | (pc << 1)) & (0u - valid));
+  }
+}
+
+}  // namespace
+
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GAZELOD_NO_CLONES)
+__attribute__((target_clones("default", "arch=x86-64-v3", "arch=x86-64-v4")))
+#endif
+void combine_record_flags(std::size_t count, const std::uint32_t* flags, const std::uint32_t* self_index,
+                          const std::uint32_t* parent_index, std::uint32_t lo, std::uint32_t hi,
+                          const ClusterOutput& out) {
+  if (out.record_invisible != nullptr)
+    combine_flags_loop<true>(count, flags, self_index, parent_index, lo, hi, out.drawn, out.limited_by,
+                             out.size_only, out.eccentricity_only, out.velocity_only, out.record_invisible);
+  else
+    combine_flags_loop<false>(count, flags, self_index, parent_index, lo, hi, out.drawn, out.limited_by,
+                              out.size_only, out.eccentricity_only, out.velocity_only, nullptr);
+}
+
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GAZELOD_NO_CLONES)
+__attribute__((target_clones("default", "arch=x86-64-v3", "arch=x86-64-v4")))
+#endif
 void combine_records(std::size_t count, const RecordBlock& self, const RecordBlock& parent,
                      const ClusterOutput& out) {
   const bool per_criterion = out.size_only != nullptr, records = out.record_invisible != nullptr;

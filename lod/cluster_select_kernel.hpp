@@ -117,6 +117,18 @@ void evaluate_records(const ClusterFrame& frame, const ClusterMeshFrame& mesh,
                       bool all_criteria, RecordScreen screen, const float* implied_invisible,
                       RecordBlock& out);
 
+// Distinct records (ClusterSet's record table): evaluated block by block like the per-cluster
+// ones, each record's outcomes packed into one word (pack_record_flags: bit 0 combined, 1 size,
+// 2 eccentricity, 3 velocity, 4 positive, 5 invalid), then combined per cluster from its two
+// records' words (combine_record_flags: combine_records' outputs, the per-criterion ones
+// included, bit for bit), so that a record shared by many clusters is evaluated once. Indices
+// are clamped to [lo, hi] (the mesh's range: data validate_clusters refuses stays in bounds).
+struct ClusterOutput;
+void pack_record_flags(std::size_t count, const RecordBlock& in, std::uint32_t* flags);
+void combine_record_flags(std::size_t count, const std::uint32_t* flags, const std::uint32_t* self_index,
+                          const std::uint32_t* parent_index, std::uint32_t lo, std::uint32_t hi,
+                          const ClusterOutput& out);
+
 // Where combine_records writes (cluster_select.hpp's ClusterDecisions, offset to the block);
 // the per-criterion pointers all null or all set; record_invisible may be null.
 struct ClusterOutput {

@@ -4,8 +4,11 @@
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 
+#include <array>
 #include <cmath>
+#include <cstring>
 #include <limits>
+#include <unordered_map>
 #include <sstream>
 #include <stdexcept>
 
@@ -120,13 +123,60 @@ std::string transform_hierarchy(const ClusterHierarchy& local, const InstanceTra
   return {};
 }
 
-void ClusterStore::write_records(std::size_t f, const ClusterHierarchy& local,
+void ClusterStore::write_records(std::size_t mesh, const ClusterHierarchy& local,
                                  const InstanceTransform& xf) {
+  const std::size_t f = first_[mesh];
   transform_records(local, xf,
                     {self_x_.data() + f, self_y_.data() + f, self_z_.data() + f,
                      self_radius_.data() + f, self_error_.data() + f, parent_x_.data() + f,
                      parent_y_.data() + f, parent_z_.data() + f, parent_radius_.data() + f,
                      parent_error_.data() + f});
+  // The distinct records: copies of the clusters' world records they stand for.
+  for (std::size_t r = rec_first_[mesh]; r < rec_first_[mesh] + rec_count_[mesh]; ++r) {
+    const std::size_t i = rec_source_[r] / 2;
+    const bool parent = rec_source_[r] % 2 == 1;
+    rec_x_[r] = parent ? parent_x_[i] : self_x_[i];
+    rec_y_[r] = parent ? parent_y_[i] : self_y_[i];
+    rec_z_[r] = parent ? parent_z_[i] : self_z_[i];
+    rec_radius_[r] = parent ? parent_radius_[i] : self_radius_[i];
+    rec_error_[r] = parent ? parent_error_[i] : self_error_[i];
+  }
+}
+
+void ClusterStore::index_records(const ClusterHierarchy& h) {
+  // A record's five fields' bits, in the mesh's own space: equal there, equal after any
+  // transform (transform_records is a function of the fields alone).
+  using Key = std::array<std::uint32_t, 5>;
+  struct KeyHash {
+    std::size_t operator()(const Key& k) const {
+      std::uint64_t x = 0x9e3779b97f4a7c15ull;
+      for (std::uint32_t v : k) x = (x ^ v) * 0x100000001b3ull, x ^= x >> 29;
+      return static_cast<std::size_t>(x);
+    }
+  };
+  const auto bits = [](float v) {
+    std::uint32_t u;
+    std::memcpy(&u, &v, sizeof u);
+    return u;
+  };
+  std::unordered_map<Key, std::uint32_t, KeyHash> seen;
+  seen.reserve(h.size());
+  const std::size_t first_cluster = first_.back();
+  const auto first_record = static_cast<std::uint32_t>(rec_error_.size());
+  rec_first_.push_back(first_record);
+  for (std::size_t i = 0; i < h.size(); ++i)
+    for (int which = 0; which < 2; ++which) {  // self, then parent
+      const Key key = which == 0 ? Key{bits(h.self_center_x_m[i]), bits(h.self_center_y_m[i]),
+                                       bits(h.self_center_z_m[i]), bits(h.self_radius_m[i]), bits(h.self_error_m[i])}
+                                 : Key{bits(h.parent_center_x_m[i]), bits(h.parent_center_y_m[i]),
+                                       bits(h.parent_center_z_m[i]), bits(h.parent_radius_m[i]),
+                                       bits(h.parent_error_m[i])};
+      const auto [it, added] = seen.emplace(key, static_cast<std::uint32_t>(rec_source_.size()));
+      if (added) rec_source_.push_back(2 * (first_cluster + i) + static_cast<std::uint64_t>(which));
+      (which == 0 ? self_rec_ : parent_rec_).push_back(it->second);
+    }
+  rec_count_.push_back(static_cast<std::uint32_t>(rec_source_.size() - first_record));
+  for (auto* v : {&rec_x_, &rec_y_, &rec_z_, &rec_radius_, &rec_error_}) v->resize(rec_source_.size());
 }
 
 std::uint32_t ClusterStore::add_mesh(const ClusterHierarchy& local, const InstanceTransform& pose,
@@ -135,7 +185,8 @@ std::uint32_t ClusterStore::add_mesh(const ClusterHierarchy& local, const Instan
     throw std::invalid_argument(e);
   if (std::string e = validate_instance_transform(pose); !e.empty()) throw std::invalid_argument(e);
   if (!finite3(velocity_m_s)) throw std::invalid_argument("velocity is not finite");
-  if (size() + local.size() > std::numeric_limits<std::uint32_t>::max())
+  if (size() + local.size() > std::numeric_limits<std::uint32_t>::max() ||
+      record_count() + 2 * local.size() > std::numeric_limits<std::uint32_t>::max())
     throw std::invalid_argument("more clusters than a uint32 counts");
   ClusterHierarchy world;  // checked before the store grows, so a refusal leaves it unchanged
   transform_hierarchy(local, pose, world);
@@ -146,10 +197,11 @@ std::uint32_t ClusterStore::add_mesh(const ClusterHierarchy& local, const Instan
   for (auto* v : {&self_x_, &self_y_, &self_z_, &self_radius_, &self_error_, &parent_x_,
                   &parent_y_, &parent_z_, &parent_radius_, &parent_error_})
     v->resize(f + local.size());
-  write_records(f, local, pose);
   const auto id = static_cast<std::uint32_t>(count_.size());
   first_.push_back(static_cast<std::uint32_t>(f));
   count_.push_back(static_cast<std::uint32_t>(local.size()));
+  index_records(local);
+  write_records(id, local, pose);
   vel_x_.push_back(velocity_m_s.x), vel_y_.push_back(velocity_m_s.y), vel_z_.push_back(velocity_m_s.z);
   finest_.push_back(finest_cluster_error_m(world.self_error_m, world.parent_error_m));
   return id;
@@ -164,7 +216,7 @@ void ClusterStore::set_pose(std::uint32_t mesh, const ClusterHierarchy& local,
                                 std::to_string(count_[mesh]));
   if (std::string e = validate_instance_transform(pose); !e.empty()) throw std::invalid_argument(e);
   if (!finite3(velocity_m_s)) throw std::invalid_argument("velocity is not finite");
-  write_records(first_[mesh], local, pose);
+  write_records(mesh, local, pose);
   vel_x_[mesh] = velocity_m_s.x, vel_y_[mesh] = velocity_m_s.y, vel_z_[mesh] = velocity_m_s.z;
   // The scale may have changed: the finest error with it (linear in this mesh's clusters).
   const std::size_t f = first_[mesh], n = count_[mesh];
@@ -177,13 +229,16 @@ void ClusterStore::reserve(std::size_t meshes, std::size_t clusters) {
     v->reserve(clusters);
   first_.reserve(meshes), count_.reserve(meshes);
   for (auto* v : {&vel_x_, &vel_y_, &vel_z_, &finest_}) v->reserve(meshes);
+  self_rec_.reserve(clusters), parent_rec_.reserve(clusters);
+  rec_first_.reserve(meshes), rec_count_.reserve(meshes);
 }
 
 ClusterSet ClusterStore::view() const {
   return ClusterSet{self_x_,   self_y_,   self_z_,   self_radius_,   self_error_,
                     parent_x_, parent_y_, parent_z_, parent_radius_, parent_error_,
                     first_,    count_,    vel_x_,    vel_y_,         vel_z_,
-                    finest_};
+                    finest_,   rec_x_,    rec_y_,    rec_z_,         rec_radius_,
+                    rec_error_, self_rec_, parent_rec_, rec_first_,  rec_count_};
 }
 
 }  // namespace gazelod::lod

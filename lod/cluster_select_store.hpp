@@ -45,7 +45,9 @@ std::string validate_cluster_hierarchy(const ClusterHierarchy& hierarchy,
 std::string transform_hierarchy(const ClusterHierarchy& local, const InstanceTransform& xf,
                                 ClusterHierarchy& world);
 
-// Owns the arrays behind a ClusterSet: meshes' clusters back to back in registration order.
+// Owns the arrays behind a ClusterSet: meshes' clusters back to back in registration order,
+// with the set's distinct records (ClusterSet::record_*: records equal bit for bit in a mesh's
+// own space are one record, so equal in world space too).
 class ClusterStore {
  public:
   // Validates local (validate_cluster_hierarchy), then its records in world space, and appends
@@ -59,15 +61,21 @@ class ClusterStore {
   void reserve(std::size_t meshes, std::size_t clusters);
   std::size_t size() const { return self_error_.size(); }
   std::size_t mesh_count() const { return count_.size(); }
+  std::size_t record_count() const { return rec_error_.size(); }
   std::uint32_t first_cluster(std::uint32_t mesh) const { return first_.at(mesh); }
   ClusterSet view() const;
 
  private:
-  void write_records(std::size_t first, const ClusterHierarchy& local, const InstanceTransform& xf);
+  void write_records(std::size_t mesh, const ClusterHierarchy& local, const InstanceTransform& xf);
+  void index_records(const ClusterHierarchy& local);  // appends the new last mesh's distinct records
   std::vector<float> self_x_, self_y_, self_z_, self_radius_, self_error_;
   std::vector<float> parent_x_, parent_y_, parent_z_, parent_radius_, parent_error_;
   std::vector<std::uint32_t> first_, count_;
   std::vector<double> vel_x_, vel_y_, vel_z_, finest_;
+  std::vector<float> rec_x_, rec_y_, rec_z_, rec_radius_, rec_error_;  // distinct records
+  std::vector<std::uint32_t> self_rec_, parent_rec_;   // per cluster
+  std::vector<std::uint32_t> rec_first_, rec_count_;   // per mesh
+  std::vector<std::uint64_t> rec_source_;  // per record: 2 x cluster (+1 for its parent record)
 };
 
 }  // namespace gazelod::lod

@@ -87,7 +87,12 @@ nlohmann::json side_json(const ClusterEvalSide& s) {
           {"in_view_triangles_per_frame", s.in_view_triangles_per_frame},
           {"audit_unit_frames", s.audit_unit_frames},
           {"visible_degradations_share", s.degraded_share},
-          {"switches_per_unit_second", s.switches_per_unit_s}};
+          {"switches_per_unit_second", s.switches_per_unit_s},
+          {"oracle_in_view_triangles_per_frame",
+           {{"all", s.oracle_in_view_per_frame},
+            {"size_alone", s.oracle_size_only_per_frame},
+            {"eccentricity_alone", s.oracle_eccentricity_only_per_frame},
+            {"velocity_alone", s.oracle_velocity_only_per_frame}}}};
 }
 
 // Means over bins of consecutive frames, at most `points` of them (a long run's SVG stays small
@@ -132,6 +137,13 @@ ClusterEvalSide read_cluster_eval_side(const std::filesystem::path& dir, bool cl
   s.audit_unit_frames = static_cast<std::int64_t>(number_at(j, audit + "/visible_degradations/" + unit + "_frames", src));
   s.degraded_share = number_at(j, audit + "/visible_degradations/share", src);
   s.switches_per_unit_s = number_at(j, audit + "/switches/outside_suppression/per_" + unit + "_second", src);
+  if (clusters) {
+    const std::string t = audit + "/triangles_in_view/";
+    s.oracle_in_view_per_frame = number_at(j, t + "oracle", src) / frames;
+    s.oracle_size_only_per_frame = number_at(j, t + "oracle_by_criterion_alone/size", src) / frames;
+    s.oracle_eccentricity_only_per_frame = number_at(j, t + "oracle_by_criterion_alone/eccentricity", src) / frames;
+    s.oracle_velocity_only_per_frame = number_at(j, t + "oracle_by_criterion_alone/velocity", src) / frames;
+  }
   read_frames_csv(dir / "frames.csv", clusters ? "cluster_triangles_drawn" : "triangles_drawn", s);
   return s;
 }
@@ -223,6 +235,12 @@ std::string cluster_eval_markdown(const ClusterEvalReport& r) {
     md << (r.target_met() ? "met" : "MISSED") << " (ratio " << fmt("%.3f", r.triangle_ratio(kClustersColumn, kPerObjectColumn))
        << ", degradations " << fmt("%.3f%%", 100 * k.side->degraded_share) << "; in the first eye's view "
        << fmt("%.3f", r.triangle_ratio(kClustersColumn, kPerObjectColumn, true)) << ")\n";
+  if (k.side)
+    md << "\nThe cluster oracle (the cut at the true gaze) in the first eye's view, triangles per frame: "
+       << fmt("%.0f", k.side->oracle_in_view_per_frame) << " with every criterion; each alone: size "
+       << fmt("%.0f", k.side->oracle_size_only_per_frame) << ", eccentricity "
+       << fmt("%.0f", k.side->oracle_eccentricity_only_per_frame) << ", velocity "
+       << fmt("%.0f", k.side->oracle_velocity_only_per_frame) << "\n";
   return md.str();
 }
 

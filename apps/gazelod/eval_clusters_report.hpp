@@ -31,6 +31,11 @@ struct ClusterEvalSide {
   std::int64_t audit_unit_frames = 0;     // object-frames or leaf-cluster-frames outside suppression
   double degraded_share = 0.0;            // of those, drawn coarser than the oracle allows
   double switches_per_unit_s = 0.0;       // outside suppression
+  // Cluster runs only (0 otherwise): the oracle's cut in view under size / eccentricity /
+  // velocity alone, and under all of them, triangles per frame (what each criterion buys at the
+  // true gaze, on the run's display).
+  double oracle_in_view_per_frame = 0.0, oracle_size_only_per_frame = 0.0,
+         oracle_eccentricity_only_per_frame = 0.0, oracle_velocity_only_per_frame = 0.0;
   std::vector<double> t_s, triangles;     // per frame (frames.csv)
 };
 

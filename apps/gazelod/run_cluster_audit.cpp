@@ -64,7 +64,9 @@ ClusterAuditOracle::ClusterAuditOracle(const ClusterScene& scene) {
   oracle_cover_.resize(drawn_cover_.size());
   previous_cover_.assign(drawn_cover_.size(), kNoCluster);
   leaf_in_view_.assign(drawn_cover_.size(), 0);
-  for (auto* v : {&oracle_drawn_, &limited_, &in_view_}) v->assign(store_.size(), 0);
+  for (auto* v : {&oracle_drawn_, &limited_, &in_view_, &size_only_, &eccentricity_only_, &velocity_only_})
+    v->assign(store_.size(), 0);
+  record_flags_.assign(store_.record_count(), 0);
 }
 
 void ClusterAuditOracle::set_pose(std::size_t mesh, const lod::InstanceTransform& pose, const glm::dvec3& velocity_m_s) {
@@ -85,6 +87,10 @@ ClusterAuditFrame ClusterAuditOracle::audit(const lod::Viewer& truth, const glm:
   lod::ClusterDecisions out;
   out.drawn = oracle_drawn_;
   out.limited_by = limited_;
+  out.drawn_size_only = size_only_;
+  out.drawn_eccentricity_only = eccentricity_only_;
+  out.drawn_velocity_only = velocity_only_;
+  out.record_flags = record_flags_;
   if (std::string err = lod::select_clusters(truth, set, out); !err.empty()) {
     if (error) *error = err;
     return f;
@@ -115,6 +121,9 @@ ClusterAuditFrame ClusterAuditOracle::audit(const lod::Viewer& truth, const glm:
       if (!in_view_[c]) continue;
       if (drawn[c]) f.drawn_triangles += triangles_[c];
       if (oracle_drawn_[c]) f.oracle_triangles += triangles_[c];
+      if (size_only_[c]) f.oracle_size_only_triangles += triangles_[c];
+      if (eccentricity_only_[c]) f.oracle_eccentricity_only_triangles += triangles_[c];
+      if (velocity_only_[c]) f.oracle_velocity_only_triangles += triangles_[c];
     }
     for (std::size_t k = 0; k < leaves.size(); ++k) previous_cover_[lf + k] = dc[k].cluster;
   }
@@ -132,6 +141,9 @@ ClusterAuditSummary summarize_cluster_audit(std::span<const ClusterAuditFrame> f
     ++s.frames;
     s.drawn_triangles += f.drawn_triangles;
     s.oracle_triangles += f.oracle_triangles;
+    s.oracle_size_only_triangles += f.oracle_size_only_triangles;
+    s.oracle_eccentricity_only_triangles += f.oracle_eccentricity_only_triangles;
+    s.oracle_velocity_only_triangles += f.oracle_velocity_only_triangles;
     s.miscovered += f.miscovered;
     if (f.suppressed) {
       s.leaf_frames_suppressed += f.leaves_in_view;
@@ -172,7 +184,13 @@ nlohmann::json cluster_audit_json(const ClusterAuditSummary& s) {
             {"excess_depth_max", s.excess_depth_max}}},
           {"suppressed_degradations", {{"leaf_frames", s.leaf_frames_suppressed}, {"degraded", s.degraded_suppressed}}},
           {"triangles_in_view",
-           {{"drawn", s.drawn_triangles}, {"oracle", s.oracle_triangles}, {"drawn_over_oracle", s.triangle_ratio}}},
+           {{"drawn", s.drawn_triangles},
+            {"oracle", s.oracle_triangles},
+            {"drawn_over_oracle", s.triangle_ratio},
+            {"oracle_by_criterion_alone",
+             {{"size", s.oracle_size_only_triangles},
+              {"eccentricity", s.oracle_eccentricity_only_triangles},
+              {"velocity", s.oracle_velocity_only_triangles}}}}},
           {"switches",
            {{"outside_suppression", rate(s.switches_fixation, s.leaf_s_fixation, s.switches_per_leaf_s_fixation)},
             {"inside_suppression", rate(s.switches_suppressed, s.leaf_s_suppressed, s.switches_per_leaf_s_suppressed)}}},
@@ -194,6 +212,13 @@ void print_cluster_audit(const ClusterAuditSummary& s, std::ostream& out) {
   std::snprintf(line, sizeof line, "cluster audit   triangles in view drawn / oracle %.3f (%llu / %llu)\n",
                 s.triangle_ratio, static_cast<unsigned long long>(s.drawn_triangles),
                 static_cast<unsigned long long>(s.oracle_triangles));
+  out << line;
+  std::snprintf(line, sizeof line,
+                "cluster audit   oracle triangles in view, each criterion alone: size %llu, eccentricity %llu, "
+                "velocity %llu\n",
+                static_cast<unsigned long long>(s.oracle_size_only_triangles),
+                static_cast<unsigned long long>(s.oracle_eccentricity_only_triangles),
+                static_cast<unsigned long long>(s.oracle_velocity_only_triangles));
   out << line;
   std::snprintf(line, sizeof line,
                 "cluster audit   cluster switches per leaf-second %.3f outside suppression, %.3f inside\n",

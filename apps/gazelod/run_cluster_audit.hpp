@@ -8,7 +8,9 @@
 //             self error than the oracle's cluster over it: drawn coarser than the true gaze
 //             allows (a finding only outside suppression, as for objects);
 //   switch    the cluster over the leaf differs from the previous frame's;
-// and the triangles of the drawn and the oracle's clusters whose self sphere is in view. Every
+// and the triangles of the drawn and the oracle's clusters whose self sphere is in view, and of
+// the oracle's cut under each criterion alone (lod::select_clusters' per-criterion cuts, at the
+// same true eye state: what size, eccentricity and velocity each buy on the run's display). Every
 // frame also checks the drawn cut of each mesh: leaves not covered exactly once (cracks or
 // overlaps; the plugin promises none) are counted over all leaves.
 #pragma once
@@ -40,6 +42,9 @@ struct ClusterAuditFrame {
   std::uint32_t excess_depth_max = 0;
   std::uint64_t drawn_triangles = 0;   // in view (self sphere), per eye
   std::uint64_t oracle_triangles = 0;
+  // The oracle's cut under size / eccentricity / velocity alone, in view, per eye.
+  std::uint64_t oracle_size_only_triangles = 0, oracle_eccentricity_only_triangles = 0,
+                oracle_velocity_only_triangles = 0;
   std::int64_t switches = 0;           // in-view leaves whose cluster changed since the previous frame
   double leaf_s = 0.0;                 // in-view leaves x the time since the previous frame
   std::int64_t miscovered = 0;         // leaves (in view or not) not covered exactly once by the drawn cut
@@ -87,6 +92,8 @@ class ClusterAuditOracle {
   std::vector<std::uint32_t> triangles_;        // per cluster
   std::vector<std::uint8_t> depth_;             // per cluster
   std::vector<std::uint8_t> oracle_drawn_, limited_, in_view_, leaf_in_view_;
+  std::vector<std::uint8_t> size_only_, eccentricity_only_, velocity_only_;  // per cluster
+  std::vector<std::uint32_t> record_flags_;  // per distinct record: the selection's scratch
   std::vector<LeafCover> drawn_cover_, oracle_cover_;  // per leaf
   std::vector<std::uint32_t> previous_cover_;          // per leaf
   bool first_frame_ = true;
@@ -103,6 +110,8 @@ struct ClusterAuditSummary {
   std::uint32_t excess_depth_max = 0;
   std::int64_t leaf_frames_suppressed = 0, degraded_suppressed = 0;
   std::uint64_t drawn_triangles = 0, oracle_triangles = 0;
+  std::uint64_t oracle_size_only_triangles = 0, oracle_eccentricity_only_triangles = 0,
+                oracle_velocity_only_triangles = 0;
   double triangle_ratio = 0.0;         // drawn / oracle (0 when the oracle drew none)
   std::int64_t switches_fixation = 0, switches_suppressed = 0;
   double leaf_s_fixation = 0.0, leaf_s_suppressed = 0.0;

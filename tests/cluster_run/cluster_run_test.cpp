@@ -146,6 +146,14 @@ TEST_F(ClusterRun, NoRenderRunReportsClusterFiguresAndTheirAudit) {
   EXPECT_TRUE(std::isfinite(ratio));
   EXPECT_GT(ratio, 0.0);
   EXPECT_EQ(audit.at("miscovered_leaf_frames").get<std::int64_t>(), 0);
+  // The oracle's cut under each criterion alone: reported, some triangles, none above full.
+  const auto& alone = audit.at("triangles_in_view").at("oracle_by_criterion_alone");
+  for (const char* k : {"size", "eccentricity", "velocity"}) {
+    EXPECT_GT(alone.at(k).get<std::uint64_t>(), 0u) << k;
+    EXPECT_LE(alone.at(k).get<std::uint64_t>(), full) << k;
+  }
+  EXPECT_NE(r.out.find("cluster audit   oracle triangles in view, each criterion alone: size "), std::string::npos)
+      << r.out;
   const std::string svg = read_text(out / "audit.svg");
   for (const char* panel : {"in-view cluster leaves", "leaf switches per frame", "cluster triangles in view"})
     EXPECT_NE(svg.find(panel), std::string::npos) << "audit.svg has the cluster panel " << panel;

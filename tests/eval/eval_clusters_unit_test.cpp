@@ -47,7 +47,11 @@ TEST(EvalClustersBaseline, ChainBecomesOneClusterPerLevel) {
 TEST(EvalClustersReport, ReadsASideAndNamesWhatIsMissing) {
   const auto dir = scratch("read");
   nlohmann::json audit = {{"available", true},
-                          {"triangles_in_view", {{"drawn_over_oracle", 1.25}, {"drawn", 120}}},
+                          {"triangles_in_view",
+                           {{"drawn_over_oracle", 1.25},
+                            {"drawn", 120},
+                            {"oracle", 96},
+                            {"oracle_by_criterion_alone", {{"size", 300}, {"eccentricity", 200}, {"velocity", 500}}}}},
                           {"visible_degradations", {{"object_frames", 40}, {"leaf_frames", 400}, {"share", 0.01}}},
                           {"switches", {{"outside_suppression", {{"per_object_second", 0.5}, {"per_leaf_second", 0.7}}}}}};
   nlohmann::json j = {{"frames", 2}, {"triangles_drawn", 300}, {"triangles_full", 1000}, {"audit", audit}};
@@ -75,6 +79,11 @@ TEST(EvalClustersReport, ReadsASideAndNamesWhatIsMissing) {
   EXPECT_EQ(k.audit_unit_frames, 400);
   EXPECT_DOUBLE_EQ(k.triangles_per_frame, 30.0);
   EXPECT_EQ(k.triangles, (std::vector<double>{10, 30}));
+  EXPECT_DOUBLE_EQ(k.oracle_in_view_per_frame, 48.0);
+  EXPECT_DOUBLE_EQ(k.oracle_size_only_per_frame, 150.0);
+  EXPECT_DOUBLE_EQ(k.oracle_eccentricity_only_per_frame, 100.0);
+  EXPECT_DOUBLE_EQ(k.oracle_velocity_only_per_frame, 250.0);
+  EXPECT_DOUBLE_EQ(s.oracle_size_only_per_frame, 0.0) << "the per-object side has no per-criterion oracle";
   // A missing field, a bad cell: the path and the line.
   j["clusters"]["audit"].erase("switches");
   std::ofstream(dir / "summary.json") << j.dump();

@@ -243,6 +243,48 @@ TEST(ClusterStore, TransformAndMovingMeshes) {
   EXPECT_EQ(placed.size(), t.h.size());
 }
 
+TEST(ClusterStore, DistinctRecordsFollowMovesAndBadTablesAreNamed) {
+  const test::TestTree t = test::make_tree({4, true, 2}, 5);
+  ClusterStore store;
+  store.add_mesh(t.h, {}, {}, 3 * t.h.size());
+  store.add_mesh(t.h, {}, {}, 3 * t.h.size());
+  InstanceTransform xf;
+  xf.rotation = glm::angleAxis(0.7, glm::normalize(glm::dvec3{1, 2, 3}));
+  xf.translation_m = {10.0, -2.0, 5.0};
+  xf.scale = 2.5;
+  store.set_pose(1, t.h, xf, {0.5, 0.0, 0.0});
+  const ClusterSet cs = store.view();
+  // Equal records per mesh (the two meshes' are apart: their velocities and size caps differ).
+  EXPECT_EQ(cs.mesh_record_count[0], cs.mesh_record_count[1]);
+  EXPECT_LT(cs.mesh_record_count[0], 2 * t.h.size());
+  EXPECT_EQ(validate_clusters(cs), "") << "the moved mesh's records were re-transformed with it";
+  // A table that no longer matches its clusters, or points outside its mesh, is named.
+  std::vector<float> err(cs.record_error_m.begin(), cs.record_error_m.end());
+  std::vector<std::uint32_t> parent(cs.parent_record.begin(), cs.parent_record.end());
+  ClusterSet spoiled = cs;
+  err[cs.parent_record[2]] += 1.0f;
+  spoiled.record_error_m = err;
+  EXPECT_NE(validate_clusters(spoiled).find("differs from the cluster's own"), std::string::npos)
+      << validate_clusters(spoiled);
+  spoiled = cs;
+  parent[0] = cs.mesh_first_record[1];
+  spoiled.parent_record = parent;
+  EXPECT_NE(validate_clusters(spoiled).find("cluster 0: parent_record " + std::to_string(parent[0]) +
+                                            " is outside its mesh's records"),
+            std::string::npos)
+      << validate_clusters(spoiled);
+  // Per frame the same index only stays in bounds: no crash, bytes in range.
+  std::vector<std::uint8_t> d(cs.size()), w(cs.size()), a(cs.size()), b(cs.size()), c(cs.size());
+  std::vector<std::uint32_t> flags(cs.record_count());
+  ClusterDecisions out{d, w, a, b, c, {}, flags};
+  EXPECT_EQ(select_clusters(Viewer{}, spoiled, out), "");
+  for (std::uint8_t v : w) ASSERT_LE(v, static_cast<std::uint8_t>(Criterion::invalid_input));
+  // Lengths: a table missing a mesh's range is refused per frame.
+  spoiled = cs;
+  spoiled.mesh_record_count = spoiled.mesh_record_count.first(1);
+  EXPECT_NE(select_clusters(Viewer{}, spoiled, out).find("mesh record arrays differ in length"), std::string::npos);
+}
+
 TEST(ClusterStore, HierarchyValidationChecksTriangleRanges) {
   test::TestTree t = test::make_tree({2, false, 1}, 1);
   const std::size_t n = t.h.size();

@@ -119,6 +119,43 @@ TEST(ClusterSelect, CutIsConsistentUnderRandomViewers) {
   EXPECT_GT(mixed, 450u);  // of 900: most cuts are not one level across the mesh
 }
 
+TEST(ClusterSelect, DistinctRecordsGiveTheSameDecisions) {
+  // The per-criterion cuts over the store's distinct records (each evaluated once, then
+  // gathered per cluster) against the same cuts evaluated per cluster: every output equal.
+  const Scene sc = make_scene({{8, false, 1}, {5, true, 2}, {4, true, 1, 0.3, 0.002, 0.3}}, 11);
+  const ClusterSet cs = sc.store.view();
+  ASSERT_EQ(validate_clusters(cs), "");
+  ASSERT_TRUE(cs.has_records());
+  // A group's record is shared by its members and the clusters it produced: far fewer
+  // distinct records than the two per cluster.
+  EXPECT_LT(cs.record_count(), cs.size() * 3 / 2) << cs.record_count() << " records, " << cs.size() << " clusters";
+  ClusterSet per_cluster = cs;
+  per_cluster.record_center_x_m = {}, per_cluster.record_center_y_m = {}, per_cluster.record_center_z_m = {};
+  per_cluster.record_radius_m = {}, per_cluster.record_error_m = {};
+  per_cluster.self_record = {}, per_cluster.parent_record = {};
+  per_cluster.mesh_first_record = {}, per_cluster.mesh_record_count = {};
+  ASSERT_FALSE(per_cluster.has_records());
+  std::mt19937_64 rng(17);
+  std::vector<std::uint32_t> flags(cs.record_count());
+  std::size_t drawn = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const Viewer vw = random_viewer(rng, cs);
+    Out a(cs.size()), b(cs.size());
+    ClusterDecisions by_record = a.all();
+    by_record.record_flags = flags;
+    ASSERT_EQ(select_clusters(vw, cs, by_record), "");
+    ASSERT_EQ(select_clusters(vw, per_cluster, b.all()), "");
+    ASSERT_EQ(a.drawn, b.drawn) << "trial " << trial;
+    ASSERT_EQ(a.why, b.why) << "trial " << trial;
+    ASSERT_EQ(a.s, b.s) << "trial " << trial;
+    ASSERT_EQ(a.e, b.e) << "trial " << trial;
+    ASSERT_EQ(a.v, b.v) << "trial " << trial;
+    ASSERT_EQ(a.bits, b.bits) << "trial " << trial;
+    drawn += static_cast<std::size_t>(std::count(a.drawn.begin(), a.drawn.end(), 1));
+  }
+  EXPECT_GT(drawn, 300u);
+}
+
 TEST(ClusterSelect, ShuffledClustersGiveTheSameDecisions) {
   // Where a record sits (which block, gathered or not, which vector lane) must not change its
   // decision.

@@ -73,10 +73,11 @@ std::string check_lengths(const ClusterSet& c) {
     return "mesh record arrays differ in length (mesh_cluster_count has " + std::to_string(m) + ")";
   next = 0;
   for (std::size_t k = 0; k < m; ++k) {
-    if (c.mesh_first_record[k] != next || (c.mesh_record_count[k] == 0 && c.mesh_cluster_count[k] > 0))
+    if (c.mesh_first_record[k] != next || (c.mesh_record_count[k] == 0 && c.mesh_cluster_count[k] > 0) ||
+        c.mesh_record_count[k] > std::uint32_t{std::numeric_limits<std::int32_t>::max()})
       return "mesh " + std::to_string(k) + ": its record range [" + std::to_string(c.mesh_first_record[k]) +
              ", +" + std::to_string(c.mesh_record_count[k]) + ") must start at " + std::to_string(next) +
-             " and hold a record where the mesh has clusters";
+             " and hold a record where the mesh has clusters (at most 2^31 - 1)";
     next += c.mesh_record_count[k];
   }
   if (next != r)
@@ -261,7 +262,7 @@ std::string select_clusters(const Viewer& viewer, const ClusterSet& c, const Clu
   if (records && out.record_invisible.size() < n)
     return "decisions: record_invisible is shorter than the cluster count";
 
-  const bool by_record = per_criterion && c.has_records() && out.record_flags.size() >= c.record_count();
+  const bool by_record = c.has_records() && out.record_flags.size() >= c.record_count();
 
   const detail::ClusterFrame frame = detail::make_cluster_frame(viewer);
   const detail::RecordInput self_in{c.self_center_x_m.data(), c.self_center_y_m.data(),
@@ -278,12 +279,13 @@ std::string select_clusters(const Viewer& viewer, const ClusterSet& c, const Clu
     const detail::ClusterMeshFrame mesh = detail::make_cluster_mesh_frame(viewer, c, k);
     const std::size_t end = std::size_t{c.mesh_first_cluster[k]} + c.mesh_cluster_count[k];
     if (by_record && end > c.mesh_first_cluster[k]) {
-      // Each distinct record once (fully: every criterion's outcome), then every cluster from
-      // its two records' outcomes.
+      // Each distinct record once (with the per-criterion cuts: every criterion's outcome;
+      // without: the size screen, as below), then every cluster from its two records' outcomes.
       const std::size_t lo = c.mesh_first_record[k], hi = lo + c.mesh_record_count[k];
       for (std::size_t base = lo; base < hi; base += detail::kClusterBlock) {
         const std::size_t m = std::min(detail::kClusterBlock, hi - base);
-        detail::evaluate_records(frame, mesh, table_in, base, m, true, detail::RecordScreen::trivial,
+        detail::evaluate_records(frame, mesh, table_in, base, m, true,
+                                 per_criterion ? detail::RecordScreen::trivial : detail::RecordScreen::by_size,
                                  nullptr, self_blk);
         detail::pack_record_flags(m, self_blk, out.record_flags.data() + base);
       }
@@ -292,7 +294,7 @@ std::string select_clusters(const Viewer& viewer, const ClusterSet& c, const Clu
         const std::size_t m = std::min(detail::kClusterBlock, end - base);
         detail::combine_record_flags(m, out.record_flags.data(), c.self_record.data() + base,
                                      c.parent_record.data() + base, first, last,
-                                     output_at(out, base, true, records));
+                                     output_at(out, base, per_criterion, records));
       }
       continue;
     }

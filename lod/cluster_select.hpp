@@ -8,8 +8,8 @@
 //   ClusterDecisions out{drawn, limited_by};           // caller-owned spans of n bytes
 //   std::string err = select_clusters(viewer, store.view(), out);  // per frame, "" on success
 //   draw cluster i when drawn[i] == 1.
-//   With the per-criterion cuts (drawn_size_only, ...), also give out.record_flags
-//   (store.record_count() words of scratch): each distinct record is then evaluated once.
+//   With out.record_flags (store.record_count() words of scratch) each distinct record is
+//   evaluated once (ClusterSet::record_*), the faster path; without, two records per cluster.
 // (A ClusterSet assembled otherwise: validate_clusters once at registration.) Per frame: no
 // allocation, about 40 KiB of stack, linear time.
 //
@@ -85,10 +85,10 @@ struct ClusterSet {
   // Optional, all or none (ClusterStore fills them): the set's distinct records, each mesh's
   // back to back (mesh m's are [mesh_first_record[m], + mesh_record_count[m])), and per cluster
   // the index of its self and of its parent record among them, whose fields equal the cluster's
-  // own bit for bit (validate_clusters checks). With them and ClusterDecisions::record_flags,
-  // the per-criterion cuts evaluate each distinct record once (a group's record is shared by its
-  // members and by the clusters it produced) instead of twice per cluster; the decisions are
-  // the same.
+  // own bit for bit (validate_clusters checks; at most 2^31 - 1 records per mesh). With them and
+  // ClusterDecisions::record_flags, select_clusters evaluates each distinct record once (a
+  // group's record is shared by its members and by the clusters it produced) instead of twice
+  // per cluster; every output is the same.
   std::span<const float> record_center_x_m, record_center_y_m, record_center_z_m, record_radius_m,
       record_error_m;
   std::span<const std::uint32_t> self_record, parent_record;
@@ -112,9 +112,9 @@ struct ClusterDecisions {
   // per-criterion outputs, a self record under an invisible parent is set, not evaluated (the
   // nesting implies it); with them, every record's bits are those of its full evaluation.
   std::span<std::uint8_t> record_invisible;
-  // Optional scratch, one word per distinct record (ClusterSet::record_count): given with the
-  // per-criterion outputs and a set that has its distinct records, each of them is evaluated
-  // once into it (afterwards it holds their outcomes, a bit per criterion: not an interface).
+  // Optional scratch, one word per distinct record (ClusterSet::record_count): given for a set
+  // that has its distinct records, each of them is evaluated once into it (afterwards it holds
+  // their outcomes, a bit per criterion: not an interface).
   std::span<std::uint32_t> record_flags;
 };
 

@@ -366,8 +366,8 @@ GAZELOD_IVDEP
 
 namespace {
 
-template <bool kRecords>
 // The outputs as restrict parameters (see combine_loop: a byte store may alias them).
+template <bool kPerCriterion, bool kRecords>
 [[gnu::always_inline]] inline void combine_flags_loop(std::size_t count, const std::uint32_t* __restrict flags,
                                                       const std::uint32_t* __restrict self_index,
                                                       const std::uint32_t* __restrict parent_index,
@@ -380,8 +380,11 @@ template <bool kRecords>
 GAZELOD_IVDEP
   for (std::size_t j = 0; j < count; ++j) {
     // combine_loop's arithmetic on the packed bits (the same limiting_criterion, on 0/1 words).
-    const std::uint32_t sb = flags[std::min(std::max(self_index[j], lo), hi)];
-    const std::uint32_t pb = flags[std::min(std::max(parent_index[j], lo), hi)];
+    // Offsets from the mesh's first record, as int32 (what a vector gather takes).
+    const auto self_at = static_cast<std::int32_t>(std::min(std::max(self_index[j], lo), hi) - lo);
+    const auto parent_at = static_cast<std::int32_t>(std::min(std::max(parent_index[j], lo), hi) - lo);
+    const std::uint32_t sb = flags[self_at];
+    const std::uint32_t pb = flags[parent_at];
     const std::uint32_t valid = (((sb | pb) >> 5) & 1u) ^ 1u;
     const std::uint32_t sc = sb & 1u, pc = pb & 1u;
     const std::uint32_t draw = sc & (pc ^ 1u) & valid;
@@ -392,10 +395,15 @@ GAZELOD_IVDEP
     const std::uint32_t only = sb & ~pb & (0u - valid);  // per criterion: self invisible, parent not
     drawn[j] = static_cast<std::uint8_t>(draw);
     why_out[j] = static_cast<std::uint8_t>(why);
-    only_s[j] = static_cast<std::uint8_t>((only >> 1) & 1u);
-    only_e[j] = static_cast<std::uint8_t>((only >> 2) & 1u);
-    only_v[j] = static_cast<std::uint8_t>((only >> 3) & 1u);
-    if constexpr (kRecords) bits_out[j] = static_cast<std::uint8_t>((sc | (pc << 1)) & (0u - valid));
+    if constexpr (kPerCriterion) {
+      only_s[j] = static_cast<std::uint8_t>((only >> 1) & 1u);
+      only_e[j] = static_cast<std::uint8_t>((only >> 2) & 1u);
+      only_v[j] = static_cast<std::uint8_t>((only >> 3) & 1u);
+    }
+    // Without the per-criterion cuts, a self record under an invisible parent is set (the
+    // nesting), as the per-cluster path does.
+    const std::uint32_t sc_set = kPerCriterion ? sc : sc | pc;
+    if constexpr (kRecords) bits_out[j] = static_cast<std::uint8_t>((sc_set | (pc << 1)) & (0u - valid));
   }
 }
 
@@ -407,12 +415,14 @@ __attribute__((target_clones("default", "arch=x86-64-v3", "arch=x86-64-v4")))
 void combine_record_flags(std::size_t count, const std::uint32_t* flags, const std::uint32_t* self_index,
                           const std::uint32_t* parent_index, std::uint32_t lo, std::uint32_t hi,
                           const ClusterOutput& out) {
-  if (out.record_invisible != nullptr)
-    combine_flags_loop<true>(count, flags, self_index, parent_index, lo, hi, out.drawn, out.limited_by,
-                             out.size_only, out.eccentricity_only, out.velocity_only, out.record_invisible);
-  else
-    combine_flags_loop<false>(count, flags, self_index, parent_index, lo, hi, out.drawn, out.limited_by,
-                              out.size_only, out.eccentricity_only, out.velocity_only, nullptr);
+  const auto run = [&]<bool kPerCriterion, bool kRecords>() {
+    combine_flags_loop<kPerCriterion, kRecords>(count, flags + lo, self_index, parent_index, lo, hi, out.drawn,
+                                                out.limited_by, out.size_only, out.eccentricity_only,
+                                                out.velocity_only, out.record_invisible);
+  };
+  const bool per_criterion = out.size_only != nullptr, records = out.record_invisible != nullptr;
+  if (per_criterion) records ? run.operator()<true, true>() : run.operator()<true, false>();
+  else records ? run.operator()<false, true>() : run.operator()<false, false>();
 }
 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GAZELOD_NO_CLONES)

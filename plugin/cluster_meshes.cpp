@@ -15,6 +15,7 @@ std::uint32_t ClusterMeshes::add(const ClusterMeshDesc& desc) {
   first_.push_back(static_cast<std::uint32_t>(first));
   local_.push_back(desc.hierarchy);
   for (auto* v : {&perceptual_, &limited_, &invisible_, &drawn_, &held_, &record_held_}) v->resize(n, 0);
+  record_flags_.resize(store_.record_count(), 0);
   self_window_s_.resize(n, 0.0);
   parent_window_s_.resize(n, 0.0);
   const lod::ClusterSet set = store_.view();
@@ -55,7 +56,7 @@ void ClusterMeshes::update(const lod::Viewer& viewer, const lod::SwitchPolicyCon
   policy_used_ = policy != nullptr;
   if (n == 0) return;
   const lod::ClusterSet set = store_.view();
-  const lod::ClusterDecisions out{perceptual_, limited_, {}, {}, {}, invisible_};
+  const lod::ClusterDecisions out{perceptual_, limited_, {}, {}, {}, invisible_, record_flags_};
   if (!lod::select_clusters(viewer, set, out).empty()) {
     // The core refused this frame's viewer: the finest cut rather than a guess.
     draw_finest(perceptual_, 0);

@@ -42,6 +42,7 @@ class ClusterMeshes {
   std::vector<lod::ClusterHierarchy> local_;  // per mesh, its own space: what set_motion re-poses
   std::vector<std::uint32_t> first_;
   std::vector<std::uint8_t> perceptual_, limited_, invisible_, drawn_, held_, record_held_;
+  std::vector<std::uint32_t> record_flags_;  // the selection's scratch, one word per distinct record
   std::vector<double> self_window_s_, parent_window_s_;
   std::size_t new_from_ = 0;  // clusters [new_from_, size) have not had their first frame
   bool policy_used_ = false;

@@ -120,8 +120,8 @@ TEST(ClusterSelect, CutIsConsistentUnderRandomViewers) {
 }
 
 TEST(ClusterSelect, DistinctRecordsGiveTheSameDecisions) {
-  // The per-criterion cuts over the store's distinct records (each evaluated once, then
-  // gathered per cluster) against the same cuts evaluated per cluster: every output equal.
+  // Selection over the store's distinct records (each evaluated once, then combined per
+  // cluster) against the same selection evaluated per cluster: every output equal.
   const Scene sc = make_scene({{8, false, 1}, {5, true, 2}, {4, true, 1, 0.3, 0.002, 0.3}}, 11);
   const ClusterSet cs = sc.store.view();
   ASSERT_EQ(validate_clusters(cs), "");
@@ -138,19 +138,29 @@ TEST(ClusterSelect, DistinctRecordsGiveTheSameDecisions) {
   std::mt19937_64 rng(17);
   std::vector<std::uint32_t> flags(cs.record_count());
   std::size_t drawn = 0;
+  // Both paths with and without the per-criterion cuts (the frame's path: the size screen, self
+  // records under an invisible parent set by the nesting).
+  const auto run = [&](const Viewer& vw, bool per_criterion, Out& by_record, Out& own) {
+    ClusterDecisions with = per_criterion ? by_record.all() : by_record.combined_only();
+    with.record_flags = flags;
+    ASSERT_EQ(select_clusters(vw, cs, with), "");
+    ASSERT_EQ(select_clusters(vw, per_cluster, per_criterion ? own.all() : own.combined_only()), "");
+    ASSERT_EQ(by_record.drawn, own.drawn);
+    ASSERT_EQ(by_record.why, own.why);
+    ASSERT_EQ(by_record.bits, own.bits);
+    if (per_criterion) {
+      ASSERT_EQ(by_record.s, own.s);
+      ASSERT_EQ(by_record.e, own.e);
+      ASSERT_EQ(by_record.v, own.v);
+    }
+  };
   for (int trial = 0; trial < 300; ++trial) {
+    SCOPED_TRACE("trial " + std::to_string(trial));
     const Viewer vw = random_viewer(rng, cs);
-    Out a(cs.size()), b(cs.size());
-    ClusterDecisions by_record = a.all();
-    by_record.record_flags = flags;
-    ASSERT_EQ(select_clusters(vw, cs, by_record), "");
-    ASSERT_EQ(select_clusters(vw, per_cluster, b.all()), "");
-    ASSERT_EQ(a.drawn, b.drawn) << "trial " << trial;
-    ASSERT_EQ(a.why, b.why) << "trial " << trial;
-    ASSERT_EQ(a.s, b.s) << "trial " << trial;
-    ASSERT_EQ(a.e, b.e) << "trial " << trial;
-    ASSERT_EQ(a.v, b.v) << "trial " << trial;
-    ASSERT_EQ(a.bits, b.bits) << "trial " << trial;
+    Out a(cs.size()), b(cs.size()), c(cs.size()), d(cs.size());
+    run(vw, true, a, b);
+    run(vw, false, c, d);
+    ASSERT_EQ(c.drawn, a.drawn);
     drawn += static_cast<std::size_t>(std::count(a.drawn.begin(), a.drawn.end(), 1));
   }
   EXPECT_GT(drawn, 300u);

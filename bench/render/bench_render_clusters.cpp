@@ -4,7 +4,8 @@
 // (bake/cluster_build.hpp) and a cut chosen by lod/cluster_select.hpp for a viewer standing on
 // the terrain's path, with Reddy's global scale s bisected so that the cut holds about
 // kCutTriangles. A frame is both eyes of a Meta Quest Pro (1800 x 1920 each, 106 x 96 deg),
-// each eye its own renderer and image, as `gazelod run` draws them. Cases, in this order:
+// each eye its own renderer and image, as `gazelod run` draws them (GAZELOD_BENCH_EYE_DIVISOR:
+// fewer pixels, below). Cases, in this order:
 //   Empty      clear only (arg 1: plus both eyes' readback), the fixed cost;
 //   Coarse     the hierarchy's top clusters (tens of thousands of triangles per eye over the
 //              same ground, the fewest any cut has): the fixed cost plus filling the terrain's
@@ -49,6 +50,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <memory>
 #include <numbers>
@@ -64,6 +66,21 @@ namespace {
 
 constexpr std::uint64_t kCutTriangles = 240'000;
 constexpr std::uint32_t kEyeWidth = 1800, kEyeHeight = 1920;
+
+// GAZELOD_BENCH_EYE_DIVISOR = d (1, 2, 4 or 8; default 1): each eye drawn at 1/d of the Quest
+// Pro's width and height, the same views, terrain and cut: how much of a frame is the fill.
+std::uint32_t eye_divisor() {
+  static const std::uint32_t d = [] {
+    const char* v = std::getenv("GAZELOD_BENCH_EYE_DIVISOR");
+    const std::string text = v ? v : "1";
+    if (text != "1" && text != "2" && text != "4" && text != "8")
+      throw std::invalid_argument("GAZELOD_BENCH_EYE_DIVISOR must be 1, 2, 4 or 8, got '" + text + "'");
+    return static_cast<std::uint32_t>(std::stoul(text));
+  }();
+  return d;
+}
+std::uint32_t eye_width() { return kEyeWidth / eye_divisor(); }
+std::uint32_t eye_height() { return kEyeHeight / eye_divisor(); }
 constexpr double kHalfIpdM = 0.032, kEyeHeightM = 1.6, kPitchDownDeg = 15.0;
 
 struct Scene {
@@ -137,7 +154,7 @@ SizeClasses size_classes(const gr::EyeView& view, const std::vector<float>& xyz,
     }
     std::array<glm::dvec2, 3> px;
     for (int k = 0; k < 3; ++k)
-      px[k] = {c[k].x / c[k].w * 0.5 * kEyeWidth, c[k].y / c[k].w * 0.5 * kEyeHeight};
+      px[k] = {c[k].x / c[k].w * 0.5 * eye_width(), c[k].y / c[k].w * 0.5 * eye_height()};
     const glm::dvec2 u = px[1] - px[0], w = px[2] - px[0];
     (0.5 * std::abs(u.x * w.y - u.y * w.x) < 1.0 ? n.sub_pixel : n.covering) += 1;
   }
@@ -214,12 +231,13 @@ std::unique_ptr<Scene> build_scene() {
   const double half_h = 53.0 * std::numbers::pi / 180.0, half_v = 48.0 * std::numbers::pi / 180.0;
   const glm::dquat pitch = glm::angleAxis(-kPitchDownDeg * std::numbers::pi / 180.0, glm::dvec3(1, 0, 0));
   for (int e = 0; e < 2; ++e) {
-    s->targets[e] = std::make_unique<gr::OffscreenTarget>(s->device->context(), kEyeWidth, kEyeHeight);
+    s->targets[e] = std::make_unique<gr::OffscreenTarget>(s->device->context(), eye_width(), eye_height());
     s->eyes[e] = std::make_unique<gr::FrameRenderer>(s->device->context(), s->meshes, s->targets[e]->target());
     s->views[e].fov = {-half_h, half_h, half_v, -half_v};
     s->views[e].pose.orientation = pitch;
     s->views[e].pose.position_m = {e == 0 ? -kHalfIpdM : kHalfIpdM, kEyeHeightM, 0.0};
   }
+  std::printf("eyes %u x %u (GAZELOD_BENCH_EYE_DIVISOR %u)\n", eye_width(), eye_height(), eye_divisor());
   std::printf("terrain %llu triangles, %zu clusters, %u levels; cut at s = %.6g: %zu clusters, %llu triangles\n",
               static_cast<unsigned long long>(s->whole_triangles), h.size(), built.levels, s->scale, s->cut.size(),
               static_cast<unsigned long long>(s->cut_triangles));

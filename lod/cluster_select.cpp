@@ -261,8 +261,11 @@ std::string select_clusters(const Viewer& viewer, const ClusterSet& c, const Clu
   const bool records = !out.record_invisible.empty();
   if (records && out.record_invisible.size() < n)
     return "decisions: record_invisible is shorter than the cluster count";
+  if (!out.record_flags.empty() && c.has_records() && out.record_flags.size() < c.record_count())
+    return "decisions: record_flags has " + std::to_string(out.record_flags.size()) + " words, the set " +
+           std::to_string(c.record_count()) + " distinct records";
 
-  const bool by_record = c.has_records() && out.record_flags.size() >= c.record_count();
+  const bool by_record = c.has_records() && !out.record_flags.empty();
 
   const detail::ClusterFrame frame = detail::make_cluster_frame(viewer);
   const detail::RecordInput self_in{c.self_center_x_m.data(), c.self_center_y_m.data(),

@@ -112,9 +112,10 @@ struct ClusterDecisions {
   // per-criterion outputs, a self record under an invisible parent is set, not evaluated (the
   // nesting implies it); with them, every record's bits are those of its full evaluation.
   std::span<std::uint8_t> record_invisible;
-  // Optional scratch, one word per distinct record (ClusterSet::record_count): given for a set
-  // that has its distinct records, each of them is evaluated once into it (afterwards it holds
-  // their outcomes, a bit per criterion: not an interface).
+  // Optional scratch, at least one word per distinct record (ClusterSet::record_count; shorter
+  // is refused): given for a set that has its distinct records, each of them is evaluated once
+  // into it (afterwards it holds their outcomes, a bit per criterion: not an interface); for a
+  // set without them it is not used.
   std::span<std::uint32_t> record_flags;
 };
 

@@ -279,6 +279,10 @@ TEST(ClusterStore, DistinctRecordsFollowMovesAndBadTablesAreNamed) {
   ClusterDecisions out{d, w, a, b, c, {}, flags};
   EXPECT_EQ(select_clusters(Viewer{}, spoiled, out), "");
   for (std::uint8_t v : w) ASSERT_LE(v, static_cast<std::uint8_t>(Criterion::invalid_input));
+  // Scratch shorter than the records is refused, not ignored.
+  ClusterDecisions short_scratch = out;
+  short_scratch.record_flags = std::span(flags).first(flags.size() - 1);
+  EXPECT_NE(select_clusters(Viewer{}, cs, short_scratch).find("decisions: record_flags has"), std::string::npos);
   // Lengths: a table missing a mesh's range is refused per frame.
   spoiled = cs;
   spoiled.mesh_record_count = spoiled.mesh_record_count.first(1);

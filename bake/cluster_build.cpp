@@ -4,11 +4,11 @@
 
 #include "bake/bake_error.hpp"
 #include "bake/cluster_distance.hpp"
-#include "bake/cluster_flips.hpp"
 #include "bake/cluster_group.hpp"
 #include "bake/cluster_source.hpp"
 #include "bake/cluster_sphere.hpp"
 #include "bake/cluster_split.hpp"
+#include "bake/group_simplify.hpp"
 #include "bake/meshopt_lock.hpp"
 #include "bake/parallel_for.hpp"
 #include "bake/seam_copies.hpp"
@@ -18,7 +18,6 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
-#include <cfloat>
 #include <cmath>
 #include <cstring>
 #include <memory>
@@ -30,9 +29,6 @@ namespace {
 constexpr std::uint32_t kNone = ~0u;
 
 constexpr std::size_t kMaxDepth = 255;  // depth is stored as uint8
-// meshopt's error estimate (relative to the group's extent) up to which a collapse is free:
-// float noise on coplanar or collinear collapses.
-constexpr float kFreeErrorRel = 1e-5f;
 constexpr std::size_t kPrefetch = 16;  // measure(): queries ahead whose vertex data is fetched
 // A level with fewer groups than this measures each group's source vertices in slices of
 // kMeasureSlice in parallel (the top levels: few groups, each answering for many vertices).
@@ -85,12 +81,11 @@ struct Scratch {
   TriangleGrid grid;
   GridSearch search;
   ClusterSplitter splitter;
-  std::vector<float> local_xyz, normals;
-  std::vector<std::uint32_t> corners, kept;  // fold retries: folded corners, the step before
+  std::vector<float> local_xyz;
+  GroupSimplifyScratch simplify;
   // Across seams: the members' corners and the copies they use (seam_copies.hpp).
   std::vector<std::uint32_t> member_corners;
   std::vector<std::uint64_t> seam_pairs;
-  std::vector<std::uint8_t> marks;
   std::vector<Sphere> spheres;
 
   // Appends global vertex v to the compact copy; returns its local id.
@@ -247,60 +242,13 @@ class Builder {
     if (!o_.lock_open_borders)
       for (std::size_t l = 0; l < vcount; ++l)
         if (shared_[weld_[s.global_of[l]]]) lock_position(s.local_xyz, l);
-    s.simplified.resize(s.local.size());
-    auto simplify = [&](std::size_t target_indices, float error_limit, float* error_rel) {
-      return meshopt_simplify(s.simplified.data(), s.local.data(), s.local.size(), s.local_xyz.data(),
-                              s.local_xyz.size() / 3, 3 * sizeof(float), target_indices, error_limit,
-                              o_.lock_open_borders ? unsigned(meshopt_SimplifyLockBorder) : 0u, error_rel);
-    };
-    auto folds = [&](std::size_t count) {
-      return find_folds(s.local_xyz, s.local, std::span<const std::uint32_t>(s.simplified.data(), count), s.normals);
-    };
-    const std::size_t target = 3 * static_cast<std::size_t>(double(s.local.size() / 3) * o_.simplify_ratio);
-    float error_rel = 0.0f;  // meshopt's estimate, relative to the group's extent
-    std::size_t n = target < 3 ? 0 : simplify(target, FLT_MAX, &error_rel);
-    // Reached at no error (flat panels, a box's walls): take every free collapse, past the
-    // target, rather than leave free detail to a level that may have to force collapses;
-    // unless its folds (cluster_flips.hpp) are wider than the step to the target's.
-    bool took_free = false;
-    if (n > 0 && error_rel <= kFreeErrorRel) {
-      const double at_target_m = folds(n).width_m;
-      const std::size_t free = simplify(0, kFreeErrorRel, nullptr);
-      if (free > 0 && folds(free).width_m <= at_target_m)
-        n = free, took_free = true;
-      else
-        n = simplify(target, FLT_MAX, nullptr);
-    }
-    // meshopt 0.18 folds some triangles over (cluster_flips.hpp): counted, and the group's error
-    // raised to the width of the hole they may leave. (Redoing folded groups in gentler steps
-    // cost 30 to 40 % of the build's throughput and still left a third to three quarters.)
-    Folds f = n > 0 ? folds(n) : Folds{};
-    // Up to fold_retries times: the same step again with the folds' surroundings locked
-    // (lock_around_folds), kept when its widest fold is narrower. On the generated city this
-    // leaves 1,458 of 5,607 folds; the rest fold elsewhere or can only be avoided by stopping.
-    // Only where the folds would set the group's error: wider than meshopt's own estimate (a
-    // quadric mean, below the largest distance the measure will find). A narrower fold (the
-    // slivers on a terrain) costs nothing in the error, and its retry, constrained by the
-    // locks, tends to raise the distance: skipping those made the build 15 % faster on the
-    // evaluation's terrain and its cut 2 % smaller.
-    const double estimate_m =
-        f.triangles > 0 ? double(error_rel) * meshopt_simplifyScale(s.local_xyz.data(), vcount, 3 * sizeof(float)) : 0.0;
-    for (unsigned retry = 0; retry < o_.fold_retries && f.triangles > 0 && f.width_m > estimate_m; ++retry) {
-      s.corners.clear();
-      find_folds(s.local_xyz, s.local, std::span<const std::uint32_t>(s.simplified.data(), n), s.normals, &s.corners);
-      lock_around_folds(s.local_xyz, vcount, s.local, s.corners, s.marks);
-      s.kept.assign(s.simplified.begin(), s.simplified.begin() + static_cast<std::ptrdiff_t>(n));
-      const std::size_t again = took_free ? simplify(0, kFreeErrorRel, nullptr) : simplify(target, FLT_MAX, nullptr);
-      const Folds g = again > 0 ? folds(again) : Folds{};
-      if (again > 0 && g.width_m < f.width_m && double(again) <= o_.stuck_ratio * double(s.local.size())) {
-        n = again, f = g;
-      } else {
-        std::copy(s.kept.begin(), s.kept.end(), s.simplified.begin());
-        break;
-      }
-    }
-    p.folded_triangles = f.triangles;
-    p.fold_error_m = f.width_m;
+    // Simplified on the compact copy (group_simplify.hpp); its folds raise the group's error.
+    const GroupSimplified r = simplify_group_triangles(
+        s.local_xyz, vcount, s.local,
+        {o_.simplify_ratio, o_.stuck_ratio, o_.fold_retries, o_.lock_open_borders}, s.simplified, s.simplify);
+    const std::size_t n = r.index_count;
+    p.folded_triangles = r.folds.triangles;
+    p.fold_error_m = r.folds.width_m;
     p.child_error_m = child_error_m;
     s.local_xyz.resize(3 * vcount);  // the copies go before the split
     if (n > 0 && double(n) <= o_.stuck_ratio * double(s.local.size())) {

@@ -3,7 +3,8 @@
 # --clusters integration test (tests/bake/cluster_validator_test.cpp), which looks for it in
 # BUILD_DIR/gltf-validator/node_modules (or $GAZELOD_GLTF_VALIDATOR_PATH):
 #   bash scripts/install-gltf-validator.sh build/gltf-validator
-# Needs node, npm and the npm registry; without them it says so and exits 0 (the test skips).
+# Needs node, npm and the npm registry; without them it says so and exits 0 (the test skips, and
+# fails under CI=true: tests/skip_or_fail.hpp).
 set -euo pipefail
 prefix="${1:-build/gltf-validator}"
 version="2.0.0-dev.3.10"

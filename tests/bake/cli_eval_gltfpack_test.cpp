@@ -3,6 +3,7 @@
 #include "tests/cli_run.hpp"
 #include "apps/gazelod/command.hpp"
 #include "tests/bake/test_meshes.hpp"
+#include "tests/skip_or_fail.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -22,7 +23,7 @@ using test::run_cli;
 bool have_gltfpack() { return std::system("command -v gltfpack >/dev/null 2>&1") == 0; }
 
 TEST(CliEvalGltfpack, OneMeshAgreesWithGltfpack) {
-  if (!have_gltfpack()) GTEST_SKIP() << "gltfpack not installed (Debian package gltfpack; bash scripts/install-deps.sh)";
+  if (!have_gltfpack()) GAZELOD_SKIP_OR_FAIL("gltfpack not installed (Debian package gltfpack; bash scripts/install-deps.sh)");
   const std::string dir = bake::testing::temp_dir("cli_eval_gltfpack");
   const std::string in = bake::testing::write_model(bake::testing::single_mesh_model(bake::testing::grid(64, 10.0, 0.5)),
                                                     dir + "/grid.glb");

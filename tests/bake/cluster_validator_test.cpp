@@ -11,6 +11,7 @@
 #include "bake/mesh_extract.hpp"
 #include "tests/bake/cluster_invariants.hpp"
 #include "tests/bake/test_meshes.hpp"
+#include "tests/skip_or_fail.hpp"
 
 #include <gtest/gtest.h>
 
@@ -63,8 +64,8 @@ Validation validate(const std::string& node_path, const std::string& file) {
 #define SKIP_WITHOUT_VALIDATOR(path)                                                        \
   const std::string path = validator_path();                                                \
   if (path.empty())                                                                         \
-  GTEST_SKIP() << "node or gltf-validator not installed (bash scripts/install-gltf-validator.sh " \
-               << GAZELOD_BINARY_DIR << "/gltf-validator)"
+  GAZELOD_SKIP_OR_FAIL("node or gltf-validator not installed (bash scripts/install-gltf-validator.sh " \
+                       << GAZELOD_BINARY_DIR << "/gltf-validator)")
 
 TEST(ClusterValidator, GeneratedMeshesValidate) {
   SKIP_WITHOUT_VALIDATOR(node_path);
@@ -84,7 +85,7 @@ TEST(ClusterValidator, GeneratedMeshesValidate) {
 
 TEST(ClusterValidator, RealModelBakesValidatesAndKeepsItsInvariants) {
   const std::string model = kModels + "/2CylinderEngine-glTF-Binary/2CylinderEngine.glb";
-  if (!fs::exists(model)) GTEST_SKIP() << model << " missing (Debian package assimp-testmodels)";
+  if (!fs::exists(model)) GAZELOD_SKIP_OR_FAIL(model << " missing (Debian package assimp-testmodels)");
   const std::string out = testing::temp_dir("clv_engine") + "/engine.glb";
   const ClusterBakeReport rep = bake_clusters_file(model, out, ClusterBakeOptions{});
   std::printf("%s", format_cluster_summary(rep).c_str());
@@ -136,7 +137,7 @@ TEST(ClusterValidator, RealStripAndFanPrimitives) {
   // glTF-Asset-Generator Mesh_PrimitiveMode 04/11: strip, 05/12: fan (without / with indices).
   for (const char* n : {"04", "05", "11", "12"}) {
     const std::string model = kModels + "/glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_" + n + ".gltf";
-    if (!fs::exists(model)) GTEST_SKIP() << model << " missing (Debian package assimp-testmodels)";
+    if (!fs::exists(model)) GAZELOD_SKIP_OR_FAIL(model << " missing (Debian package assimp-testmodels)");
     SCOPED_TRACE(model);
     const std::string out = testing::temp_dir(std::string("clv_mode") + n) + "/out.glb";
     const ClusterBakeReport rep = bake_clusters_file(model, out, ClusterBakeOptions{});
@@ -184,7 +185,7 @@ TEST(ClusterValidator, EveryAssimpModelBakesOrSaysWhy) {
   // (and, --clusters, every point or line primitive as it was) and adding no validator error
   // the input did not have, or fails with a message that starts with the file's path, leaving
   // no output.
-  if (!fs::exists(kModels)) GTEST_SKIP() << kModels << " missing (Debian package assimp-testmodels)";
+  if (!fs::exists(kModels)) GAZELOD_SKIP_OR_FAIL(kModels << " missing (Debian package assimp-testmodels)");
   std::vector<std::string> models;
   for (const auto& e : fs::recursive_directory_iterator(kModels))
     if (e.path().extension() == ".glb" || e.path().extension() == ".gltf") models.push_back(e.path().string());

@@ -12,6 +12,7 @@
 #include "render/offscreen_target.hpp"
 #include "render/render_error.hpp"
 #include "tests/bake/test_meshes.hpp"
+#include "tests/skip_or_fail.hpp"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -108,7 +109,7 @@ class ProfileRender : public ::testing::Test {
     try {
       profiler_ = std::make_unique<Profiler>(ProfileOptions{6});
     } catch (const render::NoVulkanDevice& e) {
-      GTEST_SKIP() << "no Vulkan device: " << e.what();
+      GAZELOD_SKIP_OR_FAIL("no Vulkan device: " << e.what());
     }
   }
   // Levels: full, an identical copy, then the simplifier's levels at `ratios`.
@@ -189,7 +190,7 @@ TEST(ProfileRoundTrip, BakeProfileLoadRender) {
   try {
     device = std::make_unique<render::OffscreenDevice>();
   } catch (const render::NoVulkanDevice& e) {
-    GTEST_SKIP() << "no Vulkan device: " << e.what();
+    GAZELOD_SKIP_OR_FAIL("no Vulkan device: " << e.what());
   }
   const std::string dir = testing::temp_dir("profile_rt");
   const std::string in = testing::write_model(testing::single_mesh_model(bumpy(4, 0.1)), dir + "/in.glb");

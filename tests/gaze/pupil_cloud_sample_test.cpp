@@ -3,6 +3,7 @@
 // reports the agreement with Pupil Cloud's fixations and blinks.
 #include "apps/gazelod/command.hpp"
 #include "gaze/trace_open.hpp"
+#include "tests/skip_or_fail.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -40,7 +41,7 @@ double correlation(const std::vector<double>& a, const std::vector<double>& b) {
 
 TEST(PupilCloudSample, AxesFollowTheScenePixelsAndStatsReportAgreement) {
   const fs::path gaze = sample_gaze();
-  if (!fs::is_regular_file(gaze)) GTEST_SKIP() << "no " << gaze << " (../shared/data/gaze, evaluation data)";
+  if (!fs::is_regular_file(gaze)) GAZELOD_SKIP_OR_FAIL("no " << gaze << " (../shared/data/gaze, evaluation data)");
 
   // The export's own gaze x/y [px] (columns 4 and 5): x grows to the right, y downwards.
   std::ifstream in(gaze);

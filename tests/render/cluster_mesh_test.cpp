@@ -7,6 +7,7 @@
 #include "render/mesh_library.hpp"
 #include "render/offscreen_target.hpp"
 #include "render/render_error.hpp"
+#include "tests/skip_or_fail.hpp"
 
 #include <gtest/gtest.h>
 
@@ -91,7 +92,7 @@ class ClusterMeshRender : public ::testing::Test {
     try {
       device_ = std::make_unique<OffscreenDevice>();
     } catch (const NoVulkanDevice& e) {
-      GTEST_SKIP() << "no Vulkan device: " << e.what();
+      GAZELOD_SKIP_OR_FAIL("no Vulkan device: " << e.what());
     }
     const Cap cap;
     first_ = meshes_.add_cluster_mesh(cap.positions, cap.indices, cap.first, cap.count);

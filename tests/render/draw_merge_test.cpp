@@ -9,6 +9,7 @@
 #include "render/offscreen_target.hpp"
 #include "render/render_error.hpp"
 #include "render/sphere_mesh.hpp"
+#include "tests/skip_or_fail.hpp"
 
 #include <gtest/gtest.h>
 
@@ -27,7 +28,7 @@ class RenderDrawMerge : public ::testing::Test {
     try {
       device_ = std::make_unique<OffscreenDevice>();
     } catch (const NoVulkanDevice& e) {
-      GTEST_SKIP() << "no Vulkan device: " << e.what();
+      GAZELOD_SKIP_OR_FAIL("no Vulkan device: " << e.what());
     }
     // A sphere of ~4,000 triangles cut into clusters of 24 triangles in index order, like a
     // hierarchy's clusters back to back; a stand-in sphere first, so the block does not start

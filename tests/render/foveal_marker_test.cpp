@@ -7,6 +7,7 @@
 #include "render/mesh_library.hpp"
 #include "render/offscreen_target.hpp"
 #include "render/render_error.hpp"
+#include "tests/skip_or_fail.hpp"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -57,7 +58,7 @@ TEST(FovealMarker, RenderedCircleHasTheProjectedRadius) {
   try {
     device = std::make_unique<OffscreenDevice>();
   } catch (const NoVulkanDevice& e) {
-    GTEST_SKIP() << "no Vulkan device: " << e.what();
+    GAZELOD_SKIP_OR_FAIL("no Vulkan device: " << e.what());
   }
   MeshLibrary meshes;
   const std::uint32_t dot = meshes.add_sphere(80);

@@ -8,6 +8,7 @@
 #include "render/offscreen_target.hpp"
 #include "render/png_io.hpp"
 #include "render/render_error.hpp"
+#include "tests/skip_or_fail.hpp"
 
 #include <gtest/gtest.h>
 
@@ -40,7 +41,7 @@ class OffscreenRender : public ::testing::Test {
     try {
       device_ = std::make_unique<OffscreenDevice>();
     } catch (const NoVulkanDevice& e) {
-      GTEST_SKIP() << "no Vulkan device: " << e.what();
+      GAZELOD_SKIP_OR_FAIL("no Vulkan device: " << e.what());
     }
     sphere_ = meshes_.add_sphere(5000);
     small_ = meshes_.add_sphere(80);

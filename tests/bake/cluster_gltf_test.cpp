@@ -272,6 +272,47 @@ std::string bake_error(const tinygltf::Model& model, const std::string& test) {
   return "";
 }
 
+// A primitive left with no triangle once its degenerate ones are dropped gets no hierarchy and
+// a warning naming it; a file where every triangle primitive is like that is refused, and no
+// output is left (written unchanged it would look like a bake that worked).
+TEST(ClusterGltf, APrimitiveOfDegenerateTrianglesIsNamedAndAFileOfThemRefused) {
+  tinygltf::Model m = testing::single_mesh_model(testing::icosphere(2, 1.0));
+  // Primitive 1: the same positions, every triangle with two corners at one vertex.
+  const std::vector<std::uint32_t> degenerate{0, 0, 1, 2, 2, 2, 3, 4, 3};
+  tinygltf::Buffer& buffer = m.buffers[0];
+  while (buffer.data.size() % 4) buffer.data.push_back(0);
+  tinygltf::BufferView view;
+  view.buffer = 0;
+  view.byteOffset = buffer.data.size();
+  view.byteLength = degenerate.size() * 4;
+  view.target = TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER;
+  const auto* bytes = reinterpret_cast<const unsigned char*>(degenerate.data());
+  buffer.data.insert(buffer.data.end(), bytes, bytes + view.byteLength);
+  m.bufferViews.push_back(view);
+  tinygltf::Accessor indices;
+  indices.bufferView = static_cast<int>(m.bufferViews.size() - 1);
+  indices.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+  indices.type = TINYGLTF_TYPE_SCALAR;
+  indices.count = degenerate.size();
+  m.accessors.push_back(indices);
+  tinygltf::Primitive prim = m.meshes[0].primitives[0];
+  prim.indices = static_cast<int>(m.accessors.size() - 1);
+  m.meshes[0].primitives.push_back(prim);
+
+  const Baked b = bake("cl_degen_prim", m);
+  ASSERT_EQ(b.report.primitives.size(), 1u);
+  EXPECT_EQ(b.report.primitives[0].primitive, 0);
+  EXPECT_HAS(format_cluster_summary(b.report), "warning: mesh 0 'M' primitive 1: no triangles left, no cluster hierarchy");
+  const tinygltf::Model out = load_gltf(b.out).model;
+  ASSERT_EQ(out.meshes[0].primitives.size(), 2u);
+  EXPECT_EQ(out.meshes[0].primitives[0].extensions.count(kClusterLodExtension), 1u);
+  EXPECT_EQ(out.meshes[0].primitives[1].extensions.count(kClusterLodExtension), 0u);
+
+  m.meshes[0].primitives.erase(m.meshes[0].primitives.begin());
+  EXPECT_HAS(bake_error(m, "cl_degen_all"),
+             "in.glb: nothing to bake: no triangle primitive has a triangle left once degenerate ones");
+}
+
 TEST(ClusterGltf, BadGeometryNamesFileMeshAndVertex) {
   tinygltf::Model m = testing::single_mesh_model(testing::icosphere(1, 1.0));
   const auto& pa = m.accessors[std::size_t(m.meshes[0].primitives[0].attributes["POSITION"])];

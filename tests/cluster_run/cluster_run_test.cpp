@@ -19,8 +19,10 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <map>
 #include <set>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
@@ -201,6 +203,88 @@ TEST_F(ClusterRun, RenderedFrameShowsTheClusters) {
     for (std::uint32_t x = 0; x < img.width; x += 4)
       wall += glm::length(img.rgb(x, y) - render::background_colour()) > 0.05f;
   EXPECT_GT(wall, (img.width / 4) * (img.height / 4) / 10) << "the wall covers under a tenth of the frame";
+}
+
+// The palette level whose shaded tint explains an sRGB pixel of frame.png, or -1 (background,
+// foveal marker, an edge pixel). `gazelod run` renders into an sRGB swapchain, so a pixel is
+// srgb(linear(tint) * light) with the headlight's light in [0.35, 1]: each level is fitted over
+// that range and kept when it explains the pixel within a few 8-bit steps.
+int shaded_level(const glm::vec3& pixel) {
+  struct Shade {
+    glm::vec3 srgb;
+    int level;
+  };
+  static const std::vector<Shade> shades = [] {
+    const auto encode = [](float linear) {
+      return linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
+    };
+    std::vector<Shade> all;
+    for (std::uint32_t level = 0; level < render::kLodPaletteSize; ++level) {
+      const glm::vec3 tint = render::lod_colour(level);
+      for (int step = 0; step <= 130; ++step) {
+        const float light = 0.35f + 0.005f * static_cast<float>(step);
+        all.push_back({{encode(render::srgb_to_linear(tint.r) * light), encode(render::srgb_to_linear(tint.g) * light),
+                        encode(render::srgb_to_linear(tint.b) * light)},
+                       static_cast<int>(level)});
+      }
+    }
+    return all;
+  }();
+  if (glm::length(pixel - render::background_colour()) < 0.02f) return -1;
+  int best = -1;
+  float best_error = 3.0f / 255.0f * std::sqrt(3.0f);
+  for (const Shade& shade : shades)
+    if (const float error = glm::length(shade.srgb - pixel); error < best_error) best_error = error, best = shade.level;
+  return best;
+}
+
+// frame.png end to end: the captured frame's cut (--cluster-decisions) holds clusters of several
+// depths; in the image every tinted pixel has the tint of a depth that frame drew, and at least
+// two depths' tints are seen.
+TEST_F(ClusterRun, FramePngTintsEachDrawnDepth) {
+  const auto out = scratch_dir();
+  constexpr int kFrames = 45, kCaptured = 44;  // past the switch policy's hold: the periphery coarsened
+  const std::string cut = (out / "cut.csv").string();
+  const CliResult r = run_cli({"run", "--frames", std::to_string(kFrames), "--capture-frame", std::to_string(kCaptured),
+                               "--cluster-decisions", cut, "--scene", baked_, "--scene-placement", "file",
+                               "--scenario", scenario_, "--out", out.string(), "--quiet"});
+  ASSERT_EQ(r.rc, 0) << r.err;
+  // The captured frame's drawn depths: frame,t_ns,mesh,cluster,depth,triangles,limited_by,held.
+  std::ifstream csv(cut);
+  std::string line;
+  ASSERT_TRUE(std::getline(csv, line));
+  std::map<std::uint32_t, std::uint64_t> triangles_by_tint;
+  while (std::getline(csv, line)) {
+    const auto cells = split(line);
+    ASSERT_GE(cells.size(), 6u) << line;
+    if (std::stoi(cells[0]) != kCaptured) continue;
+    const auto depth = static_cast<std::uint32_t>(std::stoul(cells[4]));
+    triangles_by_tint[std::min<std::uint32_t>(depth, render::kLodPaletteSize - 1)] += std::stoull(cells[5]);
+  }
+  for (const auto& [tint, n] : triangles_by_tint) std::printf("depth tint %u: %llu triangles drawn\n", tint, static_cast<unsigned long long>(n));
+  ASSERT_GE(triangles_by_tint.size(), 2u) << "the captured frame's cut has one depth: nothing to tell apart";
+  std::set<int> allowed{0};  // the stretched copy, a plain object at its one level, where it is in view
+  for (const auto& [tint, n] : triangles_by_tint) allowed.insert(static_cast<int>(tint));
+
+  const render::RgbaImage img = render::read_png(out / "frame.png");
+  ASSERT_GT(img.width, 0u);
+  std::map<int, std::size_t> pixels_by_tint;
+  std::size_t sampled = 0;
+  for (std::uint32_t y = 0; y < img.height; y += 6)
+    for (std::uint32_t x = 0; x < img.width; x += 6, ++sampled) ++pixels_by_tint[shaded_level(img.rgb(x, y))];
+  std::size_t tinted = 0, undrawn = 0, seen = 0;
+  std::ostringstream counts;
+  for (const auto& [level, n] : pixels_by_tint) {
+    counts << " tint " << level << ": " << n;
+    if (level < 0) continue;
+    tinted += n;
+    if (!allowed.count(level)) undrawn += n;
+    seen += n >= sampled / 200;  // half a percent of the frame
+  }
+  std::printf("frame %d: %zu sampled pixels,%s (-1: background or marker)\n", kCaptured, sampled, counts.str().c_str());
+  ASSERT_GT(tinted, sampled / 10) << "the wall covers under a tenth of the frame;" << counts.str();
+  EXPECT_LE(undrawn, tinted / 200) << "pixels in the tint of a depth the frame did not draw;" << counts.str();
+  EXPECT_GE(seen, 2u) << "one depth's tint fills the frame;" << counts.str();
 }
 
 // Undirected edges on exactly one triangle of `drawn`'s clusters, sorted: simplification keeps

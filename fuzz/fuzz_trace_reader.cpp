@@ -1,10 +1,11 @@
-// Fuzzes the three trace CSV readers (gazelod's own, GazeBase VR, Pupil Labs), strict and
-// lenient. Invariants: time never goes backwards; a valid gaze is a finite unit vector.
+// Fuzzes the trace CSV readers (gazelod's own, GazeBase VR, Pupil Core, Pupil Cloud, SRanipal),
+// strict and lenient. Invariants: time never goes backwards; a valid gaze is a finite unit vector.
 #include "fuzz/fuzz_entry.hpp"
 
 #include "gaze/import_gazebasevr.hpp"
 #include "gaze/import_pupil.hpp"
 #include "gaze/import_pupil_cloud.hpp"
+#include "gaze/import_sranipal.hpp"
 #include "gaze/trace_error.hpp"
 #include "gaze/trace_reader.hpp"
 
@@ -65,6 +66,7 @@ int trace_reader(const std::uint8_t* data, std::size_t size) {
     read_all<gaze::GazeBaseVrReader>(text, lenient);
     read_all<gaze::PupilReader>(text, lenient);
     read_all<gaze::PupilCloudReader>(text, lenient);
+    read_all<gaze::SranipalReader>(text, lenient);
   }
   return 0;
 }

@@ -28,7 +28,8 @@ std::string quoted(std::string_view s) {
 
 }  // namespace
 
-CsvCursor::CsvCursor(std::istream& in, std::string file) : in_(in), file_(std::move(file)) {}
+CsvCursor::CsvCursor(std::istream& in, std::string file, char delimiter)
+    : in_(in), file_(std::move(file)), delimiter_(delimiter) {}
 
 bool CsvCursor::read_line() {
   buffer_.clear();
@@ -80,14 +81,14 @@ bool CsvCursor::next_row() {
       comments_.emplace_back(t);
       continue;
     }
-    // Split on commas outside double quotes; columns are 1-based offsets into the raw line.
+    // Split on the delimiter outside double quotes; columns are 1-based offsets into the raw line.
     fields_.clear();
     const std::size_t base = static_cast<std::size_t>(view.data() - buffer_.data());
     std::size_t start = 0;
     bool in_quotes = false;
     for (std::size_t i = 0; i <= view.size(); ++i) {
       if (i < view.size() && view[i] == '"') in_quotes = !in_quotes;
-      if (i == view.size() || (view[i] == ',' && !in_quotes)) {
+      if (i == view.size() || (view[i] == delimiter_ && !in_quotes)) {
         std::size_t off = base + start;
         std::string_view f = trim(view.substr(start, i - start), off);
         if (f.size() >= 2 && f.front() == '"' && f.back() == '"') {

@@ -27,7 +27,8 @@ class CsvCursor {
   // binary file, a file without line ends) and ends the reading with an error.
   static constexpr std::size_t kMaxLineBytes = std::size_t{1} << 16;
 
-  CsvCursor(std::istream& in, std::string file);
+  // `delimiter`: ',' (gazelod's format, most exports) or ';' (HTC's SRanipal Unity logs).
+  CsvCursor(std::istream& in, std::string file, char delimiter = ',');
 
   // Advances to the next line that is neither blank nor a '#' comment and splits it.
   // Returns false at end of input. Throws TraceError (in lenient mode too) for a line longer
@@ -62,6 +63,7 @@ class CsvCursor {
   std::vector<CsvField> fields_;
   std::vector<std::string> comments_;
   std::size_t line_ = 0;
+  char delimiter_ = ',';
   std::uint64_t bytes_ = 0;  // read so far
   bool seen_row_ = false;
   // One line into buffer_ (without '\n'), at most kMaxLineBytes; false at end of input.

@@ -4,8 +4,8 @@
 
 namespace gazelod::gaze {
 
-CsvRecordStream::CsvRecordStream(std::istream& in, std::string file, ReadOptions options)
-    : cursor_(in, std::move(file)), options_(options) {}
+CsvRecordStream::CsvRecordStream(std::istream& in, std::string file, ReadOptions options, char delimiter)
+    : cursor_(in, std::move(file), delimiter), options_(options) {}
 
 bool CsvRecordStream::next(TraceRecord& out) {
   while (cursor_.next_row()) {

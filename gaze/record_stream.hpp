@@ -34,7 +34,7 @@ class CsvRecordStream : public RecordStream {
   const SkipReport& skipped() const final { return skipped_; }
 
  protected:
-  CsvRecordStream(std::istream& in, std::string file, ReadOptions options);
+  CsvRecordStream(std::istream& in, std::string file, ReadOptions options, char delimiter = ',');
   // Parses the cursor's current row into `out`; throws TraceError (via cursor_.fail) if bad.
   virtual void parse_row(TraceRecord& out) = 0;
 

@@ -3,6 +3,7 @@
 #include "gaze/import_gazebasevr.hpp"
 #include "gaze/import_pupil.hpp"
 #include "gaze/import_pupil_cloud.hpp"
+#include "gaze/import_sranipal.hpp"
 #include "gaze/trace_format.hpp"
 #include "gaze/trace_reader.hpp"
 
@@ -103,9 +104,11 @@ TraceFormat sniff(std::streambuf& buf) {
       magic = magic || v.substr(0, trace_format::kMagic.size()) == trace_format::kMagic;
       continue;
     }
+    // Semicolons and no comma: a semicolon-separated header (SRanipal's Unity logs).
+    const char delimiter = v.find(',') == std::string_view::npos && v.find(';') != std::string_view::npos ? ';' : ',';
     std::vector<std::string> columns;
     for (std::size_t start = 0;;) {
-      const std::size_t comma = v.find(',', start);
+      const std::size_t comma = v.find(delimiter, start);
       columns.emplace_back(trim(v.substr(start, comma == std::string_view::npos ? v.npos : comma - start)));
       if (comma == std::string_view::npos) break;
       start = comma + 1;
@@ -129,7 +132,7 @@ PupilCloudBlinks blinks_beside(const std::string& gaze_path) {
 
 std::optional<TraceFormat> parse_trace_format(std::string_view name) {
   for (auto f : {TraceFormat::gazelod, TraceFormat::gazebasevr, TraceFormat::pupil,
-                 TraceFormat::pupil_cloud, TraceFormat::automatic})
+                 TraceFormat::pupil_cloud, TraceFormat::sranipal, TraceFormat::automatic})
     if (name == trace_format_name(f)) return f;
   return std::nullopt;
 }
@@ -140,6 +143,7 @@ std::string_view trace_format_name(TraceFormat format) {
     case TraceFormat::gazebasevr: return "gazebasevr";
     case TraceFormat::pupil: return "pupil";
     case TraceFormat::pupil_cloud: return "pupil_cloud";
+    case TraceFormat::sranipal: return "sranipal";
     case TraceFormat::automatic: return "auto";
   }
   return "?";
@@ -151,6 +155,7 @@ TraceFormat detect_trace_format(const std::vector<std::string>& header_columns, 
     return std::find(header_columns.begin(), header_columns.end(), name) != header_columns.end();
   };
   if (has("timestamp [ns]") && (has("azimuth [deg]") || has("gaze x [px]"))) return TraceFormat::pupil_cloud;
+  if (has("time(100ns)") && has("gaze_direct_L.x")) return TraceFormat::sranipal;
   if (has("gaze_timestamp")) return TraceFormat::pupil;
   if (has("n") && has("x") && has("y") && !has(trace_format::kTimeNs) && !has(trace_format::kTimeS))
     return TraceFormat::gazebasevr;
@@ -184,6 +189,8 @@ std::unique_ptr<RecordStream> open_trace(const std::string& path, TraceFormat fo
     case TraceFormat::pupil_cloud:
       return std::make_unique<OwningStream<PupilCloudReader>>(std::move(input), path, options,
                                                               blinks_beside(path));
+    case TraceFormat::sranipal:
+      return std::make_unique<OwningStream<SranipalReader>>(std::move(input), path, options);
     case TraceFormat::automatic: break;  // replaced by the detected layout above
   }
   throw TraceError({path, 0, 0, "unknown trace format"});
@@ -194,6 +201,7 @@ std::optional<TraceFormat> opened_trace_format(const RecordStream& stream) {
   if (dynamic_cast<const GazeBaseVrReader*>(&stream)) return TraceFormat::gazebasevr;
   if (dynamic_cast<const PupilReader*>(&stream)) return TraceFormat::pupil;
   if (dynamic_cast<const PupilCloudReader*>(&stream)) return TraceFormat::pupil_cloud;
+  if (dynamic_cast<const SranipalReader*>(&stream)) return TraceFormat::sranipal;
   return std::nullopt;
 }
 

@@ -12,15 +12,17 @@
 namespace gazelod::gaze {
 
 // `automatic` reads the header row first and picks the layout (detect_trace_format).
-enum class TraceFormat { gazelod, gazebasevr, pupil, pupil_cloud, automatic };
+enum class TraceFormat { gazelod, gazebasevr, pupil, pupil_cloud, sranipal, automatic };
 
 // "gazelod", "gazebasevr", "pupil" (Pupil Core gaze_positions.csv), "pupil_cloud" (Pupil
-// Cloud gaze.csv: Invisible, Neon), "auto".
+// Cloud gaze.csv: Invisible, Neon), "sranipal" (HTC Vive Pro Eye, SRanipal logged from Unity;
+// semicolon-separated), "auto".
 std::optional<TraceFormat> parse_trace_format(std::string_view name);
 std::string_view trace_format_name(TraceFormat format);
 
 // The layout a header row names, never `automatic`: `timestamp [ns]` with `azimuth [deg]` or
-// `gaze x [px]` -> pupil_cloud; `gaze_timestamp` -> pupil; `n`, `x`, `y` without `t_ns` / `t_s`
+// `gaze x [px]` -> pupil_cloud; `time(100ns)` with `gaze_direct_L.x` (a semicolon-separated
+// header) -> sranipal; `gaze_timestamp` -> pupil; `n`, `x`, `y` without `t_ns` / `t_s`
 // -> gazebasevr; anything else -> gazelod (whose reader names what is missing).
 // `gazelod_magic`: a `# gazelod-trace` line came before the header (then always gazelod).
 TraceFormat detect_trace_format(const std::vector<std::string>& header_columns, bool gazelod_magic);

@@ -91,7 +91,7 @@ void apply(const json& j, const std::string& file, LayerConfig& c) {
     const auto parsed = f.is_string() ? gaze::parse_trace_format(f.get<std::string>()) : std::nullopt;
     if (!parsed)
       bad(file, "trace_format",
-          "must be \"auto\", \"gazelod\", \"gazebasevr\", \"pupil\" or \"pupil_cloud\", got " + shown(f));
+          "must be \"auto\", \"gazelod\", \"gazebasevr\", \"pupil\", \"pupil_cloud\" or \"sranipal\", got " + shown(f));
     c.trace_format = *parsed;
   }
   if (j.contains("head_offset")) {

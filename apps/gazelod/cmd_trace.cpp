@@ -28,7 +28,7 @@ struct Options {
 
 gaze::TraceFormat format_of(const Options& o) {
   const auto f = gaze::parse_trace_format(o.format);
-  if (!f) throw UsageError("--format: expected auto, gazelod, gazebasevr, pupil or pupil_cloud, got '" + o.format + "'");
+  if (!f) throw UsageError("--format: expected auto, gazelod, gazebasevr, pupil, pupil_cloud or sranipal, got '" + o.format + "'");
   return *f;
 }
 
@@ -185,7 +185,7 @@ const Registrar registrar{
       auto o = std::make_shared<Options>();
       sub.require_subcommand(1);
       const std::string fmt_help =
-          "input layout: auto (default: from the header), gazelod, gazebasevr, pupil, pupil_cloud";
+          "input layout: auto (default: from the header), gazelod, gazebasevr, pupil, pupil_cloud, sranipal";
       CLI::App* stats = sub.add_subcommand("stats", "samples, duration, rate, invalid fraction, saccades, fixations");
       stats->add_option("FILE", o->file, "trace file")->required();
       stats->add_option("--format", o->format, fmt_help);

@@ -2,6 +2,7 @@
 #include "gaze/import_gazebasevr.hpp"
 #include "gaze/import_pupil.hpp"
 #include "gaze/trace_open.hpp"
+#include "tests/gaze/trace_test_util.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,25 +13,8 @@
 namespace gazelod::gaze {
 namespace {
 
-template <typename Reader>
-std::vector<TraceRecord> read_all(const std::string& text, ReadOptions o = {}) {
-  std::istringstream in(text);
-  Reader r(in, "in.csv", o);
-  std::vector<TraceRecord> out;
-  TraceRecord rec;
-  while (r.next(rec)) out.push_back(rec);
-  return out;
-}
-
-template <typename Reader>
-std::string error_of(const std::string& text) {
-  try {
-    read_all<Reader>(text);
-  } catch (const TraceError& e) {
-    return e.what();
-  }
-  return "";
-}
+using testing::error_of;
+using testing::read_all;
 
 constexpr double kDeg = M_PI / 180.0;
 

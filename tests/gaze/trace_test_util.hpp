@@ -1,15 +1,41 @@
-// Test helpers: deterministic synthetic traces.
+// Test helpers: deterministic synthetic traces, and reading a CSV text whole with any reader.
 #pragma once
 
 #include "gaze/gaze_sample.hpp"
+#include "gaze/record_stream.hpp"
+#include "gaze/trace_error.hpp"
 
 #include <glm/geometric.hpp>
 
 #include <cstdint>
 #include <random>
+#include <sstream>
+#include <string>
 #include <vector>
 
 namespace gazelod::gaze::testing {
+
+// Every record of `text` read by a Reader (a CsvRecordStream) named "in.csv"; throws TraceError.
+template <typename Reader>
+std::vector<TraceRecord> read_all(const std::string& text, ReadOptions o = {}) {
+  std::istringstream in(text);
+  Reader r(in, "in.csv", o);
+  std::vector<TraceRecord> out;
+  TraceRecord rec;
+  while (r.next(rec)) out.push_back(rec);
+  return out;
+}
+
+// The TraceError message reading `text` gives, or "" when it reads fine.
+template <typename Reader>
+std::string error_of(const std::string& text) {
+  try {
+    read_all<Reader>(text);
+  } catch (const TraceError& e) {
+    return e.what();
+  }
+  return "";
+}
 
 // `seconds` at `rate_hz` of random unit gaze vectors and head poses (full-precision doubles),
 // with a few invalid samples and a few rows without head pose.

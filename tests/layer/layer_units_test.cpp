@@ -62,7 +62,7 @@ TEST(LayerConfig, ErrorsSayWhatAndWhere) {
   EXPECT_EQ(parse_error(R"({"overide": true})").rfind("c.json: overide: unknown key (known: override,", 0), 0u);
   EXPECT_EQ(parse_error(R"([1])"), "c.json: (top level): must be a JSON object, got [1]");
   EXPECT_EQ(parse_error(R"({"trace_format": "csv"})"),
-            "c.json: trace_format: must be \"auto\", \"gazelod\", \"gazebasevr\", \"pupil\" or \"pupil_cloud\", got \"csv\"");
+            "c.json: trace_format: must be \"auto\", \"gazelod\", \"gazebasevr\", \"pupil\", \"pupil_cloud\" or \"sranipal\", got \"csv\"");
   const std::string syntax = parse_error("{\"override\": tru}");
   EXPECT_EQ(syntax.rfind("c.json: not valid JSON at byte 17: ", 0), 0u) << syntax;
   EXPECT_EQ(load_config(nullptr, "/no/such/dir/c.json").error.rfind("GAZELOD_LAYER_CONFIG=/no/such/dir/c.json: cannot open: ", 0), 0u);

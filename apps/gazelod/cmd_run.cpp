@@ -61,6 +61,10 @@ const Registrar reg("run", "Run an OpenXR session with gaze-contingent LOD and w
   app.add_flag("--no-render", *no_render, "Select LODs only; draw nothing");
   app.add_flag("--no-eye-gaze", *no_eye_gaze, "Ignore the runtime's eye gaze (head-fixed fallback)");
   app.add_option("--trace", opt->trace_path, "Replay this gazelod gaze trace as the gaze source");
+  auto trace_head = std::make_shared<std::string>("recorded");
+  app.add_option("--trace-head", *trace_head,
+                 "With a trace that has head poses: recorded (default: the head moves as recorded, relative to "
+                 "its first pose, in place of the scenario's head effects) or scenario (the scenario's head)");
   auto gaze_source = std::make_shared<std::string>();
   app.add_option("--gaze", *gaze_source, "Gaze source for the whole run: runtime (default), hid (the first HID eye tracker) or trace:FILE");
   app.add_option("--capture-frame", opt->capture_frame, "Frame saved as frame.png (default: the middle one)");
@@ -89,6 +93,10 @@ const Registrar reg("run", "Run an OpenXR session with gaze-contingent LOD and w
       throw UsageError("--gaze: '" + *gaze_source + "' (use runtime, hid or trace:FILE)");
     }
     if (o.hid_gaze && !o.trace_path.empty()) throw UsageError("--gaze hid and --trace: choose one gaze source");
+    if (*trace_head != "recorded" && *trace_head != "scenario")
+      throw UsageError("--trace-head: '" + *trace_head + "' (use recorded or scenario)");
+    if (app.count("--trace-head") > 0 && o.trace_path.empty()) throw UsageError("--trace-head: needs --trace");
+    o.trace_head = *trace_head == "recorded";
     o.criteria = parse_criteria(*criteria);
     o.out_dir = *out;
     o.render = !*no_render;

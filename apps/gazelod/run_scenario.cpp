@@ -126,6 +126,45 @@ std::string with_baked_scene(const std::string& text, const std::string& label, 
   return j.dump(2);
 }
 
+// --trace with head poses: the scenario's head effects give way to a head_track of the same
+// file, relative to its first pose, whose first row plays at the first frame's display time
+// (the simulated runtime predicts frame k at base + (k + 1) periods), where TraceFromFirstFrame
+// puts the trace's first gaze sample. Returns the text unchanged when the trace has no head.
+std::string with_trace_head(const std::string& text, const std::string& trace_path, double frame_rate_hz,
+                            std::vector<std::string>& notes) {
+  bool head = false;
+  try {
+    auto stream = gaze::open_trace(trace_path, gaze::TraceFormat::automatic);
+    gaze::TraceRecord r;
+    if (stream->has_head())
+      while (!head && stream->next(r)) head = r.has_head && r.head.valid;
+  } catch (const gaze::TraceError& e) {
+    throw UsageError(std::string("--trace: ") + e.what());
+  }
+  if (!head) return text;
+  nlohmann::json j = nlohmann::json::parse(text);  // loaded once already: valid JSON
+  nlohmann::json kept = nlohmann::json::array();
+  std::string dropped;
+  for (const auto& e : j.value("effects", nlohmann::json::array())) {
+    const std::string type = e.is_object() ? e.value("type", std::string()) : std::string();
+    if (type == "head_sweep" || type == "head_turn" || type == "head_track") {
+      dropped += (dropped.empty() ? "" : ", ") + type;
+      continue;
+    }
+    kept.push_back(e);
+  }
+  kept.push_back({{"type", "head_track"},
+                  {"file", std::filesystem::absolute(trace_path).string()},
+                  {"format", "auto"},
+                  {"relative", true},
+                  {"start_s", 1.0 / frame_rate_hz}});
+  j["effects"] = kept;
+  notes.push_back("--trace: the head moves as recorded in " + trace_path + ", from its first pose" +
+                  (dropped.empty() ? "" : ", in place of " + dropped) +
+                  " (--trace-head scenario keeps the scenario's head)");
+  return j.dump(2);
+}
+
 }  // namespace
 
 PreparedScenario prepare_scenario(const RunOptions& opt) {
@@ -166,6 +205,17 @@ PreparedScenario prepare_scenario(const RunOptions& opt) {
     p.scenario = sim::load_scenario_json(text, p.label);
   } catch (const sim::ScenarioError& e) {
     throw UsageError(e.what());
+  }
+  if (!opt.trace_path.empty() && opt.trace_head && opt.runtime == "sim") {
+    const std::string with_head = with_trace_head(text, opt.trace_path, p.scenario.frame_rate_hz, p.notes);
+    if (with_head != text) {
+      text = with_head;
+      try {
+        p.scenario = sim::load_scenario_json(text, p.label + " + --trace head");
+      } catch (const sim::ScenarioError& e) {
+        throw UsageError(e.what());
+      }
+    }
   }
   if (opt.frames > 0) {
     const double rate = p.scenario.frame_rate_hz > 0 ? p.scenario.frame_rate_hz : 90.0;

@@ -14,6 +14,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace gazelod::cli {
 
@@ -26,6 +27,7 @@ struct PreparedScenario {
   // translation --scene-placement applied to them (0 for `file`).
   std::optional<bake::BakedScene> baked;
   glm::dvec3 scene_shift_m{0.0};
+  std::vector<std::string> notes;     // what the preparation changed, for the run to print
 };
 
 // Throws UsageError naming the scenario file / JSON path, the scene file, or the output folder.

@@ -80,6 +80,7 @@ class SaccadeMarker {
 int run_session(const RunOptions& opt, Io io) {
   // The scenario: the runtime serves it; this process also steps it for object motion.
   const PreparedScenario prepared = prepare_scenario(opt);
+  for (const std::string& note : prepared.notes) io.err << "gazelod run: " << note << "\n";
   sim::Simulator simulator(prepared.scenario);
   const sim::Scenario& scenario = simulator.scenario();
   if (opt.runtime == "sim") point_loader_at_simulator(prepared, opt);

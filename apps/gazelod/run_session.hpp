@@ -27,6 +27,10 @@ struct RunOptions {
   bool render = true;                  // false: select only, no Vulkan drawing
   bool eye_gaze = true;                // false: ignore the runtime's eye gaze (fallback test)
   std::string trace_path;              // an external gaze source: a gazelod trace to replay
+  // With a trace that has head poses (and the simulated runtime): the head moves as recorded
+  // (relative to its first pose) in place of the scenario's head effects, so the replayed
+  // eye-in-head gaze and the head it was recorded with stay together. false: the scenario's head.
+  bool trace_head = true;
   bool hid_gaze = false;               // the first HID eye tracker (usage page 0x12) as the gaze source
   std::int64_t capture_frame = -1;     // frame saved as PNG in out_dir (-1: the middle one)
   bool quiet = false;                  // no progress lines

@@ -1,8 +1,12 @@
 // head_track: the head pose replayed from a recorded trace (gazelod's trace format, or any
 // layout gaze/trace_open.hpp reads) with head columns. Trace time `offset_s` (default: its
-// first row) is scenario time 0; poses are interpolated (slerp / lerp) and the angular and
-// linear velocities are those of the segment. Before the first row and after the last the
-// pose is held (or, with "loop": true, the track repeats). Other head effects add on top.
+// first row) plays at scenario time `start_s` (default 0); poses are interpolated (slerp /
+// lerp) and the angular and linear velocities are those of the segment. Before the first row
+// and after the last the pose is held (or, with "loop": true, the track repeats). With
+// "relative": true the track moves the scenario's head as the recorded head moved from its
+// first pose: that pose's heading (its yaw about +Y) is turned to the scenario's forward and its
+// position to the scenario's head position; its pitch and roll stay, since gravity is the same
+// in both worlds. Other head effects add on top.
 #include "gaze/trace_error.hpp"
 #include "gaze/trace_open.hpp"
 #include "sim/effects/effects.hpp"
@@ -32,8 +36,10 @@ class HeadTrack final : public Effect {
     const std::optional<gaze::TraceFormat> fmt = gaze::parse_trace_format(fmt_name);
     if (!fmt) in.params.fail("format", "unknown trace format \"" + fmt_name + "\"");
     loop_ = in.params.boolean("loop", false);
+    const bool relative = in.params.boolean("relative", false);
     const bool has_offset = in.params.has("offset_s");
     const double offset_s = in.params.number("offset_s", 0.0, -1e9, 1e9);
+    const double start_s = in.params.number("start_s", 0.0, -1e6, 1e6);
     try {
       std::unique_ptr<gaze::RecordStream> stream = gaze::open_trace(resolve(file, in.source), *fmt);
       if (!stream->has_head()) in.params.fail("file", file + ": the trace has no head columns");
@@ -50,9 +56,26 @@ class HeadTrack final : public Effect {
     }
     if (t_ns_.empty()) in.params.fail("file", file + ": no valid head pose in the trace");
     const std::int64_t origin = has_offset ? static_cast<std::int64_t>(std::llround(offset_s * 1e9)) : t_ns_.front();
-    for (std::int64_t& t : t_ns_) t -= origin;
+    const std::int64_t start = to_ns(start_s);
+    for (std::int64_t& t : t_ns_) t = t - origin + start;
+    if (relative) make_relative();
   }
   unsigned stages() const override { return kStageHead; }
+  // The first pose's heading turned to -Z and its position moved to the origin (the scenario's
+  // head path then places it): a yaw-only rotation, atan2 of the forward's horizontal part.
+  void make_relative() {
+    const glm::dvec3 forward = q_.front() * glm::dvec3(0.0, 0.0, -1.0);
+    const double horizontal = std::hypot(forward.x, forward.z);
+    // Looking straight up or down the heading is undefined: take the head's up instead.
+    const glm::dvec3 ahead = horizontal > 1e-6 ? forward : q_.front() * glm::dvec3(0.0, 1.0, 0.0) * -forward.y;
+    const double yaw_rad = std::atan2(-ahead.x, -ahead.z);  // of the first pose, about +Y
+    const glm::dquat undo = glm::angleAxis(-yaw_rad, glm::dvec3(0.0, 1.0, 0.0));
+    const glm::dvec3 first = p_.front();
+    for (std::size_t i = 0; i < q_.size(); ++i) {
+      q_[i] = glm::normalize(undo * q_[i]);
+      p_[i] = undo * (p_[i] - first);
+    }
+  }
   void apply_head(std::int64_t t_ns, HeadMotion& h) const override {
     if (loop_ && t_ns_.size() > 1) {
       const std::int64_t span = t_ns_.back() - t_ns_.front();

@@ -1,10 +1,14 @@
 // `gazelod run` end to end on the simulated runtime: the report, its invariants, and the
 // fallbacks when eye gaze is missing.
 #include "run_test_util.hpp"
+#include "tests/skip_or_fail.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <filesystem>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
@@ -124,6 +128,88 @@ TEST(RunCli, TraceIsTheGazeSourceForTheWholeRun) {
   // No ground truth for a replayed trace.
   const auto summary = nlohmann::json::parse(read_text(dir / "out" / "summary.json"));
   EXPECT_FALSE(summary.at("audit").at("available").get<bool>());
+}
+
+// A trace with head poses moves the head as recorded (a head_track of the same file, relative
+// to its first pose, in place of the scenario's head effects); --trace-head scenario keeps the
+// scenario's head; a trace without head columns changes nothing.
+TEST(RunCli, TraceWithHeadPosesMovesTheHeadAsRecorded) {
+  use_simulated_runtime("");
+  const auto dir = scratch_dir();
+  const auto trace = dir / "trace.csv";
+  ASSERT_EQ(run_cli({"scenario", "record", "--default", "--out", trace.string(), "--duration", "1"}).rc, 0);
+  const auto effects_of = [](const std::filesystem::path& out) {
+    std::vector<std::string> types;
+    const auto j = nlohmann::json::parse(read_text(out / "scenario.json"));
+    for (const auto& e : j.at("effects")) types.push_back(e.at("type").get<std::string>());
+    return std::make_pair(types, j);
+  };
+  const auto has = [](const std::vector<std::string>& v, const char* t) { return std::find(v.begin(), v.end(), t) != v.end(); };
+
+  CliResult r = run_cli({"run", "--frames", "20", "--no-render", "--trace", trace.string(), "--out", (dir / "rec").string()});
+  ASSERT_EQ(r.rc, 0) << r.err;
+  EXPECT_NE(r.err.find("gazelod run: --trace: the head moves as recorded in " + trace.string() +
+                       ", from its first pose, in place of head_sweep, head_turn"),
+            std::string::npos)
+      << r.err;
+  const auto [recorded, j] = effects_of(dir / "rec");
+  EXPECT_FALSE(has(recorded, "head_sweep"));
+  EXPECT_FALSE(has(recorded, "head_turn"));
+  ASSERT_TRUE(has(recorded, "head_track"));
+  const auto& track = j.at("effects").back();
+  EXPECT_EQ(track.at("type"), "head_track");
+  EXPECT_EQ(track.at("relative"), true);
+  EXPECT_DOUBLE_EQ(track.at("start_s").get<double>(), 1.0 / 90.0);  // the first frame's display time
+  EXPECT_TRUE(std::filesystem::path(track.at("file").get<std::string>()).is_absolute());
+
+  r = run_cli({"run", "--frames", "20", "--no-render", "--trace", trace.string(), "--trace-head", "scenario", "--out",
+               (dir / "scn").string()});
+  ASSERT_EQ(r.rc, 0) << r.err;
+  EXPECT_EQ(r.err.find("the head moves as recorded"), std::string::npos) << r.err;
+  const auto scenario_head = effects_of(dir / "scn").first;
+  EXPECT_TRUE(has(scenario_head, "head_sweep"));
+  EXPECT_FALSE(has(scenario_head, "head_track"));
+
+  // No head columns: the scenario's head, and nothing said.
+  std::ofstream(dir / "gaze-only.csv") << "# gazelod-trace 1\nt_ns,gaze_x,gaze_y,gaze_z,valid\n0,0,0,-1,1\n"
+                                          "10000000,0,0,-1,1\n";
+  r = run_cli({"run", "--frames", "20", "--no-render", "--trace", (dir / "gaze-only.csv").string(), "--out",
+               (dir / "gaze-only").string()});
+  ASSERT_EQ(r.rc, 0) << r.err;
+  EXPECT_EQ(r.err.find("the head moves as recorded"), std::string::npos) << r.err;
+  EXPECT_TRUE(has(effects_of(dir / "gaze-only").first, "head_sweep"));
+
+  r = run_cli({"run", "--frames", "2", "--no-render", "--trace", trace.string(), "--trace-head", "both", "--out",
+               (dir / "o").string()});
+  EXPECT_EQ(r.rc, 2);
+  EXPECT_NE(r.err.find("--trace-head: 'both' (use recorded or scenario)"), std::string::npos) << r.err;
+  r = run_cli({"run", "--frames", "2", "--no-render", "--trace-head", "scenario", "--out", (dir / "o").string()});
+  EXPECT_EQ(r.rc, 2);
+  EXPECT_NE(r.err.find("--trace-head: needs --trace"), std::string::npos) << r.err;
+}
+
+// On a real HTC Vive Pro Eye recording (../shared/data/gaze): its eye-in-head gaze carries the
+// vestibulo-ocular reflex of the recorded head turns. Replayed against the scenario's head, that
+// reflex reads as eye motion in the world and velocity takes detail away on noise; with the
+// recorded head the eyes hold their world points and velocity is owed far less.
+TEST(RunCli, RealViveTraceWithItsHeadLeavesLessToVelocity) {
+  const auto file = std::filesystem::path(GAZELOD_SOURCE_DIR) / ".." / "shared" / "data" / "gaze" /
+                    "htc_vive_pro_eye_unity_log.csv";
+  if (!std::filesystem::is_regular_file(file)) GAZELOD_SKIP_OR_FAIL("no " << file << " (../shared/data/gaze, evaluation data)");
+  use_simulated_runtime("");
+  const auto dir = scratch_dir();
+  double velocity_share[2] = {0.0, 0.0};
+  const char* heads[2] = {"recorded", "scenario"};
+  for (int i = 0; i < 2; ++i) {
+    const auto out = dir / heads[i];
+    const CliResult r = run_cli({"run", "--frames", "1200", "--no-render", "--quiet", "--trace", file.string(),
+                                 "--trace-head", heads[i], "--out", out.string()});
+    ASSERT_EQ(r.rc, 0) << r.err;
+    velocity_share[i] = nlohmann::json::parse(read_text(out / "summary.json")).at("shares").at("velocity").get<double>();
+  }
+  std::printf("velocity's share of the reduction: %.4f with the recorded head, %.4f with the scenario's\n",
+              velocity_share[0], velocity_share[1]);
+  EXPECT_LT(velocity_share[0], 0.5 * velocity_share[1]);
 }
 
 // The report's files are written to temporaries and renamed when complete: when one cannot be

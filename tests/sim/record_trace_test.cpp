@@ -85,6 +85,50 @@ TEST(RecordTrace, HeadTrackReplaysARecordedHead) {
   EXPECT_EQ(sim.head_at(10'000 * kMs).angular_velocity_rad_s, glm::dvec3(0.0));
 }
 
+// "relative": the recorded head's motion from its first pose, that pose's heading turned to -Z
+// and its position to the scenario's head; "start_s": when the first row plays.
+TEST(RecordTrace, HeadTrackRelativeTurnsTheFirstHeadingForwardAndKeepsTheMotion) {
+  const double deg = std::acos(-1.0) / 180.0;
+  const glm::dvec3 up(0, 1, 0), right(1, 0, 0), forward(0, 0, -1);
+  // Row 0: 40 deg left, pitched 10 deg down, at (3, 1.7, -2); row 1 (1 s later): 20 deg further
+  // left, moved 1 m along the recording's -Z.
+  const glm::dquat q0 = glm::angleAxis(40 * deg, up) * glm::angleAxis(-10 * deg, right);
+  const glm::dquat q1 = glm::angleAxis(60 * deg, up) * glm::angleAxis(-10 * deg, right);
+  const std::string path = std::string(GAZELOD_BINARY_DIR) + "/tests/sim/relative_head.csv";
+  {
+    std::ofstream out(path);
+    out.precision(17);
+    out << "# gazelod-trace 1\nt_ns,gaze_x,gaze_y,gaze_z,valid,head_qw,head_qx,head_qy,head_qz,head_px,head_py,head_pz\n";
+    out << "5000000000,0,0,-1,1," << q0.w << "," << q0.x << "," << q0.y << "," << q0.z << ",3,1.7,-2\n";
+    out << "6000000000,0,0,-1,1," << q1.w << "," << q1.x << "," << q1.y << "," << q1.z << ",3,1.7,-3\n";
+  }
+  const glm::dvec3 home = make_sim(base_scenario()).head_at(0).position_m;
+  Simulator sim = make_sim(base_scenario({{{"type", "head_track"}, {"file", path}, {"relative", true}, {"start_s", 0.5}}}));
+  const auto heading_deg = [&](const glm::dquat& q) {
+    const glm::dvec3 f = q * forward;
+    return std::atan2(-f.x, -f.z) / deg;
+  };
+  const auto pitch_deg = [&](const glm::dquat& q) {
+    const glm::dvec3 f = q * forward;
+    return std::atan2(f.y, std::hypot(f.x, f.z)) / deg;
+  };
+  const HeadState first = sim.head_at(500 * kMs), later = sim.head_at(1500 * kMs), before = sim.head_at(0);
+  EXPECT_NEAR(heading_deg(first.orientation), 0.0, 1e-9);  // the first pose faces -Z
+  EXPECT_NEAR(pitch_deg(first.orientation), -10.0, 1e-9);  // and keeps its pitch
+  EXPECT_LT(glm::length(first.position_m - home), 1e-12);
+  EXPECT_NEAR(heading_deg(later.orientation), 20.0, 1e-9);  // turned 20 deg left since
+  EXPECT_NEAR(pitch_deg(later.orientation), -10.0, 1e-9);
+  // The 1 m step along the recording's -Z was 40 deg right of the first heading; so it is here.
+  const glm::dvec3 step = later.position_m - home;
+  EXPECT_NEAR(step.x, std::sin(40 * deg), 1e-9);
+  EXPECT_NEAR(step.y, 0.0, 1e-9);
+  EXPECT_NEAR(step.z, -std::cos(40 * deg), 1e-9);
+  EXPECT_NEAR(heading_deg(before.orientation), 0.0, 1e-9);  // held before start_s
+  // Without "relative" the same track plays in the recording's own frame.
+  Simulator absolute = make_sim(base_scenario({{{"type", "head_track"}, {"file", path}, {"start_s", 0.5}}}));
+  EXPECT_NEAR(heading_deg(absolute.head_at(500 * kMs).orientation), 40.0, 1e-9);
+}
+
 TEST(RecordTrace, HeadTrackErrorsNameTheParameter) {
   nlohmann::json j = base_scenario({{{"type", "head_track"}, {"file", "/nonexistent/head.csv"}}});
   try {

@@ -2,8 +2,12 @@
 
 #include "gaze/import_pupil_cloud.hpp"
 
+#include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
+
 #include <algorithm>
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace gazelod::gaze {
@@ -90,6 +94,9 @@ TraceStats compute_trace_stats(RecordStream& stream, IvtOptions ivt, EventOption
     }
     labeled.clear();
   };
+  // In the world where the trace has head poses: a row without a valid pose holds the last one
+  // (rows before the first stay in the head).
+  std::optional<glm::dquat> last_head;
   TraceRecord r;
   while (stream.next(r)) {
     if (st.samples == 0) st.first_ns = r.gaze.t_ns;
@@ -97,7 +104,10 @@ TraceStats compute_trace_stats(RecordStream& stream, IvtOptions ivt, EventOption
     ++st.samples;
     st.invalid += !r.gaze.valid;
     st.with_head += r.has_head;
-    classifier.push(r.gaze, labeled);
+    if (r.has_head && r.head.valid) last_head = r.head.orientation;
+    GazeSample classified = r.gaze;
+    if (last_head) classified.direction = glm::normalize(*last_head * r.gaze.direction);
+    classifier.push(classified, labeled);
     drain();
     if (pupil) {
       const PupilCloudEventIds ids = pupil->last_ids();
@@ -111,6 +121,7 @@ TraceStats compute_trace_stats(RecordStream& stream, IvtOptions ivt, EventOption
       ivdt_ids.push(motion == EyeMotion::fixation, motion == EyeMotion::loss, r.gaze.t_ns);
     }
   }
+  st.classified_in_world = last_head.has_value();
   classifier.finish(labeled);
   drain();
   take(tracker.finish());

@@ -6,7 +6,10 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <glm/gtc/quaternion.hpp>
+
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -58,6 +61,48 @@ TEST(TraceCli, StatsJsonMatchesTheGeneratedTrace) {
   // Six fixations between/around the saccades; the blink splits the last one into two.
   EXPECT_EQ(j["fixations"].get<int>(), 7);
   EXPECT_EQ(j["skipped_lines"].get<int>(), 0);
+}
+
+// The eyes holding a point while the head turns at 60 deg/s (the vestibulo-ocular reflex): no
+// saccade in the world, which the stats see when the trace has head poses; the same eye-in-head
+// gaze without them reads as one long eye movement above I-VT's 30 deg/s.
+TEST(TraceCli, StatsClassifyInTheWorldWhenTheTraceHasHeadPoses) {
+  const double deg = std::acos(-1.0) / 180.0;
+  std::vector<TraceRecord> rows;
+  for (int i = 0; i < 250; ++i) {  // 1 s at 250 Hz
+    const double yaw_rad = 60.0 * deg * i / 250.0;
+    TraceRecord r;
+    r.gaze.t_ns = std::int64_t{4'000'000} * i;
+    r.gaze.valid = true;
+    r.gaze.confidence = 1.0f;
+    r.gaze.direction = glm::angleAxis(-yaw_rad, glm::dvec3(0, 1, 0)) * glm::dvec3(0, 0, -1);  // eye in head
+    r.has_head = true;
+    r.head.t_ns = r.gaze.t_ns;
+    r.head.valid = true;
+    r.head.orientation = glm::angleAxis(yaw_rad, glm::dvec3(0, 1, 0));
+    rows.push_back(r);
+  }
+  const auto stats = [&](bool with_head) {
+    const fs::path p = temp_file(with_head ? "vor_head.csv" : "vor_gaze_only.csv");
+    {
+      std::ofstream f(p, std::ios::binary);
+      TraceWriter w(f, {.write_head = with_head});
+      for (TraceRecord r : rows) {
+        r.has_head = with_head;
+        w.write(r);
+      }
+    }
+    const Result res = run({"trace", "stats", p.string(), "--json"});
+    EXPECT_EQ(res.rc, 0) << res.err;
+    return nlohmann::json::parse(res.out);
+  };
+  const auto world = stats(true), head = stats(false);
+  EXPECT_EQ(world["classified_in"], "world");
+  EXPECT_EQ(world["saccades"].get<int>(), 0);
+  EXPECT_EQ(world["fixations"].get<int>(), 1);
+  EXPECT_EQ(head["classified_in"], "head");
+  EXPECT_GE(head["saccades"].get<int>(), 1);
+  EXPECT_EQ(head["fixations"].get<int>(), 0);
 }
 
 TEST(TraceCli, MalformedFileExitsNonZeroNamingTheLine) {

@@ -14,6 +14,7 @@ namespace {
 constexpr std::int64_t kUnixEpochTicks = 621'355'968'000'000'000;  // 1970-01-01 in .NET ticks
 constexpr std::int64_t kOriginValid = 1 << 0, kDirectionValid = 1 << 1;
 constexpr double kMaxOriginMm = 1000.0;
+constexpr double kMaxHeadPositionM = 1e6;
 
 const char* const kValid[2] = {"eye_valid_L", "eye_valid_R"};
 const char* const kDirection[2][3] = {{"gaze_direct_L.x", "gaze_direct_L.y", "gaze_direct_L.z"},
@@ -57,7 +58,13 @@ SranipalReader::SranipalReader(std::istream& in, std::string file, ReadOptions o
     valid_[e] = need(kValid[e]);
     for (std::size_t k = 0; k < 3; ++k) direction_[e][k] = need(kDirection[e][k]);
   }
-  if (!missing.empty()) cursor_.fail(0, "missing required SRanipal (HTC Vive Pro Eye) column(s): " + missing);
+  if (!missing.empty()) {
+    // One column holding the names: the header is not split on the logger's semicolons.
+    if (h.size() == 1 && cursor_.fields()[0].text.find("time(100ns),") != std::string_view::npos)
+      cursor_.fail(0, "an SRanipal (HTC Vive Pro Eye) header separated by commas: this layout is read with the "
+                      "Unity logger's semicolons");
+    cursor_.fail(0, "missing required SRanipal (HTC Vive Pro Eye) column(s): " + missing);
+  }
   // Optional groups: used only when every column of the group is there.
   const auto group = [&](const char* const names[3]) -> std::optional<Cols3> {
     const auto a = h.find(names[0]), b = h.find(names[1]), c = h.find(names[2]);
@@ -69,6 +76,15 @@ SranipalReader::SranipalReader(std::istream& in, std::string file, ReadOptions o
   time_field_ = t_;
 }
 
+// The field as a number; a decimal comma (a logger run under a locale that writes them) is named.
+double SranipalReader::number(std::size_t index, const char* name) const {
+  const CsvField& f = cursor_.field(index, name);
+  if (f.text.find(',') != std::string_view::npos)
+    cursor_.fail(f.column, std::string(name) + ": '" + std::string(f.text) +
+                               "' has a decimal comma (the logger wrote its locale's numbers); write them with '.'");
+  return cursor_.number(index, name);
+}
+
 void SranipalReader::parse_row(TraceRecord& out) {
   const CsvCursor& c = cursor_;
   if (c.fields().size() != fields_)
@@ -77,23 +93,27 @@ void SranipalReader::parse_row(TraceRecord& out) {
   if (!t_ns) c.fail(c.fields()[t_].column, "time(100ns): not a .NET tick count within +-292 years of 1970");
   out.gaze.t_ns = *t_ns;
   const auto vec = [&](const Cols3& cols, const char* const names[3]) {
-    return glm::dvec3(c.number(cols[0], names[0]), c.number(cols[1], names[1]), c.number(cols[2], names[2]));
+    glm::dvec3 v;  // in column order, so the first bad field is the one named
+    for (glm::length_t k = 0; k < 3; ++k) v[k] = number(cols[static_cast<std::size_t>(k)], names[k]);
+    return v;
   };
+  // The eyes whose direction is valid (bit 1; an eye's columns are read only then: SRanipal
+  // writes zeros, or nothing, for an eye it lost), and the origins of those same eyes, so the
+  // origin and the direction describe one cyclopean eye.
   glm::dvec3 direction_sum(0.0), origin_sum_mm(0.0);
   int eyes = 0, origins = 0;
   for (std::size_t e = 0; e < 2; ++e) {
     const std::int64_t bits = c.integer(valid_[e], kValid[e]);
     if (bits < 0 || bits > 31) c.fail(c.fields()[valid_[e]].column, std::string(kValid[e]) + ": must be in [0, 31] (validity bits)");
+    if (!(bits & kDirectionValid)) continue;
     const glm::dvec3 d = vec(direction_[e], kDirection[e]);
     const double length = glm::length(d);
-    // SRanipal writes (0, 0, 0) for an eye it lost; a direction flagged valid must be about unit.
-    if ((bits & kDirectionValid) && length > 0.0) {
-      if (std::fabs(length - 1.0) > 0.05)
-        c.fail(c.fields()[direction_[e][0]].column,
-               std::string(kDirection[e][0]).substr(0, 13) + ": not a unit vector (length " + std::to_string(length) + ")");
-      direction_sum += sranipal_to_openxr(d / length);
-      ++eyes;
-    }
+    if (length == 0.0) continue;  // flagged, but no vector: the eye is lost all the same
+    if (std::fabs(length - 1.0) > 0.05)
+      c.fail(c.fields()[direction_[e][0]].column,
+             std::string(kDirection[e][0]).substr(0, 13) + ": not a unit vector (length " + std::to_string(length) + ")");
+    direction_sum += sranipal_to_openxr(d / length);
+    ++eyes;
     if (origin_ && (bits & kOriginValid)) {
       const glm::dvec3 o = vec((*origin_)[e], kOrigin[e]);
       // An eye sits a few centimetres from the tracker; a metre away is no eye position.
@@ -105,16 +125,20 @@ void SranipalReader::parse_row(TraceRecord& out) {
     }
   }
   out.gaze.valid = false;
-  out.gaze.confidence = 0.5f * static_cast<float>(eyes);
+  out.gaze.confidence = 0.0f;
   if (origins > 0) out.gaze.origin_m = origin_sum_mm / static_cast<double>(origins) * 1e-3;
   const double sum_length = glm::length(direction_sum);
-  if (eyes > 0 && sum_length > 1e-9) {  // two valid eyes never point exactly apart
+  if (eyes > 0 && sum_length > 1e-9) {  // two valid eyes pointing exactly apart give no gaze
     out.gaze.direction = direction_sum / sum_length;
     out.gaze.valid = true;
+    out.gaze.confidence = 0.5f * static_cast<float>(eyes);
   }
   out.has_head = head_.has_value();
   if (head_) {
     const glm::dvec3 p = vec(head_->position, kHeadPosition);
+    for (std::size_t k = 0; k < 3; ++k)
+      if (std::fabs(p[static_cast<glm::length_t>(k)]) > kMaxHeadPositionM)
+        c.fail(c.fields()[head_->position[k]].column, std::string(kHeadPosition[k]) + ": beyond 1000 km of the origin");
     out.head.t_ns = out.gaze.t_ns;
     out.head.position_m = {p.x, p.y, -p.z};
     out.head.orientation = unity_euler_deg_to_openxr(vec(head_->rotation, kHeadRotation));

@@ -25,8 +25,11 @@
 //     (w, -x, -y, z).
 // A sample is valid when at least one eye's gaze direction is valid (bit 1) and non-zero; the
 // gaze is the normalised mean of the valid eyes' directions (a cyclopean gaze), its origin the
-// mean of the origins flagged valid (bit 0). Invalid samples (blinks, lost tracking) are kept as
-// invalid, not dropped. Confidence: 1 with both eyes, 0.5 with one, 0 without.
+// mean of those eyes' origins flagged valid (bit 0); an eye's columns are read only when its
+// direction bit is set. Invalid samples (blinks, lost tracking) are kept as invalid, not
+// dropped. Confidence: 1 with both eyes, 0.5 with one, 0 for an invalid sample. Where one eye
+// drops out the cyclopean gaze moves by half the eyes' vergence (a degree or two at arm's
+// length), as SRanipal's own combined gaze does.
 #pragma once
 
 #include "gaze/record_stream.hpp"
@@ -49,6 +52,7 @@ class SranipalReader : public CsvRecordStream {
   void parse_row(TraceRecord& out) override;
 
  private:
+  double number(std::size_t index, const char* name) const;
   using Cols3 = std::array<std::size_t, 3>;
   std::size_t t_ = 0, fields_ = 0;
   std::array<std::size_t, 2> valid_{};

@@ -104,9 +104,19 @@ TraceStats compute_trace_stats(RecordStream& stream, IvtOptions ivt, EventOption
     ++st.samples;
     st.invalid += !r.gaze.valid;
     st.with_head += r.has_head;
-    if (r.has_head && r.head.valid) last_head = r.head.orientation;
+    if (r.has_head && r.head.valid) {
+      if (!last_head && st.samples > 1) {  // from head to world: no velocity across the switch
+        classifier.finish(labeled);
+        drain();
+        classifier = IvtClassifier(ivt);
+      }
+      last_head = r.head.orientation;
+    }
     GazeSample classified = r.gaze;
-    if (last_head) classified.direction = glm::normalize(*last_head * r.gaze.direction);
+    if (last_head)
+      classified.direction = glm::normalize(*last_head * r.gaze.direction);
+    else
+      ++st.classified_in_head;
     classifier.push(classified, labeled);
     drain();
     if (pupil) {

@@ -41,11 +41,12 @@ struct TraceStats {
   double duration_s = 0.0;        // last - first sample time
   double rate_hz = 0.0;           // (samples - 1) / duration; 0 with < 2 samples
   double invalid_fraction = 0.0;  // invalid / samples; 0 when empty
-  // Saccades and fixations are classified in the world when the trace has valid head poses
-  // (the eye-in-head gaze turned by the last pose; rows before the first stay in the head),
-  // else in the head. In the head, the reflex that keeps the eyes on a point while the head
-  // turns reads as eye motion.
-  bool classified_in_world = false;
+  // Saccades and fixations are classified in the world from the first valid head pose on (the
+  // eye-in-head gaze turned by the last pose; the classifier restarts there, so no velocity is
+  // taken across the switch), in the head before it. In the head, the reflex that keeps the
+  // eyes on a point while the head turns reads as eye motion.
+  bool classified_in_world = false;   // some samples were (the trace has head poses)
+  std::size_t classified_in_head = 0;  // samples before the first head pose
   std::size_t saccades = 0;
   std::size_t fixations = 0;      // runs of at least EventOptions::min_fixation_ns
   double mean_saccade_amplitude_deg = 0.0;

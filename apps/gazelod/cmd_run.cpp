@@ -96,6 +96,8 @@ const Registrar reg("run", "Run an OpenXR session with gaze-contingent LOD and w
     if (*trace_head != "recorded" && *trace_head != "scenario")
       throw UsageError("--trace-head: '" + *trace_head + "' (use recorded or scenario)");
     if (app.count("--trace-head") > 0 && o.trace_path.empty()) throw UsageError("--trace-head: needs --trace");
+    if (app.count("--trace-head") > 0 && o.runtime != "sim")
+      throw UsageError("--trace-head: only with the simulated runtime (another runtime moves the head itself)");
     o.trace_head = *trace_head == "recorded";
     o.criteria = parse_criteria(*criteria);
     o.out_dir = *out;

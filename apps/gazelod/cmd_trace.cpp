@@ -120,7 +120,7 @@ int run_stats(const Options& o, Io io) {
     j["duration_s"] = st.duration_s;
     j["rate_hz"] = st.rate_hz;
     j["invalid_fraction"] = st.invalid_fraction;
-    j["classified_in"] = st.classified_in_world ? "world" : "head";
+    j["classified_in"] = !st.classified_in_world ? "head" : st.classified_in_head > 0 ? "head_then_world" : "world";
     j["saccades"] = st.saccades;
     j["fixations"] = st.fixations;
     j["mean_saccade_amplitude_deg"] = st.mean_saccade_amplitude_deg;
@@ -143,7 +143,10 @@ int run_stats(const Options& o, Io io) {
          << "invalid           " << st.invalid_fraction * 100.0 << " %\n"
          << "saccades          " << st.saccades << " (mean amplitude "
          << st.mean_saccade_amplitude_deg << " deg; classified "
-         << (st.classified_in_world ? "in the world: the trace has head poses" : "in the head: no head poses") << ")\n"
+         << (!st.classified_in_world          ? "in the head: no head poses"
+             : st.classified_in_head > 0 ? "in the head, then in the world from the first head pose"
+                                         : "in the world: the trace has head poses")
+         << ")\n"
          << "fixations         " << st.fixations << "\n"
          << "with head pose    " << st.with_head << "\n"
          << "skipped lines     " << stream->skipped().skipped << "\n";

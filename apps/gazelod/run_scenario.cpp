@@ -34,29 +34,6 @@ void set_env(const char* name, const std::string& value) {
   if (::setenv(name, value.c_str(), 1) != 0) throw UsageError(std::string("cannot set ") + name);
 }
 
-// A trace replayed from the run's first frame: trace time 0 (its first sample) is mapped to
-// the first time the plugin asks for, so any recording lines up with any session.
-class TraceFromFirstFrame final : public gaze::GazeSource {
- public:
-  explicit TraceFromFirstFrame(std::vector<gaze::TraceRecord> records)
-      : start_ns_(records.empty() ? 0 : records.front().gaze.t_ns), replay_(std::move(records)) {}
-  std::string name() const override { return "trace"; }
-  std::optional<gaze::GazeSample> sample_at(std::int64_t t_ns) override {
-    if (!started_) {
-      offset_ns_ = t_ns - start_ns_;
-      started_ = true;
-    }
-    auto s = replay_.sample_at(t_ns - offset_ns_);
-    if (s) s->t_ns += offset_ns_;
-    return s;
-  }
-  std::string status() const override { return replay_.status(); }
-
- private:
-  std::int64_t start_ns_ = 0, offset_ns_ = 0;
-  bool started_ = false;
-  gaze::ReplaySource replay_;
-};
 
 // --scene: the baked glTF's objects and LOD chains replace the scenario's scene objects, in the
 // scenario text itself, so the simulated runtime and this process step the same scenario.
@@ -127,11 +104,10 @@ std::string with_baked_scene(const std::string& text, const std::string& label, 
 }
 
 // --trace with head poses: the scenario's head effects give way to a head_track of the same
-// file, relative to its first pose, whose first row plays at the first frame's display time
-// (the simulated runtime predicts frame k at base + (k + 1) periods), where TraceFromFirstFrame
-// puts the trace's first gaze sample. Returns the text unchanged when the trace has no head.
-std::string with_trace_head(const std::string& text, const std::string& trace_path, double frame_rate_hz,
-                            std::vector<std::string>& notes) {
+// file, relative to its first pose, its first row at scenario time 0; run_session starts the
+// gaze replay there too (TraceFromFirstFrame::start_at), so the two stay together however late
+// the first frame comes (a paced runtime). Returns the text unchanged when the trace has no head.
+std::string with_trace_head(const std::string& text, const std::string& trace_path, std::vector<std::string>& notes) {
   bool head = false;
   try {
     auto stream = gaze::open_trace(trace_path, gaze::TraceFormat::automatic);
@@ -156,8 +132,7 @@ std::string with_trace_head(const std::string& text, const std::string& trace_pa
   kept.push_back({{"type", "head_track"},
                   {"file", std::filesystem::absolute(trace_path).string()},
                   {"format", "auto"},
-                  {"relative", true},
-                  {"start_s", 1.0 / frame_rate_hz}});
+                  {"relative", true}});
   j["effects"] = kept;
   notes.push_back("--trace: the head moves as recorded in " + trace_path + ", from its first pose" +
                   (dropped.empty() ? "" : ", in place of " + dropped) +
@@ -207,9 +182,10 @@ PreparedScenario prepare_scenario(const RunOptions& opt) {
     throw UsageError(e.what());
   }
   if (!opt.trace_path.empty() && opt.trace_head && opt.runtime == "sim") {
-    const std::string with_head = with_trace_head(text, opt.trace_path, p.scenario.frame_rate_hz, p.notes);
+    const std::string with_head = with_trace_head(text, opt.trace_path, p.notes);
     if (with_head != text) {
       text = with_head;
+      p.trace_head = true;
       try {
         p.scenario = sim::load_scenario_json(text, p.label + " + --trace head");
       } catch (const sim::ScenarioError& e) {
@@ -265,7 +241,22 @@ void point_loader_at_simulator(const PreparedScenario& prepared, const RunOption
   set_env("GAZELOD_SIM_PACED", opt.paced ? "1" : "0");
 }
 
-std::shared_ptr<gaze::GazeSource> make_external_source(const RunOptions& opt) {
+TraceFromFirstFrame::TraceFromFirstFrame(std::vector<gaze::TraceRecord> records)
+    : start_ns_(records.empty() ? 0 : records.front().gaze.t_ns), replay_(std::move(records)) {}
+
+void TraceFromFirstFrame::start_at(std::int64_t t_ns) {
+  offset_ns_ = t_ns - start_ns_;
+  started_ = true;
+}
+
+std::optional<gaze::GazeSample> TraceFromFirstFrame::sample_at(std::int64_t t_ns) {
+  if (!started_) start_at(t_ns);
+  auto s = replay_.sample_at(t_ns - offset_ns_);
+  if (s) s->t_ns += offset_ns_;
+  return s;
+}
+
+std::shared_ptr<TraceFromFirstFrame> make_external_source(const RunOptions& opt) {
   if (opt.trace_path.empty()) return nullptr;
   try {
     auto stream = gaze::open_trace(opt.trace_path, gaze::TraceFormat::automatic);

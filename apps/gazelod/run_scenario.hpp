@@ -4,6 +4,7 @@
 #pragma once
 
 #include "gaze/gaze_source.hpp"
+#include "gaze/replay_source.hpp"
 #include "apps/gazelod/run_session.hpp"
 #include "bake/baked_scene.hpp"
 #include "sim/simulator.hpp"
@@ -28,6 +29,9 @@ struct PreparedScenario {
   std::optional<bake::BakedScene> baked;
   glm::dvec3 scene_shift_m{0.0};
   std::vector<std::string> notes;     // what the preparation changed, for the run to print
+  // --trace with head poses: the head replays the trace from scenario time 0, and the gaze
+  // replay must start there too (TraceFromFirstFrame::start_at).
+  bool trace_head = false;
 };
 
 // Throws UsageError naming the scenario file / JSON path, the scene file, or the output folder.
@@ -37,7 +41,24 @@ PreparedScenario prepare_scenario(const RunOptions& options);
 // set it), GAZELOD_SIM_SCENARIO, GAZELOD_SIM_DURATION_S and GAZELOD_SIM_PACED.
 void point_loader_at_simulator(const PreparedScenario& prepared, const RunOptions& options);
 
+// A trace replayed as the external gaze source: trace time 0 (its first row) plays at the first
+// time the plugin asks for, so any recording lines up with any session, or at start_at's time
+// when called before that (the scenario's time 0, where a replayed head starts).
+class TraceFromFirstFrame final : public gaze::GazeSource {
+ public:
+  explicit TraceFromFirstFrame(std::vector<gaze::TraceRecord> records);
+  void start_at(std::int64_t t_ns);
+  std::string name() const override { return "trace"; }
+  std::optional<gaze::GazeSample> sample_at(std::int64_t t_ns) override;
+  std::string status() const override { return replay_.status(); }
+
+ private:
+  std::int64_t start_ns_ = 0, offset_ns_ = 0;
+  bool started_ = false;
+  gaze::ReplaySource replay_;
+};
+
 // The external gaze source from the options (a trace replay), or null.
-std::shared_ptr<gaze::GazeSource> make_external_source(const RunOptions& options);
+std::shared_ptr<TraceFromFirstFrame> make_external_source(const RunOptions& options);
 
 }  // namespace gazelod::cli

@@ -136,7 +136,8 @@ int run_session(const RunOptions& opt, Io io) {
   // land above their prediction.
   config.budget.headroom = 0.15;
   config.hmd_override = opt.hmd;
-  config.external_source = make_external_source(opt);
+  const std::shared_ptr<TraceFromFirstFrame> trace = make_external_source(opt);
+  config.external_source = trace;
   if (opt.hid_gaze) {
     // The first HID eye tracker, its samples mapped onto the runtime's clock. No tracker (or
     // one unplugged later): the source says so and the plugin falls back to head-fixed gaze.
@@ -233,6 +234,7 @@ int run_session(const RunOptions& opt, Io io) {
         throw UsageError(std::string("--scene: ") + e.what());
       }
       if (time_base == 0) time_base = fs.predictedDisplayTime - fs.predictedDisplayPeriod;
+      if (trace && prepared.trace_head) trace->start_at(time_base);  // where the replayed head starts
     }
     const double t_s = static_cast<double>(fs.predictedDisplayTime - time_base) * 1e-9;
     const auto all_objects = simulator.objects_at(fs.predictedDisplayTime - time_base);

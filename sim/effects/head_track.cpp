@@ -1,6 +1,6 @@
 // head_track: the head pose replayed from a recorded trace (gazelod's trace format, or any
 // layout gaze/trace_open.hpp reads) with head columns. Trace time `offset_s` (default: its
-// first row) plays at scenario time `start_s` (default 0); poses are interpolated (slerp /
+// first row, with a head pose or not) plays at scenario time `start_s` (default 0); poses are interpolated (slerp /
 // lerp) and the angular and linear velocities are those of the segment. Before the first row
 // and after the last the pose is held (or, with "loop": true, the track repeats). With
 // "relative": true the track moves the scenario's head as the recorded head moved from its
@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <vector>
 
 namespace gazelod::sim::effects {
@@ -40,11 +41,13 @@ class HeadTrack final : public Effect {
     const bool has_offset = in.params.has("offset_s");
     const double offset_s = in.params.number("offset_s", 0.0, -1e9, 1e9);
     const double start_s = in.params.number("start_s", 0.0, -1e6, 1e6);
+    std::optional<std::int64_t> first_row_ns;
     try {
       std::unique_ptr<gaze::RecordStream> stream = gaze::open_trace(resolve(file, in.source), *fmt);
       if (!stream->has_head()) in.params.fail("file", file + ": the trace has no head columns");
       gaze::TraceRecord r;
       while (stream->next(r)) {
+        if (!first_row_ns) first_row_ns = r.gaze.t_ns;  // the trace's first row, with a pose or not
         if (!r.has_head || !r.head.valid) continue;
         if (!t_ns_.empty() && r.head.t_ns <= t_ns_.back()) continue;  // keep times strictly increasing
         t_ns_.push_back(r.head.t_ns);
@@ -55,9 +58,12 @@ class HeadTrack final : public Effect {
       in.params.fail("file", e.what());
     }
     if (t_ns_.empty()) in.params.fail("file", file + ": no valid head pose in the trace");
-    const std::int64_t origin = has_offset ? static_cast<std::int64_t>(std::llround(offset_s * 1e9)) : t_ns_.front();
+    // The first row, as a gaze replay of the same file counts it (ReplaySource).
+    const std::int64_t origin = has_offset ? static_cast<std::int64_t>(std::llround(offset_s * 1e9)) : *first_row_ns;
     const std::int64_t start = to_ns(start_s);
-    for (std::int64_t& t : t_ns_) t = t - origin + start;
+    for (std::int64_t& t : t_ns_)
+      if (__builtin_sub_overflow(t, origin, &t) || __builtin_add_overflow(t, start, &t))
+        in.params.fail("file", file + ": trace times beyond +-292 years of offset_s");
     if (relative) make_relative();
   }
   unsigned stages() const override { return kStageHead; }

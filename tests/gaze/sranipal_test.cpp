@@ -62,7 +62,8 @@ TEST(Sranipal, ConvergingEyesLookAheadAndOriginsSitLeftAndRight) {
   EXPECT_NEAR(g.direction.x, 0.0, 1e-9);
   EXPECT_NEAR(g.direction.y, 0.0, 1e-9);
   EXPECT_NEAR(g.direction.z, -1.0, 1e-9);  // OpenXR's forward
-  // Origins at (+-32, 0, -40) mm in SRanipal's axes: both 40 mm ahead of the origin, mean centred.
+  // Origins at (+-32, 0, -40) mm in SRanipal's axes (+z forward): both 40 mm behind the tracker's
+  // origin, which is +z in OpenXR's; the mean centred.
   EXPECT_NEAR(g.origin_m.x, 0.0, 1e-12);
   EXPECT_NEAR(g.origin_m.z, 0.040, 1e-12);
 }
@@ -92,6 +93,17 @@ TEST(Sranipal, ValidityBitsDecide) {
   EXPECT_EQ(r[2].gaze.origin_m, glm::dvec3(0.0));
   EXPECT_FALSE(r[3].gaze.valid);
   EXPECT_EQ(r[3].gaze.t_ns, kTicksUnixNs + 300);  // one tick is 100 ns
+  for (const TraceRecord& x : r)
+    if (!x.gaze.valid) EXPECT_EQ(x.gaze.confidence, 0.0f);
+  // A lost eye's columns are not read (SRanipal may leave them empty or NaN); the origin is
+  // that of the eyes whose direction is used: here the left eye's, not the right's (bit 0 only).
+  std::string lost = row(kTicks, 31, 1, "0;0;1;nan;;");
+  lost.replace(lost.find(";-32;0;-40;"), 11, ";-320;0;-40;");
+  const auto one = read_all(kHeader + lost);
+  ASSERT_EQ(one.size(), 1u);
+  EXPECT_TRUE(one[0].gaze.valid);
+  EXPECT_FLOAT_EQ(one[0].gaze.confidence, 0.5f);
+  EXPECT_NEAR(one[0].gaze.origin_m.x, -0.032, 1e-12);
 }
 
 TEST(Sranipal, UnityHeadPoseBecomesOpenXrs) {
@@ -153,6 +165,10 @@ TEST(Sranipal, ErrorsNameFileLineAndColumn) {
   has(kHeader + row(kTicks + 10, 31, 31, "0;0;1;0;0;1") + row(kTicks, 31, 31, "0;0;1;0;0;1"),
       "in.csv:3:1: time goes backwards");
   has(kHeader + "1;2;3\n", "in.csv:2: row has 3 fields, header has 26");
+  has(kHeader + row(kTicks, 31, 31, "0;0;1;0,06;0;0,998"),
+      "gaze_direct_R.x: '0,06' has a decimal comma (the logger wrote its locale's numbers)");
+  has(kHeader + row(kTicks, 31, 31, "0;0;1;0;0;1", "0;1.6;2e7;0;0;0"), "helmet_pos_z: beyond 1000 km of the origin");
+  has("time(100ns),eye_valid_L,eye_valid_R\n", "in.csv:1: an SRanipal (HTC Vive Pro Eye) header separated by commas");
   // Lenient: the bad row is skipped and listed, the rest read.
   std::istringstream in(kHeader + row(kTicks, 32, 31, "0;0;1;0;0;1") + row(kTicks + 1, 31, 31, "0;0;1;0;0;1"));
   SranipalReader lenient(in, "vive.csv", {.lenient = true});

@@ -105,6 +105,32 @@ TEST(TraceCli, StatsClassifyInTheWorldWhenTheTraceHasHeadPoses) {
   EXPECT_EQ(head["fixations"].get<int>(), 0);
 }
 
+// Head poses that begin mid-trace: classified in the head, then in the world, with no velocity
+// taken across the switch (the first pose turns the gaze by 30 deg at once: no saccade).
+TEST(TraceCli, StatsSwitchToTheWorldAtTheFirstHeadPoseWithoutAFalseSaccade) {
+  const fs::path p = temp_file("late_head.csv");
+  {
+    std::ofstream f(p, std::ios::binary);
+    TraceWriter w(f);
+    for (int i = 0; i < 200; ++i) {  // 0.8 s at 250 Hz, eyes and head still; poses from row 100
+      TraceRecord r;
+      r.gaze.t_ns = std::int64_t{4'000'000} * i;
+      r.gaze.valid = true;
+      r.gaze.confidence = 1.0f;
+      r.has_head = true;
+      r.head.t_ns = r.gaze.t_ns;
+      r.head.valid = i >= 100;
+      r.head.orientation = glm::angleAxis(std::acos(-1.0) / 6.0, glm::dvec3(0, 1, 0));
+      w.write(r);
+    }
+  }
+  const Result res = run({"trace", "stats", p.string(), "--json"});
+  ASSERT_EQ(res.rc, 0) << res.err;
+  const auto j = nlohmann::json::parse(res.out);
+  EXPECT_EQ(j["classified_in"], "head_then_world");
+  EXPECT_EQ(j["saccades"].get<int>(), 0);
+}
+
 TEST(TraceCli, MalformedFileExitsNonZeroNamingTheLine) {
   const fs::path p = temp_file("bad.csv");
   write_text(p, "t_ns,gaze_x,gaze_y,gaze_z\n0,0,0,-1\n4000000,0,0,x\n");

@@ -2,12 +2,18 @@
 // fallbacks when eye gaze is missing.
 #include "run_test_util.hpp"
 #include "tests/skip_or_fail.hpp"
+#include "apps/gazelod/run_session.hpp"
+#include "gaze/trace_writer.hpp"
+#include "lod/angles.hpp"
+
+#include <glm/gtc/quaternion.hpp>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <filesystem>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -159,7 +165,7 @@ TEST(RunCli, TraceWithHeadPosesMovesTheHeadAsRecorded) {
   const auto& track = j.at("effects").back();
   EXPECT_EQ(track.at("type"), "head_track");
   EXPECT_EQ(track.at("relative"), true);
-  EXPECT_DOUBLE_EQ(track.at("start_s").get<double>(), 1.0 / 90.0);  // the first frame's display time
+  EXPECT_FALSE(track.contains("start_s"));  // its first row at scenario time 0, where the gaze replay starts
   EXPECT_TRUE(std::filesystem::path(track.at("file").get<std::string>()).is_absolute());
 
   r = run_cli({"run", "--frames", "20", "--no-render", "--trace", trace.string(), "--trace-head", "scenario", "--out",
@@ -186,6 +192,64 @@ TEST(RunCli, TraceWithHeadPosesMovesTheHeadAsRecorded) {
   r = run_cli({"run", "--frames", "2", "--no-render", "--trace-head", "scenario", "--out", (dir / "o").string()});
   EXPECT_EQ(r.rc, 2);
   EXPECT_NE(r.err.find("--trace-head: needs --trace"), std::string::npos) << r.err;
+  r = run_cli({"run", "--frames", "2", "--no-render", "--runtime", "system", "--trace", trace.string(), "--trace-head",
+               "recorded", "--out", (dir / "o").string()});
+  EXPECT_EQ(r.rc, 2);
+  EXPECT_NE(r.err.find("--trace-head: only with the simulated runtime"), std::string::npos) << r.err;
+}
+
+// The replayed head and the replayed gaze play the trace on one clock, also when a paced
+// runtime's first frame comes late: a head turning at 60 deg/s with the eyes turning back (the
+// reflex) keeps the plugin's gaze in the world still, where one frame's offset between them
+// would move it by 0.67 deg.
+TEST(RunCli, ReplayedHeadAndGazeStayTogetherPacedOrNot) {
+  const double deg = std::acos(-1.0) / 180.0;
+  const auto dir = scratch_dir();
+  const auto trace = dir / "reflex.csv";
+  {
+    std::ofstream f(trace, std::ios::binary);
+    gaze::TraceWriter w(f);
+    for (int i = 0; i <= 375; ++i) {  // 1.5 s at 250 Hz
+      const double t_s = i / 250.0;
+      gaze::TraceRecord r;
+      r.gaze.t_ns = 1'000'000'000'000 + std::int64_t{4'000'000} * i;
+      r.gaze.valid = true;
+      r.gaze.confidence = 1.0f;
+      r.gaze.direction = glm::angleAxis(-60.0 * deg * t_s, glm::dvec3(0, 1, 0)) * glm::dvec3(0, 0, -1);
+      r.has_head = true;
+      r.head.t_ns = r.gaze.t_ns;
+      r.head.valid = true;
+      r.head.orientation = glm::angleAxis((30.0 + 60.0 * t_s) * deg, glm::dvec3(0, 1, 0));
+      r.head.position_m = {2.0, 1.6, -1.0};
+      w.write(r);
+    }
+  }
+  for (const bool paced : {false, true}) {
+    SCOPED_TRACE(paced ? "paced" : "unpaced");
+    use_simulated_runtime("");
+    cli::RunOptions opt;
+    opt.frames = 100;
+    opt.trace_path = trace.string();
+    opt.paced = paced;
+    opt.render = false;
+    opt.quiet = true;
+    opt.out_dir = dir / (paced ? "paced" : "unpaced");
+    double worst_deg = 0.0;
+    int frames = 0, seen = 0;
+    opt.frame_observer = [&](const FrameDecisions&, const FrameDiagnostics& d) {
+      // After the conditioner's first few samples; the relative head starts facing -Z, so the
+      // world gaze is -Z throughout.
+      if (++frames > 10 && d.eye_motion != gaze::EyeMotion::loss) {
+        worst_deg = std::max(worst_deg, lod::angle_between_rad(d.gaze_direction_world, glm::dvec3(0, 0, -1)) / deg);
+        ++seen;
+      }
+    };
+    std::ostringstream out, err;
+    ASSERT_EQ(cli::run_session(opt, {out, err}), 0) << err.str();
+    EXPECT_GE(seen, 80);
+    EXPECT_LT(worst_deg, 0.3);
+    std::printf("%s: the world gaze within %.3f deg of still over %d frames\n", paced ? "paced" : "unpaced", worst_deg, seen);
+  }
 }
 
 // On a real HTC Vive Pro Eye recording (../shared/data/gaze): its eye-in-head gaze carries the

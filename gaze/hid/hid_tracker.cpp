@@ -132,10 +132,11 @@ bool HidTracker::try_open() {
   const auto control = encode_control(config_.mode_request);
   if (hid_send_feature_report(dev_, control.data(), control.size()) < 0)
     log("could not send the Control report (mode request): " + to_utf8(hid_error(dev_)));
-  connected_ = true;
   const DeviceState st = device_state();
   set_status(st.screen ? "ok" : "connected, but no screen size (configure one)");
   log("opened " + path + (st.screen ? "" : "; no screen size known, samples are invalid"));
+  // Published last: whoever sees connected() then sees this connection's status and log line.
+  connected_ = true;
   return true;
 }
 

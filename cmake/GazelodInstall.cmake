@@ -3,10 +3,9 @@
 # gazelod::gaze), a pkg-config file, the simulated OpenXR runtime with an installed manifest,
 # and the gazelod program. Layout (GNUInstallDirs; <libdir> is lib or lib/<multiarch>):
 #
-#   include/gazelod/gazelod.hpp            plugin/gazelod.hpp: #include <gazelod/gazelod.hpp>
-#   include/gazelod/plugin/*.hpp           the other plugin headers gazelod.hpp includes
-#   include/gazelod/{lod,budget,gaze}/     all lod/*.hpp; the budget/ and gaze/ headers they need
-#   <libdir>/libgazelod_{plugin,budget,gaze,lod}.a
+#   include/gazelod/gazelod.h              the C ABI (C99): #include <gazelod/gazelod.h>
+#   include/gazelod/gazelod.hpp            a thin C++17 wrapper over it
+#   <libdir>/libgazelod.so.1 (+ .so link)  exports only gzl_*; links no OpenXR loader
 #   <libdir>/cmake/gazelod/                gazelodConfig.cmake, ConfigVersion, Targets
 #   <libdir>/pkgconfig/gazelod.pc
 #   <libdir>/gazelod/libgazelod_xr_runtime.so       the simulated OpenXR runtime
@@ -16,9 +15,7 @@
 #   bin/gazelod
 #
 # Components: dev (libraries, headers, CMake and pkg-config files), xr_runtime, xr_layer, program.
-# Both include/ and include/gazelod/ are include directories of the exported targets (see
-# GAZELOD_INCLUDE_DIRS in cmake/Gazelod.cmake): the headers include each other from the
-# repository root ("lod/cone.hpp"). tests/install/ installs into a scratch prefix and builds a
+# tests/install/ installs into a scratch prefix and builds a
 # consumer against it.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
@@ -28,58 +25,18 @@ set(GAZELOD_INSTALL_HEADERDIR ${CMAKE_INSTALL_INCLUDEDIR}/gazelod)
 set(GAZELOD_XR_RUNTIME_INSTALL_LIBDIR ${CMAKE_INSTALL_LIBDIR}/gazelod)
 set(GAZELOD_XR_RUNTIME_INSTALL_MANIFEST ${CMAKE_INSTALL_DATADIR}/openxr/1/gazelod_xr_runtime.json)
 
-# ---- libraries: gazelod_plugin and what it links, exported as gazelod::<name> -------------
-set(gazelod_exported plugin lod budget gaze)
-set(gazelod_installed_targets)
-foreach(short ${gazelod_exported})
-  set_target_properties(gazelod_${short} PROPERTIES EXPORT_NAME ${short})
-  # The public headers need C++20 (std::span); the tree already builds as C++20.
-  target_compile_features(gazelod_${short} PUBLIC cxx_std_20)
-  # The same names in the build tree (a project that adds gazelod with add_subdirectory).
-  add_library(gazelod::${short} ALIAS gazelod_${short})
-  list(APPEND gazelod_installed_targets gazelod_${short})
-endforeach()
-install(TARGETS ${gazelod_installed_targets} EXPORT gazelodTargets
-  ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT dev
-  LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT dev)
+# ---- the library: libgazelod.so.<major>, the C ABI only ----------------------------------
+# The engine's static libraries are inside it and not installed: applications see gzl_* and
+# nothing else (plugin/capi/exports.map), so no C++ standard library or compiler version leaks
+# through the interface.
+set(gazelod_installed_targets gazelod_shared)
+install(TARGETS gazelod_shared EXPORT gazelodTargets
+  LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT dev NAMELINK_COMPONENT dev
+  INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 
-# ---- public headers: plugin/gazelod.hpp, all of lod/, and every header they include ------
-# The closure of `#include "..."` from those headers is computed here (each header read is a
-# configure dependency, so a new include re-runs CMake and is installed).
-function(gazelod_header_closure out)
-  set(pending ${ARGN})
-  set(seen)
-  while(pending)
-    list(POP_FRONT pending rel)
-    if(rel IN_LIST seen)
-      continue()
-    endif()
-    list(APPEND seen ${rel})
-    set_property(DIRECTORY ${GAZELOD_ROOT} APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${GAZELOD_ROOT}/${rel})
-    file(STRINGS ${GAZELOD_ROOT}/${rel} lines REGEX "^[ \t]*#[ \t]*include[ \t]*\"")
-    foreach(line ${lines})
-      string(REGEX REPLACE "^[ \t]*#[ \t]*include[ \t]*\"([^\"]+)\".*" "\\1" inc "${line}")
-      if(EXISTS ${GAZELOD_ROOT}/${inc})
-        list(APPEND pending ${inc})
-      else()
-        message(FATAL_ERROR "${rel}: includes \"${inc}\", which is not a path from the repository root")
-      endif()
-    endforeach()
-  endwhile()
-  set(${out} ${seen} PARENT_SCOPE)
-endfunction()
-
-file(GLOB gazelod_lod_headers CONFIGURE_DEPENDS RELATIVE ${GAZELOD_ROOT} ${GAZELOD_ROOT}/lod/*.hpp)
-gazelod_header_closure(gazelod_public_headers plugin/gazelod.hpp ${gazelod_lod_headers})
-foreach(rel ${gazelod_public_headers})
-  if(rel STREQUAL "plugin/gazelod.hpp")
-    set(dest ${GAZELOD_INSTALL_HEADERDIR})  # <gazelod/gazelod.hpp>
-  else()
-    get_filename_component(dir ${rel} DIRECTORY)
-    set(dest ${GAZELOD_INSTALL_HEADERDIR}/${dir})
-  endif()
-  install(FILES ${GAZELOD_ROOT}/${rel} DESTINATION ${dest} COMPONENT dev)
-endforeach()
+# ---- public headers: include/gazelod/ (C99 gazelod.h, the C++17 wrapper gazelod.hpp) ---------
+file(GLOB gazelod_public_headers CONFIGURE_DEPENDS ${GAZELOD_ROOT}/include/gazelod/*.h ${GAZELOD_ROOT}/include/gazelod/*.hpp)
+install(FILES ${gazelod_public_headers} DESTINATION ${GAZELOD_INSTALL_HEADERDIR} COMPONENT dev)
 
 # ---- CMake package -------------------------------------------------------------------------
 install(EXPORT gazelodTargets NAMESPACE gazelod:: FILE gazelodTargets.cmake

@@ -127,6 +127,22 @@ void ObjectStore::set_motion(std::uint32_t id, const glm::dvec3& c, const glm::d
   vx_[id] = v.x, vy_[id] = v.y, vz_[id] = v.z;
 }
 
+void ObjectStore::remove(std::uint32_t id) {
+  if (id >= radius_.size()) throw std::out_of_range("object id out of range");
+  // Drop the object's levels and shift the later chains' first index down.
+  const std::uint32_t first = first_[id], count = count_[id];
+  weight_.erase(weight_.begin() + first, weight_.begin() + first + count);
+  for (std::uint32_t& f : first_)
+    if (f > first) f -= count;
+  const std::size_t last = radius_.size() - 1;
+  auto move_last = [&](auto& v) {
+    v[id] = v[last];
+    v.pop_back();
+  };
+  move_last(cx_), move_last(cy_), move_last(cz_), move_last(vx_), move_last(vy_), move_last(vz_);
+  move_last(radius_), move_last(kind_), move_last(first_), move_last(count_);
+}
+
 void ObjectStore::reserve(std::size_t objects, std::size_t levels) {
   for (auto* a : {&cx_, &cy_, &cz_, &radius_, &vx_, &vy_, &vz_}) a->reserve(objects);
   kind_.reserve(objects), first_.reserve(objects), count_.reserve(objects);

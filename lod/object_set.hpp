@@ -69,6 +69,9 @@ class ObjectStore {
   std::uint32_t add(const glm::dvec3& center_m, double radius_m, const glm::dvec3& velocity_m_s,
                     std::span<const LodLevel> levels);
   void set_motion(std::uint32_t id, const glm::dvec3& center_m, const glm::dvec3& velocity_m_s);
+  // Removes object `id`: the last object moves into its place (ids stay dense). Linear in the
+  // objects' levels (registration time, not per frame). Throws std::out_of_range.
+  void remove(std::uint32_t id);
   void reserve(std::size_t objects, std::size_t levels);
   std::size_t size() const { return radius_.size(); }
   ObjectSet view() const;

@@ -7,7 +7,7 @@
 #include "lod/cluster_select.hpp"
 #include "lod/cluster_select_store.hpp"
 #include "lod/cluster_switch_policy.hpp"
-#include "plugin/gazelod.hpp"
+#include "plugin/object_desc.hpp"
 
 #include <cstdint>
 #include <span>

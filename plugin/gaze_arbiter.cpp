@@ -48,10 +48,10 @@ ArbiterResult GazeArbiter::update(std::int64_t t_ns) {
   if (primary_ && !primary_distrusted_) {
     if (auto s = usable(primary_->sample_at(t_ns))) {
       primary_ever_ = true;
-      result.source = GazeSourceKind::openxr;
+      result.source = config_.primary_kind;
       result.sample = *s;
       if (must_report(result.source))
-        switch_to(GazeSourceKind::openxr, primary_->name() + " eye gaze delivered", false);
+        switch_to(config_.primary_kind, primary_->name() + " eye gaze delivered", false);
       return result;
     }
     // Never delivered within the timeout: the runtime advertises gaze it does not have.
@@ -72,9 +72,13 @@ ArbiterResult GazeArbiter::update(std::int64_t t_ns) {
 
   std::string why;
   if (!primary_) {
-    why = "no primary gaze source";
+    why = config_.why_no_primary.empty() ? "no primary gaze source" : config_.why_no_primary;
   } else if (primary_distrusted_) {
-    why = primary_->name() + " advertised eye gaze but delivered none in " + seconds(config_.silence_timeout_ns);
+    // The source's own status says whose fault it is (a binding the application replaced, a
+    // runtime that advertises gaze it does not have).
+    const std::string status = primary_->status();
+    why = primary_->name() + " delivered no usable eye gaze in " + seconds(config_.silence_timeout_ns) + " (" +
+          (status == "ok" ? "its samples were not finite or had zero length" : status) + ")";
   } else {
     why = primary_->name() + " gaze unavailable (" + primary_->status() + ")";
   }

@@ -18,6 +18,10 @@ struct ArbiterConfig {
   // states) before it is distrusted for the rest of the session (ns). Gaps after it has
   // delivered (blinks, lost tracking) fall back only while they last.
   std::int64_t silence_timeout_ns = 1'000'000'000;
+  // What the primary source is (the runtime's eye gaze, or samples the application pushes),
+  // and why there is none when it is null ("" = none was asked for).
+  GazeSourceKind primary_kind = GazeSourceKind::openxr;
+  std::string why_no_primary;
 };
 
 struct ArbiterResult {

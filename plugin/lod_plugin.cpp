@@ -1,23 +1,15 @@
-// The plugin: a thin adapter from OpenXR (head, views, eye gaze) to the core's selection.
-#include "plugin/gazelod.hpp"
+// The plugin's OpenXR front (plugin/lod_plugin.hpp): reads head, views and eye gaze through the
+// application's function pointers and hands them to the engine (plugin/lod_core.hpp).
+#include "plugin/lod_plugin.hpp"
 
-#include "budget/frame_budget.hpp"
-#include "lod/acuity.hpp"
-#include "lod/angles.hpp"
-#include "lod/display.hpp"
-#include "lod/object_set.hpp"
-#include "lod/select.hpp"
-#include "gaze/gaze_conditioner.hpp"
-#include "plugin/cluster_meshes.hpp"
-#include "plugin/gaze_arbiter.hpp"
 #include "plugin/head_motion.hpp"
-#include "plugin/openxr_gaze_source.hpp"
+#include "plugin/lod_core.hpp"
 #include "plugin/xr_check.hpp"
+#include "plugin/xr_dispatch.hpp"
 
 #include <algorithm>
-#include <cmath>
-#include <numbers>
 #include <stdexcept>
+#include <vector>
 
 namespace gazelod {
 
@@ -26,365 +18,239 @@ const char* to_string(GazeSourceKind kind) {
     case GazeSourceKind::openxr: return "openxr";
     case GazeSourceKind::external: return "external";
     case GazeSourceKind::head_fixed: return "head-fixed";
+    case GazeSourceKind::pushed: return "pushed";
   }
   return "?";
 }
 
 namespace {
 
-using lod::kDegPerRad;
+void check(XrResult r, const char* call) { xr_check(r, call, "gazelod: "); }
 
-void check(XrResult r, const char* call) { xr_check(r, call, "gazelod plugin: "); }
+// The old configuration's meaning: the runtime's eye gaze, with our set attached by us unless
+// the application attaches sets itself.
+OpenXrGazeInput resolve(OpenXrGazeInput in, const PluginConfig& c) {
+  if (in != OpenXrGazeInput::from_config) return in;
+  if (!c.use_openxr_eye_gaze) return OpenXrGazeInput::none;
+  return c.application_attaches_action_sets ? OpenXrGazeInput::merge_binding : OpenXrGazeInput::plugin_actions;
+}
 
 class LodPluginImpl final : public LodPlugin {
  public:
-  LodPluginImpl(XrInstance instance, XrSystemId system, XrSession session, XrSpace base, PluginConfig config)
-      : instance_(instance), system_(system), session_(session), base_(base), config_(std::move(config)) {
+  LodPluginImpl(plugin::XrDispatch xr, XrInstance instance, XrSystemId system, XrSession session, XrSpace base,
+                PluginConfig config, OpenXrOptions options)
+      : xr_(xr), instance_(instance), system_(system), session_(session), base_(base), options_(options),
+        core_(config),
+        pushed_(heads_, static_cast<std::int64_t>(config.max_pushed_sample_age_s * 1e9)) {
     XrReferenceSpaceCreateInfo view_info{XR_TYPE_REFERENCE_SPACE_CREATE_INFO};
     view_info.referenceSpaceType = XR_REFERENCE_SPACE_TYPE_VIEW;
     view_info.poseInReferenceSpace.orientation.w = 1.0f;
-    check(xrCreateReferenceSpace(session_, &view_info, &view_space_), "xrCreateReferenceSpace(VIEW)");
-    head_ = std::make_unique<plugin::HeadTracker>(view_space_, base_);
-    gaze::ConditionerConfig cc = config_.conditioning;
-    cc.accuracy_deg = config_.openxr_gaze_error_deg;
-    openxr_conditioner_ = gaze::GazeConditioner(cc);
-    cc.accuracy_deg = config_.external_gaze_error_deg;
-    external_conditioner_ = gaze::GazeConditioner(cc);
-
-    if (config_.use_openxr_eye_gaze && plugin::system_supports_eye_gaze(instance_, system_)) {
-      xr_gaze_ = std::make_unique<plugin::OpenXrGazeSource>(instance_, session_);
-      if (!config_.application_attaches_action_sets) xr_gaze_->attach_and_own_sync();
+    check(xr_.create_reference_space(session_, &view_info, &view_space_), "xrCreateReferenceSpace(VIEW)");
+    head_ = std::make_unique<plugin::HeadTracker>(xr_, view_space_, base_);
+    try {
+      init_gaze(resolve(options.gaze_input, config));
+      init_views();
+    } catch (...) {
+      release();
+      throw;
     }
-    plugin::ArbiterConfig ac;
-    ac.silence_timeout_ns = static_cast<std::int64_t>(config_.gaze_silence_timeout_s * 1e9);
-    arbiter_ = std::make_unique<plugin::GazeArbiter>(xr_gaze_.get(), config_.external_source.get(), ac);
-    arbiter_->on_change([this](GazeSourceKind s, const std::string& why) {
-      active_ = s;
-      if (changed_) changed_(active_, why);
-    });
-
-    init_display();
   }
 
-  ~LodPluginImpl() override {
-    xr_gaze_.reset();
-    if (view_space_ != XR_NULL_HANDLE) xrDestroySpace(view_space_);
-  }
+  ~LodPluginImpl() override { release(); }
 
   XrActionSet action_set() const override { return xr_gaze_ ? xr_gaze_->action_set() : XR_NULL_HANDLE; }
+  XrAction gaze_action() const override { return xr_gaze_ ? xr_gaze_->action() : XR_NULL_HANDLE; }
   void action_sets_attached() override {
     if (xr_gaze_) xr_gaze_->action_sets_attached();
   }
 
-  std::uint32_t add_object(const ObjectDesc& d) override {
-    const std::uint32_t id = store_.add(d.center_m, d.radius_m, d.velocity_m_s, d.lods);
-    chains_.push_back(d.lods);
-    importance_.push_back(d.importance);
-    budget_.reset();  // rebuilt with the new object at the next frame
-    resize_outputs();
-    return id;
-  }
+  std::uint32_t add_object(const ObjectDesc& d) override { return core_.add_object(d); }
   void set_object_motion(std::uint32_t id, const glm::dvec3& c, const glm::dvec3& v) override {
-    store_.set_motion(id, c, v);
+    core_.set_object_motion(id, c, v);
   }
-  std::size_t object_count() const override { return store_.size(); }
-
-  std::uint32_t add_cluster_mesh(const ClusterMeshDesc& d) override {
-    const std::uint32_t id = clusters_.add(d);
-    publish_clusters();
-    return id;
-  }
+  std::size_t object_count() const override { return core_.object_count(); }
+  std::uint32_t add_cluster_mesh(const ClusterMeshDesc& d) override { return core_.add_cluster_mesh(d); }
   void set_cluster_mesh_motion(std::uint32_t id, const lod::InstanceTransform& pose, const glm::dvec3& v) override {
-    clusters_.set_motion(id, pose, v);
+    core_.set_cluster_mesh_motion(id, pose, v);
   }
-  std::size_t cluster_mesh_count() const override { return clusters_.mesh_count(); }
+  std::size_t cluster_mesh_count() const override { return core_.cluster_mesh_count(); }
 
   void on_session_state(XrSessionState state, XrTime time) override {
-    arbiter_->session_state(state == XR_SESSION_STATE_FOCUSED, static_cast<std::int64_t>(time));
+    core_.session_state(state == XR_SESSION_STATE_FOCUSED, static_cast<std::int64_t>(time));
+  }
+
+  void set_base_space(XrSpace base) override {
+    if (base == XR_NULL_HANDLE) throw std::invalid_argument("gazelod: the base space must be a valid XrSpace");
+    base_ = base;
+    head_->set_base(base);
+  }
+
+  void set_view_resolution(std::uint32_t view, int width_px, int height_px) override {
+    if (view >= view_pixels_.size())
+      throw std::out_of_range("gazelod: view " + std::to_string(view) + " out of range: the view configuration has " +
+                              std::to_string(view_pixels_.size()) + " views");
+    if (width_px <= 0 || height_px <= 0 || width_px > 65536 || height_px > 65536)
+      throw std::invalid_argument("gazelod: a view's resolution must be 1..65536 pixels on each side");
+    view_pixels_[view] = {width_px, height_px};
+  }
+
+  std::uint32_t view_count() const override { return static_cast<std::uint32_t>(view_pixels_.size()); }
+  int max_view_height_px() const override {
+    int h = 0;
+    for (const auto& p : view_pixels_) h = std::max(h, p.second);
+    return h;
+  }
+
+  plugin::PushResult push_gaze(const plugin::PushedSample& s, std::string& why) override {
+    if (gaze_input_ != OpenXrGazeInput::pushed) {
+      why = "gazelod: gaze samples are pushed only with GZL_GAZE_INPUT_PUSHED (this plugin reads the eye-gaze action)";
+      return plugin::PushResult::invalid;
+    }
+    return pushed_.push(s, why);
   }
 
   const FrameDecisions& begin_frame(XrTime t) override {
-    const plugin::HeadMotion head = head_->locate(t);
-    const plugin::ArbiterResult gaze = arbiter_->update(static_cast<std::int64_t>(t));
-    update_display(t);
-
-    lod::Viewer v;
-    v.xi_cpd = xi_cpd_;
-    v.use_size = config_.criteria.size;
-    v.use_eccentricity = config_.criteria.eccentricity;
-    v.use_velocity = config_.criteria.velocity;
-    const glm::dquat q = head.valid ? head.orientation : last_head_orientation_;
-    if (head.valid) {
-      last_head_orientation_ = head.orientation;
-      last_head_position_ = head.position_m;
+    plugin::FrameInput in;
+    in.t_ns = static_cast<std::int64_t>(t);
+    if (!shut_down_) {
+      in.head = head_->locate(t);
+      locate_views(t, in);
     }
-    v.eye_position_m = last_head_position_;
-    v.eye_velocity_m_s = head.valid ? head.linear_velocity_m_s : glm::dvec3(0.0);
-    v.head_angular_velocity_rad_s = head.valid ? head.angular_velocity_rad_s : glm::dvec3(0.0);
-
-    // The gaze at the display time, conditioned per source (gaze/gaze_conditioner.hpp):
-    // classified in the world, smoothed in fixations, predicted to t; its uncertainty widens
-    // the foveal cone, and only a classified pursuit moves the gaze in the world.
-    glm::dvec3 gaze_head(0.0, 0.0, -1.0);
-    glm::dvec3 gaze_world = q * gaze_head;
-    glm::dvec3 gaze_omega_world(0.0);
-    double error_deg = config_.head_fixed_cone_deg;
-    bool gaze_suppressed = false;
-    diag_.eye_motion = gaze::EyeMotion::loss;
-    GazeSourceKind used = GazeSourceKind::head_fixed;
-    if (gaze.source != GazeSourceKind::head_fixed) {
-      gaze::GazeConditioner& c = gaze.source == GazeSourceKind::openxr ? openxr_conditioner_ : external_conditioner_;
-      if (gaze.source != conditioned_source_) c.reset();  // a new source: no history across it
-      conditioned_source_ = gaze.source;
-      const glm::dquat q_sample = head_->orientation_at(static_cast<XrTime>(gaze.sample.t_ns)).value_or(q);
-      c.push(gaze.sample, q_sample);
-      const gaze::ConditionedGaze cg = c.at(static_cast<std::int64_t>(t), q);
-      if (cg.valid) {
-        used = gaze.source;
-        gaze_head = cg.direction_head;
-        gaze_world = cg.direction_world;
-        gaze_omega_world = cg.angular_velocity_world_rad_s;
-        error_deg = cg.uncertainty_deg;
-        gaze_suppressed = cg.suppressed;
-        diag_.eye_motion = cg.motion;
-      }
-    } else {
-      conditioned_source_ = GazeSourceKind::head_fixed;
-    }
-    // The selection takes the eye-in-head rotation: the eye's rotation in the world minus the
-    // head's (a fixation held through a head turn counter-rotates the eye).
-    v.gaze_angular_velocity_in_head_rad_s = gaze_omega_world - v.head_angular_velocity_rad_s;
-    if (used == GazeSourceKind::head_fixed) v.gaze_angular_velocity_in_head_rad_s = glm::dvec3(0.0);
-    v.gaze_direction = gaze_world;
-    v.tracker_error_deg = error_deg;
-
-    const std::string err = lod::select_lods(v, store_.view(), decisions_out_);
-    if (!err.empty()) {
-      // The core refused this frame's viewer: keep full detail rather than guess.
-      std::fill(lod_.begin(), lod_.end(), 0);
-      std::fill(limited_.begin(), limited_.end(), static_cast<std::uint8_t>(lod::Criterion::invalid_input));
-    }
-    if (config_.compute_breakdown) {
-      lod::Viewer se = v;
-      se.use_velocity = false;
-      lod::select_lods(se, store_.view(), breakdown_se_out_);
-      lod::Viewer sv = v;
-      sv.use_eccentricity = false;
-      lod::select_lods(sv, store_.view(), breakdown_sv_out_);
-    }
-
-    apply_switch_policy(t, gaze_suppressed);
-    apply_budget();
-    // Cluster meshes: the same viewer, per cluster; the same hysteresis on their records.
-    clusters_.update(v, config_.switch_policy ? &config_.switching : nullptr, frame_seconds(t), gaze_suppressed);
-    publish_clusters();
-
-    frame_.gaze_source = used;
-    frame_.gaze_valid = used != GazeSourceKind::head_fixed;
-    diag_.gaze_suppressed = gaze_suppressed;
-    diag_.gaze_bad_samples = openxr_conditioner_.bad_samples() + external_conditioner_.bad_samples();
-    diag_.gaze_direction_world = v.gaze_direction;
-    diag_.gaze_direction_head = gaze_head;
-    diag_.eye_position_world = v.eye_position_m;
-    diag_.head_angular_velocity_rad_s = v.head_angular_velocity_rad_s;
-    diag_.gaze_error_deg = error_deg;
-    // Reddy 1995's foveal cone: out to where M(E) leaves 1 (the fovea), widened by the error.
-    diag_.foveal_cone = lod::make_foveal_cone(v.eye_position_m, v.gaze_direction,
-                                              lod::kEccentricitySeamDeg, error_deg);
-    diag_.xi_cpd = xi_cpd_;
-    diag_.head_valid = head.valid;
-    return frame_;
+    if (in.head.valid) heads_.push(in.t_ns, in.head.orientation);
+    pushed_.frame_time(in.t_ns);
+    return core_.decide(in);
   }
 
-  const FrameDiagnostics& diagnostics() const override { return diag_; }
+  const FrameDiagnostics& diagnostics() const override { return core_.diagnostics(); }
+  void end_frame(double measured_frame_ms) override { core_.end_frame(measured_frame_ms); }
 
-  void end_frame(double measured_frame_ms) override {
-    if (budget_) budget_->observe(measured_frame_ms);
+  void shutdown() override {
+    release();
+    shut_down_ = true;
   }
+  bool is_shut_down() const override { return shut_down_; }
 
-  GazeSourceKind active_source() const override { return active_; }
-  void on_source_changed(SourceChanged cb) override { changed_ = std::move(cb); }
+  GazeSourceKind active_source() const override { return core_.active_source(); }
+  void on_source_changed(SourceChanged cb) override { core_.on_source_changed(std::move(cb)); }
+  plugin::LodCore& core() override { return core_; }
+  const plugin::LodCore& core() const override { return core_; }
 
  private:
-  // Refinement at once, coarsening after the hold and preferably while vision is suppressed.
-  // Seconds since the first frame (the switch policies' clock).
-  double frame_seconds(XrTime t) {
-    if (!have_t0_) {
-      have_t0_ = true;
-      t0_ = t;
+  void init_gaze(OpenXrGazeInput input) {
+    gaze_input_ = input;
+    std::string why_none;
+    switch (input) {
+      case OpenXrGazeInput::from_config:
+      case OpenXrGazeInput::none: why_none = "eye gaze not asked for (GZL_GAZE_INPUT_NONE)"; break;
+      case OpenXrGazeInput::pushed:
+        core_.set_primary(&pushed_, GazeSourceKind::pushed, "");
+        core_.set_orientation_at([this](std::int64_t t_ns) {
+          if (auto q = pushed_.head_at_last_sample()) return q;
+          return head_->orientation_at(static_cast<XrTime>(t_ns));
+        });
+        return;
+      case OpenXrGazeInput::app_space:
+        if (options_.gaze_space == XR_NULL_HANDLE)
+          throw std::invalid_argument("gazelod: GZL_GAZE_INPUT_APP_SPACE needs gaze_space, the application's eye-gaze "
+                                      "action space (xrCreateActionSpace on its eye-gaze pose action)");
+        xr_gaze_ = std::make_unique<plugin::OpenXrGazeSource>(xr_, instance_, session_, plugin::GazeInputMode::app_space,
+                                                              options_.gaze_space, options_.gaze_action);
+        break;
+      case OpenXrGazeInput::merge_binding:
+      case OpenXrGazeInput::plugin_actions:
+        if (!plugin::system_supports_eye_gaze(xr_, instance_, system_)) {
+          why_none = "the system reports no eye-gaze interaction: enable XR_EXT_eye_gaze_interaction on the instance "
+                     "(xrCreateInstance) on a runtime that has it, or push samples (GZL_GAZE_INPUT_PUSHED)";
+          break;
+        }
+        xr_gaze_ = std::make_unique<plugin::OpenXrGazeSource>(
+            xr_, instance_, session_,
+            input == OpenXrGazeInput::merge_binding ? plugin::GazeInputMode::merge_binding
+                                                    : plugin::GazeInputMode::plugin_actions);
+        if (input == OpenXrGazeInput::plugin_actions) xr_gaze_->attach_and_own_sync();
+        break;
     }
-    return static_cast<double>(t - t0_) * 1e-9;
+    core_.set_primary(xr_gaze_.get(), GazeSourceKind::openxr, why_none);
+    core_.set_orientation_at([this](std::int64_t t_ns) { return head_->orientation_at(static_cast<XrTime>(t_ns)); });
   }
 
-  void publish_clusters() {
-    frame_.cluster_drawn = clusters_.drawn();
-    frame_.cluster_limited_by = clusters_.limited_by();
-    frame_.cluster_held = config_.switch_policy ? clusters_.held() : std::span<const std::uint8_t>();
-    frame_.cluster_first = clusters_.first_cluster();
-    diag_.cluster_drawn_perceptual = clusters_.perceptual();
-  }
-
-  void apply_switch_policy(XrTime t, bool suppressed) {
-    if (!config_.switch_policy) return;
-    const double t_s = frame_seconds(t);
-    // An object's first frame draws its perceptual level: nothing was drawn before, so there is
-    // no switch to hide.
-    for (std::size_t i = switch_started_; i < lod_.size(); ++i) switch_drawn_[i] = lod_[i];
-    switch_started_ = lod_.size();
-    const lod::SwitchState state{switch_drawn_, switch_finest_, switch_window_s_};
-    if (!lod::apply_switch_policy(config_.switching, t_s, suppressed, lod_, state, held_).empty()) {
-      // Refused (it validates sizes and the configuration): draw the perceptual choice.
-      std::copy(lod_.begin(), lod_.end(), switch_drawn_.begin());
-      std::fill(held_.begin(), held_.end(), 0);
-    }
-  }
-
-  // The levels the policy passes on (the perceptual ones without it).
-  std::span<const std::uint8_t> policy_lod() const {
-    return config_.switch_policy ? std::span<const std::uint8_t>(switch_drawn_) : std::span<const std::uint8_t>(lod_);
-  }
-
-  // The budget pass: the perceptual levels are the finest worth drawing; the solver coarsens
-  // them until the predicted frame time fits. Benefit grows with projected area (pixels).
-  void apply_budget() {
-    diag_.predicted_ms = 0.0;
-    diag_.budget_infeasible = false;
-    if (!(config_.budget_ms > 0.0) || store_.size() == 0) return;
-    if (!budget_) budget_ = std::make_unique<budget::FrameBudget>(chains_, config_.budget_ms, config_.budget);
-    const double px_per_deg = 2.0 * xi_cpd_;  // xi = pixels / (2 * FOV)
-    for (std::size_t i = 0; i < store_.size(); ++i) {
-      const double r_px = static_cast<double>(angular_radius_deg_[i]) * px_per_deg;
-      budget_view_[i].size_px = std::isfinite(r_px) ? std::numbers::pi * r_px * r_px : 0.0;
-      budget_view_[i].importance = std::clamp(importance_[i], 0.0, 1.0);
-    }
-    try {
-      diag_.budget_infeasible = !budget_->choose(policy_lod(), budget_view_, budget_lod_);
-      diag_.predicted_ms = budget_->predicted_ms();
-    } catch (const std::exception&) {
-      // Inputs the solver refuses: draw the perceptual choice rather than guess.
-      std::copy(policy_lod().begin(), policy_lod().end(), budget_lod_.begin());
-    }
-  }
-
-  void init_display() {
-    if (!config_.hmd_override.empty()) {
-      const lod::DisplaySpec* preset = lod::find_display_preset(config_.hmd_override);
-      if (!preset) throw std::runtime_error("gazelod plugin: unknown HMD preset '" + config_.hmd_override + "'");
-      xi_cpd_ = lod::xi_cpd(*preset);
-      xi_fixed_ = true;
-      return;
-    }
+  void init_views() {
     std::uint32_t n = 0;
-    const auto stereo = XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO;
-    check(xrEnumerateViewConfigurationViews(instance_, system_, stereo, 0, &n, nullptr), "xrEnumerateViewConfigurationViews");
+    const XrViewConfigurationType type = options_.view_configuration;
+    const XrResult r = xr_.enumerate_view_configuration_views(instance_, system_, type, 0, &n, nullptr);
+    if (r == XR_ERROR_VIEW_CONFIGURATION_TYPE_UNSUPPORTED)
+      throw XrCallError("gazelod: the system does not support view configuration " + std::to_string(type) +
+                            "; pass the one the session was begun with (PRIMARY_STEREO, PRIMARY_MONO or "
+                            "PRIMARY_QUAD_VARJO)",
+                        r);
+    check(r, "xrEnumerateViewConfigurationViews");
+    if (n == 0 || n > plugin::kMaxViews)
+      throw XrCallError("gazelod: view configuration " + std::to_string(type) + " has " + std::to_string(n) +
+                        " views; gazelod takes 1 to 4");
     std::vector<XrViewConfigurationView> cv(n, {XR_TYPE_VIEW_CONFIGURATION_VIEW});
-    check(xrEnumerateViewConfigurationViews(instance_, system_, stereo, n, &n, cv.data()), "xrEnumerateViewConfigurationViews");
+    check(xr_.enumerate_view_configuration_views(instance_, system_, type, n, &n, cv.data()),
+          "xrEnumerateViewConfigurationViews");
     view_pixels_.clear();
     for (const auto& c : cv)
       view_pixels_.push_back({static_cast<int>(c.recommendedImageRectWidth), static_cast<int>(c.recommendedImageRectHeight)});
     views_.assign(n, {XR_TYPE_VIEW});
   }
 
-  // xi from the views' FOV (as the runtime locates them) and the recommended resolution.
-  void update_display(XrTime t) {
-    if (xi_fixed_ || views_.empty()) return;
+  // The views' FOV and pose in the head at t (their resolution: set_view_resolution, else the
+  // runtime's recommendation). A failed locate keeps the previous frame's views.
+  void locate_views(XrTime t, plugin::FrameInput& in) {
     XrViewLocateInfo info{XR_TYPE_VIEW_LOCATE_INFO};
-    info.viewConfigurationType = XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO;
+    info.viewConfigurationType = options_.view_configuration;
     info.displayTime = t;
     info.space = view_space_;
     XrViewState vs{XR_TYPE_VIEW_STATE};
     std::uint32_t n = static_cast<std::uint32_t>(views_.size());
-    if (XR_FAILED(xrLocateViews(session_, &info, &vs, n, &n, views_.data()))) return;
-    double xi = 0.0;
-    for (std::uint32_t i = 0; i < n && i < view_pixels_.size(); ++i) {
-      lod::ViewSpec spec;
-      spec.width_px = view_pixels_[i].first;
-      spec.height_px = view_pixels_[i].second;
-      spec.fov = {views_[i].fov.angleLeft, views_[i].fov.angleRight, views_[i].fov.angleUp, views_[i].fov.angleDown};
-      if (lod::validate_view(spec).empty()) xi = std::max(xi, lod::xi_cpd(spec));
-    }
-    if (xi > 0.0) xi_cpd_ = xi;
-  }
-
-  void resize_outputs() {
-    const std::size_t n = store_.size();
-    for (auto* v : {&lod_, &limited_, &size_only_, &ecc_only_, &vel_only_, &se_, &sv_, &scratch_a_, &scratch_b_, &scratch_c_, &scratch_d_})
-      v->resize(n);
-    angular_radius_deg_.resize(n);
-    // New objects start at full detail with no coarsening window open.
-    switch_drawn_.resize(n, 0);
-    switch_finest_.resize(n, 0);
-    switch_window_s_.resize(n, lod::kNoSwitchWindow);
-    held_.resize(n, 0);
-    budget_lod_.resize(n);
-    budget_view_.resize(n);
-    const bool budget = config_.budget_ms > 0.0;
-    decisions_out_ = {lod_, limited_, size_only_, ecc_only_, vel_only_, {}, {},
-                      budget ? std::span<float>(angular_radius_deg_) : std::span<float>()};
-    breakdown_se_out_ = {se_, scratch_a_, scratch_b_, scratch_c_, scratch_d_, {}, {}, {}};
-    breakdown_sv_out_ = {sv_, scratch_a_, scratch_b_, scratch_c_, scratch_d_, {}, {}, {}};
-    frame_.lod = budget ? std::span<const std::uint8_t>(budget_lod_) : policy_lod();
-    frame_.held = config_.switch_policy ? std::span<const std::uint8_t>(held_) : std::span<const std::uint8_t>();
-    frame_.limited_by = limited_;
-    diag_.lod_perceptual = lod_;
-    diag_.lod_size_only = size_only_;
-    diag_.lod_eccentricity_only = ecc_only_;
-    diag_.lod_velocity_only = vel_only_;
-    if (config_.compute_breakdown) {
-      diag_.lod_size_eccentricity = se_;
-      diag_.lod_size_velocity = sv_;
+    if (XR_FAILED(xr_.locate_views(session_, &info, &vs, n, &n, views_.data()))) return;
+    in.view_count = std::min<std::uint32_t>(n, static_cast<std::uint32_t>(view_pixels_.size()));
+    for (std::uint32_t i = 0; i < in.view_count; ++i) {
+      plugin::ViewInput& v = in.views[i];
+      const XrView& x = views_[i];
+      v.fov = {x.fov.angleLeft, x.fov.angleRight, x.fov.angleUp, x.fov.angleDown};
+      v.orientation_in_head = glm::dquat(x.pose.orientation.w, x.pose.orientation.x, x.pose.orientation.y, x.pose.orientation.z);
+      v.position_in_head_m = {x.pose.position.x, x.pose.position.y, x.pose.position.z};
+      v.width_px = view_pixels_[i].first;
+      v.height_px = view_pixels_[i].second;
     }
   }
 
+  void release() {
+    if (xr_gaze_) xr_gaze_->release();
+    if (view_space_ != XR_NULL_HANDLE) xr_.destroy_space(view_space_);
+    view_space_ = XR_NULL_HANDLE;
+  }
+
+  plugin::XrDispatch xr_;
   XrInstance instance_;
   XrSystemId system_;
   XrSession session_;
   XrSpace base_;
-  PluginConfig config_;
+  OpenXrOptions options_;
+  OpenXrGazeInput gaze_input_ = OpenXrGazeInput::none;
   XrSpace view_space_ = XR_NULL_HANDLE;
+  bool shut_down_ = false;
+  plugin::LodCore core_;
+  plugin::HeadHistory heads_;
+  plugin::PushedGazeSource pushed_;
   std::unique_ptr<plugin::HeadTracker> head_;
   std::unique_ptr<plugin::OpenXrGazeSource> xr_gaze_;
-  std::unique_ptr<plugin::GazeArbiter> arbiter_;
-  SourceChanged changed_;
-  GazeSourceKind active_ = GazeSourceKind::head_fixed;
-
-  lod::ObjectStore store_;
-  plugin::ClusterMeshes clusters_;
-  std::vector<std::uint8_t> lod_, limited_, size_only_, ecc_only_, vel_only_, se_, sv_;
-  std::vector<std::uint8_t> scratch_a_, scratch_b_, scratch_c_, scratch_d_;
-  lod::Decisions decisions_out_, breakdown_se_out_, breakdown_sv_out_;
-  FrameDecisions frame_;
-  FrameDiagnostics diag_;
-
-  double xi_cpd_ = 30.0;
-  bool xi_fixed_ = false;
   std::vector<std::pair<int, int>> view_pixels_;
   std::vector<XrView> views_;
-  glm::dquat last_head_orientation_{1.0, 0.0, 0.0, 0.0};
-  glm::dvec3 last_head_position_{0.0};
-  gaze::GazeConditioner openxr_conditioner_, external_conditioner_;
-  GazeSourceKind conditioned_source_ = GazeSourceKind::head_fixed;
-
-  std::vector<std::vector<lod::LodLevel>> chains_;
-  std::vector<double> importance_;
-  std::vector<float> angular_radius_deg_;
-  std::vector<std::uint8_t> switch_drawn_, switch_finest_, held_;
-  std::vector<double> switch_window_s_;
-  std::size_t switch_started_ = 0;  // objects [0, this) have had their first frame
-  bool have_t0_ = false;
-  XrTime t0_ = 0;
-  std::vector<std::uint8_t> budget_lod_;
-  std::vector<budget::BudgetObjectView> budget_view_;
-  std::unique_ptr<budget::FrameBudget> budget_;
 };
 
 }  // namespace
 
-std::unique_ptr<LodPlugin> LodPlugin::create(XrInstance instance, XrSystemId system, XrSession session,
-                                             XrSpace base_space, PluginConfig config) {
+std::unique_ptr<LodPlugin> LodPlugin::create(PFN_xrGetInstanceProcAddr gipa, XrInstance instance, XrSystemId system,
+                                             XrSession session, XrSpace base_space, PluginConfig config,
+                                             OpenXrOptions options) {
   if (instance == XR_NULL_HANDLE || session == XR_NULL_HANDLE || base_space == XR_NULL_HANDLE)
-    throw std::invalid_argument("gazelod plugin: instance, session and base space must be valid handles");
-  return std::make_unique<LodPluginImpl>(instance, system, session, base_space, std::move(config));
+    throw std::invalid_argument("gazelod: instance, session and base space must be valid handles");
+  return std::make_unique<LodPluginImpl>(plugin::load_xr_dispatch(gipa, instance), instance, system, session,
+                                         base_space, std::move(config), options);
 }
 
 }  // namespace gazelod

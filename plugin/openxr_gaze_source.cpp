@@ -1,112 +1,167 @@
+// Eye gaze from XR_EXT_eye_gaze_interaction (plugin/openxr_gaze_source.hpp).
 #include "plugin/openxr_gaze_source.hpp"
 
 #include "plugin/xr_check.hpp"
 
+#include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
 
 #include <cmath>
 #include <cstring>
-#include <stdexcept>
 
 namespace gazelod::plugin {
 namespace {
 
-void check(XrResult r, const char* call) { xr_check(r, call, "OpenXR eye gaze: "); }
+void check(XrResult r, const char* call) { xr_check(r, call, "gazelod: eye gaze: "); }
 
-XrPath path(XrInstance instance, const char* s) {
+XrPath path(const XrDispatch& xr, XrInstance instance, const char* s) {
   XrPath p = XR_NULL_PATH;
-  check(xrStringToPath(instance, s, &p), "xrStringToPath");
+  check(xr.string_to_path(instance, s, &p), "xrStringToPath");
   return p;
 }
 
 }  // namespace
 
-bool system_supports_eye_gaze(XrInstance instance, XrSystemId system) {
+bool system_supports_eye_gaze(const XrDispatch& xr, XrInstance instance, XrSystemId system) {
   XrSystemEyeGazeInteractionPropertiesEXT eye{XR_TYPE_SYSTEM_EYE_GAZE_INTERACTION_PROPERTIES_EXT};
   XrSystemProperties props{XR_TYPE_SYSTEM_PROPERTIES};
   props.next = &eye;
-  if (XR_FAILED(xrGetSystemProperties(instance, system, &props))) return false;
+  if (XR_FAILED(xr.get_system_properties(instance, system, &props))) return false;
   return eye.supportsEyeGazeInteraction == XR_TRUE;
 }
 
-OpenXrGazeSource::OpenXrGazeSource(XrInstance instance, XrSession session)
-    : instance_(instance), session_(session) {
+OpenXrGazeSource::OpenXrGazeSource(const XrDispatch& xr, XrInstance instance, XrSession session, GazeInputMode mode,
+                                   XrSpace gaze_space, XrAction gaze_action)
+    : xr_(xr), instance_(instance), session_(session), mode_(mode) {
+  XrReferenceSpaceCreateInfo view_info{XR_TYPE_REFERENCE_SPACE_CREATE_INFO};
+  view_info.referenceSpaceType = XR_REFERENCE_SPACE_TYPE_VIEW;
+  view_info.poseInReferenceSpace.orientation.w = 1.0f;
+  check(xr_.create_reference_space(session_, &view_info, &view_space_), "xrCreateReferenceSpace(VIEW)");
+  if (mode_ == GazeInputMode::app_space) {
+    gaze_space_ = gaze_space;
+    gaze_action_ = gaze_action;
+    attached_ = true;
+    status_ = "waiting for the first gaze pose";
+    return;
+  }
   XrActionSetCreateInfo set_info{XR_TYPE_ACTION_SET_CREATE_INFO};
   std::strncpy(set_info.actionSetName, "gazelod_eye_gaze", XR_MAX_ACTION_SET_NAME_SIZE - 1);
   std::strncpy(set_info.localizedActionSetName, "gazelod eye gaze", XR_MAX_LOCALIZED_ACTION_SET_NAME_SIZE - 1);
-  check(xrCreateActionSet(instance_, &set_info, &action_set_), "xrCreateActionSet");
+  check(xr_.create_action_set(instance_, &set_info, &action_set_), "xrCreateActionSet");
 
   XrActionCreateInfo action_info{XR_TYPE_ACTION_CREATE_INFO};
   action_info.actionType = XR_ACTION_TYPE_POSE_INPUT;
   std::strncpy(action_info.actionName, "eye_gaze", XR_MAX_ACTION_NAME_SIZE - 1);
   std::strncpy(action_info.localizedActionName, "Eye gaze", XR_MAX_LOCALIZED_ACTION_NAME_SIZE - 1);
-  check(xrCreateAction(action_set_, &action_info, &gaze_action_), "xrCreateAction");
+  check(xr_.create_action(action_set_, &action_info, &gaze_action_), "xrCreateAction");
+  if (mode_ == GazeInputMode::merge_binding) return;
 
-  XrActionSuggestedBinding binding{gaze_action_, path(instance_, "/user/eyes_ext/input/gaze_ext/pose")};
+  XrActionSuggestedBinding binding{gaze_action_, path(xr_, instance_, kEyeGazePoseBinding)};
   XrInteractionProfileSuggestedBinding suggested{XR_TYPE_INTERACTION_PROFILE_SUGGESTED_BINDING};
-  suggested.interactionProfile = path(instance_, "/interaction_profiles/ext/eye_gaze_interaction");
+  suggested.interactionProfile = path(xr_, instance_, kEyeGazeProfile);
   suggested.countSuggestedBindings = 1;
   suggested.suggestedBindings = &binding;
-  check(xrSuggestInteractionProfileBindings(instance_, &suggested),
-        "xrSuggestInteractionProfileBindings");
-
-  XrReferenceSpaceCreateInfo view_info{XR_TYPE_REFERENCE_SPACE_CREATE_INFO};
-  view_info.referenceSpaceType = XR_REFERENCE_SPACE_TYPE_VIEW;
-  view_info.poseInReferenceSpace.orientation.w = 1.0f;
-  check(xrCreateReferenceSpace(session_, &view_info, &view_space_), "xrCreateReferenceSpace(VIEW)");
+  const XrResult r = xr_.suggest_interaction_profile_bindings(instance_, &suggested);
+  if (r == XR_ERROR_ACTIONSETS_ALREADY_ATTACHED)
+    throw XrCallError("gazelod: eye gaze: the application attached its action sets already, so gazelod cannot add "
+                      "its own; create gazelod before xrAttachSessionActionSets (GZL_GAZE_INPUT_MERGE_BINDING) or "
+                      "pass your gaze action space (GZL_GAZE_INPUT_APP_SPACE)",
+                      r);
+  check(r, "xrSuggestInteractionProfileBindings");
 }
 
-OpenXrGazeSource::~OpenXrGazeSource() {
-  if (gaze_space_ != XR_NULL_HANDLE) xrDestroySpace(gaze_space_);
-  if (view_space_ != XR_NULL_HANDLE) xrDestroySpace(view_space_);
+OpenXrGazeSource::~OpenXrGazeSource() { release(); }
+
+void OpenXrGazeSource::release() {
+  if (mode_ != GazeInputMode::app_space && gaze_space_ != XR_NULL_HANDLE) xr_.destroy_space(gaze_space_);
+  gaze_space_ = XR_NULL_HANDLE;
+  if (view_space_ != XR_NULL_HANDLE) xr_.destroy_space(view_space_);
+  view_space_ = XR_NULL_HANDLE;
   // Destroying the action set destroys its actions.
-  if (action_set_ != XR_NULL_HANDLE) xrDestroyActionSet(action_set_);
+  if (action_set_ != XR_NULL_HANDLE) xr_.destroy_action_set(action_set_);
+  action_set_ = XR_NULL_HANDLE;
+  if (mode_ != GazeInputMode::app_space) gaze_action_ = XR_NULL_HANDLE;
+  status_ = "shut down";
 }
 
 void OpenXrGazeSource::create_space() {
   XrActionSpaceCreateInfo info{XR_TYPE_ACTION_SPACE_CREATE_INFO};
   info.action = gaze_action_;
   info.poseInActionSpace.orientation.w = 1.0f;
-  check(xrCreateActionSpace(session_, &info, &gaze_space_), "xrCreateActionSpace");
+  check(xr_.create_action_space(session_, &info, &gaze_space_), "xrCreateActionSpace");
+  attached_ = true;
   status_ = "waiting for the first gaze pose";
 }
 
-void OpenXrGazeSource::action_sets_attached() { create_space(); }
+void OpenXrGazeSource::action_sets_attached() {
+  if (mode_ == GazeInputMode::merge_binding && gaze_space_ == XR_NULL_HANDLE) create_space();
+}
 
 void OpenXrGazeSource::attach_and_own_sync() {
   XrSessionActionSetsAttachInfo attach{XR_TYPE_SESSION_ACTION_SETS_ATTACH_INFO};
   attach.countActionSets = 1;
   attach.actionSets = &action_set_;
-  check(xrAttachSessionActionSets(session_, &attach), "xrAttachSessionActionSets");
+  const XrResult r = xr_.attach_session_action_sets(session_, &attach);
+  if (r == XR_ERROR_ACTIONSETS_ALREADY_ATTACHED)
+    throw XrCallError("gazelod: eye gaze: the session's action sets are attached already (a session takes one "
+                      "xrAttachSessionActionSets); pass your gaze action space (GZL_GAZE_INPUT_APP_SPACE) or create "
+                      "gazelod before attaching and merge its binding (GZL_GAZE_INPUT_MERGE_BINDING)",
+                      r);
+  check(r, "xrAttachSessionActionSets");
   own_sync_ = true;
   create_space();
 }
 
+// Our action inactive while the eyes' device is active under the eye-gaze profile: the
+// binding was replaced by the application's own suggestion for that profile (a second
+// suggestion for a profile replaces the first). Checked once, after a few inactive frames.
+void OpenXrGazeSource::check_binding() {
+  if (binding_lost_ || mode_ == GazeInputMode::app_space || ++inactive_calls_ != 10) return;
+  XrInteractionProfileState profile{XR_TYPE_INTERACTION_PROFILE_STATE};
+  XrPath eyes = XR_NULL_PATH;
+  if (XR_FAILED(xr_.string_to_path(instance_, "/user/eyes_ext", &eyes))) return;
+  if (XR_FAILED(xr_.get_current_interaction_profile(session_, eyes, &profile))) return;
+  XrPath eye_profile = XR_NULL_PATH;
+  if (XR_FAILED(xr_.string_to_path(instance_, kEyeGazeProfile, &eye_profile)) || profile.interactionProfile != eye_profile)
+    return;
+  XrBoundSourcesForActionEnumerateInfo info{XR_TYPE_BOUND_SOURCES_FOR_ACTION_ENUMERATE_INFO};
+  info.action = gaze_action_;
+  std::uint32_t n = 0;
+  if (XR_FAILED(xr_.enumerate_bound_sources_for_action(session_, &info, 0, &n, nullptr)) || n != 0) return;
+  binding_lost_ = true;
+  status_ = std::string("gazelod's eye-gaze binding was replaced by the application's own suggestion for ") +
+            kEyeGazeProfile + "; merge gazelod's binding into that suggestion (GZL_GAZE_INPUT_MERGE_BINDING) or pass "
+            "your gaze action space (GZL_GAZE_INPUT_APP_SPACE)";
+}
+
 std::optional<gaze::GazeSample> OpenXrGazeSource::sample_at(std::int64_t t_ns) {
-  if (gaze_space_ == XR_NULL_HANDLE) return std::nullopt;
+  if (gaze_space_ == XR_NULL_HANDLE || view_space_ == XR_NULL_HANDLE) return std::nullopt;
   if (own_sync_) {
     XrActiveActionSet active{action_set_, XR_NULL_PATH};
     XrActionsSyncInfo sync{XR_TYPE_ACTIONS_SYNC_INFO};
     sync.countActiveActionSets = 1;
     sync.activeActionSets = &active;
-    const XrResult r = xrSyncActions(session_, &sync);
+    const XrResult r = xr_.sync_actions(session_, &sync);
     // SESSION_NOT_FOCUSED: inputs are inactive, which the locate below reports as invalid.
     if (XR_FAILED(r)) {
       status_ = "xrSyncActions failed";
       return std::nullopt;
     }
   }
-  XrActionStatePose state{XR_TYPE_ACTION_STATE_POSE};
-  XrActionStateGetInfo get{XR_TYPE_ACTION_STATE_GET_INFO};
-  get.action = gaze_action_;
-  if (XR_FAILED(xrGetActionStatePose(session_, &get, &state)) || !state.isActive) {
-    status_ = ever_delivered_ ? "eye gaze action inactive" : "eye gaze action never active";
-    return std::nullopt;
+  if (gaze_action_ != XR_NULL_HANDLE) {
+    XrActionStatePose state{XR_TYPE_ACTION_STATE_POSE};
+    XrActionStateGetInfo get{XR_TYPE_ACTION_STATE_GET_INFO};
+    get.action = gaze_action_;
+    if (XR_FAILED(xr_.get_action_state_pose(session_, &get, &state)) || !state.isActive) {
+      if (!binding_lost_) status_ = ever_delivered_ ? "eye gaze action inactive" : "eye gaze action never active";
+      if (!ever_delivered_) check_binding();
+      return std::nullopt;
+    }
   }
   XrEyeGazeSampleTimeEXT sample_time{XR_TYPE_EYE_GAZE_SAMPLE_TIME_EXT};
   XrSpaceLocation loc{XR_TYPE_SPACE_LOCATION};
   loc.next = &sample_time;
-  if (XR_FAILED(xrLocateSpace(gaze_space_, view_space_, static_cast<XrTime>(t_ns), &loc))) {
+  if (XR_FAILED(xr_.locate_space(gaze_space_, view_space_, static_cast<XrTime>(t_ns), &loc))) {
     status_ = "xrLocateSpace(gaze) failed";
     return std::nullopt;
   }

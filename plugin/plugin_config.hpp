@@ -34,6 +34,9 @@ struct PluginConfig {
   // A runtime that advertises eye gaze but has delivered nothing this long after the
   // session became focused is not trusted any more (seconds).
   double gaze_silence_timeout_s = 1.0;
+  // Samples the application pushes (data mode, OpenXrGazeInput::pushed): a frame uses the
+  // newest one at most this old (seconds); older means the application's tracker is silent.
+  double max_pushed_sample_age_s = 0.1;
   // Angular error (accuracy) assumed for each source (degrees): the floor of the gaze's
   // uncertainty, which widens the foveal cone (ConditionerConfig::accuracy_deg per source).
   double openxr_gaze_error_deg = 1.5;

@@ -19,6 +19,7 @@ packages=(
   libopenscenegraph-dev
   assimp-testmodels  # real glTF 2.0 models (Khronos 2CylinderEngine, ...) for the bake --clusters test
   gltfpack  # meshoptimizer's own simplifier, the bake's peer (gazelod eval gltfpack)
+  abigail-tools  # abidiff: the C ABI of libgazelod.so against its checked-in baseline
 )
 # node + npm run Khronos's glTF-Validator (npm gltf-validator; scripts/install-gltf-validator.sh).
 # Debian's packages only where no node / npm is installed (a NodeSource nodejs brings its own npm,

@@ -41,11 +41,13 @@ case "$what" in
       "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -g1 -DGAZELOD_NO_CLONES" -- gazelod_unit_tests
     ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
       ctest --test-dir build-asan --output-on-failure -j"$jobs" -L unit --timeout 600
-    echo "== HID reader thread and the cluster bake's thread pool under ThreadSanitizer =="
+    echo "== HID reader thread, the cluster bake's thread pool and the C ABI's threads under ThreadSanitizer =="
     build build-tsan -DGAZELOD_TSAN=ON -DGAZELOD_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=Debug \
-      "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -g1" -- test_hid test_faults test_bake_clusters
+      "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -g1" -- test_hid test_faults test_bake_clusters test_capi
     TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 ./build-tsan/tests/hid/test_hid
     TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 ./build-tsan/tests/faults/test_faults --gtest_filter='HidFaults.*'
+    # The C ABI: an application thread registering and reading beside the render thread.
+    TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 ./build-tsan/tests/capi/test_capi --gtest_filter='CApiThreads.*'
     TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 ./build-tsan/tests/bake/test_bake_clusters \
       --gtest_filter='ClusterBuild.SameHierarchyOnAnyThreadCount*:ClusterBuild.OpenGridSimplifiesItsRimWithoutCrack:SharedPositions.TiledTerrainKeepsTileSeamsAndSimplifiesTheRim:ClusterGltf.SideBySideBuildsWriteTheSameFile'
     ;;

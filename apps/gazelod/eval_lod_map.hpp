@@ -8,7 +8,7 @@
 #include "lod/lod_chain.hpp"
 #include "lod/display.hpp"
 #include "lod/lod_map.hpp"
-#include "plugin/gazelod.hpp"
+#include "plugin/lod_plugin.hpp"
 #include "sim/simulator.hpp"
 
 #include <glm/gtc/quaternion.hpp>

@@ -11,7 +11,7 @@
 
 #include "bake/baked_scene.hpp"
 #include "lod/cluster_select_store.hpp"
-#include "plugin/gazelod.hpp"
+#include "plugin/lod_plugin.hpp"
 #include "sim/simulator.hpp"
 
 #include <glm/mat4x4.hpp>

@@ -11,7 +11,7 @@
 
 #include "apps/gazelod/run_cluster_scene.hpp"
 #include "apps/xr_host/xr_app.hpp"
-#include "plugin/gazelod.hpp"
+#include "plugin/lod_plugin.hpp"
 #include "render/frame_renderer.hpp"
 #include "render/mesh_library.hpp"
 

@@ -153,7 +153,7 @@ int run_session(const RunOptions& opt, Io io) {
     };
     config.external_source = std::make_shared<gaze::hid::HidGazeSource>(std::move(hid));
   }
-  auto plugin = LodPlugin::create(app->instance(), app->system(), app->session(), app->local_space(), config);
+  auto plugin = LodPlugin::create(xrGetInstanceProcAddr, app->instance(), app->system(), app->session(), app->local_space(), config);
   plugin->on_source_changed([&io, &opt](GazeSourceKind now, const std::string& why) {
     if (!opt.quiet) io.err << "gazelod run: gaze source " << to_string(now) << ": " << why << "\n";
   });

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "apps/gazelod/command.hpp"
-#include "plugin/gazelod.hpp"
+#include "plugin/lod_plugin.hpp"
 
 #include <cstdint>
 #include <filesystem>

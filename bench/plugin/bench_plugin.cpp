@@ -6,7 +6,7 @@
 #include "lod/object_set.hpp"
 #include "lod/select.hpp"
 #include "apps/xr_host/xr_app.hpp"
-#include "plugin/gazelod.hpp"
+#include "plugin/lod_plugin.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -63,7 +63,7 @@ Session& session(std::size_t n, bool breakdown) {
   s->app = std::make_unique<xr_host::XrApp>(true);
   PluginConfig cfg;
   cfg.compute_breakdown = breakdown;
-  s->plugin = LodPlugin::create(s->app->instance(), s->app->system(), s->app->session(),
+  s->plugin = LodPlugin::create(xrGetInstanceProcAddr, s->app->instance(), s->app->system(), s->app->session(),
                                 s->app->local_space(), cfg);
   for (const ObjectDesc& d : make_field(n).objects) s->plugin->add_object(d);
   // Run until the session is focused and frames flow.

@@ -103,7 +103,7 @@ TEST(ArbiterFaults, ARuntimeDeliveringOnlyNanIsDistrustedAfterTheTimeout) {
   xr.next = sample(700 * kMs, kAhead);  // good gaze after distrust is not taken any more
   EXPECT_EQ(a.update(700 * kMs).source, GazeSourceKind::head_fixed);
   ASSERT_EQ(c.seen.size(), 2u);  // head-fixed at start, then the distrust (reported again)
-  EXPECT_NE(c.seen[1].second.find("delivered none"), std::string::npos) << c.seen[1].second;
+  EXPECT_NE(c.seen[1].second.find("delivered no usable eye gaze"), std::string::npos) << c.seen[1].second;
 }
 
 TEST(ArbiterFaults, FrozenTrackerKeepsItsSourceAndReportsNoChange) {

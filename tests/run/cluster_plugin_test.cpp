@@ -10,7 +10,7 @@
 
 #include "apps/xr_host/xr_app.hpp"
 #include "bake/cluster_build.hpp"
-#include "plugin/gazelod.hpp"
+#include "plugin/lod_plugin.hpp"
 #include "tests/bake/test_meshes.hpp"
 
 #include <glm/geometric.hpp>
@@ -87,7 +87,7 @@ TEST(PluginClusters, EveryFramesCutIsConsistentAndFollowsTheGaze) {
 
   xr_host::XrApp app(true);
   PluginConfig cfg;
-  auto plugin = LodPlugin::create(app.instance(), app.system(), app.session(), app.local_space(), cfg);
+  auto plugin = LodPlugin::create(xrGetInstanceProcAddr, app.instance(), app.system(), app.session(), app.local_space(), cfg);
   ClusterMeshDesc desc;
   desc.hierarchy = built.hierarchy;
   desc.index_count = built.indices.size();

@@ -6,7 +6,7 @@
 #include "run_test_util.hpp"
 
 #include "apps/xr_host/xr_app.hpp"
-#include "plugin/gazelod.hpp"
+#include "plugin/lod_plugin.hpp"
 
 #include <gtest/gtest.h>
 
@@ -27,10 +27,10 @@ TEST(PluginFocus, SilenceTimerRunsFromFocused) {
   ASSERT_TRUE(app.eye_gaze_enabled());
   PluginConfig cfg;
   cfg.gaze_silence_timeout_s = 1.0;
-  auto plugin = LodPlugin::create(app.instance(), app.system(), app.session(), app.local_space(), cfg);
+  auto plugin = LodPlugin::create(xrGetInstanceProcAddr, app.instance(), app.system(), app.session(), app.local_space(), cfg);
   XrTime focused = 0, first_frame = 0, distrusted = 0, frame_t = 0;
   plugin->on_source_changed([&](GazeSourceKind, const std::string& why) {
-    if (why.find("delivered none") != std::string::npos && distrusted == 0) distrusted = frame_t;
+    if (why.find("delivered no usable eye gaze") != std::string::npos && distrusted == 0) distrusted = frame_t;
   });
   int frames = 0;
   bool focus_pending = false;

@@ -92,7 +92,7 @@ TEST(RunCli, RuntimeThatNeverDeliversGazeIsDistrusted) {
   const CliResult r = run_cli({"run", "--scenario", scenario.string(), "--frames", "180", "--out",
                                (dir / "out").string(), "--no-render"});
   ASSERT_EQ(r.rc, 0) << r.err;
-  EXPECT_NE(r.err.find("delivered none"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("delivered no usable eye gaze"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("head-fixed"), std::string::npos) << r.err;
 }
 

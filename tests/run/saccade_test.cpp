@@ -14,7 +14,7 @@
 #include "run_test_util.hpp"
 
 #include "apps/xr_host/xr_app.hpp"
-#include "plugin/gazelod.hpp"
+#include "plugin/lod_plugin.hpp"
 #include "sim/simulator.hpp"
 
 #include <glm/geometric.hpp>
@@ -83,7 +83,7 @@ TEST(PluginSaccade, FoveaFollowsTheGazeWithinOneFrame) {
   xr_host::XrApp app(true);
   ASSERT_TRUE(app.eye_gaze_enabled());
   PluginConfig cfg;
-  auto plugin = LodPlugin::create(app.instance(), app.system(), app.session(), app.local_space(), cfg);
+  auto plugin = LodPlugin::create(xrGetInstanceProcAddr, app.instance(), app.system(), app.session(), app.local_space(), cfg);
   std::vector<glm::dvec3> centers;
   for (const sim::SceneObject& o : simulator.scenario().objects) {
     plugin->add_object({o.position_m, o.radius_m, o.velocity_m_s, o.lods, o.importance});

@@ -8,7 +8,7 @@
 //   gazelod_soak --frames 324000 [--scenario FILE] [--samples 40] [--max-growth-kib 1024]
 //
 // Prints a progress line per sample ("soak: frame F/N t=S s rss=K KiB") and a summary line.
-#include "plugin/gazelod.hpp"
+#include "plugin/lod_plugin.hpp"
 #include "sim/simulator.hpp"
 
 #include <openxr/openxr.h>
@@ -143,7 +143,7 @@ int soak(const Options& opt) {
   open_headless(xr);
   gazelod::PluginConfig config;
   config.compute_breakdown = true;  // the most work per frame, as `gazelod run` does
-  auto plugin = gazelod::LodPlugin::create(xr.instance, xr.system, xr.session, xr.local, config);
+  auto plugin = gazelod::LodPlugin::create(xrGetInstanceProcAddr, xr.instance, xr.system, xr.session, xr.local, config);
   for (const auto& o : scenario.objects) {
     gazelod::ObjectDesc d;
     d.center_m = o.position_m;

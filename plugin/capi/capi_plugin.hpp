@@ -1,0 +1,76 @@
+// What a gzl_plugin handle is (include/gazelod/gazelod.h): the engine in one of its two fronts,
+// the stable object handles over the engine's dense ids, the last published frame, and the
+// locks that make every call safe from any thread. Internal to libgazelod.
+#pragma once
+
+#include "gazelod/gazelod.h"
+#include "plugin/lod_core.hpp"
+#include "plugin/lod_plugin.hpp"
+#include "plugin/pushed_gaze.hpp"
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+namespace gazelod::capi {
+
+// Data mode's front: the application gives head poses and views and pushes gaze samples.
+struct DataFront {
+  explicit DataFront(const PluginConfig& config)
+      : core(config), pushed(heads, static_cast<std::int64_t>(config.max_pushed_sample_age_s * 1e9)) {
+    core.set_primary(&pushed, GazeSourceKind::pushed, "");
+    core.set_orientation_at([this](std::int64_t t_ns) -> std::optional<glm::dquat> {
+      if (auto q = pushed.head_at_last_sample()) return q;
+      return heads.at(t_ns);
+    });
+  }
+  plugin::LodCore core;
+  plugin::HeadHistory heads;
+  plugin::PushedGazeSource pushed;
+  plugin::HeadTracker head;  // velocities from successive poses where none are given
+  bool have_frame = false;
+  std::int64_t last_t_ns = 0;
+};
+
+inline constexpr std::uint8_t kHandleNew = 0, kHandleLive = 1, kHandleRemoved = 2;
+
+struct Published {
+  std::vector<std::uint8_t> level_by_handle;  // index = handle - 1
+  std::vector<std::uint8_t> state_by_handle;  // kHandle*
+  gzl_frame_info info{};
+  std::array<gzl_foveal_cone, GZL_MAX_VIEWS> cones{};
+  gzl_frame_record record{};
+};
+
+}  // namespace gazelod::capi
+
+struct gzl_plugin_T {
+  // Every call but the output readers holds this for its whole length (a frame too).
+  std::mutex mu;
+  // The published frame; held only to copy in or out, never across a frame's decision.
+  std::mutex out_mu;
+  // The last error message (copied out under its own lock).
+  std::mutex err_mu;
+  std::string last_error;
+  std::string gaze_status;  // under err_mu too: the last source change's reason
+
+  bool openxr = false;
+  bool shut_down = false;
+  std::unique_ptr<gazelod::LodPlugin> xr;        // OpenXR mode
+  std::unique_ptr<gazelod::capi::DataFront> data;  // data mode
+  std::uint32_t view_count = 0;
+  std::array<gzl_view, GZL_MAX_VIEWS> data_views{};
+  gazelod::PluginConfig config;
+
+  // Stable handles over the engine's dense ids: handle h has index h - 1, never reused.
+  std::vector<std::uint32_t> slot_of_handle;  // UINT32_MAX once removed
+  std::vector<std::uint32_t> handle_index_of_slot;
+  std::uint64_t frames = 0;
+
+  gazelod::capi::Published pub;
+
+  gazelod::plugin::LodCore& core() { return openxr ? xr->core() : data->core; }
+};

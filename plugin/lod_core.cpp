@@ -1,0 +1,325 @@
+// The plugin's engine without OpenXR (plugin/lod_core.hpp): gaze conditioning, the viewer, the
+// selection, the switch policy, the budget and the cluster cut, from one frame's inputs.
+#include "plugin/lod_core.hpp"
+
+#include "lod/acuity.hpp"
+#include "lod/angles.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace gazelod::plugin {
+
+LodCore::LodCore(PluginConfig config) : config_(std::move(config)) {
+  gaze::ConditionerConfig cc = config_.conditioning;
+  cc.accuracy_deg = config_.openxr_gaze_error_deg;
+  primary_conditioner_ = gaze::GazeConditioner(cc);
+  cc.accuracy_deg = config_.external_gaze_error_deg;
+  external_conditioner_ = gaze::GazeConditioner(cc);
+  if (!config_.hmd_override.empty()) {
+    const lod::DisplaySpec* preset = lod::find_display_preset(config_.hmd_override);
+    if (!preset)
+      throw std::invalid_argument("gazelod: unknown HMD preset '" + config_.hmd_override +
+                                  "'; `gazelod hmds` lists the presets");
+    xi_cpd_ = lod::xi_cpd(*preset);
+    xi_fixed_ = true;
+  }
+  set_primary(nullptr, GazeSourceKind::openxr, "");
+  resize_outputs();
+}
+
+LodCore::~LodCore() = default;
+
+void LodCore::set_primary(gaze::GazeSource* primary, GazeSourceKind kind, std::string why_none) {
+  primary_ = primary;
+  primary_kind_ = kind;
+  ArbiterConfig ac;
+  ac.silence_timeout_ns = static_cast<std::int64_t>(config_.gaze_silence_timeout_s * 1e9);
+  ac.primary_kind = kind;
+  ac.why_no_primary = std::move(why_none);
+  arbiter_ = std::make_unique<GazeArbiter>(primary, config_.external_source.get(), ac);
+  arbiter_->on_change([this](GazeSourceKind s, const std::string& why) {
+    active_ = s;
+    if (changed_) changed_(active_, why);
+  });
+}
+
+std::uint32_t LodCore::add_object(const ObjectDesc& d) {
+  const std::uint32_t id = store_.add(d.center_m, d.radius_m, d.velocity_m_s, d.lods);
+  chains_.push_back(d.lods);
+  importance_.push_back(d.importance);
+  budget_.reset();  // rebuilt with the new object at the next frame
+  resize_outputs();
+  return id;
+}
+
+std::uint32_t LodCore::remove_object(std::uint32_t id) {
+  if (id >= store_.size()) throw std::out_of_range("object id out of range");
+  const std::uint32_t last = static_cast<std::uint32_t>(store_.size() - 1);
+  store_.remove(id);  // moves `last` into `id`
+  // Every per-object array follows the store's move, so the moved object keeps its state
+  // (drawn level, hold windows, first-frame flag).
+  auto move_last = [&](auto& v) {
+    v[id] = std::move(v[last]);
+    v.pop_back();
+  };
+  move_last(chains_), move_last(importance_), move_last(enabled_);
+  move_last(switch_drawn_), move_last(switch_finest_), move_last(switch_window_s_);
+  move_last(held_), move_last(switch_started_);
+  budget_.reset();
+  resize_outputs();
+  return last;
+}
+
+void LodCore::set_object_enabled(std::uint32_t id, bool enabled) {
+  if (id >= store_.size()) throw std::out_of_range("object id out of range");
+  enabled_[id] = enabled ? 1 : 0;
+}
+
+void LodCore::set_object_motion(std::uint32_t id, const glm::dvec3& c, const glm::dvec3& v) { store_.set_motion(id, c, v); }
+std::size_t LodCore::object_count() const { return store_.size(); }
+
+std::uint32_t LodCore::add_cluster_mesh(const ClusterMeshDesc& d) {
+  const std::uint32_t id = clusters_.add(d);
+  publish_clusters();
+  return id;
+}
+void LodCore::set_cluster_mesh_motion(std::uint32_t id, const lod::InstanceTransform& pose, const glm::dvec3& v) {
+  clusters_.set_motion(id, pose, v);
+}
+std::size_t LodCore::cluster_mesh_count() const { return clusters_.mesh_count(); }
+
+void LodCore::session_state(bool focused, std::int64_t t_ns) { arbiter_->session_state(focused, t_ns); }
+
+void LodCore::end_frame(double measured_frame_ms) {
+  if (budget_) budget_->observe(measured_frame_ms);
+}
+
+int LodCore::max_view_height_px() const {
+  int h = 0;
+  for (std::uint32_t i = 0; i < view_count_; ++i) h = std::max(h, views_[i].height_px);
+  return h;
+}
+
+// The gaze at the display time, conditioned per source (gaze/gaze_conditioner.hpp):
+// classified in the world, smoothed in fixations, predicted to t; its uncertainty widens the
+// foveal cone, and only a classified pursuit moves the gaze in the world.
+void LodCore::condition_gaze(const HeadMotion& head, std::int64_t t_ns, lod::Viewer& v) {
+  const ArbiterResult gaze = arbiter_->update(t_ns);
+  const glm::dquat q = last_head_orientation_;
+  glm::dvec3 gaze_head(0.0, 0.0, -1.0);
+  glm::dvec3 gaze_world = q * gaze_head;
+  glm::dvec3 gaze_omega_world(0.0);
+  double error_deg = config_.head_fixed_cone_deg;
+  bool suppressed = false;
+  diag_.eye_motion = gaze::EyeMotion::loss;
+  GazeSourceKind used = GazeSourceKind::head_fixed;
+  gaze_read_.present = false;
+  if (gaze.source != GazeSourceKind::head_fixed) {
+    gaze::GazeConditioner& c = gaze.source == GazeSourceKind::external ? external_conditioner_ : primary_conditioner_;
+    if (gaze.source != conditioned_source_) c.reset();  // a new source: no history across it
+    conditioned_source_ = gaze.source;
+    std::optional<glm::dquat> at_sample = orientation_at_ ? orientation_at_(gaze.sample.t_ns) : std::nullopt;
+    const glm::dquat q_sample = at_sample.value_or(q);
+    if (gaze.source == primary_kind_) {
+      gaze_read_.present = true;
+      gaze_read_.sample = gaze.sample;
+      gaze_read_.head_orientation = q_sample;
+    }
+    c.push(gaze.sample, q_sample);
+    const gaze::ConditionedGaze cg = c.at(t_ns, q);
+    if (cg.valid) {
+      used = gaze.source;
+      gaze_head = cg.direction_head;
+      gaze_world = cg.direction_world;
+      gaze_omega_world = cg.angular_velocity_world_rad_s;
+      error_deg = cg.uncertainty_deg;
+      suppressed = cg.suppressed;
+      diag_.eye_motion = cg.motion;
+    }
+  } else {
+    conditioned_source_ = GazeSourceKind::head_fixed;
+  }
+  // The selection takes the eye-in-head rotation: the eye's rotation in the world minus the
+  // head's (a fixation held through a head turn counter-rotates the eye).
+  v.gaze_angular_velocity_in_head_rad_s = gaze_omega_world - v.head_angular_velocity_rad_s;
+  if (used == GazeSourceKind::head_fixed) v.gaze_angular_velocity_in_head_rad_s = glm::dvec3(0.0);
+  v.gaze_direction = gaze_world;
+  v.tracker_error_deg = error_deg;
+  frame_.gaze_source = used;
+  frame_.gaze_valid = used != GazeSourceKind::head_fixed;
+  diag_.gaze_suppressed = suppressed;
+  diag_.gaze_direction_head = gaze_head;
+  diag_.gaze_error_deg = error_deg;
+  (void)head;
+}
+
+const FrameDecisions& LodCore::decide(const FrameInput& in) {
+  const HeadMotion& head = in.head;
+  head_ = head;
+  update_display(in);
+  lod::Viewer v;
+  v.xi_cpd = xi_cpd_;
+  v.use_size = config_.criteria.size;
+  v.use_eccentricity = config_.criteria.eccentricity;
+  v.use_velocity = config_.criteria.velocity;
+  if (head.valid) {
+    last_head_orientation_ = head.orientation;
+    last_head_position_ = head.position_m;
+  }
+  v.eye_position_m = last_head_position_;
+  v.eye_velocity_m_s = head.valid ? head.linear_velocity_m_s : glm::dvec3(0.0);
+  v.head_angular_velocity_rad_s = head.valid ? head.angular_velocity_rad_s : glm::dvec3(0.0);
+  condition_gaze(head, in.t_ns, v);
+
+  const std::string err = lod::select_lods(v, store_.view(), decisions_out_);
+  if (!err.empty()) {
+    // The core refused this frame's viewer: keep full detail rather than guess.
+    std::fill(lod_.begin(), lod_.end(), 0);
+    std::fill(limited_.begin(), limited_.end(), static_cast<std::uint8_t>(lod::Criterion::invalid_input));
+  }
+  if (config_.compute_breakdown) {
+    lod::Viewer se = v;
+    se.use_velocity = false;
+    (void)lod::select_lods(se, store_.view(), breakdown_se_out_);  // refused: the same viewer was refused above
+    lod::Viewer sv = v;
+    sv.use_eccentricity = false;
+    (void)lod::select_lods(sv, store_.view(), breakdown_sv_out_);
+  }
+
+  apply_switch_policy(in.t_ns, diag_.gaze_suppressed);
+  apply_budget();
+  // Cluster meshes: the same viewer, per cluster; the same hysteresis on their records.
+  clusters_.update(v, config_.switch_policy ? &config_.switching : nullptr, frame_seconds(in.t_ns), diag_.gaze_suppressed);
+  publish_clusters();
+
+  diag_.gaze_bad_samples = primary_conditioner_.bad_samples() + external_conditioner_.bad_samples();
+  diag_.gaze_direction_world = v.gaze_direction;
+  diag_.eye_position_world = v.eye_position_m;
+  diag_.head_angular_velocity_rad_s = v.head_angular_velocity_rad_s;
+  // Reddy 1995's foveal cone: out to where M(E) leaves 1 (the fovea), widened by the error.
+  diag_.foveal_cone = lod::make_foveal_cone(v.eye_position_m, v.gaze_direction, lod::kEccentricitySeamDeg,
+                                            diag_.gaze_error_deg);
+  diag_.xi_cpd = xi_cpd_;
+  diag_.head_valid = head.valid;
+  return frame_;
+}
+
+// Seconds since the first frame (the switch policies' clock).
+double LodCore::frame_seconds(std::int64_t t_ns) {
+  if (!have_t0_) {
+    have_t0_ = true;
+    t0_ns_ = t_ns;
+  }
+  return static_cast<double>(t_ns - t0_ns_) * 1e-9;
+}
+
+void LodCore::publish_clusters() {
+  frame_.cluster_drawn = clusters_.drawn();
+  frame_.cluster_limited_by = clusters_.limited_by();
+  frame_.cluster_held = config_.switch_policy ? clusters_.held() : std::span<const std::uint8_t>();
+  frame_.cluster_first = clusters_.first_cluster();
+  diag_.cluster_drawn_perceptual = clusters_.perceptual();
+}
+
+// Refinement at once, coarsening after the hold and preferably while vision is suppressed.
+void LodCore::apply_switch_policy(std::int64_t t_ns, bool suppressed) {
+  if (!config_.switch_policy) return;
+  const double t_s = frame_seconds(t_ns);
+  // An object's first frame draws its perceptual level: nothing was drawn before, so there is
+  // no switch to hide.
+  for (std::size_t i = 0; i < lod_.size(); ++i)
+    if (!switch_started_[i]) {
+      switch_drawn_[i] = lod_[i];
+      switch_started_[i] = 1;
+    }
+  const lod::SwitchState state{switch_drawn_, switch_finest_, switch_window_s_};
+  if (!lod::apply_switch_policy(config_.switching, t_s, suppressed, lod_, state, held_).empty()) {
+    // Refused (it validates sizes and the configuration): draw the perceptual choice.
+    std::copy(lod_.begin(), lod_.end(), switch_drawn_.begin());
+    std::fill(held_.begin(), held_.end(), 0);
+  }
+}
+
+// The levels the policy passes on (the perceptual ones without it).
+std::span<const std::uint8_t> LodCore::policy_lod() const {
+  return config_.switch_policy ? std::span<const std::uint8_t>(switch_drawn_) : std::span<const std::uint8_t>(lod_);
+}
+
+// The budget pass: the perceptual levels are the finest worth drawing; the solver coarsens
+// them until the predicted frame time fits. Benefit grows with projected area (pixels); a
+// disabled object is not drawn, so it has none.
+void LodCore::apply_budget() {
+  diag_.predicted_ms = 0.0;
+  diag_.budget_infeasible = false;
+  if (!(config_.budget_ms > 0.0) || store_.size() == 0) return;
+  if (!budget_) budget_ = std::make_unique<budget::FrameBudget>(chains_, config_.budget_ms, config_.budget);
+  const double px_per_deg = 2.0 * xi_cpd_;  // xi = pixels / (2 * FOV)
+  for (std::size_t i = 0; i < store_.size(); ++i) {
+    const double r_px = static_cast<double>(angular_radius_deg_[i]) * px_per_deg;
+    budget_view_[i].size_px = std::isfinite(r_px) && enabled_[i] ? std::numbers::pi * r_px * r_px : 0.0;
+    budget_view_[i].importance = std::clamp(importance_[i], 0.0, 1.0);
+  }
+  try {
+    diag_.budget_infeasible = !budget_->choose(policy_lod(), budget_view_, budget_lod_);
+    diag_.predicted_ms = budget_->predicted_ms();
+  } catch (const std::exception&) {
+    // Inputs the solver refuses: draw the perceptual choice rather than guess.
+    std::copy(policy_lod().begin(), policy_lod().end(), budget_lod_.begin());
+  }
+}
+
+// xi from the views' FOV and the resolution rendered: the finest view decides (an inset's
+// density is the display's limit where the inset is; elsewhere this is conservative).
+void LodCore::update_display(const FrameInput& in) {
+  if (in.view_count > 0) {
+    view_count_ = std::min<std::uint32_t>(in.view_count, kMaxViews);
+    std::copy(in.views.begin(), in.views.begin() + view_count_, views_.begin());
+  }
+  if (xi_fixed_) return;
+  double xi = 0.0;
+  for (std::uint32_t i = 0; i < view_count_; ++i) {
+    lod::ViewSpec spec;
+    spec.width_px = views_[i].width_px;
+    spec.height_px = views_[i].height_px;
+    spec.fov = views_[i].fov;
+    if (lod::validate_view(spec).empty()) xi = std::max(xi, lod::xi_cpd(spec));
+  }
+  if (xi > 0.0) xi_cpd_ = xi;
+}
+
+void LodCore::resize_outputs() {
+  const std::size_t n = store_.size();
+  for (auto* v : {&lod_, &limited_, &size_only_, &ecc_only_, &vel_only_, &se_, &sv_, &scratch_a_, &scratch_b_, &scratch_c_, &scratch_d_})
+    v->resize(n);
+  angular_radius_deg_.resize(n);
+  // New objects start at full detail with no coarsening window open, enabled.
+  switch_drawn_.resize(n, 0);
+  switch_finest_.resize(n, 0);
+  switch_window_s_.resize(n, lod::kNoSwitchWindow);
+  held_.resize(n, 0);
+  switch_started_.resize(n, 0);
+  enabled_.resize(n, 1);
+  budget_lod_.resize(n);
+  budget_view_.resize(n);
+  const bool budget = config_.budget_ms > 0.0;
+  decisions_out_ = {lod_, limited_, size_only_, ecc_only_, vel_only_, {}, {},
+                    budget ? std::span<float>(angular_radius_deg_) : std::span<float>()};
+  breakdown_se_out_ = {se_, scratch_a_, scratch_b_, scratch_c_, scratch_d_, {}, {}, {}};
+  breakdown_sv_out_ = {sv_, scratch_a_, scratch_b_, scratch_c_, scratch_d_, {}, {}, {}};
+  frame_.lod = budget ? std::span<const std::uint8_t>(budget_lod_) : policy_lod();
+  frame_.held = config_.switch_policy ? std::span<const std::uint8_t>(held_) : std::span<const std::uint8_t>();
+  frame_.limited_by = limited_;
+  diag_.lod_perceptual = lod_;
+  diag_.lod_size_only = size_only_;
+  diag_.lod_eccentricity_only = ecc_only_;
+  diag_.lod_velocity_only = vel_only_;
+  if (config_.compute_breakdown) {
+    diag_.lod_size_eccentricity = se_;
+    diag_.lod_size_velocity = sv_;
+  }
+}
+
+}  // namespace gazelod::plugin

@@ -36,9 +36,11 @@ void GazeArbiter::session_state(bool focused, std::int64_t t_ns) {
 }
 
 ArbiterResult GazeArbiter::update(std::int64_t t_ns) {
-  if (!started_) {
+  if (!started_ || restart_pending_) {
     started_ = true;
     first_t_ns_ = t_ns;
+    if (restart_pending_ && focused_) focused_t_ns_ = t_ns;
+    restart_pending_ = false;
   }
   ArbiterResult result;
   bool newly_distrusted = false;  // reported even if the active source stays the same

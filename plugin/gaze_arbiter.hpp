@@ -47,6 +47,14 @@ class GazeArbiter {
   // silence timer runs only while the session is focused, from when it became focused.
   void session_state(bool focused, std::int64_t t_ns);
 
+  // The primary source was replaced (an application's gaze space given late): trust it afresh,
+  // with the silence timer restarted at the next update.
+  void restart_primary() {
+    primary_distrusted_ = false;
+    primary_ever_ = false;
+    restart_pending_ = true;
+  }
+
   // True once the primary source was judged silent (advertised but never delivered).
   bool primary_distrusted() const { return primary_distrusted_; }
 
@@ -66,6 +74,7 @@ class GazeArbiter {
   std::int64_t focused_t_ns_ = 0;
   bool primary_ever_ = false;
   bool primary_distrusted_ = false;
+  bool restart_pending_ = false;
 };
 
 }  // namespace gazelod::plugin

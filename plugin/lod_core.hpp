@@ -68,6 +68,8 @@ class LodCore {
   // The primary gaze input (not owned; OpenXR's eye gaze or the application's pushed samples)
   // and, when there is none, why ("" = none was asked for). Call before the first frame.
   void set_primary(gaze::GazeSource* primary, GazeSourceKind kind, std::string why_none);
+  // The primary input was given anew (its space): trust it afresh.
+  void restart_primary() { arbiter_->restart_primary(); }
   // The head's orientation at a gaze sample's time (nullopt: the frame's own is used).
   void set_orientation_at(OrientationAt f) { orientation_at_ = std::move(f); }
 

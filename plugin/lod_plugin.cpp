@@ -94,10 +94,18 @@ class LodPluginImpl final : public LodPlugin {
     view_pixels_[view] = {width_px, height_px};
   }
 
+  void set_gaze_space(XrSpace gaze_space, XrAction gaze_action) override {
+    if (gaze_input_ != OpenXrGazeInput::app_space || !xr_gaze_)
+      throw std::invalid_argument("gazelod: a gaze space is given only with GZL_GAZE_INPUT_APP_SPACE");
+    xr_gaze_->set_app_space(gaze_space, gaze_action);
+    core_.restart_primary();
+  }
+
   std::uint32_t view_count() const override { return static_cast<std::uint32_t>(view_pixels_.size()); }
   int max_view_height_px() const override {
+    // With quad views the primary pair (views 0 and 1) is what a share of "the screen" means.
     int h = 0;
-    for (const auto& p : view_pixels_) h = std::max(h, p.second);
+    for (std::size_t i = 0; i < view_pixels_.size() && i < 2; ++i) h = std::max(h, view_pixels_[i].second);
     return h;
   }
 
@@ -150,9 +158,7 @@ class LodPluginImpl final : public LodPlugin {
         });
         return;
       case OpenXrGazeInput::app_space:
-        if (options_.gaze_space == XR_NULL_HANDLE)
-          throw std::invalid_argument("gazelod: GZL_GAZE_INPUT_APP_SPACE needs gaze_space, the application's eye-gaze "
-                                      "action space (xrCreateActionSpace on its eye-gaze pose action)");
+        // A null space is given later (gzl_set_gaze_space); until then the source has nothing.
         xr_gaze_ = std::make_unique<plugin::OpenXrGazeSource>(xr_, instance_, session_, plugin::GazeInputMode::app_space,
                                                               options_.gaze_space, options_.gaze_action);
         break;

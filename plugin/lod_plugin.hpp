@@ -97,6 +97,9 @@ class LodPlugin {
   // The views of the view configuration and the largest vertical resolution among them.
   virtual std::uint32_t view_count() const = 0;
   virtual int max_view_height_px() const = 0;
+  // app_space: the application's gaze space (and action) given or replaced after creation.
+  // Throws std::invalid_argument in the other modes.
+  virtual void set_gaze_space(XrSpace gaze_space, XrAction gaze_action) = 0;
   // pushed: a sample from the application's own gaze input (PushResult says why not).
   virtual plugin::PushResult push_gaze(const plugin::PushedSample& sample, std::string& why) = 0;
 

@@ -38,10 +38,8 @@ OpenXrGazeSource::OpenXrGazeSource(const XrDispatch& xr, XrInstance instance, Xr
   view_info.poseInReferenceSpace.orientation.w = 1.0f;
   check(xr_.create_reference_space(session_, &view_info, &view_space_), "xrCreateReferenceSpace(VIEW)");
   if (mode_ == GazeInputMode::app_space) {
-    gaze_space_ = gaze_space;
-    gaze_action_ = gaze_action;
     attached_ = true;
-    status_ = "waiting for the first gaze pose";
+    set_app_space(gaze_space, gaze_action);
     return;
   }
   XrActionSetCreateInfo set_info{XR_TYPE_ACTION_SET_CREATE_INFO};
@@ -82,6 +80,13 @@ void OpenXrGazeSource::release() {
   action_set_ = XR_NULL_HANDLE;
   if (mode_ != GazeInputMode::app_space) gaze_action_ = XR_NULL_HANDLE;
   status_ = "shut down";
+}
+
+void OpenXrGazeSource::set_app_space(XrSpace gaze_space, XrAction gaze_action) {
+  gaze_space_ = gaze_space;
+  gaze_action_ = gaze_action;
+  ever_delivered_ = false;
+  status_ = gaze_space == XR_NULL_HANDLE ? "no gaze space given yet (gzl_set_gaze_space)" : "waiting for the first gaze pose";
 }
 
 void OpenXrGazeSource::create_space() {

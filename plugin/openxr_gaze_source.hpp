@@ -47,6 +47,8 @@ class OpenXrGazeSource final : public gaze::GazeSource {
   // plugin_actions: attaches our set (fails with the remedy when the application attached
   // sets already) and syncs it before each locate.
   void attach_and_own_sync();
+  // app_space: the application's gaze space (and action) given or replaced after creation.
+  void set_app_space(XrSpace gaze_space, XrAction gaze_action);
   // Releases what we created (spaces, the action set). Safe twice.
   void release();
 

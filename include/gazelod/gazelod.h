@@ -13,8 +13,9 @@
  *   - Every input struct starts with `type` (its gzl_structure_type) and `next` (NULL, or an
  *     extension struct); a wrong type is GZL_ERROR_STRUCT_TYPE. Zero-initialised fields mean
  *     "the default" wherever a field says so.
- *   - Every function returns a gzl_result; on failure gzl_get_last_error gives a message that
- *     names the field at fault and the remedy. No exception and no C++ type crosses the
+ *   - Every function but gzl_version, gzl_result_to_string and gzl_destroy returns a gzl_result;
+ *     on failure gzl_get_last_error gives a message that names the field at fault and the
+ *     remedy (a message longer than the buffer is cut; *length says its full size). No exception and no C++ type crosses the
  *     boundary; the per-frame calls do not allocate.
  *   - Axes are OpenXR's (-Z forward, +Y up, +X right); times are nanoseconds on the clock the
  *     application's frame loop uses (XrTime in OpenXR mode); angles in radians unless a name
@@ -37,7 +38,9 @@
 extern "C" {
 #endif
 
-#if defined(_WIN32)
+#if defined(_WIN32) && defined(GZL_BUILDING_LIBRARY)
+#define GZL_API __declspec(dllexport)
+#elif defined(_WIN32)
 #define GZL_API __declspec(dllimport)
 #elif defined(__GNUC__)
 #define GZL_API __attribute__((visibility("default")))
@@ -78,7 +81,8 @@ typedef enum gzl_result {
   GZL_RESULT_MAX_ENUM = 0x7fffffff
 } gzl_result;
 
-/* "GZL_SUCCESS", "GZL_ERROR_TIME_OUT_OF_ORDER", ...; "GZL_RESULT_UNKNOWN" for other values. */
+/* "GZL_SUCCESS", "GZL_ERROR_TIME_OUT_OF_ORDER", ...; "GZL_RESULT_UNKNOWN" for other values.
+ * The strings are static. */
 GZL_API const char* gzl_result_to_string(gzl_result result);
 
 typedef uint32_t gzl_bool32;
@@ -197,13 +201,17 @@ typedef struct gzl_openxr_create_info {
   uint64_t instance;   /* XrInstance, cast with GZL_XR_HANDLE */
   uint64_t system_id;  /* XrSystemId */
   uint64_t session;    /* XrSession */
-  uint64_t base_space; /* XrSpace the objects are placed in (gzl_set_base_space changes it) */
+  uint64_t base_space; /* XrSpace the objects are placed in (gzl_set_base_space changes it);
+                        * lent, not owned: keep it alive until it is replaced or gzl_shutdown */
   /* XrViewConfigurationType: 0 means PRIMARY_STEREO; PRIMARY_MONO (1) and
    * PRIMARY_QUAD_VARJO (1000037000, XR_VARJO_quad_views) are accepted too. */
   uint32_t view_configuration_type;
   gzl_gaze_input gaze_input;
-  uint64_t gaze_space;  /* GZL_GAZE_INPUT_APP_SPACE: the application's eye-gaze action space */
-  uint64_t gaze_action; /* GZL_GAZE_INPUT_APP_SPACE, optional (0): its XrAction */
+  /* GZL_GAZE_INPUT_APP_SPACE: the application's eye-gaze action space and, optionally, its
+   * XrAction. Both may be 0 at creation and given later with gzl_set_gaze_space (an engine
+   * whose actions exist only after it attached them). Lent, not owned. */
+  uint64_t gaze_space;
+  uint64_t gaze_action;
   const gzl_config* config;
 } gzl_openxr_create_info;
 
@@ -219,18 +227,23 @@ typedef struct gzl_gaze_binding {
   void* next;
   uint64_t action_set;
   uint64_t action;
-  const char* interaction_profile; /* "/interaction_profiles/ext/eye_gaze_interaction" */
-  const char* binding_path;        /* "/user/eyes_ext/input/gaze_ext/pose" */
+  const char* interaction_profile; /* "/interaction_profiles/ext/eye_gaze_interaction" (static) */
+  const char* binding_path;        /* "/user/eyes_ext/input/gaze_ext/pose" (static) */
 } gzl_gaze_binding;
 
 GZL_API gzl_result gzl_get_gaze_binding(gzl_plugin plugin, gzl_gaze_binding* binding);
 /* GZL_GAZE_INPUT_MERGE_BINDING: after the application's xrAttachSessionActionSets. */
 GZL_API gzl_result gzl_action_sets_attached(gzl_plugin plugin);
-/* From the application's event loop: an XrSessionState value and the event's time. */
+/* GZL_GAZE_INPUT_APP_SPACE: the application's eye-gaze action space (and optionally its action),
+ * given or replaced after creation. The gaze input is trusted afresh from then on. */
+GZL_API gzl_result gzl_set_gaze_space(gzl_plugin plugin, uint64_t gaze_space, uint64_t gaze_action);
+/* Both modes, from the application's event loop: an XrSessionState value and the event's time
+ * (the gaze input's silence timer runs only while the session is FOCUSED). Optional in data mode. */
 GZL_API gzl_result gzl_on_session_state(gzl_plugin plugin, int32_t xr_session_state, int64_t time_ns);
 /* A new base space (recentring, a new application space); objects keep their coordinates. */
 GZL_API gzl_result gzl_set_base_space(gzl_plugin plugin, uint64_t base_space);
-/* The render resolution actually used for one view (per frame if it changes). */
+/* Both modes: the render resolution actually used for one view (per frame if it changes). In
+ * OpenXR mode the runtime's recommended size is used until this is called. */
 GZL_API gzl_result gzl_set_view_resolution(gzl_plugin plugin, uint32_t view_index, uint32_t width_px,
                                            uint32_t height_px);
 /* OpenXR mode: at xrWaitFrame's predicted display time. */
@@ -245,10 +258,12 @@ typedef enum gzl_level_metric {
   GZL_LEVEL_REMOVED_CYCLES_PER_DIAMETER = 1,
   /* Engine style (a Unity LODGroup transition): the level is good enough while the object's
    * bounding sphere covers at most this share (0..1] of the view's height. Converted once, at
-   * gzl_add_object, with the display's vertical resolution: one pixel of error at that share. */
+   * gzl_add_object, to a geometric error of one pixel at that share: 2 r / (share * H), H the
+   * largest vertical resolution among the primary views then (views 0 and 1 with quad views;
+   * later resolution changes do not convert it again). */
   GZL_LEVEL_SCREEN_HEIGHT_SHARE = 2,
   /* Engine style: the level's error in pixels when the bounding sphere spans the whole view
-   * height. Converted once, at gzl_add_object. */
+   * height: a geometric error of pixels * 2 r / H (H as above). Converted once, at gzl_add_object. */
   GZL_LEVEL_PIXELS_AT_FULL_HEIGHT = 3,
   GZL_LEVEL_METRIC_MAX_ENUM = 0x7fffffff
 } gzl_level_metric;
@@ -270,6 +285,7 @@ typedef struct gzl_object_desc {
   const gzl_level* levels;
 } gzl_object_desc;
 
+/* The levels are copied. A disabled object's triangles count in no total. */
 GZL_API gzl_result gzl_add_object(gzl_plugin plugin, const gzl_object_desc* desc, gzl_object* object);
 GZL_API gzl_result gzl_remove_object(gzl_plugin plugin, gzl_object object);
 /* A disabled object keeps its handle and its place; gzl_get_levels gives it GZL_LEVEL_DISABLED. */
@@ -289,7 +305,10 @@ typedef enum gzl_gaze_sample_flag_bits {
 typedef struct gzl_gaze_sample {
   gzl_structure_type type; /* GZL_TYPE_GAZE_SAMPLE */
   const void* next;
-  int64_t time_ns;     /* when the eye was measured; non-decreasing from push to push */
+  /* When the eye was measured, on the frame loop's clock: non-decreasing from push to push
+   * (else GZL_ERROR_TIME_OUT_OF_ORDER), at most 1 s after the last frame's display time (else
+   * GZL_ERROR_TIME_IN_FUTURE: another clock). */
+  int64_t time_ns;
   gzl_vec3 direction;  /* unit (normalised here), head space unless GZL_GAZE_SAMPLE_IN_WORLD */
   gzl_vec3 origin_m;   /* cyclopean eye, head space (zero: the head's origin) */
   uint32_t flags;      /* gzl_gaze_sample_flag_bits */
@@ -324,7 +343,8 @@ typedef struct gzl_frame_input {
 
 /* Data mode: decide the frame displayed at input->display_time_ns. */
 GZL_API gzl_result gzl_begin_frame_data(gzl_plugin plugin, const gzl_frame_input* input);
-/* Both modes, after the frame: its measured GPU/CPU time, for the frame budget's cost model. */
+/* Both modes, after the frame: its measured frame time, for the frame budget's cost model
+ * (config->frame_budget_ms). Optional without a budget. */
 GZL_API gzl_result gzl_end_frame(gzl_plugin plugin, double measured_frame_ms);
 
 /* ---- outputs of the last published frame -------------------------------------------------- */
@@ -385,8 +405,8 @@ typedef struct gzl_foveal_cone {
   /* In the view's normalised image coordinates: u from the left edge (0) to the right (1), v
    * from the top (0) to the bottom (1). radius_uv: the half-angle's extent along u and v at
    * the centre. in_view: the gaze direction lies inside the view's field of view. */
-  double center_uv[2];
-  double radius_uv[2];
+  double center_uv[2]; /* (0.5, 0.5) when the gaze points behind the view */
+  double radius_uv[2]; /* 0 when the gaze points behind the view */
   gzl_bool32 in_view;
 } gzl_foveal_cone;
 

@@ -63,10 +63,7 @@ OpenXrOptions to_openxr_options(const gzl_openxr_create_info& info) {
   }
   switch (info.gaze_input) {
     case GZL_GAZE_INPUT_APP_SPACE:
-      if (info.gaze_space == 0)
-        throw Refusal{GZL_ERROR_INVALID_ARGUMENT,
-                      "gazelod: GZL_GAZE_INPUT_APP_SPACE needs info->gaze_space, your eye-gaze action space "
-                      "(xrCreateActionSpace on your XR_EXT_eye_gaze_interaction pose action)"};
+      // gaze_space may come later (gzl_set_gaze_space).
       o.gaze_input = OpenXrGazeInput::app_space;
       o.gaze_space = from_handle<XrSpace>(info.gaze_space);
       o.gaze_action = from_handle<XrAction>(info.gaze_action);

@@ -57,6 +57,16 @@ GZL_API gzl_result gzl_action_sets_attached(gzl_plugin p) {
   });
 }
 
+GZL_API gzl_result gzl_set_gaze_space(gzl_plugin p, uint64_t gaze_space, uint64_t gaze_action) {
+  return guarded(p, [&]() -> gzl_result {
+    need_live(p);
+    need_openxr(p, "gzl_set_gaze_space");
+    std::lock_guard lock(p->mu);
+    p->xr->set_gaze_space(from_handle<XrSpace>(gaze_space), from_handle<XrAction>(gaze_action));
+    return GZL_SUCCESS;
+  });
+}
+
 GZL_API gzl_result gzl_on_session_state(gzl_plugin p, int32_t state, int64_t time_ns) {
   return guarded(p, [&]() -> gzl_result {
     need_live(p);

@@ -22,8 +22,9 @@ std::uint32_t slot_of(gzl_plugin p, gzl_object h) {
 
 int view_height_px(gzl_plugin p) {
   if (p->openxr) return p->xr->max_view_height_px();
+  // With quad views the primary pair (views 0 and 1) is what a share of "the screen" means.
   std::uint32_t h = 0;
-  for (std::uint32_t i = 0; i < p->view_count; ++i) h = std::max(h, p->data_views[i].height_px);
+  for (std::uint32_t i = 0; i < p->view_count && i < 2; ++i) h = std::max(h, p->data_views[i].height_px);
   return static_cast<int>(h);
 }
 

@@ -160,6 +160,47 @@ TEST(CApiFrames, FovealConeInTheViewsImage) {
   gzl_destroy(p);
 }
 
+// One view (a desktop or mono configuration) and quad views (XR_VARJO_quad_views: a primary pair
+// and a denser inset pair): the display's limit is the densest view's, every view has its cone.
+TEST(CApiFrames, MonoAndQuadViews) {
+  auto view = [](double half_fov_deg, uint32_t px) {
+    gzl_view v{};
+    const double a = half_fov_deg * M_PI / 180;
+    v.fov = {-a, a, a, -a};
+    v.width_px = v.height_px = px;
+    return v;
+  };
+  const gzl_view quad[4] = {view(50, 1000), view(50, 1000), view(20, 1000), view(20, 1000)};
+  for (uint32_t count : {1u, 4u}) {
+    gzl_data_create_info info{};
+    info.type = GZL_TYPE_DATA_CREATE_INFO;
+    info.view_count = count;
+    info.views = quad;
+    gzl_plugin p = nullptr;
+    ASSERT_EQ(gzl_create_data(&info, &p), GZL_SUCCESS) << last_error(nullptr);
+    fixate(p, 0, 0, 10);
+    gzl_frame_info fi{};
+    fi.type = GZL_TYPE_FRAME_INFO;
+    ASSERT_EQ(gzl_get_frame_info(p, &fi), GZL_SUCCESS);
+    // xi = pixels / (2 * FOV in degrees): 1000 / 200 = 5 for the primary, 1000 / 80 = 12.5 for the inset.
+    EXPECT_NEAR(fi.xi_cpd, count == 1 ? 5.0 : 12.5, 0.2) << count << " views";
+    for (uint32_t v = 0; v < count; ++v) {
+      gzl_foveal_cone c{};
+      c.type = GZL_TYPE_FOVEAL_CONE;
+      ASSERT_EQ(gzl_get_foveal_cone(p, v, &c), GZL_SUCCESS);
+      EXPECT_NEAR(c.center_uv[0], 0.5, 1e-3);
+    }
+    gzl_destroy(p);
+  }
+  gzl_data_create_info info{};
+  info.type = GZL_TYPE_DATA_CREATE_INFO;
+  info.view_count = 3;
+  info.views = quad;
+  gzl_plugin p = nullptr;
+  EXPECT_EQ(gzl_create_data(&info, &p), GZL_ERROR_INVALID_ARGUMENT);
+  EXPECT_NE(last_error(nullptr).find("1, 2 or 4 views"), std::string::npos) << last_error(nullptr);
+}
+
 // The render thread decides frames while an application thread registers, removes and disables
 // objects, reports session states and reads the published frame.
 TEST(CApiThreads, ApplicationThreadBesideRenderThread) {

@@ -194,5 +194,129 @@ TEST(CApiOpenXr, BindingReplacedByTheApplicationIsNamed) {
   xrDestroyActionSet(app_set);
 }
 
+// Recentring (a new base space) and a new render resolution between frames: the eye's position
+// follows the new space from the next frame, and the display's limit the resolution rendered.
+TEST(CApiOpenXr, BaseSpaceAndResolutionChangeBetweenFrames) {
+  use_simulated_runtime("");
+  xr_host::XrApp app(true);
+  gzl_openxr_create_info info{};
+  info.type = GZL_TYPE_OPENXR_CREATE_INFO;
+  info.get_instance_proc_addr = reinterpret_cast<gzl_void_function>(xrGetInstanceProcAddr);
+  info.instance = GZL_XR_HANDLE(app.instance());
+  info.system_id = app.system();
+  info.session = GZL_XR_HANDLE(app.session());
+  info.base_space = GZL_XR_HANDLE(app.local_space());
+  info.gaze_input = GZL_GAZE_INPUT_NONE;
+  gzl_plugin p = nullptr;
+  ASSERT_EQ(gzl_create_openxr(&info, &p), GZL_SUCCESS) << last_error(nullptr);
+  XrReferenceSpaceCreateInfo ri{XR_TYPE_REFERENCE_SPACE_CREATE_INFO};
+  ri.referenceSpaceType = XR_REFERENCE_SPACE_TYPE_LOCAL;
+  ri.poseInReferenceSpace.orientation.w = 1.0f;
+  ri.poseInReferenceSpace.position.y = -2.0f;  // the new origin 2 m lower
+  XrSpace lower = XR_NULL_HANDLE;
+  ASSERT_EQ(xrCreateReferenceSpace(app.session(), &ri, &lower), XR_SUCCESS);
+  std::vector<gzl_frame_info> infos;
+  while (infos.size() < 20 && app.poll_events([&](XrSessionState s, XrTime t) { gzl_on_session_state(p, s, t); })) {
+    if (!app.session_running()) continue;
+    const XrFrameState fs = app.wait_frame();
+    app.begin_frame();
+    if (infos.size() == 10) {
+      ASSERT_EQ(gzl_set_base_space(p, GZL_XR_HANDLE(lower)), GZL_SUCCESS) << last_error(p);
+      for (uint32_t v = 0; v < 2; ++v) {
+        ASSERT_EQ(gzl_set_view_resolution(p, v, 500, 500), GZL_SUCCESS) << last_error(p);
+      }
+    }
+    ASSERT_EQ(gzl_begin_frame_openxr(p, fs.predictedDisplayTime), GZL_SUCCESS) << last_error(p);
+    gzl_frame_info fi{};
+    fi.type = GZL_TYPE_FRAME_INFO;
+    ASSERT_EQ(gzl_get_frame_info(p, &fi), GZL_SUCCESS);
+    infos.push_back(fi);
+    app.end_frame(fs.predictedDisplayTime, {});
+  }
+  ASSERT_EQ(infos.size(), 20u);
+  EXPECT_NEAR(infos[10].eye_position_base_m.y - infos[9].eye_position_base_m.y, 2.0, 0.05) << "the head 2 m higher in the new space";
+  EXPECT_LT(infos[10].xi_cpd, 0.6 * infos[9].xi_cpd) << "500 px rendered: a lower display limit";
+  EXPECT_EQ(gzl_set_view_resolution(p, 2, 500, 500), GZL_ERROR_INVALID_ARGUMENT) << "a stereo configuration has 2 views";
+  gzl_shutdown(p);
+  gzl_destroy(p);
+  xrDestroySpace(lower);
+}
+
+// An engine whose eye-gaze action exists only after it attached its sets: gazelod is created
+// without a gaze space (APP_SPACE), distrusts the empty input after its timeout, and trusts
+// the space given later afresh.
+TEST(CApiOpenXr, GazeSpaceGivenLateIsTrustedAfresh) {
+  use_simulated_runtime("");
+  xr_host::XrApp app(true);
+  ASSERT_TRUE(app.eye_gaze_enabled());
+  gzl_openxr_create_info info{};
+  info.type = GZL_TYPE_OPENXR_CREATE_INFO;
+  info.get_instance_proc_addr = reinterpret_cast<gzl_void_function>(xrGetInstanceProcAddr);
+  info.instance = GZL_XR_HANDLE(app.instance());
+  info.system_id = app.system();
+  info.session = GZL_XR_HANDLE(app.session());
+  info.base_space = GZL_XR_HANDLE(app.local_space());
+  info.gaze_input = GZL_GAZE_INPUT_APP_SPACE;  // zero-initialised create info: the engine's space comes later
+  gzl_plugin p = nullptr;
+  ASSERT_EQ(gzl_create_openxr(&info, &p), GZL_SUCCESS) << last_error(nullptr);
+
+  XrActionSetCreateInfo si{XR_TYPE_ACTION_SET_CREATE_INFO};
+  std::strcpy(si.actionSetName, "engine");
+  std::strcpy(si.localizedActionSetName, "engine");
+  XrActionSet set = XR_NULL_HANDLE;
+  ASSERT_EQ(xrCreateActionSet(app.instance(), &si, &set), XR_SUCCESS);
+  XrActionCreateInfo ai{XR_TYPE_ACTION_CREATE_INFO};
+  ai.actionType = XR_ACTION_TYPE_POSE_INPUT;
+  std::strcpy(ai.actionName, "eyes");
+  std::strcpy(ai.localizedActionName, "eyes");
+  XrAction eyes = XR_NULL_HANDLE;
+  ASSERT_EQ(xrCreateAction(set, &ai, &eyes), XR_SUCCESS);
+  XrActionSuggestedBinding sb{eyes, path(app.instance(), "/user/eyes_ext/input/gaze_ext/pose")};
+  XrInteractionProfileSuggestedBinding sug{XR_TYPE_INTERACTION_PROFILE_SUGGESTED_BINDING};
+  sug.interactionProfile = path(app.instance(), "/interaction_profiles/ext/eye_gaze_interaction");
+  sug.countSuggestedBindings = 1;
+  sug.suggestedBindings = &sb;
+  ASSERT_EQ(xrSuggestInteractionProfileBindings(app.instance(), &sug), XR_SUCCESS);
+  XrSessionActionSetsAttachInfo attach{XR_TYPE_SESSION_ACTION_SETS_ATTACH_INFO};
+  attach.countActionSets = 1;
+  attach.actionSets = &set;
+  ASSERT_EQ(xrAttachSessionActionSets(app.session(), &attach), XR_SUCCESS);
+
+  XrSpace eye_space = XR_NULL_HANDLE;
+  int frames = 0;
+  gzl_gaze_source before = GZL_GAZE_SOURCE_OPENXR, after = GZL_GAZE_SOURCE_HEAD_FIXED;
+  while (frames < 300 && app.poll_events([&](XrSessionState s, XrTime t) { gzl_on_session_state(p, s, t); })) {
+    if (!app.session_running()) continue;
+    const XrFrameState fs = app.wait_frame();
+    app.begin_frame();
+    XrActiveActionSet active{set, XR_NULL_PATH};
+    XrActionsSyncInfo sync{XR_TYPE_ACTIONS_SYNC_INFO};
+    sync.countActiveActionSets = 1;
+    sync.activeActionSets = &active;
+    xrSyncActions(app.session(), &sync);
+    if (frames == 150) {  // past the 1 s silence timeout
+      XrActionSpaceCreateInfo ci{XR_TYPE_ACTION_SPACE_CREATE_INFO};
+      ci.action = eyes;
+      ci.poseInActionSpace.orientation.w = 1.0f;
+      ASSERT_EQ(xrCreateActionSpace(app.session(), &ci, &eye_space), XR_SUCCESS);
+      ASSERT_EQ(gzl_set_gaze_space(p, GZL_XR_HANDLE(eye_space), GZL_XR_HANDLE(eyes)), GZL_SUCCESS) << last_error(p);
+    }
+    ASSERT_EQ(gzl_begin_frame_openxr(p, fs.predictedDisplayTime), GZL_SUCCESS) << last_error(p);
+    gzl_frame_info fi{};
+    fi.type = GZL_TYPE_FRAME_INFO;
+    ASSERT_EQ(gzl_get_frame_info(p, &fi), GZL_SUCCESS);
+    if (frames == 149) before = fi.gaze_source;
+    if (fi.gaze_source == GZL_GAZE_SOURCE_OPENXR) after = fi.gaze_source;
+    app.end_frame(fs.predictedDisplayTime, {});
+    ++frames;
+  }
+  EXPECT_EQ(before, GZL_GAZE_SOURCE_HEAD_FIXED) << "no gaze space yet";
+  EXPECT_EQ(after, GZL_GAZE_SOURCE_OPENXR) << "the space given late delivers";
+  gzl_shutdown(p);
+  gzl_destroy(p);
+  xrDestroySpace(eye_space);
+  xrDestroyActionSet(set);
+}
+
 }  // namespace
 }  // namespace gazelod::test

@@ -19,6 +19,7 @@ int scenario(const std::uint8_t* data, std::size_t size);
 int hid_reports(const std::uint8_t* data, std::size_t size);
 int budget_instance(const std::uint8_t* data, std::size_t size);
 int gltf(const std::uint8_t* data, std::size_t size);
+int capi(const std::uint8_t* data, std::size_t size);
 
 // An invariant of the code under test; abort (a finding) when it does not hold.
 inline void check(bool ok, const char* what) {

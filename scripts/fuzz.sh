@@ -13,7 +13,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 build=${FUZZ_BUILD_DIR:-$root/build-fuzz}
 seconds=${FUZZ_SECONDS:-120}
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(fuzz_trace_reader fuzz_scenario fuzz_hid_reports fuzz_budget_instance fuzz_gltf)
+[ ${#targets[@]} -gt 0 ] || targets=(fuzz_trace_reader fuzz_scenario fuzz_hid_reports fuzz_budget_instance fuzz_gltf fuzz_capi)
 
 command -v clang++ >/dev/null || { echo "fuzz.sh: clang++ not found (apt-get install clang libclang-rt-14-dev)" >&2; exit 2; }
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \

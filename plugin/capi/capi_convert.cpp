@@ -61,7 +61,7 @@ OpenXrOptions to_openxr_options(const gzl_openxr_create_info& info) {
       throw invalid("info->view_configuration_type " + std::to_string(info.view_configuration_type) +
                     " is not PRIMARY_MONO (1), PRIMARY_STEREO (2) or PRIMARY_QUAD_VARJO (1000037000)");
   }
-  switch (info.gaze_input) {
+  switch (enum_value(info.gaze_input)) {
     case GZL_GAZE_INPUT_APP_SPACE:
       // gaze_space may come later (gzl_set_gaze_space).
       o.gaze_input = OpenXrGazeInput::app_space;
@@ -72,7 +72,8 @@ OpenXrOptions to_openxr_options(const gzl_openxr_create_info& info) {
     case GZL_GAZE_INPUT_PUSHED: o.gaze_input = OpenXrGazeInput::pushed; break;
     case GZL_GAZE_INPUT_PLUGIN_ACTIONS: o.gaze_input = OpenXrGazeInput::plugin_actions; break;
     case GZL_GAZE_INPUT_NONE: o.gaze_input = OpenXrGazeInput::none; break;
-    default: throw invalid("info->gaze_input " + std::to_string(info.gaze_input) + " is not a gzl_gaze_input value");
+    default:
+      throw invalid("info->gaze_input " + std::to_string(enum_value(info.gaze_input)) + " is not a gzl_gaze_input value");
   }
   return o;
 }
@@ -139,9 +140,10 @@ gzl_quat to_gzl(const glm::dquat& q) { return {q.x, q.y, q.z, q.w}; }
 std::vector<lod::LodLevel> to_levels(const gzl_object_desc& d, int view_height_px) {
   if (d.level_count == 0 || d.level_count > 255) throw invalid("desc->level_count must be 1..255");
   if (d.levels == nullptr) throw Refusal{GZL_ERROR_NULL_POINTER, "gazelod: desc->levels is NULL"};
-  const bool engine = d.metric == GZL_LEVEL_SCREEN_HEIGHT_SHARE || d.metric == GZL_LEVEL_PIXELS_AT_FULL_HEIGHT;
-  if (d.metric != GZL_LEVEL_GEOMETRIC_ERROR_M && d.metric != GZL_LEVEL_REMOVED_CYCLES_PER_DIAMETER && !engine)
-    throw invalid("desc->metric " + std::to_string(d.metric) + " is not a gzl_level_metric value");
+  const std::int32_t metric = enum_value(d.metric);
+  const bool engine = metric == GZL_LEVEL_SCREEN_HEIGHT_SHARE || metric == GZL_LEVEL_PIXELS_AT_FULL_HEIGHT;
+  if (metric != GZL_LEVEL_GEOMETRIC_ERROR_M && metric != GZL_LEVEL_REMOVED_CYCLES_PER_DIAMETER && !engine)
+    throw invalid("desc->metric " + std::to_string(metric) + " is not a gzl_level_metric value");
   if (engine && !(d.radius_m > 0.0))
     throw invalid("desc->radius_m must be > 0 for screen-size levels (they are converted with the object's size)");
   if (engine && view_height_px <= 0) throw invalid("no view resolution known to convert screen-size levels");
@@ -150,12 +152,12 @@ std::vector<lod::LodLevel> to_levels(const gzl_object_desc& d, int view_height_p
   for (std::uint32_t k = 0; k < d.level_count; ++k) {
     const double v = d.levels[k].value;
     out[k].triangles = d.levels[k].triangles;
-    out[k].detail_kind = d.metric == GZL_LEVEL_REMOVED_CYCLES_PER_DIAMETER ? lod::DetailKind::removed_cycles_per_diameter
+    out[k].detail_kind = metric == GZL_LEVEL_REMOVED_CYCLES_PER_DIAMETER ? lod::DetailKind::removed_cycles_per_diameter
                                                                             : lod::DetailKind::geometric_error_m;
     if (k == 0) continue;  // full detail
     const std::string at = "desc->levels[" + std::to_string(k) + "].value";
     if (!finite(v) || v <= 0.0) throw invalid(at + " must be finite and > 0");
-    switch (d.metric) {
+    switch (metric) {
       case GZL_LEVEL_SCREEN_HEIGHT_SHARE:
         // One pixel of error when the sphere covers share v of the view's height.
         if (v > 1.0) throw invalid(at + " is a share of the view's height: (0, 1]");

@@ -107,7 +107,7 @@ gzl_result copy_out(const std::string& copy, char* buffer, size_t capacity, size
 }  // namespace
 
 GZL_API gzl_result gzl_get_gaze_status(gzl_plugin p, char* buffer, size_t capacity, size_t* length) {
-  if (p == nullptr) return GZL_ERROR_NULL_HANDLE;
+  if (p == nullptr) return fail(nullptr, GZL_ERROR_NULL_HANDLE, "gazelod: the gzl_plugin is NULL (create one first)");
   try {
     std::string copy;
     {

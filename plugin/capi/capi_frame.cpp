@@ -70,6 +70,7 @@ GZL_API gzl_result gzl_set_gaze_space(gzl_plugin p, uint64_t gaze_space, uint64_
 GZL_API gzl_result gzl_on_session_state(gzl_plugin p, int32_t state, int64_t time_ns) {
   return guarded(p, [&]() -> gzl_result {
     need_live(p);
+    need_time(time_ns, "time_ns");
     if (state < XR_SESSION_STATE_UNKNOWN || state > XR_SESSION_STATE_EXITING)
       throw Refusal{GZL_ERROR_INVALID_ARGUMENT, "gazelod: session state " + std::to_string(state) + " is not an XrSessionState"};
     std::lock_guard lock(p->mu);
@@ -111,6 +112,7 @@ GZL_API gzl_result gzl_push_gaze_sample(gzl_plugin p, const gzl_gaze_sample* s) 
   return guarded(p, [&]() -> gzl_result {
     need_live(p);
     need_struct(s, GZL_TYPE_GAZE_SAMPLE, "sample");
+    need_time(s->time_ns, "sample->time_ns");
     if (s->flags & ~7u)
       throw Refusal{GZL_ERROR_INVALID_ARGUMENT, "gazelod: sample->flags has bits that are not gzl_gaze_sample_flag_bits"};
     const plugin::PushedSample ps = to_pushed(*s);
@@ -125,6 +127,7 @@ GZL_API gzl_result gzl_begin_frame_openxr(gzl_plugin p, int64_t t) {
   return guarded(p, [&]() -> gzl_result {
     need_live(p);
     need_openxr(p, "gzl_begin_frame_openxr");
+    need_time(t, "predicted_display_time");
     std::lock_guard lock(p->mu);
     if (p->frames > 0 && t <= p->pub.info.display_time_ns)
       throw Refusal{GZL_ERROR_TIME_OUT_OF_ORDER, "gazelod: predicted_display_time " + std::to_string(t) +
@@ -139,6 +142,7 @@ GZL_API gzl_result gzl_begin_frame_data(gzl_plugin p, const gzl_frame_input* in)
   return guarded(p, [&]() -> gzl_result {
     need_live(p);
     need_struct(in, GZL_TYPE_FRAME_INPUT, "input");
+    need_time(in->display_time_ns, "input->display_time_ns");
     if (p->openxr)
       throw Refusal{GZL_ERROR_WRONG_MODE, "gazelod: gzl_begin_frame_data is for a plugin made by gzl_create_data; "
                                           "OpenXR mode takes gzl_begin_frame_openxr"};

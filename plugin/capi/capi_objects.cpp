@@ -57,6 +57,8 @@ GZL_API gzl_result gzl_add_object(gzl_plugin p, const gzl_object_desc* d, gzl_ob
       std::lock_guard out(p->out_mu);
       p->pub.level_by_handle.reserve(p->slot_of_handle.size() + 1);
       p->pub.state_by_handle.reserve(p->slot_of_handle.size() + 1);
+      p->pub.triangles_first_by_handle.reserve(p->slot_of_handle.size() + 1);
+      p->pub.level_triangles.reserve(p->pub.level_triangles.size() + desc.lods.size());
     }
     std::uint32_t slot = 0;
     try {
@@ -70,7 +72,9 @@ GZL_API gzl_result gzl_add_object(gzl_plugin p, const gzl_object_desc* d, gzl_ob
     {
       std::lock_guard out(p->out_mu);
       p->pub.level_by_handle.push_back(0);  // full detail until a frame decides
-      p->pub.state_by_handle.push_back(kHandleNew);
+      p->pub.state_by_handle.push_back(kHandleIssued);
+      p->pub.triangles_first_by_handle.push_back(static_cast<std::uint32_t>(p->pub.level_triangles.size()));
+      for (const lod::LodLevel& l : desc.lods) p->pub.level_triangles.push_back(l.triangles);
     }
     *object = static_cast<gzl_object>(index) + 1;
     return GZL_SUCCESS;
@@ -82,7 +86,9 @@ GZL_API gzl_result gzl_remove_object(gzl_plugin p, gzl_object h) {
     need_live(p);
     std::lock_guard lock(p->mu);
     const std::uint32_t slot = slot_of(p, h);
+    if (!p->core().object_enabled(slot)) --p->disabled;
     const std::uint32_t moved_from = p->core().remove_object(slot);  // the last slot moved into `slot`
+    p->dense = false;
     if (moved_from != slot) {
       const std::uint32_t moved_index = p->handle_index_of_slot[moved_from];
       p->handle_index_of_slot[slot] = moved_index;
@@ -100,7 +106,10 @@ GZL_API gzl_result gzl_set_object_enabled(gzl_plugin p, gzl_object h, gzl_bool32
   return guarded(p, [&]() -> gzl_result {
     need_live(p);
     std::lock_guard lock(p->mu);
-    p->core().set_object_enabled(slot_of(p, h), enabled != 0);
+    const std::uint32_t slot = slot_of(p, h);
+    const bool was = p->core().object_enabled(slot), now = enabled != 0;
+    if (was != now) now ? --p->disabled : ++p->disabled;
+    p->core().set_object_enabled(slot, now);
     return GZL_SUCCESS;
   });
 }

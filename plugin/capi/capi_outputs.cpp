@@ -35,6 +35,15 @@ GZL_API gzl_result gzl_get_frame_info(gzl_plugin p, gzl_frame_info* info) {
     std::lock_guard lock(p->out_mu);
     *info = p->pub.info;
     info->next = next;
+    // Triangles of the published levels, summed here rather than in every frame.
+    const Published& pub = p->pub;
+    info->triangles_drawn = info->triangles_full = 0;
+    for (std::size_t h = 0; h < pub.decided_handles; ++h) {
+      if (pub.state_by_handle[h] == kHandleRemoved || pub.level_by_handle[h] == GZL_LEVEL_DISABLED) continue;
+      const std::uint32_t* tri = pub.level_triangles.data() + pub.triangles_first_by_handle[h];
+      info->triangles_drawn += tri[pub.level_by_handle[h]];
+      info->triangles_full += tri[0];
+    }
     return GZL_SUCCESS;
   });
 }

@@ -35,11 +35,16 @@ struct DataFront {
   std::int64_t last_t_ns = 0;
 };
 
-inline constexpr std::uint8_t kHandleNew = 0, kHandleLive = 1, kHandleRemoved = 2;
+inline constexpr std::uint8_t kHandleIssued = 0, kHandleRemoved = 2;
 
 struct Published {
   std::vector<std::uint8_t> level_by_handle;  // index = handle - 1
-  std::vector<std::uint8_t> state_by_handle;  // kHandle*
+  std::vector<std::uint8_t> state_by_handle;  // kHandleIssued or kHandleRemoved
+  std::size_t decided_handles = 0;  // handles [0, this) existed when the frame was decided
+  // Each handle's triangles per level, back to back (written at registration), so a frame
+  // publishes only its levels and gzl_get_frame_info sums triangles when asked.
+  std::vector<std::uint32_t> triangles_first_by_handle;
+  std::vector<std::uint32_t> level_triangles;
   gzl_frame_info info{};
   std::array<gzl_foveal_cone, GZL_MAX_VIEWS> cones{};
   gzl_frame_record record{};
@@ -68,6 +73,10 @@ struct gzl_plugin_T {
   // Stable handles over the engine's dense ids: handle h has index h - 1, never reused.
   std::vector<std::uint32_t> slot_of_handle;  // UINT32_MAX once removed
   std::vector<std::uint32_t> handle_index_of_slot;
+  // While no object was ever removed, handle index == engine id, and with none disabled a
+  // frame's levels are published with one copy.
+  bool dense = true;
+  std::uint32_t disabled = 0;
   std::uint64_t frames = 0;
 
   gazelod::capi::Published pub;

@@ -59,17 +59,14 @@ void publish(gzl_plugin p, const FrameDecisions& d, std::int64_t t_ns) {
   const FrameDiagnostics& diag = core.diagnostics();
   std::lock_guard lock(p->out_mu);
   Published& pub = p->pub;
-  std::uint64_t drawn = 0, full = 0;
-  for (std::size_t s = 0; s < d.lod.size(); ++s) {
-    const std::uint32_t index = p->handle_index_of_slot[s];
-    const bool enabled = core.object_enabled(static_cast<std::uint32_t>(s));
-    pub.level_by_handle[index] = enabled ? d.lod[s] : GZL_LEVEL_DISABLED;
-    pub.state_by_handle[index] = kHandleLive;
-    if (!enabled) continue;
-    const auto& levels = core.object_levels(static_cast<std::uint32_t>(s));
-    drawn += levels[std::min<std::size_t>(d.lod[s], levels.size() - 1)].triangles;
-    full += levels[0].triangles;
+  if (p->dense && p->disabled == 0) {
+    std::copy(d.lod.begin(), d.lod.end(), pub.level_by_handle.begin());
+  } else {
+    for (std::size_t s = 0; s < d.lod.size(); ++s)
+      pub.level_by_handle[p->handle_index_of_slot[s]] =
+          core.object_enabled(static_cast<std::uint32_t>(s)) ? d.lod[s] : GZL_LEVEL_DISABLED;
   }
+  pub.decided_handles = p->slot_of_handle.size();
   ++p->frames;
   gzl_frame_info& i = pub.info;
   i.frame_index = p->frames;
@@ -85,8 +82,6 @@ void publish(gzl_plugin p, const FrameDecisions& d, std::int64_t t_ns) {
   i.eye_position_base_m = to_gzl(diag.eye_position_world);
   i.gaze_uncertainty_deg = diag.gaze_error_deg;
   i.xi_cpd = diag.xi_cpd;
-  i.triangles_drawn = drawn;
-  i.triangles_full = full;
 
   const plugin::HeadMotion& head = core.head();
   const glm::dquat q = head.valid ? head.orientation : glm::dquat(1.0, 0.0, 0.0, 0.0);

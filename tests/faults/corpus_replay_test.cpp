@@ -51,6 +51,7 @@ TEST(FuzzCorpus, Scenario) { replay("scenario", &scenario); }
 TEST(FuzzCorpus, HidReports) { replay("hid_reports", &hid_reports); }
 TEST(FuzzCorpus, BudgetInstance) { replay("budget_instance", &budget_instance); }
 TEST(FuzzCorpus, Gltf) { replay("gltf", &gltf); }
+TEST(FuzzCorpus, Capi) { replay("capi", &capi); }
 
 }  // namespace
 }  // namespace gazelod::fuzz

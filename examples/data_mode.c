@@ -181,12 +181,12 @@ int main(void) {
     if (frame == HALF_FRAMES - 1 || frame == 2 * HALF_FRAMES - 1) {
       const int h = frame / HALF_FRAMES;
       memcpy(end_levels[h], levels, sizeof levels);
-      end_u[h] = cone.center_uv[0];
+      end_u[h] = cone.center_u;
       end_source[h] = info.gaze_source;
       printf("%s half, frame %llu: gaze source %d, cone centre (%.3f, %.3f) radius %.1f deg, "
              "triangles %llu of %llu\n  grid levels:", h == 0 ? "first" : "second",
-             (unsigned long long)info.frame_index, (int)info.gaze_source, cone.center_uv[0],
-             cone.center_uv[1], cone.half_angle_deg, (unsigned long long)info.triangles_drawn,
+             (unsigned long long)info.frame_index, (int)info.gaze_source, cone.center_u,
+             cone.center_v, cone.half_angle_deg, (unsigned long long)info.triangles_drawn,
              (unsigned long long)info.triangles_full);
       for (i = 0; i < GRID * GRID; ++i) printf("%s%u", i % GRID == 0 ? "  " : " ", (unsigned)levels[i]);
       printf("   engine-style object: %u\n", (unsigned)levels[GRID * GRID]);

@@ -513,7 +513,7 @@ void check_frame_info(Model& m, std::int64_t t) {
     check(std::isfinite(d.x) && std::isfinite(d.y) && std::isfinite(d.z), "foveal cone direction not finite");
     check(std::isfinite(c.half_angle_deg) && c.half_angle_deg >= 0.0 && c.half_angle_deg <= 180.0,
           "foveal cone half-angle not in [0, 180]");
-    check(std::isfinite(c.center_uv[0]) && std::isfinite(c.center_uv[1]), "foveal cone centre not finite");
+    check(std::isfinite(c.center_u) && std::isfinite(c.center_v), "foveal cone centre not finite");
   }
 }
 

@@ -64,7 +64,7 @@ ClassifierAgreement agreement_of(const EventIdBuilder& ours, const PupilCloudRea
 }  // namespace
 
 TraceStats compute_trace_stats(RecordStream& stream, IvtOptions ivt, EventOptions events,
-                               ConditionerConfig conditioner) {
+                               ConditionerConfig conditioner, TraceClassification* classification) {
   TraceStats st;
   IvtClassifier classifier(ivt);
   EventTracker tracker(events);
@@ -85,9 +85,18 @@ TraceStats compute_trace_stats(RecordStream& stream, IvtOptions ivt, EventOption
           std::max(st.max_saccade_peak_velocity_deg_s, f.saccade->peak_velocity_deg_s);
     }
     if (f.fixation) ++st.fixations;
+    if (classification) {
+      if (f.saccade) classification->saccades.push_back(*f.saccade);
+      if (f.fixation) classification->fixations.push_back(*f.fixation);
+    }
   };
   auto drain = [&] {
     for (const auto& ls : labeled) {
+      // The classifier emits in stream order, also across its restart at the first head pose.
+      if (classification) {
+        classification->label.push_back(ls.label);
+        classification->velocity_deg_s.push_back(ls.velocity_deg_s);
+      }
       take(tracker.push(ls));
       if (pupil)
         ivt_ids.push(ls.label == GazeLabel::fixation, ls.label == GazeLabel::invalid, ls.sample.t_ns);

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace gazelod::gaze {
 
@@ -56,9 +57,18 @@ struct TraceStats {
   std::optional<ReferenceAgreement> agreement;
 };
 
+// The per-sample classification behind TraceStats's counts (the Python binding's classify):
+// one label and velocity per sample in stream order, and the events the counts count.
+struct TraceClassification {
+  std::vector<GazeLabel> label;
+  std::vector<double> velocity_deg_s;  // 0 unless fixation or saccade
+  std::vector<SaccadeEvent> saccades;
+  std::vector<FixationEvent> fixations;  // runs of at least EventOptions::min_fixation_ns
+};
+
 // Reads `stream` to its end (TraceError propagates in strict mode). `conditioner`: the I-VDT
-// settings for the agreement (the plugin's defaults).
+// settings for the agreement (the plugin's defaults). `classification`: also filled when given.
 TraceStats compute_trace_stats(RecordStream& stream, IvtOptions ivt = {}, EventOptions events = {},
-                               ConditionerConfig conditioner = {});
+                               ConditionerConfig conditioner = {}, TraceClassification* classification = nullptr);
 
 }  // namespace gazelod::gaze

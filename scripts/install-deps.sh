@@ -20,6 +20,9 @@ packages=(
   assimp-testmodels  # real glTF 2.0 models (Khronos 2CylinderEngine, ...) for the bake --clusters test
   gltfpack  # meshoptimizer's own simplifier, the bake's peer (gazelod eval gltfpack)
   abigail-tools  # abidiff: the C ABI of libgazelod.so against its checked-in baseline
+  # Bindings: the Python package (pybind11, numpy; pytest and matplotlib for its tests and the
+  # worked example) and C# (mono's compiler and runtime, as Unity loads native plugins)
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib mono-mcs mono-runtime
 )
 # node + npm run Khronos's glTF-Validator (npm gltf-validator; scripts/install-gltf-validator.sh).
 # Debian's packages only where no node / npm is installed (a NodeSource nodejs brings its own npm,

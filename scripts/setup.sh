@@ -19,7 +19,11 @@ build() {  # build DIR [cmake args...] [-- target]
     if [ "$1" = "--" ]; then shift; target=(--target "$@"); break; fi
     args+=("$1"); shift
   done
-  cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Release "${args[@]}" >/dev/null
+  # Debian's interpreter, where its python3-numpy and python3-pytest are (not a pyenv or venv
+  # one first on PATH).
+  local py=()
+  [ -x /usr/bin/python3 ] && py=(-DPython3_EXECUTABLE=/usr/bin/python3)
+  cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Release "${py[@]}" "${args[@]}" >/dev/null
   cmake --build "$dir" -j"$jobs" "${target[@]}"
 }
 

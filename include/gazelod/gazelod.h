@@ -17,6 +17,9 @@
  *     on failure gzl_get_last_error gives a message that names the field at fault and the
  *     remedy (a message longer than the buffer is cut; *length says its full size). No exception and no C++ type crosses the
  *     boundary; the per-frame calls do not allocate.
+ *   - Inputs are copied before a call returns (create infos, views, configs and their strings,
+ *     levels, samples, frame inputs): nothing the application passes must outlive the call.
+ *     Lent OpenXR handles (base and gaze spaces) are used until replaced or gzl_shutdown.
  *   - Axes are OpenXR's (-Z forward, +Y up, +X right); times are nanoseconds on the clock the
  *     application's frame loop uses (XrTime in OpenXR mode); angles in radians unless a name
  *     says _deg; lengths in metres.
@@ -220,7 +223,8 @@ typedef struct gzl_openxr_create_info {
 
 GZL_API gzl_result gzl_create_openxr(const gzl_openxr_create_info* info, gzl_plugin* plugin);
 
-/* GZL_GAZE_INPUT_MERGE_BINDING: what to merge into the application's own calls. Handles are
+/* GZL_GAZE_INPUT_MERGE_BINDING only (GZL_ERROR_WRONG_MODE otherwise): what to merge into the
+ * application's own calls. Handles are
  * XrActionSet / XrAction values; the paths are strings for xrStringToPath. */
 typedef struct gzl_gaze_binding {
   gzl_structure_type type; /* GZL_TYPE_GAZE_BINDING */
@@ -403,10 +407,11 @@ typedef struct gzl_foveal_cone {
   double uncertainty_deg;
   double half_angle_deg; /* fovea_deg + uncertainty_deg, at most 180 */
   /* In the view's normalised image coordinates: u from the left edge (0) to the right (1), v
-   * from the top (0) to the bottom (1). radius_uv: the half-angle's extent along u and v at
-   * the centre. in_view: the gaze direction lies inside the view's field of view. */
-  double center_uv[2]; /* (0.5, 0.5) when the gaze points behind the view */
-  double radius_uv[2]; /* 0 when the gaze points behind the view */
+   * from the top (0) to the bottom (1). radius_u, radius_v: the half-angle's extent along u
+   * and v at the centre. in_view: the gaze direction lies inside the view's field of view.
+   * Scalars, not arrays, so the struct is blittable (C#, Rust) and read without copies. */
+  double center_u, center_v;  /* (0.5, 0.5) when the gaze points behind the view */
+  double radius_u, radius_v;  /* 0 when the gaze points behind the view */
   gzl_bool32 in_view;
 } gzl_foveal_cone;
 

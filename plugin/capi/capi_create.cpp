@@ -176,6 +176,7 @@ GZL_API gzl_result gzl_create_openxr(const gzl_openxr_create_info* info, gzl_plu
       throw Refusal{lookup ? GZL_ERROR_OPENXR_FUNCTION : GZL_ERROR_OPENXR_CALL, prefixed(e.what())};
     }
     p->view_count = p->xr->view_count();
+    p->gaze_input = info->gaze_input;
     return finish_create(std::move(p), plugin);
   });
 }

@@ -35,7 +35,7 @@ GZL_API gzl_result gzl_get_gaze_binding(gzl_plugin p, gzl_gaze_binding* b) {
       throw Refusal{GZL_ERROR_STRUCT_TYPE, "gazelod: binding->type must be GZL_TYPE_GAZE_BINDING"};
     need_openxr(p, "gzl_get_gaze_binding");
     std::lock_guard lock(p->mu);
-    if (p->xr->action_set() == XR_NULL_HANDLE)
+    if (p->gaze_input != GZL_GAZE_INPUT_MERGE_BINDING || p->xr->action_set() == XR_NULL_HANDLE)
       throw Refusal{GZL_ERROR_WRONG_MODE,
                     "gazelod: this plugin has no binding to merge: create it with GZL_GAZE_INPUT_MERGE_BINDING on a "
                     "system with eye-gaze interaction (XR_EXT_eye_gaze_interaction enabled on the instance)"};

@@ -63,6 +63,7 @@ struct gzl_plugin_T {
   std::string gaze_status;  // under err_mu too: the last source change's reason
 
   bool openxr = false;
+  gzl_gaze_input gaze_input = GZL_GAZE_INPUT_NONE;  // OpenXR mode's
   bool shut_down = false;
   std::unique_ptr<gazelod::LodPlugin> xr;        // OpenXR mode
   std::unique_ptr<gazelod::capi::DataFront> data;  // data mode

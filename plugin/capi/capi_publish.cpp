@@ -40,15 +40,15 @@ gzl_foveal_cone cone_in_view(const glm::dvec3& gaze_base, const glm::dquat& head
   const double ax = std::atan2(d.x, -d.z), ay = std::atan2(d.y, -d.z);
   const double a = c.half_angle_deg / kDegPerRad;
   if (d.z < 0.0) {
-    c.center_uv[0] = along(std::tan(ax), std::tan(f.angle_left_rad), std::tan(f.angle_right_rad));
-    c.center_uv[1] = along(std::tan(ay), std::tan(f.angle_up_rad), std::tan(f.angle_down_rad));
-    c.radius_uv[0] = extent(ax, a, f.angle_left_rad, f.angle_right_rad);
-    c.radius_uv[1] = extent(ay, a, f.angle_down_rad, f.angle_up_rad);
+    c.center_u = along(std::tan(ax), std::tan(f.angle_left_rad), std::tan(f.angle_right_rad));
+    c.center_v = along(std::tan(ay), std::tan(f.angle_up_rad), std::tan(f.angle_down_rad));
+    c.radius_u = extent(ax, a, f.angle_left_rad, f.angle_right_rad);
+    c.radius_v = extent(ay, a, f.angle_down_rad, f.angle_up_rad);
     c.in_view = ax >= f.angle_left_rad && ax <= f.angle_right_rad && ay >= f.angle_down_rad && ay <= f.angle_up_rad;
   } else {
     // Behind the view: no centre on its image.
-    c.center_uv[0] = c.center_uv[1] = 0.5;
-    c.radius_uv[0] = c.radius_uv[1] = 0.0;
+    c.center_u = c.center_v = 0.5;
+    c.radius_u = c.radius_v = 0.0;
     c.in_view = 0;
   }
   return c;

@@ -146,16 +146,16 @@ TEST(CApiFrames, FovealConeInTheViewsImage) {
   gzl_foveal_cone c{};
   c.type = GZL_TYPE_FOVEAL_CONE;
   ASSERT_EQ(gzl_get_foveal_cone(p, 0, &c), GZL_SUCCESS);
-  EXPECT_NEAR(c.center_uv[0], 0.5, 1e-3);
-  EXPECT_NEAR(c.center_uv[1], 0.5, 1e-3);
+  EXPECT_NEAR(c.center_u, 0.5, 1e-3);
+  EXPECT_NEAR(c.center_v, 0.5, 1e-3);
   EXPECT_TRUE(c.in_view);
   EXPECT_DOUBLE_EQ(c.half_angle_deg, c.fovea_deg + c.uncertainty_deg);
   // Across a 90 deg view, the half-angle's extent at the centre is tan(a) / 2.
-  EXPECT_NEAR(c.radius_uv[0], std::tan(c.half_angle_deg * M_PI / 180) / 2, 1e-3);
+  EXPECT_NEAR(c.radius_u, std::tan(c.half_angle_deg * M_PI / 180) / 2, 1e-3);
   fixate(p, 30 * kFrameNs, -20, 60);  // to the right
   ASSERT_EQ(gzl_get_foveal_cone(p, 1, &c), GZL_SUCCESS);
-  EXPECT_NEAR(c.center_uv[0], 0.5 + std::tan(20 * M_PI / 180) / 2, 0.02) << "u from tan(20 deg)";
-  EXPECT_NEAR(c.center_uv[1], 0.5, 1e-3);
+  EXPECT_NEAR(c.center_u, 0.5 + std::tan(20 * M_PI / 180) / 2, 0.02) << "u from tan(20 deg)";
+  EXPECT_NEAR(c.center_v, 0.5, 1e-3);
   EXPECT_EQ(gzl_get_foveal_cone(p, 2, &c), GZL_ERROR_INVALID_ARGUMENT);
   gzl_destroy(p);
 }
@@ -188,7 +188,7 @@ TEST(CApiFrames, MonoAndQuadViews) {
       gzl_foveal_cone c{};
       c.type = GZL_TYPE_FOVEAL_CONE;
       ASSERT_EQ(gzl_get_foveal_cone(p, v, &c), GZL_SUCCESS);
-      EXPECT_NEAR(c.center_uv[0], 0.5, 1e-3);
+      EXPECT_NEAR(c.center_u, 0.5, 1e-3);
     }
     gzl_destroy(p);
   }

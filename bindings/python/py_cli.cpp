@@ -1,0 +1,85 @@
+// gazelod._gazelod._cli: the gazelod program's commands called in-process (the same parser and
+// code as the command line), their output captured. The error stream's lines go to a Python
+// callback as they are written (progress), and Ctrl-C raised while a command runs stops it
+// at the next line: the command unwinds (its files are atomic: no partial output), then
+// KeyboardInterrupt is raised in Python.
+#include "bindings/python/py_common.hpp"
+
+#include "apps/gazelod/command.hpp"
+
+#include <pybind11/stl.h>
+
+#include <ostream>
+#include <sstream>
+#include <streambuf>
+#include <string>
+#include <vector>
+
+namespace gazelod::python {
+namespace {
+
+struct Interrupted : std::exception {
+  const char* what() const noexcept override { return "interrupted (Ctrl-C)"; }
+};
+
+// Collects the text, hands each finished line to `on_line` (with the GIL), checks for signals.
+class LineBuf final : public std::streambuf {
+ public:
+  explicit LineBuf(py::object on_line) : on_line_(std::move(on_line)) {}
+  std::string text;
+  bool interrupted = false;
+
+ protected:
+  int overflow(int c) override {
+    if (c == traits_type::eof()) return 0;
+    text.push_back(static_cast<char>(c));
+    if (c == '\n') line_done();
+    return c;
+  }
+  std::streamsize xsputn(const char* s, std::streamsize n) override {
+    for (std::streamsize i = 0; i < n; ++i) overflow(static_cast<unsigned char>(s[i]));
+    return n;
+  }
+
+ private:
+  void line_done() {
+    const std::size_t start = text.rfind('\n', text.size() - 2);
+    const std::string line = text.substr(start == std::string::npos ? 0 : start + 1);
+    py::gil_scoped_acquire gil;
+    if (PyErr_CheckSignals() != 0) {
+      interrupted = true;
+      throw Interrupted();
+    }
+    if (!on_line_.is_none()) on_line_(line.substr(0, line.size() - 1));
+  }
+  py::object on_line_;
+};
+
+py::tuple cli(const std::vector<std::string>& args, py::object on_line) {
+  LineBuf errbuf(std::move(on_line));
+  std::ostringstream out;
+  std::ostream err(&errbuf);
+  err.exceptions(std::ios::badbit);  // Interrupted leaves the stream, not swallowed by it
+  int rc = 0;
+  {
+    py::gil_scoped_release release;
+    try {
+      rc = cli::run(args, out, err);
+    } catch (const Interrupted&) {
+      rc = 130;
+    } catch (const std::ios_base::failure&) {
+      rc = errbuf.interrupted ? 130 : 1;
+    }
+  }
+  if (errbuf.interrupted || rc == 130) {
+    if (!PyErr_Occurred()) PyErr_SetInterrupt();
+    throw py::error_already_set();
+  }
+  return py::make_tuple(rc, out.str(), errbuf.text);
+}
+
+}  // namespace
+
+void register_cli(py::module_& m) { m.def("_cli", &cli, py::arg("args"), py::arg("on_line") = py::none()); }
+
+}  // namespace gazelod::python

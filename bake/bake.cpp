@@ -179,7 +179,7 @@ BakeReport bake_model(tinygltf::Model& m, const BakeOptions& o) {
 
 BakeReport bake_file(const std::string& in, const std::string& out, const BakeOptions& o) {
   const auto t0 = Clock::now();
-  LoadedGltf loaded = load_gltf(in);
+  LoadedGltf loaded = load_gltf(in, o.load);
   BakeReport report;
   try {
     report = bake_model(loaded.model, o);

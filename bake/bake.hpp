@@ -6,6 +6,7 @@
 // chain per node) is bake/cluster_bake.hpp.
 #pragma once
 
+#include "bake/gltf_load.hpp"
 #include "bake/simplify_chain.hpp"
 
 #include <tiny_gltf.h>
@@ -21,6 +22,7 @@ struct BakeOptions {
   ChainOptions chain;
   std::function<void(const std::string&)> progress;  // one line per call; may be empty
   int profile_viewpoints = 0;  // 0: no rendered profile; 6 or 18 viewpoints (needs Vulkan)
+  GltfLoadOptions load;        // where external uris may point
 };
 
 struct LevelReport {

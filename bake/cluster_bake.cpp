@@ -245,7 +245,7 @@ ClusterBakeReport bake_clusters_model(tinygltf::Model& m, const ClusterBakeOptio
 ClusterBakeReport bake_clusters_file(const std::string& in, const std::string& out,
                                      const ClusterBakeOptions& o) {
   const auto t0 = Clock::now();
-  LoadedGltf loaded = load_gltf(in);
+  LoadedGltf loaded = load_gltf(in, o.load);
   ClusterBakeReport report;
   try {
     report = bake_clusters_model(loaded.model, o);

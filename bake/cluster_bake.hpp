@@ -6,6 +6,7 @@
 // glb_write.
 #pragma once
 
+#include "bake/gltf_load.hpp"
 #include "bake/cluster_build.hpp"
 #include "bake/mesh_extract.hpp"
 
@@ -21,6 +22,7 @@ namespace gazelod::bake {
 struct ClusterBakeOptions {
   ClusterBuildOptions build;  // `label` is set per primitive
   std::function<void(const std::string&)> progress;  // one line per call; may be empty
+  GltfLoadOptions load;  // where external uris may point
 };
 
 struct ClusterPrimitiveReport {

@@ -38,6 +38,49 @@ std::vector<unsigned char> read_all(const std::string& path) {
   return bytes;
 }
 
+// A glTF's external files are read through these instead of tinygltf's defaults, which expand
+// `~` and environment variables in a uri and open whatever the path names.
+struct UriPolicy {
+  std::filesystem::path folder;  // canonical
+  GltfLoadOptions options;
+};
+
+bool uri_exists(const std::string&, void*) { return true; }  // the reader says why it cannot
+std::string uri_as_given(const std::string& path, void*) { return path; }
+bool no_writes(std::string*, const std::string&, const std::vector<unsigned char>&, void*) { return false; }
+
+// 4 GiB: what a glTF buffer's byteLength (uint32 in practice) can address.
+constexpr std::uintmax_t kMaxExternalBytes = std::uintmax_t{1} << 32;
+
+bool read_uri(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
+  const UriPolicy& policy = *static_cast<const UriPolicy*>(user);
+  auto fail = [&](const std::string& why) {
+    if (err) *err += "external file '" + path + "': " + why + "\n";
+    return false;
+  };
+  std::error_code ec;
+  const std::filesystem::path real = std::filesystem::weakly_canonical(path, ec);
+  if (ec) return fail("cannot resolve (" + ec.message() + ")");
+  if (!policy.options.allow_outside_folder) {
+    const auto rel = real.lexically_relative(policy.folder);
+    if (rel.empty() || *rel.begin() == "..")
+      return fail("outside the glTF's folder " + policy.folder.string() +
+                  " (refused: copy it beside the glTF, or pass --allow-outside-uris)");
+  }
+  const auto status = std::filesystem::status(real, ec);
+  if (ec || !std::filesystem::exists(status)) return fail("no such file");
+  if (!std::filesystem::is_regular_file(status)) return fail("not a regular file (a directory, FIFO or device)");
+  const std::uintmax_t size = std::filesystem::file_size(real, ec);
+  if (ec) return fail("cannot read its size (" + ec.message() + ")");
+  if (size > kMaxExternalBytes) return fail("larger than 4 GiB");
+  std::ifstream in(real, std::ios::binary);
+  if (!in) return fail(std::string("cannot open (") + std::strerror(errno) + ")");
+  out->resize(static_cast<std::size_t>(size));
+  if (size > 0 && !in.read(reinterpret_cast<char*>(out->data()), static_cast<std::streamsize>(size)))
+    return fail("read error");
+  return true;
+}
+
 std::uint32_t le32(const unsigned char* p) {
   return std::uint32_t(p[0]) | std::uint32_t(p[1]) << 8 | std::uint32_t(p[2]) << 16 |
          std::uint32_t(p[3]) << 24;
@@ -71,7 +114,7 @@ void refuse_compressed_geometry(const std::string& path, const std::vector<unsig
 
 }  // namespace
 
-LoadedGltf load_gltf(const std::string& path) {
+LoadedGltf load_gltf(const std::string& path, GltfLoadOptions options) {
   const std::vector<unsigned char> bytes = read_all(path);
   const bool glb = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
   if (glb) {
@@ -92,7 +135,13 @@ LoadedGltf load_gltf(const std::string& path) {
   loader.SetImageLoader(keep_image_bytes, nullptr);
   LoadedGltf out;
   std::string err, warn;
-  const std::string base_dir = std::filesystem::path(path).parent_path().string();
+  std::string base_dir = std::filesystem::path(path).parent_path().string();
+  if (base_dir.empty()) base_dir = ".";
+  std::error_code ec;
+  UriPolicy policy{std::filesystem::weakly_canonical(base_dir, ec), options};
+  if (ec) throw BakeError(path + ": cannot resolve its folder (" + ec.message() + ")");
+  tinygltf::FsCallbacks fs{&uri_exists, &uri_as_given, &read_uri, &no_writes, &policy};
+  loader.SetFsCallbacks(fs);
   const auto n = static_cast<unsigned int>(bytes.size());
   const bool ok =
       glb ? loader.LoadBinaryFromMemory(&out.model, &err, &warn, bytes.data(), n, base_dir)

@@ -15,6 +15,7 @@
 #include "render/render_error.hpp"
 #include "apps/gazelod/command.hpp"
 
+#include <filesystem>
 #include <charconv>
 #include <cstdio>
 #include <cmath>
@@ -34,6 +35,7 @@ struct Options {
   bool lock_borders = false;
   bool keep_seams = false;
   bool clusters = false;
+  bool allow_outside_uris = false;
 };
 
 // -o OUT or the second argument, not two different ones.
@@ -43,6 +45,11 @@ std::string output_path(const Options& o) {
                      o.output + "' and '" + o.output_argument + "'");
   const std::string out = o.output.empty() ? o.output_argument : o.output;
   if (out.empty()) throw UsageError("--output: missing: give -o OUT.glb (or OUT.glb after the input)");
+  // The same file by another name (./a.glb, a link) too: the bake would replace its own input.
+  std::error_code ec;
+  if (std::filesystem::equivalent(o.input, out, ec) || std::filesystem::path(o.input).lexically_normal() ==
+                                                           std::filesystem::path(out).lexically_normal())
+    throw UsageError("--output: '" + out + "' is the input file; write the bake to another file");
   return out;
 }
 
@@ -57,6 +64,7 @@ int run_clusters(const Options& o, const std::string& out, Io io) {
   if (o.fold_retries >= 0) opts.build.fold_retries = static_cast<unsigned>(o.fold_retries);
   if (o.threads >= 0) opts.build.threads = static_cast<unsigned>(o.threads);
   opts.progress = [&io](const std::string& line) { io.err << line << '\n' << std::flush; };
+  opts.load.allow_outside_folder = o.allow_outside_uris;
   try {
     io.out << bake::format_cluster_summary(bake::bake_clusters_file(o.input, out, opts));
   } catch (const bake::OutputError& e) {
@@ -119,6 +127,7 @@ int run_bake(const Options& o, Io io) {
     throw UsageError((o.target_error.empty() ? "--ratios: " : "--ratios/--target-error: ") + e);
   opts.chain.lock_borders = o.lock_borders;
   opts.profile_viewpoints = o.profile;
+  opts.load.allow_outside_folder = o.allow_outside_uris;
   opts.progress = [&io](const std::string& line) { io.err << line << '\n' << std::flush; };
   try {
     const bake::BakeReport report = bake::bake_file(o.input, out, opts);
@@ -141,6 +150,8 @@ const Registrar reg(
       app.add_option("input", o->input, "input .gltf or .glb")->required();
       app.add_option("output", o->output_argument, "output .glb (or -o)");
       app.add_option("-o,--output", o->output, "output .glb (written atomically)");
+      app.add_flag("--allow-outside-uris", o->allow_outside_uris,
+                   "read buffer and image uris outside the glTF's folder too (absolute paths, ../)");
       app.add_flag("--clusters", o->clusters,
                    "a cluster hierarchy per mesh primitive (GAZELOD_cluster_lod) instead of "
                    "MSFT_lod chains");

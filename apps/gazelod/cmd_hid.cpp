@@ -79,6 +79,8 @@ int run_record(const Options& o, Io io) {
     throw UsageError("--seconds: must be in (0, 86400], got " + std::to_string(o.seconds));
   hid::HidTrackerConfig config;
   config.path = o.device;
+  if (!o.device.empty())
+    if (const std::string e = hid::check_hidraw_path(o.device); !e.empty()) throw UsageError("--device: " + e);
   if (o.layout == "dmf")
     config.layout = hid::kLayoutGazeHidDmf;
   else if (o.layout != "packed")

@@ -3,6 +3,12 @@
 #include "gaze/hid/reports.hpp"
 
 #include <hidapi.h>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
 
 namespace gazelod::gaze::hid {
 
@@ -51,6 +57,19 @@ std::vector<TrackerInfo> list_trackers() {
   }
   hid_free_enumeration(all);
   return out;
+}
+
+std::string check_hidraw_path(const std::string& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) return path + ": " + std::strerror(errno);
+  if (!S_ISCHR(st.st_mode)) return path + ": not a character device (an eye tracker is a /dev/hidrawN)";
+  const std::string sys = "/sys/dev/char/" + std::to_string(major(st.st_rdev)) + ":" + std::to_string(minor(st.st_rdev));
+  std::error_code ec;
+  const std::filesystem::path subsystem = std::filesystem::read_symlink(sys + "/subsystem", ec);
+  if (ec || subsystem.filename() != "hidraw")
+    return path + ": character device " + std::to_string(major(st.st_rdev)) + ":" + std::to_string(minor(st.st_rdev)) +
+           " is not a hidraw device (an eye tracker is a /dev/hidrawN; `gazelod hid list` shows them)";
+  return "";
 }
 
 }  // namespace gazelod::gaze::hid

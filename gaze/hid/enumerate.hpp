@@ -20,6 +20,10 @@ struct TrackerInfo {
 // Every device with usage page 0x12 (calls hid_enumerate(0, 0)). Empty when hidapi fails.
 std::vector<TrackerInfo> list_trackers();
 
+// "" when `path` is a hidraw character device (what hidapi's hidraw backend opens), else why
+// not: hidapi reads the device's udev parent and crashed on /dev/null or /dev/zero.
+std::string check_hidraw_path(const std::string& path);
+
 // hidapi's wide strings to UTF-8 (nullptr -> "").
 std::string to_utf8(const wchar_t* s);
 

@@ -109,8 +109,17 @@ bool HidTracker::try_open() {
     const auto found = list_trackers();
     if (!found.empty()) path = found.front().path;
   }
-  hid_device* dev = path.empty() ? nullptr : hid_open_path(path.c_str());
+  // Only a hidraw device reaches hidapi: it crashes reading the udev parent of anything else.
+  // (A path hidapi enumerated is one; a configured path is the user's word.)
+  const std::string not_hidraw = config_.path.empty() ? std::string() : check_hidraw_path(path);
+  hid_device* dev = path.empty() || !not_hidraw.empty() ? nullptr : hid_open_path(path.c_str());
   if (!dev) {
+    if (!not_hidraw.empty() && !said_no_device_) {
+      log(not_hidraw);
+      set_status(not_hidraw);
+      said_no_device_ = true;
+      return false;
+    }
     if (!said_no_device_) {  // once per absence, not once per retry (an unplug said it already)
       log(path.empty() ? "no eye tracker (HID usage page 0x12) found; will keep looking"
                        : "cannot open " + path + "; will keep trying");

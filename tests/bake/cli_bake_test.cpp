@@ -37,6 +37,21 @@ TEST(CliBake, BakesWithProgressAndSummary) {
   EXPECT_EQ(objs[0].lods.size(), 3u);
 }
 
+// The output naming the input (by another spelling too) would replace it: refused before reading,
+// in chain and cluster mode alike, the input left as it was.
+TEST(CliBake, OutputThatIsTheInputIsRefused) {
+  const std::string in = scene("cli_same");
+  const std::string dir = in.substr(0, in.rfind('/'));
+  const auto before = std::filesystem::file_size(in);
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"bake", in, "-o", in}, {"bake", in, "-o", dir + "/./in.gltf", "--clusters"}}) {
+    const Result r = run_cli(args);
+    EXPECT_EQ(r.rc, 2) << r.err;
+    EXPECT_HAS(r.err, "is the input file");
+  }
+  EXPECT_EQ(std::filesystem::file_size(in), before);
+}
+
 TEST(CliBake, RatiosAndTargetError) {
   const std::string in = scene("cli_ratios");
   const std::string out = in.substr(0, in.rfind('/')) + "/out.glb";

@@ -89,5 +89,17 @@ TEST_F(HidCliTest, BadOptionsAndNoDeviceFailWithAMessage) {
   std::filesystem::remove(out);
 }
 
+// hidapi crashed on a path that is not a hidraw device (/dev/null, /dev/zero): refused before
+// it is opened, with the reason, and no output file.
+TEST_F(HidCliTest, DeviceThatIsNotHidrawIsRefused) {
+  const auto out = std::filesystem::temp_directory_path() / "gazelod_hid_cli_notraw.csv";
+  for (const char* device : {"/dev/null", "/dev/zero", "/tmp", "/no/such/device"}) {
+    const Result r = run({"hid", "record", "--device", device, "--out", out.string(), "--seconds", "1"});
+    EXPECT_EQ(r.code, 2) << device;
+    EXPECT_NE(r.err.find("--device: "), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out)) << device;
+  }
+}
+
 }  // namespace
 }  // namespace gazelod::gaze::hid

@@ -123,7 +123,8 @@ void print_summary(const RunInfo& info, const RunSummary& s, std::ostream& out) 
   out << "\n== gazelod run: " << info.scenario << " ==\n";
   out << "hmd " << info.hmd << ", runtime " << info.runtime << ", device " << info.device
       << ", criteria " << info.criteria << "\n";
-  std::snprintf(line, sizeof line, "frames          %lld\n", static_cast<long long>(s.frames));
+  std::snprintf(line, sizeof line, "frames          %lld%s\n", static_cast<long long>(s.frames),
+                s.interrupted.empty() ? "" : (" (interrupted by " + s.interrupted + ")").c_str());
   out << line;
   std::snprintf(line, sizeof line, "frame time      mean %.3f ms, p95 %.3f ms, max %.3f ms (selection mean %.3f ms)\n",
                 s.mean_frame_ms, s.p95_frame_ms, s.max_frame_ms, s.mean_select_ms);
@@ -178,6 +179,7 @@ void write_report_files(const std::filesystem::path& dir, const RunInfo& info,
   j["device"] = info.device;
   j["criteria"] = info.criteria;
   j["frames"] = s.frames;
+  j["interrupted"] = s.interrupted.empty() ? nlohmann::json(nullptr) : nlohmann::json(s.interrupted);
   j["triangles_drawn"] = s.triangles_drawn;
   j["triangles_full"] = s.triangles_full;
   j["frame_time_ms"] = {{"mean", s.mean_frame_ms}, {"p95", s.p95_frame_ms}, {"max", s.max_frame_ms}};

@@ -95,6 +95,7 @@ struct SetTotals {
 
 struct RunSummary {
   std::int64_t frames = 0;
+  std::string interrupted;  // "" = ran to its end; else the signal that stopped it ("SIGINT")
   double mean_frame_ms = 0.0;
   double p95_frame_ms = 0.0;
   double max_frame_ms = 0.0;

@@ -1,5 +1,7 @@
 #include "apps/gazelod/run_session.hpp"
 
+#include "apps/gazelod/run_signals.hpp"
+
 #include "gaze/hid/hid_gaze_source.hpp"
 #include "lod/angles.hpp"
 
@@ -203,6 +205,8 @@ int run_session(const RunOptions& opt, Io io) {
   std::vector<std::uint8_t> previous_lod(chains.size(), 0);
   double previous_t_s = 0.0;
   bool exit_requested = false;
+  const StopOnSignal stop;  // Ctrl-C / SIGTERM: stop at a frame boundary with a report
+  int interrupted_by = 0;
   auto last_progress = Clock::now();
   const auto started = Clock::now();
 
@@ -214,6 +218,14 @@ int run_session(const RunOptions& opt, Io io) {
                << frames.size() << " frames\n";
     });
     if (!keep_going) break;
+    if (interrupted_by == 0 && stop.requested() != 0) {
+      interrupted_by = stop.requested();
+      io.err << "gazelod run: " << StopOnSignal::name(interrupted_by) << " after " << frames.size()
+             << " frames: ending the session and writing the report of those (again to quit at once)\n";
+      if (!exit_requested && app->session_running()) xrRequestExitSession(app->session());
+      exit_requested = true;
+      if (!app->session_running()) break;
+    }
     if (!app->session_running()) continue;
     if (static_cast<std::int64_t>(frames.size()) >= planned && !exit_requested) {
       xrRequestExitSession(app->session());
@@ -361,6 +373,7 @@ int run_session(const RunOptions& opt, Io io) {
   info.criteria = criteria_text(opt.criteria);
   info.budget_ms = opt.budget_ms;
   RunSummary summary = summarize(frames, opt.budget_ms);
+  if (interrupted_by != 0) summary.interrupted = StopOnSignal::name(interrupted_by);
   summary.gaze_bad_samples = plugin->diagnostics().gaze_bad_samples;
   summary.clusters.meshes = clusters.meshes.size();
   summary.clusters.clusters = clusters.cluster_count();
@@ -391,7 +404,8 @@ int run_session(const RunOptions& opt, Io io) {
     io.out << ", " << cluster_decisions->path();
   }
   io.out << "\n";
-  return 0;
+  // The shell's convention for a run a signal ended: 128 + its number.
+  return interrupted_by != 0 ? 128 + interrupted_by : 0;
 }
 
 }  // namespace gazelod::cli

@@ -1,0 +1,21 @@
+// Ctrl-C and SIGTERM during `gazelod run`: the first asks the run to stop at the next frame
+// boundary (end the session, write the report of the frames done, marked interrupted, remove
+// temporaries); a second one ends the process at once with the signal's default action.
+#pragma once
+
+namespace gazelod::cli {
+
+class StopOnSignal {
+ public:
+  StopOnSignal();   // installs the handlers for SIGINT and SIGTERM
+  ~StopOnSignal();  // restores the ones before (a Python interpreter's, say)
+  StopOnSignal(const StopOnSignal&) = delete;
+  StopOnSignal& operator=(const StopOnSignal&) = delete;
+
+  // The signal that asked to stop (SIGINT, SIGTERM), 0 while none has.
+  int requested() const;
+  // "SIGINT", "SIGTERM".
+  static const char* name(int signal);
+};
+
+}  // namespace gazelod::cli

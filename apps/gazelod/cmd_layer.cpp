@@ -186,6 +186,7 @@ int run_check(Io io) {
   }
   const layer::Decision d = layer::decide(in);
   io.out << "decision   " << d.why << "\n";
+  if (!cr.error.empty()) return 2;  // a configuration the user must fix, whatever the layer then does
   return d.mode == layer::LayerMode::pass_through || d.gaze_available ? 0 : 1;
 }
 

@@ -102,6 +102,21 @@ int run_session(const RunOptions& opt, Io io) {
   }
   // Opened before the session so that a bad path fails at once; committed (renamed into place)
   // only after the last frame.
+  // A decisions file must not replace one of the report's files (or the other decisions file).
+  const auto same_file = [](const std::filesystem::path& a, const std::filesystem::path& b) {
+    std::error_code e1, e2;
+    return std::filesystem::weakly_canonical(a, e1) == std::filesystem::weakly_canonical(b, e2) && !e1 && !e2;
+  };
+  for (const auto& [path, option] : {std::pair{opt.decisions_path, "--decisions"},
+                                     std::pair{opt.cluster_decisions_path, "--cluster-decisions"}}) {
+    if (path.empty()) continue;
+    for (const char* report : {"summary.json", "frames.csv", "frames.svg", "audit.svg", "frame.png", "scenario.json"})
+      if (same_file(path, opt.out_dir / report))
+        throw UsageError(std::string(option) + ": '" + path + "' is the run's " + report +
+                         " (in --out); write the decisions to another file");
+  }
+  if (!opt.decisions_path.empty() && same_file(opt.decisions_path, opt.cluster_decisions_path))
+    throw UsageError("--cluster-decisions: the same file as --decisions");
   std::optional<DecisionsFile> decisions;
   if (!opt.decisions_path.empty()) {
     std::vector<std::string> names;
@@ -205,6 +220,7 @@ int run_session(const RunOptions& opt, Io io) {
   std::vector<std::uint8_t> previous_lod(chains.size(), 0);
   double previous_t_s = 0.0;
   bool exit_requested = false;
+  bool png_saved = false;  // --capture-frame past the last frame saves none
   const StopOnSignal stop;  // Ctrl-C / SIGTERM: stop at a frame boundary with a report
   int interrupted_by = 0;
   auto last_progress = Clock::now();
@@ -276,7 +292,10 @@ int run_session(const RunOptions& opt, Io io) {
         for (std::size_t eye = 0; eye < views.size(); ++eye) {
           const std::uint32_t index = app->acquire(eye);
           renderer->render_eye(eye, index, views[eye], positions, radii, d, diag, cluster_motion.shift_m());
-          if (save && eye == 0) renderer->save_png(eye, index, opt.out_dir / "frame.png");
+          if (save && eye == 0) {
+            renderer->save_png(eye, index, opt.out_dir / "frame.png");
+            png_saved = true;
+          }
           app->release(eye);
         }
         submitted = &views;
@@ -389,7 +408,8 @@ int run_session(const RunOptions& opt, Io io) {
   print_summary(info, summary, io.out);
   write_report_files(opt.out_dir, info, summary, frames);
   io.out << "files: " << (opt.out_dir / "summary.json").string() << ", frames.csv, frames.svg"
-         << (summary.audit.available ? ", audit.svg" : "") << (opt.render ? ", frame.png" : "");
+         << (summary.audit.available ? ", audit.svg" : "") << (png_saved ? ", frame.png" : "");
+
   if (frames.empty()) {
     io.out << "\n";
     io.err << "gazelod run: the session ended before any frame was rendered\n";
@@ -404,6 +424,9 @@ int run_session(const RunOptions& opt, Io io) {
     io.out << ", " << cluster_decisions->path();
   }
   io.out << "\n";
+  if (opt.render && !png_saved)
+    io.err << "gazelod run: no frame.png: --capture-frame " << capture << " is past the run's last frame ("
+           << frames.size() << " frames)\n";
   // The shell's convention for a run a signal ended: 128 + its number.
   return interrupted_by != 0 ? 128 + interrupted_by : 0;
 }

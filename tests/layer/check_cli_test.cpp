@@ -35,6 +35,12 @@ TEST(LayerCheckCli, SaysWhatTheLayerWouldDo) {
   apply(setup);
   r = test::run_cli({"layer", "check"});
   EXPECT_NE(r.out.find("decision   overriding the runtime's XR_EXT_eye_gaze_interaction with gaze from trace"), std::string::npos) << r.out;
+  // A configuration error is the user's to fix: exit 2, even though the layer would pass through.
+  setup.config = dir + "/missing-config.json";
+  apply(setup);
+  r = test::run_cli({"layer", "check"});
+  EXPECT_EQ(r.rc, 2) << r.out;
+  EXPECT_NE(r.out.find("config     error: "), std::string::npos) << r.out;
 
   setup.runtime_eye_gaze = false;
   setup.config.clear();

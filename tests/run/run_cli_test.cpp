@@ -71,6 +71,25 @@ TEST(RunCli, DefaultScenario120FramesWritesAConsistentReport) {
   EXPECT_NE(r.out.find("triangles"), std::string::npos) << r.out;
 }
 
+// Outputs that would collide or lie: --decisions naming a report file is refused before the
+// session; a --capture-frame past the last frame saves no frame.png and does not list one.
+TEST(RunCli, DecisionsCannotReplaceTheReportAndNoPhantomFramePng) {
+  const auto dir = scratch_dir();
+  use_simulated_runtime("");
+  for (const char* report : {"summary.json", "frames.csv"}) {
+    const CliResult r = run_cli({"run", "--frames", "10", "--no-render", "--quiet", "--out", dir.string(),
+                                 "--decisions", (dir / report).string()});
+    EXPECT_EQ(r.rc, 2) << r.err;
+    EXPECT_NE(r.err.find(std::string("is the run's ") + report), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / report)) << "refused before anything was written";
+  }
+  const CliResult r = run_cli({"run", "--frames", "6", "--quiet", "--capture-frame", "50", "--out", dir.string()});
+  ASSERT_EQ(r.rc, 0) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "frame.png"));
+  EXPECT_EQ(r.out.find("frame.png"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("no frame.png: --capture-frame 50 is past the run's last frame (6 frames)"), std::string::npos) << r.err;
+}
+
 TEST(RunCli, WithoutEyeGazeFallsBackToHeadFixedAndSaysSo) {
   use_simulated_runtime("");
   const auto dir = scratch_dir();

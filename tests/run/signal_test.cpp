@@ -26,7 +26,7 @@ namespace {
 int run_and_signal(const std::filesystem::path& out, int signal) {
   const std::string program = std::string(GAZELOD_BINARY_DIR) + "/apps/gazelod/gazelod";
   const std::string out_dir = out.string(), decisions = (out / "decisions.csv").string();
-  std::vector<std::string> args = {program, "run", "--frames", "10000000", "--no-render", "--quiet",
+  std::vector<std::string> args = {program, "run", "--frames", "1000000", "--no-render", "--quiet",
                                    "--out", out_dir, "--decisions", decisions};
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());

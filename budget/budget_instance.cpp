@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 
@@ -119,6 +120,13 @@ budget::MckpInstance parse_budget_instance(const json& doc, const std::string& w
 }
 
 budget::MckpInstance read_budget_instance(const std::string& path) {
+  // Regular files only: a directory failed inside the stream with a libstdc++ message, and a
+  // FIFO would block.
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (ec || !std::filesystem::exists(status)) throw InstanceError("--instance: " + path + ": no such file");
+  if (!std::filesystem::is_regular_file(status))
+    throw InstanceError("--instance: " + path + ": not a regular file (a directory, FIFO or device)");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InstanceError("--instance: cannot open " + path);
   json doc;

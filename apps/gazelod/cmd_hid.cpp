@@ -1,6 +1,7 @@
 // gazelod hid list | record: HID eye trackers (usage page 0x12, HUTRR74) through hidapi.
 //   list             the usage-page-0x12 devices hidapi sees (--json for one array)
 //   record           read gaze for --seconds into a gazelod trace CSV (--out)
+#include "gaze/atomic_file.hpp"
 #include "gaze/hid/enumerate.hpp"
 #include "gaze/hid/hid_tracker.hpp"
 #include "gaze/trace_writer.hpp"
@@ -13,6 +14,7 @@
 #include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <optional>
 #include <memory>
 #include <sstream>
 #include <thread>
@@ -92,8 +94,14 @@ int run_record(const Options& o, Io io) {
     config.screen.width_m = parse_positive("--screen-mm", o.screen_mm.substr(0, x), 10000) * 1e-3;
     config.screen.height_m = parse_positive("--screen-mm", o.screen_mm.substr(x + 1), 10000) * 1e-3;
   }
-  std::ofstream file(o.out);
-  if (!file) throw UsageError("--out: cannot open '" + o.out + "' for writing");
+  // Atomic: a recording that fails (no tracker, a full disk) leaves no file, not a header alone.
+  std::optional<gaze::AtomicFile> out_file;
+  try {
+    out_file.emplace(o.out);
+  } catch (const gaze::WriteError& e) {
+    throw UsageError(std::string("--out: ") + e.what());
+  }
+  std::ostream& file = out_file->stream();
   config.log = [&io](const std::string& line) { io.err << line << "\n"; };
 
   gaze::TraceWriterOptions wo;
@@ -126,9 +134,13 @@ int run_record(const Options& o, Io io) {
          << " invalid) to " << o.out << "; skipped " << c.malformed << " malformed and "
          << c.unknown << " unknown reports; " << c.dropped << " dropped; " << c.disconnects
          << " disconnects\n";
-  if (!file) throw UsageError("--out: writing '" + o.out + "' failed", 1);
   if (c.opens == 0)
-    throw UsageError("no HID eye tracker could be opened (" + tracker.status() + ")", 1);
+    throw UsageError("no HID eye tracker could be opened (" + tracker.status() + "); nothing written", 1);
+  try {
+    out_file->commit();
+  } catch (const gaze::WriteError& e) {
+    throw UsageError(std::string("--out: ") + e.what(), 1);
+  }
   return 0;
 }
 

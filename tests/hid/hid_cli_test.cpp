@@ -86,6 +86,7 @@ TEST_F(HidCliTest, BadOptionsAndNoDeviceFailWithAMessage) {
   const Result none = run({"hid", "record", "--out", out.string(), "--seconds", "0.02"});
   EXPECT_EQ(none.code, 1);
   EXPECT_NE(none.err.find("no HID eye tracker could be opened"), std::string::npos) << none.err;
+  EXPECT_FALSE(std::filesystem::exists(out)) << "no header-only file left behind";
   std::filesystem::remove(out);
 }
 

@@ -206,13 +206,13 @@ int run_session(const RunOptions& opt, Io io) {
   const std::int64_t capture = opt.capture_frame >= 0 ? opt.capture_frame : planned / 2;
   std::vector<FrameRecord> frames;
   // Every frame keeps a record for the report: say so before a run that will hold gigabytes
-  // (a scenario of hours at 1 kHz), and reserve no more than a million up front (a reserve of
+  // (a scenario of hours at 1 kHz), and reserve at most 65,536 up front (a reserve of
   // the whole plan failed with std::bad_alloc before the first frame).
   const double record_gb = static_cast<double>(planned) * static_cast<double>(sizeof(FrameRecord) + 32) / 1e9;
   if (record_gb > 2.0)
     io.err << "gazelod run: " << planned << " frames will keep about " << static_cast<int>(record_gb + 0.5)
            << " GB of per-frame records for the report; bound the run with --frames\n";
-  frames.reserve(static_cast<std::size_t>(std::min<std::int64_t>(planned, 1 << 20)));
+  frames.reserve(static_cast<std::size_t>(std::min<std::int64_t>(planned, 1 << 16)));
   std::vector<glm::dvec3> positions(plain.size());
   std::vector<sim::ObjectState> objects(plain.size());  // the plugin's objects, from the simulator
   std::vector<XrView> views;

@@ -1,8 +1,8 @@
 #include "bake/seam_copies.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
-#include <ranges>
 
 namespace gazelod::bake {
 namespace {
@@ -116,8 +116,11 @@ void SeamCopies::choose(std::span<std::uint32_t> triangles, std::span<const std:
       chosen[k] = b < e ? copies_[b] : v[k];
       if (e - b < 2) continue;
       if (e - b <= kAllCopiesUpTo) {
-        const auto all = std::views::iota(b, e);
-        chosen[k] = best(all.begin(), all.end(), [](std::uint32_t s) { return s; });
+        // The slots b..e-1 spelled out (std::views::iota here did not compile with clang 14 and
+        // libstdc++ 12, which broke the fuzz build).
+        std::array<std::uint32_t, kAllCopiesUpTo> all;
+        for (std::uint32_t s = b; s < e; ++s) all[s - b] = s;
+        chosen[k] = best(all.begin(), all.begin() + (e - b), [](std::uint32_t s) { return s; });
         continue;
       }
       const auto lo = std::lower_bound(pairs.begin(), pairs.end(), std::uint64_t{w} << 32);

@@ -59,6 +59,8 @@ struct FrameDiagnostics {
   glm::dvec3 gaze_direction_head{0.0, 0.0, -1.0};  // as the source gave it (head space)
   glm::dvec3 eye_position_world{0.0};
   glm::dvec3 head_angular_velocity_rad_s{0.0};  // base space
+  glm::dvec3 head_linear_velocity_m_s{0.0};     // base space
+  glm::dvec3 gaze_angular_velocity_in_head_rad_s{0.0};  // the eye's rotation in the head (base axes)
   bool head_valid = false;
   // The conditioned gaze: how the eye moves (loss without a usable source) and whether vision
   // is suppressed now (saccade, blink, shortly after a saccade), which releases coarsening.

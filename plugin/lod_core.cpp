@@ -199,6 +199,8 @@ const FrameDecisions& LodCore::decide(const FrameInput& in) {
   diag_.gaze_direction_world = v.gaze_direction;
   diag_.eye_position_world = v.eye_position_m;
   diag_.head_angular_velocity_rad_s = v.head_angular_velocity_rad_s;
+  diag_.head_linear_velocity_m_s = v.eye_velocity_m_s;
+  diag_.gaze_angular_velocity_in_head_rad_s = v.gaze_angular_velocity_in_head_rad_s;
   // Reddy 1995's foveal cone: out to where M(E) leaves 1 (the fovea), widened by the error.
   diag_.foveal_cone = lod::make_foveal_cone(v.eye_position_m, v.gaze_direction, lod::kEccentricitySeamDeg,
                                             diag_.gaze_error_deg);

@@ -14,7 +14,7 @@ packages=(
   libglm-dev libhidapi-dev libtinygltf-dev libmeshoptimizer-dev nlohmann-json3-dev libcli11-dev
   libpng-dev
   # Tests and benchmarks; clang + its runtime for the libFuzzer targets (scripts/fuzz.sh)
-  libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-14-dev
+  libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-14-dev ninja-build
   # The evaluation's peer (bench/peer): OpenSceneGraph's osg::LOD
   libopenscenegraph-dev
   assimp-testmodels  # real glTF 2.0 models (Khronos 2CylinderEngine, ...) for the bake --clusters test

@@ -56,6 +56,8 @@ case "$what" in
     TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 ./build-tsan/tests/capi/test_capi --gtest_filter='CApiThreads.*'
     TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 ./build-tsan/tests/bake/test_bake_clusters \
       --gtest_filter='ClusterBuild.SameHierarchyOnAnyThreadCount*:ClusterBuild.OpenGridSimplifiesItsRimWithoutCrack:SharedPositions.TiledTerrainKeepsTileSeamsAndSimplifiesTheRim:ClusterGltf.SideBySideBuildsWriteTheSameFile'
+    echo "== every libFuzzer target builds (clang, ASan+UBSan) and runs 10 s from its seeds =="
+    FUZZ_SECONDS=10 bash scripts/fuzz.sh
     ;;
   *)
     echo "usage: bash scripts/setup.sh run|test" >&2

@@ -228,7 +228,7 @@ int run_session(const RunOptions& opt, Io io) {
   double previous_t_s = 0.0;
   bool exit_requested = false;
   bool png_saved = false;  // --capture-frame past the last frame saves none
-  const StopOnSignal stop;  // Ctrl-C / SIGTERM: stop at a frame boundary with a report
+  StopOnSignal stop;  // Ctrl-C / SIGTERM: stop at a frame boundary with a report
   int interrupted_by = 0;
   auto last_progress = Clock::now();
   const auto started = Clock::now();
@@ -243,6 +243,7 @@ int run_session(const RunOptions& opt, Io io) {
     if (!keep_going) break;
     if (interrupted_by == 0 && stop.requested() != 0) {
       interrupted_by = stop.requested();
+      stop.acted_on();
       io.err << "gazelod run: " << StopOnSignal::name(interrupted_by) << " after " << frames.size()
              << " frames: ending the session and writing the report of those (again to quit at once)\n";
       if (!exit_requested && app->session_running()) xrRequestExitSession(app->session());

@@ -33,6 +33,7 @@ StopOnSignal::StopOnSignal() {
 StopOnSignal::~StopOnSignal() {
   sigaction(SIGINT, &g_previous_int, nullptr);
   sigaction(SIGTERM, &g_previous_term, nullptr);
+  if (g_stop_signal != 0 && !acted_) std::raise(g_stop_signal);  // to whoever handles it now
 }
 
 int StopOnSignal::requested() const { return g_stop_signal; }

@@ -14,8 +14,14 @@ class StopOnSignal {
 
   // The signal that asked to stop (SIGINT, SIGTERM), 0 while none has.
   int requested() const;
+  // The run acted on it. One that arrived but was not acted on (after the last frame, while the
+  // report is written) is raised again when the handlers are restored, so it is not lost.
+  void acted_on() { acted_ = true; }
   // "SIGINT", "SIGTERM".
   static const char* name(int signal);
+
+ private:
+  bool acted_ = false;
 };
 
 }  // namespace gazelod::cli

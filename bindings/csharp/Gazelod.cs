@@ -301,6 +301,9 @@ namespace Gazelod
         public uint head_valid; // gzl_bool32
         public gzl_vec3 gaze_direction_base;
         public gzl_vec3 eye_position_base_m;
+        public gzl_vec3 head_angular_velocity_rad_s;
+        public gzl_vec3 head_linear_velocity_m_s;
+        public gzl_vec3 gaze_angular_velocity_in_head_rad_s;
         public double gaze_uncertainty_deg;
         public double xi_cpd;
         public ulong triangles_drawn;

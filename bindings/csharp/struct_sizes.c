@@ -161,6 +161,8 @@ int main(int argc, char** argv) {
   F(gzl_frame_info, display_time_ns); F(gzl_frame_info, object_count); F(gzl_frame_info, gaze_source);
   F(gzl_frame_info, eye_motion); F(gzl_frame_info, gaze_suppressed); F(gzl_frame_info, head_valid);
   F(gzl_frame_info, gaze_direction_base); F(gzl_frame_info, eye_position_base_m);
+  F(gzl_frame_info, head_angular_velocity_rad_s); F(gzl_frame_info, head_linear_velocity_m_s);
+  F(gzl_frame_info, gaze_angular_velocity_in_head_rad_s);
   F(gzl_frame_info, gaze_uncertainty_deg); F(gzl_frame_info, xi_cpd); F(gzl_frame_info, triangles_drawn);
   F(gzl_frame_info, triangles_full);
 

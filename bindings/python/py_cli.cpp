@@ -21,6 +21,9 @@ namespace {
 struct Interrupted : std::exception {
   const char* what() const noexcept override { return "interrupted (Ctrl-C)"; }
 };
+struct CallbackFailed : std::exception {
+  const char* what() const noexcept override { return "the progress callback raised an exception"; }
+};
 
 // Collects the text, hands each finished line to `on_line` (with the GIL), checks for signals.
 class LineBuf final : public std::streambuf {
@@ -28,6 +31,10 @@ class LineBuf final : public std::streambuf {
   explicit LineBuf(py::object on_line) : on_line_(std::move(on_line)) {}
   std::string text;
   bool interrupted = false;
+  // The progress callback's own exception, re-raised in Python once the command has unwound.
+  PyObject* error_type = nullptr;
+  PyObject* error_value = nullptr;
+  PyObject* error_traceback = nullptr;
 
  protected:
   int overflow(int c) override {
@@ -50,7 +57,14 @@ class LineBuf final : public std::streambuf {
       interrupted = true;
       throw Interrupted();
     }
-    if (!on_line_.is_none()) on_line_(line.substr(0, line.size() - 1));
+    if (on_line_.is_none()) return;
+    try {
+      on_line_(line.substr(0, line.size() - 1));
+    } catch (py::error_already_set& e) {
+      e.restore();
+      PyErr_Fetch(&error_type, &error_value, &error_traceback);
+      throw CallbackFailed();
+    }
   }
   py::object on_line_;
 };
@@ -67,12 +81,17 @@ py::tuple cli(const std::vector<std::string>& args, py::object on_line) {
       rc = cli::run(args, out, err);
     } catch (const Interrupted&) {
       rc = 130;
-    } catch (const std::ios_base::failure&) {
+    } catch (const std::exception&) {
       rc = errbuf.interrupted ? 130 : 1;
     }
   }
+  if (errbuf.error_type != nullptr) {  // the callback's exception, as it was raised
+    PyErr_Restore(errbuf.error_type, errbuf.error_value, errbuf.error_traceback);
+    throw py::error_already_set();
+  }
+  // 130: the run stopped for Ctrl-C (its report written, marked interrupted).
   if (errbuf.interrupted || rc == 130) {
-    if (!PyErr_Occurred()) PyErr_SetInterrupt();
+    if (!PyErr_Occurred()) PyErr_SetNone(PyExc_KeyboardInterrupt);
     throw py::error_already_set();
   }
   return py::make_tuple(rc, out.str(), errbuf.text);

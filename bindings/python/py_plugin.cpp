@@ -103,6 +103,10 @@ class Plugin {
     const py::ssize_t n = centers.shape(0);
     if (radii.ndim() != 1 || radii.shape(0) != n) throw py::value_error("radii must be an (N,) array");
     if (levels.ndim() != 2 || levels.shape(0) != n) throw py::value_error("levels must be an (N, L) array");
+    if (velocities && (velocities->ndim() != 2 || velocities->shape(0) != n || velocities->shape(1) != 3))
+      throw py::value_error("velocities must be an (N, 3) array");
+    if (triangles && (triangles->ndim() != 2 || triangles->shape(0) != n || triangles->shape(1) != levels.shape(1)))
+      throw py::value_error("triangles must be an (N, L) array like levels");
     py::array_t<std::uint64_t> handles(n);
     std::vector<gzl_level> chain;
     for (py::ssize_t i = 0; i < n; ++i) {
@@ -120,7 +124,14 @@ class Plugin {
       d.level_count = static_cast<std::uint32_t>(chain.size());
       d.levels = chain.data();
       gzl_object o = GZL_NULL_OBJECT;
-      check(p_, gzl_add_object(p_, &d, &o));
+      const gzl_result r = gzl_add_object(p_, &d, &o);
+      if (r != GZL_SUCCESS) {
+        // All or nothing: the objects of this call registered so far are removed again.
+        std::string why = last_error(p_);  // "gazelod: desc->...": the object's index after the prefix
+        why.insert(why.rfind("gazelod: ", 0) == 0 ? 9 : 0, "objects[" + std::to_string(i) + "]: ");
+        for (py::ssize_t k = 0; k < i; ++k) gzl_remove_object(p_, handles.at(k));
+        throw py::value_error(why + " [" + gzl_result_to_string(r) + "]");
+      }
       handles.mutable_at(i) = o;
     }
     return handles;
@@ -192,6 +203,9 @@ class Plugin {
     d["gaze_suppressed"] = i.gaze_suppressed != 0, d["head_valid"] = i.head_valid != 0;
     d["gaze_direction_base"] = vec_dict(i.gaze_direction_base)["v"];
     d["eye_position_base_m"] = vec_dict(i.eye_position_base_m)["v"];
+    d["head_angular_velocity_rad_s"] = vec_dict(i.head_angular_velocity_rad_s)["v"];
+    d["head_linear_velocity_m_s"] = vec_dict(i.head_linear_velocity_m_s)["v"];
+    d["gaze_angular_velocity_in_head_rad_s"] = vec_dict(i.gaze_angular_velocity_in_head_rad_s)["v"];
     d["gaze_uncertainty_deg"] = i.gaze_uncertainty_deg, d["xi_cpd"] = i.xi_cpd;
     d["triangles_drawn"] = i.triangles_drawn, d["triangles_full"] = i.triangles_full;
     return d;

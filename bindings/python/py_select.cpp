@@ -39,6 +39,8 @@ PyObjects make_objects(const Doubles& centers, const Doubles& radii, const Doubl
     throw py::value_error("levels must be an (N, L) array with L >= 1 (level 0 = full detail)");
   if (velocities && (velocities->ndim() != 2 || velocities->shape(0) != n || velocities->shape(1) != 3))
     throw py::value_error("velocities must be an (N, 3) array");
+  if (triangles && (triangles->ndim() != 2 || triangles->shape(0) != n || triangles->shape(1) != levels.shape(1)))
+    throw py::value_error("triangles must be an (N, L) array like levels");
   lod::DetailKind k;
   if (kind == "geometric_error_m") k = lod::DetailKind::geometric_error_m;
   else if (kind == "removed_cycles_per_diameter") k = lod::DetailKind::removed_cycles_per_diameter;
@@ -75,6 +77,7 @@ lod::Viewer make_viewer(const py::kwargs& kw) {
   for (auto item : kw) {
     const std::string key = py::str(item.first);
     const py::handle val = item.second;
+    try {
     if (key == "gaze_direction") v.gaze_direction = vec3(py::cast<Doubles>(val), "gaze_direction");
     else if (key == "eye_position_m") v.eye_position_m = vec3(py::cast<Doubles>(val), "eye_position_m");
     else if (key == "eye_velocity_m_s") v.eye_velocity_m_s = vec3(py::cast<Doubles>(val), "eye_velocity_m_s");
@@ -93,6 +96,10 @@ lod::Viewer make_viewer(const py::kwargs& kw) {
       v.xi_cpd = lod::xi_cpd(*d);
     } else {
       throw py::type_error("select() got an unexpected viewer field '" + key + "'");
+    }
+    } catch (const py::cast_error&) {
+      throw py::type_error("select(): viewer field '" + key + "' has the wrong type (" +
+                           std::string(py::str(py::type::of(val).attr("__name__"))) + ")");
     }
   }
   if (const std::string e = lod::validate_viewer(v); !e.empty()) throw py::value_error("viewer: " + e);

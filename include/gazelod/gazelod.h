@@ -387,6 +387,11 @@ typedef struct gzl_frame_info {
   gzl_bool32 head_valid;
   gzl_vec3 gaze_direction_base; /* conditioned, predicted to the display time */
   gzl_vec3 eye_position_base_m;
+  /* The rest of the viewer the frame was decided for (lod/select.hpp's Viewer): the head's
+   * rotation and translation, and the eye's rotation in the head (a pursuit; zero without gaze). */
+  gzl_vec3 head_angular_velocity_rad_s;
+  gzl_vec3 head_linear_velocity_m_s;
+  gzl_vec3 gaze_angular_velocity_in_head_rad_s;
   double gaze_uncertainty_deg;
   double xi_cpd;            /* the display's limit used (cycles per degree) */
   uint64_t triangles_drawn; /* sum over enabled objects of their level's triangles */

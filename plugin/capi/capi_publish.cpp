@@ -80,6 +80,9 @@ void publish(gzl_plugin p, const FrameDecisions& d, std::int64_t t_ns) {
   i.head_valid = diag.head_valid;
   i.gaze_direction_base = to_gzl(diag.gaze_direction_world);
   i.eye_position_base_m = to_gzl(diag.eye_position_world);
+  i.head_angular_velocity_rad_s = to_gzl(diag.head_angular_velocity_rad_s);
+  i.head_linear_velocity_m_s = to_gzl(diag.head_linear_velocity_m_s);
+  i.gaze_angular_velocity_in_head_rad_s = to_gzl(diag.gaze_angular_velocity_in_head_rad_s);
   i.gaze_uncertainty_deg = diag.gaze_error_deg;
   i.xi_cpd = diag.xi_cpd;
 

@@ -19,11 +19,26 @@ from dataclasses import dataclass as _dataclass, field as _field
 import numpy as _np
 
 from . import _gazelod
-from ._gazelod import ObjectSet, Plugin, classify, read_trace, select
+from ._gazelod import ObjectSet, Plugin, abi_version, select, xi_cpd
 
 __version__ = _gazelod.__version__
-__all__ = ["ObjectSet", "Plugin", "RunResult", "classify", "compare", "hmds", "read_trace", "run", "select",
-           "stereo_views", "thresholds", "trace_stats"]
+__all__ = ["ObjectSet", "Plugin", "RunResult", "abi_version", "classify", "compare", "hmds", "read_trace", "run",
+           "select", "stereo_views", "thresholds", "trace_stats", "xi_cpd"]
+
+
+def read_trace(path, format="auto", lenient=False):
+    """A recording in any format `gazelod trace` reads, as a dict of numpy arrays: t_ns (int64),
+    valid (bool), direction (N, 3, head space), origin_m, confidence, and with head poses
+    head_valid, head_orientation_xyzw, head_position_m; 'format' the layout read. A bad file
+    raises ValueError naming the file, line and column."""
+    return _gazelod.read_trace(_os.fspath(path), format, lenient)
+
+
+def classify(path, format="auto"):
+    """The I-VT classification `gazelod trace stats` counts: per-sample label (0 fixation,
+    1 saccade, 2 invalid, 3 unknown) and velocity_deg_s, the saccade and fixation events, and
+    the stats (classified in the world where the trace has head poses)."""
+    return _gazelod.classify(_os.fspath(path), format)
 
 
 def _installed_runtime_manifest():
@@ -73,7 +88,7 @@ def thresholds(hmd=None, *, pixels=None, fov_deg=None):
 
 def trace_stats(path, format="auto"):
     """`gazelod trace stats --json` as a dict."""
-    out, _ = _command(["trace", "stats", str(path), "--format", format, "--json"])
+    out, _ = _command(["trace", "stats", _os.fspath(path), "--format", format, "--json"])
     return _json.loads(out)
 
 
@@ -149,13 +164,13 @@ def run(scenario=None, *, frames=None, hmd=None, trace=None, audit=True, criteri
         decisions = _os.path.join(tmp, "decisions.csv")
         args = ["run", "--no-render", "--out", folder, "--decisions", decisions]
         if scenario is not None:
-            args += ["--scenario", scenario]
+            args += ["--scenario", _os.fspath(scenario)]
         if frames is not None:
             args += ["--frames", int(frames)]
         if hmd is not None:
             args += ["--hmd", hmd]
         if trace is not None:
-            args += ["--trace", trace]
+            args += ["--trace", _os.fspath(trace)]
         if not audit:
             args.append("--no-audit")
         if criteria is not None:
@@ -174,8 +189,9 @@ def run(scenario=None, *, frames=None, hmd=None, trace=None, audit=True, criteri
     return RunResult(levels, names, frame, t_ns, summary)
 
 
-def compare(hmds, scenario=None, *, frames=None, progress=None):
-    """`gazelod compare` as a table: one dict per HMD (hand it to pandas.DataFrame)."""
+def compare(hmds, scenario=None, *, frames=None):
+    """`gazelod compare` as a table: one dict per HMD (hand it to pandas.DataFrame). Its runs
+    print no progress; Ctrl-C stops it (KeyboardInterrupt)."""
     with _tempfile.TemporaryDirectory(prefix="gazelod-compare-") as tmp:
         args = ["compare", "--json", "--out", tmp]
         for h in hmds:
@@ -184,12 +200,7 @@ def compare(hmds, scenario=None, *, frames=None, progress=None):
             args += ["--scenario", scenario]
         if frames is not None:
             args += ["--frames", int(frames)]
-        on_line, bar = _progress_printer(progress)
-        try:
-            out, _ = _command(args, on_line)
-        finally:
-            if bar is not None:
-                bar.close()
+        out, _ = _command(args)
     rows = []
     for e in _json.loads(out)["hmds"]:
         audit = e.get("audit", {})

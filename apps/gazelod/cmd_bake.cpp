@@ -28,7 +28,7 @@ namespace {
 
 struct Options {
   std::string input, output, output_argument, ratios, target_error;
-  int levels = 0;
+  int levels = -1;  // unset
   int profile = 0;
   int threads = -1;  // unset
   int fold_retries = -1;  // unset
@@ -54,7 +54,7 @@ std::string output_path(const Options& o) {
 }
 
 int run_clusters(const Options& o, const std::string& out, Io io) {
-  for (const auto& [set, name] : {std::pair{o.levels != 0, "--levels"}, {!o.ratios.empty(), "--ratios"},
+  for (const auto& [set, name] : {std::pair{o.levels != -1, "--levels"}, {!o.ratios.empty(), "--ratios"},
                                   {!o.target_error.empty(), "--target-error"},
                                   {o.profile != 0, "--profile"}})
     if (set) throw UsageError(std::string("--clusters: cannot be combined with ") + name);
@@ -114,9 +114,9 @@ int run_bake(const Options& o, Io io) {
                      "where retrying with the folds' surroundings locked did not help)");
   if (o.profile != 0 && o.profile != 6 && o.profile != 18)
     throw UsageError("--profile: must be 6 or 18 viewpoints, got " + std::to_string(o.profile));
-  if (o.levels != 0 && !o.ratios.empty()) throw UsageError("--levels: give either --levels or --ratios, not both");
+  if (o.levels != -1 && !o.ratios.empty()) throw UsageError("--levels: give either --levels or --ratios, not both");
   bake::BakeOptions opts;
-  if (o.levels != 0) {
+  if (o.levels != -1) {
     if (o.levels < 2 || o.levels > 16) throw UsageError("--levels: must be in [2, 16], got " + std::to_string(o.levels));
     opts.chain.ratios = bake::ratios_for_levels(o.levels);
   } else if (!o.ratios.empty()) {

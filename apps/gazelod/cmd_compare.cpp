@@ -16,7 +16,12 @@ namespace {
 
 int run_compare(const CompareOptions& o, bool json, Io io) {
   if (o.hmds.empty()) throw UsageError("--hmd: give at least one display preset (see gazelod hmds)");
-  for (const std::string& h : o.hmds) check_hmd(h);  // all names before any run
+  for (std::size_t i = 0; i < o.hmds.size(); ++i) {  // all names before any run
+    check_hmd(o.hmds[i]);
+    for (std::size_t j = 0; j < i; ++j)
+      if (o.hmds[j] == o.hmds[i])
+        throw UsageError("--hmd: '" + o.hmds[i] + "' twice (its runs would share one folder in --out)");
+  }
   std::vector<HmdComparison> results;
   for (const std::string& h : o.hmds) {
     if (!json) io.err << "gazelod compare: running " << h << "\n";

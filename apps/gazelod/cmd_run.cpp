@@ -18,12 +18,16 @@ EnabledCriteria parse_criteria(const std::string& text) {
   if (text.empty()) throw UsageError("--criteria: empty (use all, none or a comma list of size, eccentricity, velocity)");
   if (text == "none") return c;
   if (text == "all") return EnabledCriteria{};
-  std::istringstream in(text);
-  std::string item;
-  while (std::getline(in, item, ',')) {
-    if (item == "size") c.size = true;
-    else if (item == "eccentricity") c.eccentricity = true;
-    else if (item == "velocity") c.velocity = true;
+  // getline drops a trailing empty item ("size,"): split by hand so it is seen.
+  std::vector<std::string> items(1);
+  for (char ch : text) {
+    if (ch == ',') items.emplace_back();
+    else items.back().push_back(ch);
+  }
+  for (const std::string& item : items) {
+    bool* flag = item == "size" ? &c.size : item == "eccentricity" ? &c.eccentricity : item == "velocity" ? &c.velocity : nullptr;
+    if (flag && *flag) throw UsageError("--criteria: '" + item + "' twice in '" + text + "'");
+    if (flag) *flag = true;
     else if (item.empty())
       throw UsageError("--criteria: an empty item in '" + text + "'");
     else
@@ -88,6 +92,9 @@ const Registrar reg("run", "Run an OpenXR session with gaze-contingent LOD and w
     if (*gaze_source == "hid") {
       o.hid_gaze = true;
     } else if (gaze_source->rfind("trace:", 0) == 0 && gaze_source->size() > 6) {
+      if (!o.trace_path.empty() && o.trace_path != gaze_source->substr(6))
+        throw UsageError("--gaze trace:" + gaze_source->substr(6) + " and --trace " + o.trace_path +
+                         ": two traces; give one");
       o.trace_path = gaze_source->substr(6);
     } else if (!gaze_source->empty() && *gaze_source != "runtime") {
       throw UsageError("--gaze: '" + *gaze_source + "' (use runtime, hid or trace:FILE)");

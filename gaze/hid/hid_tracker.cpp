@@ -115,15 +115,17 @@ bool HidTracker::try_open() {
   hid_device* dev = path.empty() || !not_hidraw.empty() ? nullptr : hid_open_path(path.c_str());
   if (!dev) {
     if (!not_hidraw.empty() && !said_no_device_) {
+      set_status(not_hidraw);  // before the log line: whoever reads the line sees this status
       log(not_hidraw);
-      set_status(not_hidraw);
       said_no_device_ = true;
       return false;
     }
     if (!said_no_device_) {  // once per absence, not once per retry (an unplug said it already)
+      // The status first: a reader woken by the log line must see the state it announces
+      // (HidTrackerTest.NoDeviceAtStartIsLoggedOnceThenFound read it in between under ASan).
+      set_status(path.empty() ? "no device" : "cannot open " + path);
       log(path.empty() ? "no eye tracker (HID usage page 0x12) found; will keep looking"
                        : "cannot open " + path + "; will keep trying");
-      set_status(path.empty() ? "no device" : "cannot open " + path);
       said_no_device_ = true;
     }
     return false;
@@ -213,9 +215,9 @@ void HidTracker::close_device(bool unplugged) {
     path = state_.path;
   }
   said_no_device_ = true;  // the unplug line below is the one line for this absence
+  set_status("unplugged");  // before its log line, as above
   log("lost " + path + " (hid_read returned -1" + (err.empty() ? "" : ": " + err) +
       "); gaze unavailable until it is back");
-  set_status("unplugged");
 }
 
 void HidTracker::bad_report(std::uint64_t& counter, const std::string& line) {

@@ -128,6 +128,22 @@ pc_manifest=$("$pkgconfig" --variable=xr_runtime_json gazelod)
   fail "compiling the consumer with pkg-config's flags"
 "$work/gazelod_consumer_pc" "$scenario" || fail "the pkg-config-built consumer"
 
+step "installed Python package (when the binding was built)"
+pkg=$(ls -d "$prefix"/lib/python3*/dist-packages/gazelod 2>/dev/null | head -n1 || true)
+if [[ -n $pkg && -x /usr/bin/python3 ]]; then
+  # Found from the prefix alone: libgazelod.so.1 through the module's RUNPATH, the simulated
+  # runtime through the package's own search (XR_RUNTIME_JSON unset).
+  (cd "$work" && env -u XR_RUNTIME_JSON PYTHONPATH="$(dirname "$pkg")" /usr/bin/python3 -c "
+import gazelod
+assert gazelod.__file__.startswith('$prefix'), gazelod.__file__
+r = gazelod.run(frames=10, out='$work/py-run')
+assert r.decisions.shape[0] == 10, r.decisions.shape
+print('python: gazelod', gazelod.__version__, 'from', gazelod.__file__, '->', r.decisions.shape)
+") || fail "the installed Python package"
+else
+  echo "no Python package installed (binding not built): skipped"
+fi
+
 step "installed gazelod program"
 "$prefix/$bindir/gazelod" hmds > "$work/hmds.txt" || fail "$bindir/gazelod hmds"
 grep -q questpro "$work/hmds.txt" || fail "$bindir/gazelod hmds lists no questpro"

@@ -2,10 +2,15 @@
 #include "bake/gltf_load.hpp"
 
 #include "bake/bake_error.hpp"
+#include "bake/node_world.hpp"
+
+#include <glm/mat4x4.hpp>
+#include <glm/matrix.hpp>
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
@@ -81,6 +86,61 @@ bool read_uri(std::vector<unsigned char>* out, std::string* err, const std::stri
   return true;
 }
 
+// The scene graph both `bake` and `run --scene` rely on, checked once here: every index in
+// range, no cycle, every transform finite and invertible. bake wrote such files with exit 0
+// and run refused them (or, without these checks, would have drawn NaNs).
+void check_scene_graph(const std::string& path, const tinygltf::Model& m) {
+  const auto fail = [&](const std::string& where, const std::string& why) { throw BakeError(path + ": " + where + ": " + why); };
+  const std::size_t nodes = m.nodes.size();
+  for (std::size_t i = 0; i < nodes; ++i) {
+    const tinygltf::Node& n = m.nodes[i];
+    const std::string at = "/nodes/" + std::to_string(i);
+    if (n.mesh >= 0 && static_cast<std::size_t>(n.mesh) >= m.meshes.size())
+      fail(at + "/mesh", "no mesh " + std::to_string(n.mesh) + " (the file has " + std::to_string(m.meshes.size()) + ")");
+    for (std::size_t k = 0; k < n.children.size(); ++k)
+      if (n.children[k] < 0 || static_cast<std::size_t>(n.children[k]) >= nodes)
+        fail(at + "/children/" + std::to_string(k), "no node " + std::to_string(n.children[k]));
+    for (const std::vector<double>* v : {&n.matrix, &n.translation, &n.rotation, &n.scale})
+      for (double x : *v)
+        if (!std::isfinite(x)) fail(at, "a transform component is not finite");
+    if (n.rotation.size() == 4 && std::hypot(std::hypot(n.rotation[0], n.rotation[1]), std::hypot(n.rotation[2], n.rotation[3])) < 1e-6)
+      fail(at + "/rotation", "a zero quaternion is no rotation (glTF requires a unit one)");
+    const double det = glm::determinant(node_local_matrix(n));
+    if (!std::isfinite(det) || std::abs(det) < 1e-300)
+      fail(at, n.matrix.size() == 16 ? "matrix is singular (zero or collapsing scale): nothing could be drawn from it"
+                                     : "scale or rotation collapses the node (a zero scale or rotation)");
+  }
+  for (std::size_t s = 0; s < m.scenes.size(); ++s)
+    for (std::size_t k = 0; k < m.scenes[s].nodes.size(); ++k) {
+      const int r = m.scenes[s].nodes[k];
+      if (r < 0 || static_cast<std::size_t>(r) >= nodes)
+        fail("/scenes/" + std::to_string(s) + "/nodes/" + std::to_string(k), "no node " + std::to_string(r));
+    }
+  // A cycle: a node reached again while it is on the current path (depth-first, iterative so a
+  // deep chain cannot overflow the stack).
+  std::vector<std::uint8_t> state(nodes, 0);  // 0 unseen, 1 on the path, 2 done
+  for (std::size_t start = 0; start < nodes; ++start) {
+    if (state[start] != 0) continue;
+    std::vector<std::pair<std::size_t, std::size_t>> stack{{start, 0}};
+    state[start] = 1;
+    while (!stack.empty()) {
+      auto& [node, next] = stack.back();
+      const auto& children = m.nodes[node].children;
+      if (next == children.size()) {
+        state[node] = 2;
+        stack.pop_back();
+        continue;
+      }
+      const auto child = static_cast<std::size_t>(children[next++]);
+      if (state[child] == 1) fail("/nodes/" + std::to_string(node) + "/children", "node graph has a cycle through node " + std::to_string(child));
+      if (state[child] == 0) {
+        state[child] = 1;
+        stack.push_back({child, 0});
+      }
+    }
+  }
+}
+
 std::uint32_t le32(const unsigned char* p) {
   return std::uint32_t(p[0]) | std::uint32_t(p[1]) << 8 | std::uint32_t(p[2]) << 16 |
          std::uint32_t(p[3]) << 24;
@@ -152,6 +212,7 @@ LoadedGltf load_gltf(const std::string& path, GltfLoadOptions options) {
                     (err.empty() ? std::string("tinygltf rejected the file") : trim(err)));
   // tinygltf reads a mesh whose "primitives" is not an array as a mesh without primitives;
   // glTF requires at least one (and a bake would write an invalid mesh back).
+  check_scene_graph(path, out.model);
   for (std::size_t i = 0; i < out.model.meshes.size(); ++i)
     if (out.model.meshes[i].primitives.empty())
       throw BakeError(path + ": /meshes/" + std::to_string(i) +

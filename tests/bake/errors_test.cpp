@@ -1,5 +1,6 @@
 // Every bake error path gives a message naming the file and the place, and no output file.
 #include "bake/bake.hpp"
+#include "bake/cluster_bake.hpp"
 #include "bake/bake_error.hpp"
 #include "tests/bake/test_meshes.hpp"
 
@@ -214,6 +215,51 @@ TEST(BakeErrors, BadOptions) {
     EXPECT_HAS(std::string(e.what()), "ratios must decrease strictly");
   }
   EXPECT_FALSE(fs::exists(dir + "/out.glb"));
+}
+
+}  // namespace
+}  // namespace gazelod::bake
+
+namespace gazelod::bake {
+namespace {
+
+// The scene graph `run --scene` needs, checked by the loader both bakes share: the same
+// BakeError from chains and --clusters, and no output (they wrote such files with exit 0).
+TEST(BakeErrors, SceneGraphProblemsAreRefusedByBothBakes) {
+  struct GraphCase {
+    const char* name;
+    std::function<void(tinygltf::Model&)> edit;
+    const char* message;
+  };
+  const std::vector<GraphCase> cases = {
+      {"cycle", [](tinygltf::Model& m) {
+         m.nodes.push_back(m.nodes[0]);
+         m.nodes[0].children = {1};
+         m.nodes[1].children = {0};
+       }, "node graph has a cycle"},
+      {"child", [](tinygltf::Model& m) { m.nodes[0].children = {7}; }, "/nodes/0/children/0: no node 7"},
+      {"scene", [](tinygltf::Model& m) { m.scenes[0].nodes.push_back(9); }, "/scenes/0/nodes/1: no node 9"},
+      {"mesh", [](tinygltf::Model& m) { m.nodes[0].mesh = 5; }, "/nodes/0/mesh: no mesh 5"},
+      {"zero_scale", [](tinygltf::Model& m) { m.nodes[0].scale = {1.0, 0.0, 1.0}; }, "collapses the node"},
+      {"zero_matrix", [](tinygltf::Model& m) { m.nodes[0].matrix.assign(16, 0.0); }, "matrix is singular"},
+      // (No NaN case: JSON cannot carry one; a rotation of zeros collapses the node too.)
+      {"zero_rotation", [](tinygltf::Model& m) { m.nodes[0].rotation = {0.0, 0.0, 0.0, 0.0}; }, "a zero quaternion"},
+  };
+  for (const GraphCase& c : cases) {
+    EXPECT_HAS(bake_edited(std::string("graph_") + c.name, c.edit), c.message);
+    const std::string dir = testing::temp_dir(std::string("graph_clusters_") + c.name);
+    tinygltf::Model m = testing::single_mesh_model(testing::icosphere(2, 1.0));
+    c.edit(m);
+    const std::string in = testing::write_model(m, dir + "/in.glb");
+    std::string msg;
+    try {
+      bake_clusters_file(in, dir + "/out.glb", ClusterBakeOptions{});
+    } catch (const BakeError& e) {
+      msg = e.what();
+    }
+    EXPECT_HAS(msg, c.message);
+    EXPECT_FALSE(fs::exists(dir + "/out.glb")) << c.name;
+  }
 }
 
 }  // namespace

@@ -171,8 +171,22 @@ int run_session(const RunOptions& opt, Io io) {
     config.external_source = std::make_shared<gaze::hid::HidGazeSource>(std::move(hid));
   }
   auto plugin = LodPlugin::create(xrGetInstanceProcAddr, app->instance(), app->system(), app->session(), app->local_space(), config);
-  plugin->on_source_changed([&io, &opt](GazeSourceKind now, const std::string& why) {
-    if (!opt.quiet) io.err << "gazelod run: gaze source " << to_string(now) << ": " << why << "\n";
+  // Source changes: the first few said as they happen, the rest (every blink is one) counted
+  // and summarised at the end; none once the session winds down, when the eye-gaze action goes
+  // inactive by design (that was a false alarm at the end of every run).
+  constexpr int kSourceLinesShown = 8;
+  int source_changes = 0, source_changes_unshown = 0;
+  bool session_ending = false;
+  plugin->on_source_changed([&](GazeSourceKind now, const std::string& why) {
+    if (session_ending || opt.quiet) return;
+    if (++source_changes > kSourceLinesShown) {
+      ++source_changes_unshown;
+      return;
+    }
+    io.err << "gazelod run: gaze source " << to_string(now) << ": " << why << "\n";
+    if (source_changes == kSourceLinesShown)
+      io.err << "gazelod run: (further gaze source changes, blinks among them, are counted: the per-frame source "
+                "is in frames.csv)\n";
   });
   std::vector<std::vector<lod::LodLevel>> chains;
   std::vector<double> radii;
@@ -235,6 +249,8 @@ int run_session(const RunOptions& opt, Io io) {
 
   for (;;) {
     const bool keep_going = app->poll_events([&](XrSessionState s, XrTime t) {
+      if (s == XR_SESSION_STATE_STOPPING || s == XR_SESSION_STATE_EXITING || s == XR_SESSION_STATE_LOSS_PENDING)
+        session_ending = true;
       plugin->on_session_state(s, t);
       if (s == XR_SESSION_STATE_LOSS_PENDING)  // never end silently: say why the run stops
         io.err << "gazelod run: the runtime is losing the session (XR_SESSION_STATE_LOSS_PENDING); ending after "
@@ -248,12 +264,14 @@ int run_session(const RunOptions& opt, Io io) {
              << " frames: ending the session and writing the report of those (again to quit at once)\n";
       if (!exit_requested && app->session_running()) xrRequestExitSession(app->session());
       exit_requested = true;
+      session_ending = true;
       if (!app->session_running()) break;
     }
     if (!app->session_running()) continue;
     if (static_cast<std::int64_t>(frames.size()) >= planned && !exit_requested) {
       xrRequestExitSession(app->session());
       exit_requested = true;
+      session_ending = true;
     }
 
     const XrFrameState fs = app->wait_frame();
@@ -413,6 +431,9 @@ int run_session(const RunOptions& opt, Io io) {
                            : !ground_truth          ? "no ground truth: not the simulated runtime"
                                                     : "switched off with --no-audit";
   }
+  if (source_changes_unshown > 0)
+    io.err << "gazelod run: the gaze source changed " << source_changes_unshown << " more time"
+           << (source_changes_unshown == 1 ? "" : "s") << " (frames.csv has each frame's source)\n";
   print_summary(info, summary, io.out);
   write_report_files(opt.out_dir, info, summary, frames);
   io.out << "files: " << (opt.out_dir / "summary.json").string() << ", frames.csv, frames.svg"

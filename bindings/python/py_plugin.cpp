@@ -64,7 +64,7 @@ class Plugin {
   // views: a list of dicts {fov: (left, right, up, down) rad, width_px, height_px,
   // [position_in_head_m], [orientation_in_head_xyzw]}.
   Plugin(const py::list& views, bool disable_switch_policy, double gaze_accuracy_deg, double max_gaze_sample_age_s,
-         const std::string& hmd_preset, double frame_budget_ms) {
+         const std::string& hmd_preset, double frame_budget_ms, const std::vector<std::string>& disabled_criteria) {
     std::vector<gzl_view> v;
     for (const py::handle h : views) {
       const py::dict d = py::cast<py::dict>(h);
@@ -81,6 +81,12 @@ class Plugin {
     gzl_config c{};
     c.type = GZL_TYPE_CONFIG;
     c.disable_switch_policy = disable_switch_policy;
+    for (const std::string& name : disabled_criteria) {
+      if (name == "size") c.disabled_criteria |= GZL_CRITERION_SIZE;
+      else if (name == "eccentricity") c.disabled_criteria |= GZL_CRITERION_ECCENTRICITY;
+      else if (name == "velocity") c.disabled_criteria |= GZL_CRITERION_VELOCITY;
+      else throw py::value_error("disabled_criteria: '" + name + "' is not size, eccentricity or velocity");
+    }
     c.gaze_accuracy_deg = gaze_accuracy_deg;
     c.max_gaze_sample_age_s = max_gaze_sample_age_s;
     c.frame_budget_ms = frame_budget_ms;
@@ -245,9 +251,10 @@ void register_plugin(py::module_& m) {
     return py::make_tuple(GZL_VERSION_MAJOR(v), GZL_VERSION_MINOR(v), GZL_VERSION_PATCH(v));
   });
   py::class_<Plugin>(m, "Plugin")
-      .def(py::init<const py::list&, bool, double, double, const std::string&, double>(), py::arg("views"),
-           py::arg("disable_switch_policy") = false, py::arg("gaze_accuracy_deg") = 0.0,
-           py::arg("max_gaze_sample_age_s") = 0.0, py::arg("hmd_preset") = "", py::arg("frame_budget_ms") = 0.0)
+      .def(py::init<const py::list&, bool, double, double, const std::string&, double, const std::vector<std::string>&>(),
+           py::arg("views"), py::arg("disable_switch_policy") = false, py::arg("gaze_accuracy_deg") = 0.0,
+           py::arg("max_gaze_sample_age_s") = 0.0, py::arg("hmd_preset") = "", py::arg("frame_budget_ms") = 0.0,
+           py::arg("disabled_criteria") = std::vector<std::string>{})
       .def("add_objects", &Plugin::add_objects, py::arg("centers"), py::arg("radii"), py::arg("levels"),
            py::arg("metric") = "geometric_error_m", py::arg("velocities") = py::none(), py::arg("triangles") = py::none())
       .def("remove", &Plugin::remove, py::arg("handles"))

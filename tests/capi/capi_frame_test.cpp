@@ -160,6 +160,42 @@ TEST(CApiFrames, FovealConeInTheViewsImage) {
   gzl_destroy(p);
 }
 
+// gzl_config.disabled_criteria: each criterion switched off may no longer coarsen a level. A
+// row fixated at its middle: without eccentricity the side objects are drawn like the middle
+// one; without size (and eccentricity) nothing is coarsened for a still head; bits other than
+// the three criteria are refused by name.
+TEST(CApiFrames, DisabledCriteriaNoLongerCoarsen) {
+  auto row_levels = [](uint32_t disabled) {
+    gzl_config c{};
+    c.type = GZL_TYPE_CONFIG;
+    c.disabled_criteria = disabled;
+    gzl_plugin p = make_data_plugin(&c);
+    EXPECT_NE(p, nullptr) << last_error(nullptr);
+    std::vector<gzl_object> row(3);
+    for (int i = 0; i < 3; ++i) {
+      gzl_object_desc d = object_at(-30.0 + 30.0 * i, 0, 2.0);
+      EXPECT_EQ(gzl_add_object(p, &d, &row[i]), GZL_SUCCESS);
+    }
+    fixate(p, 0, 0, 90);
+    std::vector<uint8_t> l(3);
+    EXPECT_EQ(gzl_get_levels(p, 3, row.data(), l.data()), GZL_SUCCESS);
+    gzl_destroy(p);
+    return l;
+  };
+  const std::vector<uint8_t> all = row_levels(0);
+  EXPECT_LT(all[1], all[0]);
+  EXPECT_LT(all[1], all[2]);
+  const std::vector<uint8_t> no_ecc = row_levels(GZL_CRITERION_ECCENTRICITY);
+  EXPECT_EQ(no_ecc, std::vector<uint8_t>(3, all[1])) << "the sides drawn like the fixated object";
+  EXPECT_EQ(row_levels(GZL_CRITERION_SIZE | GZL_CRITERION_ECCENTRICITY), std::vector<uint8_t>(3, 0))
+      << "a still head and still objects: only size and eccentricity could coarsen";
+  gzl_config bad{};
+  bad.type = GZL_TYPE_CONFIG;
+  bad.disabled_criteria = 8;
+  EXPECT_EQ(make_data_plugin(&bad), nullptr);
+  EXPECT_NE(last_error(nullptr).find("config->disabled_criteria"), std::string::npos) << last_error(nullptr);
+}
+
 // One view (a desktop or mono configuration) and quad views (XR_VARJO_quad_views: a primary pair
 // and a denser inset pair): the display's limit is the densest view's, every view has its cone.
 TEST(CApiFrames, MonoAndQuadViews) {

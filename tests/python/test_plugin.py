@@ -148,3 +148,23 @@ def test_abi_version():
 def test_package_exports_abi_version_and_xi_cpd():
     assert gazelod.abi_version()[0] == 1
     assert gazelod.xi_cpd("questpro") == 10.0
+
+
+def test_disabled_criteria_by_name():
+    """Without eccentricity, a row fixated at its middle is drawn alike; an unknown name raises."""
+    def row_levels(disabled):
+        p = gazelod.Plugin(gazelod.stereo_views("questpro"), disabled_criteria=disabled)
+        yaws = np.radians([-30.0, 0.0, 30.0])
+        centers = np.stack([-2 * np.sin(yaws), np.zeros(3), -2 * np.cos(yaws)], axis=1)
+        h = p.add_objects(centers, np.full(3, 0.1), np.tile([0, 0.0005, 0.002, 0.008], (3, 1)))
+        for f in range(1, 91):
+            t = f * 11_111_111
+            p.push_gaze(np.array([t - 5_000_000]), np.array([0.0, 0.0, -1.0]))
+            p.begin_frame(t)
+        return p.levels(h)
+    everything = row_levels([])
+    assert everything[1] < everything[0] and everything[1] < everything[2]
+    no_ecc = row_levels(["eccentricity"])
+    assert list(no_ecc) == [everything[1]] * 3
+    with pytest.raises(ValueError, match="disabled_criteria: 'colour'"):
+        gazelod.Plugin(gazelod.stereo_views("questpro"), disabled_criteria=["colour"])

@@ -16,6 +16,9 @@ constexpr double kSPerNs = 1e-9;
 constexpr std::size_t kMinVelocitySamples = 3;  // a slope from fewer is a two-sample difference
 constexpr std::size_t kMinPursuitSamples = 5;   // residuals need a few degrees of freedom
 constexpr double kNoiseTau_s = 2.0;              // averaging time of the long-run noise level
+// The carried test's window: most fixations are shorter (Rayner 1998); a long one is judged on
+// its latest second, so a head that stops moving is noticed.
+constexpr std::int64_t kCarriedWindowNs = 1'000'000'000;
 
 bool finite3(const glm::dvec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
@@ -68,6 +71,8 @@ ConditionerConfig sanitized(ConditionerConfig c) {
   c.dispersion_window_ns = pos_ns(c.dispersion_window_ns, d.dispersion_window_ns);
   c.dispersion_threshold_deg = pos(c.dispersion_threshold_deg, d.dispersion_threshold_deg);
   c.pursuit_significance = nonneg(c.pursuit_significance, d.pursuit_significance);
+  c.saccade_significance = nonneg(c.saccade_significance, d.saccade_significance);
+  c.carried_evidence = nonneg(c.carried_evidence, d.carried_evidence);
   c.pursuit_exit_fraction = std::isfinite(c.pursuit_exit_fraction) && c.pursuit_exit_fraction >= 0.0
                                 ? std::min(c.pursuit_exit_fraction, 1.0)
                                 : d.pursuit_exit_fraction;
@@ -214,7 +219,7 @@ void GazeConditioner::push(const GazeSample& sample, const glm::dquat& head_at_s
     return;
   }
   last_head_ = q;
-  push_valid(sample.t_ns, world);
+  push_valid(sample.t_ns, world, d);
 }
 
 void GazeConditioner::push_invalid(std::int64_t t_ns) noexcept {
@@ -226,9 +231,38 @@ void GazeConditioner::push_invalid(std::int64_t t_ns) noexcept {
   motion_ = EyeMotion::loss;  // est_world_ is held
   omega_world_ = glm::dvec3(0.0);
   speed_deg_s_ = 0.0;
+  carried_ = carried_prior_ = false;
 }
 
-void GazeConditioner::push_valid(std::int64_t t_ns, const glm::dvec3& world) noexcept {
+double GazeConditioner::carried_evidence(std::size_t m, glm::dvec3& head_mean) const noexcept {
+  m = std::min(m, segment_count_);
+  if (m == 0) return 0.0;
+  // Residual sum of squares about each frame's mean direction, in tangent-plane angles.
+  const auto rss = [&](auto pick, glm::dvec3& mean) {
+    glm::dvec3 sum(0.0);
+    for (std::size_t i = 0; i < m; ++i) sum += pick(newest(i));
+    if (!normalized_dir(sum, mean)) return std::numeric_limits<double>::infinity();
+    glm::dvec3 e1, e2;
+    tangent_basis(mean, e1, e2);
+    glm::dvec2 s(0.0), ss(0.0);
+    for (std::size_t i = 0; i < m; ++i) {
+      const glm::dvec2 a = angular_offset_rad(pick(newest(i)), mean, e1, e2);
+      s += a;
+      ss += a * a;
+    }
+    const double n = static_cast<double>(m);
+    return std::max(0.0, ss.x - s.x * s.x / n) + std::max(0.0, ss.y - s.y * s.y / n);
+  };
+  glm::dvec3 world_mean;
+  const double in_world = rss([](const Entry& e) { return e.world; }, world_mean);
+  const double in_head = rss([](const Entry& e) { return e.head; }, head_mean);
+  if (m < kMinPursuitSamples) return 0.0;  // too few for residuals: no evidence either way
+  const double var = std::max(noise_var_, 1e-12);
+  const double evidence = (in_world - in_head) / var;
+  return std::isfinite(evidence) ? evidence : 0.0;
+}
+
+void GazeConditioner::push_valid(std::int64_t t_ns, const glm::dvec3& world, const glm::dvec3& head) noexcept {
   if (have_time_ && sat_sub(t_ns, last_t_ns_) > config_.max_gap_ns) {
     // A gap: no fit spans it, and the eye may have moved meanwhile (as after a loss).
     segment_count_ = 0;
@@ -236,10 +270,11 @@ void GazeConditioner::push_valid(std::int64_t t_ns, const glm::dvec3& world) noe
     fixation_n_ = 0.0;
     motion_ = EyeMotion::loss;
     omega_world_ = glm::dvec3(0.0);
+    carried_ = carried_prior_ = false;
   }
   const double dt_s =
       segment_count_ > 0 ? static_cast<double>(sat_sub(t_ns, newest(0).t_ns)) * kSPerNs : 0.0;
-  ring_[head_] = Entry{t_ns, world};
+  ring_[head_] = Entry{t_ns, world, head};
   head_ = (head_ + 1) % kCapacity;
   segment_count_ = std::min(segment_count_ + 1, kCapacity);
   phase_count_ = std::min(phase_count_ + 1, kCapacity);
@@ -269,8 +304,12 @@ void GazeConditioner::push_valid(std::int64_t t_ns, const glm::dvec3& world) noe
   const double v_deg_s = std::hypot(rel.x, rel.y) * kDegPerRad;
   // A fit over much less than the window (a young segment at a high rate) is too noisy.
   const double v_window_s = static_cast<double>(config_.velocity_window_ns) * kSPerNs;
-  if (fv.ok && fv.n >= kMinVelocitySamples && fv.span_s >= 0.5 * v_window_s &&
-      v_deg_s > config_.saccade_threshold_deg_s) {
+  // The fitted speed's standard error per axis under the long-run noise level.
+  const double v_se_deg_s = fv.ctt > 0.0 ? std::sqrt(noise_var_ / fv.ctt) * kDegPerRad : 0.0;
+  const double v_threshold = std::max(config_.saccade_threshold_deg_s, config_.saccade_significance * v_se_deg_s);
+  if (fv.ok && fv.n >= kMinVelocitySamples && fv.span_s >= 0.5 * v_window_s && v_deg_s > v_threshold) {
+    if (prev == EyeMotion::fixation) carried_prior_ = carried_;  // the next fixation starts so
+    carried_ = false;
     // No estimate yet (the stream began in a saccade): the oldest sample of the fit, where
     // the saccade started from.
     if (prev != EyeMotion::saccade) saccade_start_t_ns_ = t_ns;
@@ -313,6 +352,7 @@ void GazeConditioner::push_valid(std::int64_t t_ns, const glm::dvec3& world) noe
                        speed * fd.span_s * kDegPerRad >= f * config_.dispersion_threshold_deg &&
                        speed > f * config_.pursuit_significance * se;
   if (pursuit) {
+    carried_ = false;
     const glm::dvec3 om = fd.omega();
     if (prev != EyeMotion::pursuit) {
       omega_world_ = om;
@@ -345,6 +385,20 @@ void GazeConditioner::push_valid(std::int64_t t_ns, const glm::dvec3& world) noe
       if (normalized_dir(slerp_direction(est_world_, world, std::clamp(a, 0.0, 1.0)), next))
         est_world_ = next;
     }
+    // Still in the head rather than in the world (the eyes carried by a moving head)? The
+    // evidence grows with the phase, so it is taken over the whole fixation (up to
+    // kCarriedWindow). A fixation after a carried one starts carried (the eyes keep their
+    // behaviour across a saccade) and a carried fixation stays so until the samples favour
+    // the world (evidence below -carried_evidence / 4): a VOR fixation misread as carried
+    // for the ~100 ms this takes is within the switch policy's coarsening hold.
+    std::size_t w = 0;
+    while (w < phase_count_ && t_ns - newest(w).t_ns <= kCarriedWindowNs) ++w;
+    glm::dvec3 head_mean = est_head_;
+    const double evidence = carried_evidence(w, head_mean);
+    if (prev != EyeMotion::fixation) carried_ = false;
+    carried_ = w >= kMinPursuitSamples &&
+               evidence > config_.carried_evidence * (carried_ ? config_.pursuit_exit_fraction : 1.0);
+    if (carried_) est_head_ = head_mean;
     motion_ = EyeMotion::fixation;
     omega_world_ = glm::dvec3(0.0);
     speed_deg_s_ = 0.0;
@@ -396,10 +450,22 @@ ConditionedGaze GazeConditioner::at(std::int64_t display_t_ns,
       break;
     }
     case EyeMotion::saccade:
-      // Held: the eye is already angle(held, newest) away and still moving.
-      speed_term_deg = angle_between_rad(est_world_, last_raw_world_) * kDegPerRad + speed_deg_s_ * h_s;
+      // Following: where the eye last was, and how far it may have gone since. Held: the
+      // eye is already angle(held, newest) away and still moving.
+      if (config_.saccade_follow_newest) {
+        dir = last_raw_world_;
+        speed_term_deg = speed_deg_s_ * h_s;
+      } else {
+        speed_term_deg = angle_between_rad(est_world_, last_raw_world_) * kDegPerRad + speed_deg_s_ * h_s;
+      }
       break;
     case EyeMotion::fixation:
+      // Carried: the eye holds its place in the head, which has turned since the sample.
+      if (carried_) {
+        glm::dvec3 next;
+        if (normalized_dir(q * est_head_, next)) dir = next;
+      }
+      break;
     case EyeMotion::loss:
       break;
   }
@@ -424,6 +490,17 @@ ConditionedGaze GazeConditioner::at(std::int64_t display_t_ns,
   g.valid = true;
   g.motion = motion_;
   if (motion_ == EyeMotion::pursuit && finite3(omega_world_)) g.angular_velocity_world_rad_s = omega_world_;
+  if (motion_ == EyeMotion::fixation && carried_) {
+    g.carried = true;
+    // The head's rotation from the newest sample to the display time (exact poses, no noise).
+    const glm::dquat dq = q * glm::conjugate(last_head_);
+    const double s = glm::length(glm::dvec3(dq.x, dq.y, dq.z));
+    const double angle = 2.0 * std::atan2(s, std::fabs(dq.w));
+    if (h_s > 1e-3 && s > 1e-12 && std::isfinite(angle)) {
+      const glm::dvec3 axis = glm::dvec3(dq.x, dq.y, dq.z) / s * (dq.w < 0.0 ? -1.0 : 1.0);
+      g.angular_velocity_world_rad_s = axis * (angle / h_s);
+    }
+  }
   g.suppressed = motion_ == EyeMotion::saccade || motion_ == EyeMotion::loss ||
                  (have_saccade_ &&
                   sat_sub(display_t_ns, saccade_last_t_ns_) <= config_.post_saccade_suppression_ns);

@@ -16,19 +16,25 @@
 //     long-run noise level in fixation, whichever is larger, so noise alone does not read as
 //     pursuit. Once in pursuit, both tests use pursuit_exit_fraction of their thresholds.
 // A fixation on a world point held through a head turn (vestibulo-ocular reflex) is therefore
-// a fixation. Invalid samples are a blink / loss.
+// a fixation. A fixation whose samples hold still in the head rather than in the world (the
+// eyes carried by a moving head) is told apart by comparing the two models' residuals over
+// the phase (a likelihood ratio against the noise level, carried_evidence): it is then
+// `carried`, its direction the mean eye-in-head direction turned by the head at the display
+// time. Invalid samples are a blink / loss.
 //
 // Output: fixation -> the running mean of the fixation's world directions (exponential once
 // older than fixation_smoothing_tau), held to the display time; pursuit -> the fitted line at
 // the newest sample, predicted to the display time at the fitted angular velocity (at most
-// prediction_horizon_max ahead); saccade -> the estimate from before the saccade, held,
-// suppressed; loss -> held, suppressed, valid for at most loss_hold_max after the last valid
-// sample. The angular velocity is non-zero only in pursuit. With h = display time - newest
+// prediction_horizon_max ahead); carried fixation -> the eye-in-head mean turned by the head
+// at the display time; saccade -> the newest sample (saccade_follow_newest; else the estimate
+// from before the saccade, held), suppressed; loss -> held, suppressed, valid for at most
+// loss_hold_max after the last valid sample. The angular velocity is non-zero only in pursuit
+// and carried fixations. With h = display time - newest
 // valid sample (>= 0) and H = prediction_horizon_max, the uncertainty is
 //   clamp(sqrt(accuracy^2 + (age_growth * h)^2 + s^2), accuracy, max_uncertainty)
 // with the speed term s = 0 in fixation and loss, |omega| (velocity_error_fraction * min(h, H)
-// + max(0, h - H)) in pursuit, and angle(held estimate, newest sample) + speed * h in a
-// saccade; max_uncertainty when !valid. GazeSample::confidence is not used (sources mark
+// + max(0, h - H)) in pursuit, and speed * h in a saccade (plus angle(held estimate, newest
+// sample) when it is held); max_uncertainty when !valid. GazeSample::confidence is not used (sources mark
 // unusable samples invalid).
 //
 // Fixed capacity, no allocation after construction: the history is a ring of kCapacity
@@ -68,6 +74,13 @@ struct ConditionerConfig {
   // be crossed every few seconds, 70 practically never), while saccades of 2 deg and more
   // peak above 100 deg/s (Bahill, Clark & Stark 1975).
   double saccade_threshold_deg_s = 70.0;
+  // ... and at least this many standard errors of the fitted speed under the measured noise
+  // level (the same t test as pursuit_significance): a noisier tracker raises the effective
+  // threshold, so noise alone does not read as saccades. At 1.4 deg and 227 Hz the 50 ms fit
+  // has ~30 deg/s of noise per axis and crossed 70 deg/s several times a second (each false
+  // saccade suppressing, re-centring and widening the estimate: measured with gazelod eval
+  // family as level switches in fixations at five times the true gaze's own rate).
+  double saccade_significance = 5.0;
   // Window of the saccade-velocity fit, widened to 3 samples at low rates. The velocity noise
   // of a least-squares slope is sigma * sqrt(12 / (n T^2)) (a Savitzky-Golay first derivative,
   // Savitzky & Golay 1964): Olsen's (2012) 20 ms gives ~30 deg/s per axis at 0.5 deg and
@@ -90,6 +103,13 @@ struct ConditionerConfig {
   // near the limits does not toggle pursuit and fixation every frame (chosen here, by
   // simulation of 10 deg/s pursuit at 60-120 Hz; no literature value).
   double pursuit_exit_fraction = 0.7;
+  // A fixation is carried by the head when the samples' spread about a constant world
+  // direction exceeds their spread about a constant eye-in-head direction by this many noise
+  // variances (per axis): twice the log-likelihood ratio of the two models with Gaussian
+  // noise, so 12 means odds of e^6 (~400:1). A head still within the noise leaves the two
+  // equal and the fixation in the world (the safer reading: no retinal slip assumed). Left at
+  // pursuit_exit_fraction of it once carried.
+  double carried_evidence = 12.0;
   // A larger gap between samples splits the history (no fit spans it): Olsen's (2012) gap
   // fill-in limit of 75 ms, shorter than a blink; 30 Hz with one sample skipped still fits.
   std::int64_t max_gap_ns = 75'000'000;
@@ -135,6 +155,14 @@ struct ConditionerConfig {
   // measured ~5-10% (tests/gaze/gaze_conditioner_test.cpp) for velocity changes within the
   // horizon (chosen here, as in the earlier GazePredictor).
   double velocity_error_fraction = 0.25;
+  // In a saccade, centre the estimate on the newest sample (where the eye last was, nearer the
+  // landing) with the distance it may still travel (speed x age) as the speed term, rather
+  // than holding the estimate from before the saccade widened by the whole distance travelled.
+  // Measured with gazelod eval family on the tuning seeds (1000-1039): the held, widened cone
+  // refined every object within the saccade's amplitude of its start and coarsened them again
+  // after it, mostly outside the true suppression with a late tracker (switches p90 1.14 ->
+  // 0.86 per object-second, median triangles / oracle 1.26 -> 1.23, degradations unchanged).
+  bool saccade_follow_newest = true;
   // Cap: the eye-in-head oculomotor range is about +-50 deg (Guitton & Volle 1987), so
   // beyond that the estimate carries no information.
   double max_uncertainty_deg = 50.0;
@@ -148,7 +176,11 @@ struct ConditionedGaze {
   EyeMotion motion = EyeMotion::loss;
   glm::dvec3 direction_world{0, 0, -1};  // predicted to the display time, unit
   glm::dvec3 direction_head{0, 0, -1};   // the same in the head at the display time (head_at_display^-1 * world)
-  glm::dvec3 angular_velocity_world_rad_s{0.0};  // eye-in-world; exactly 0 unless motion == pursuit
+  glm::dvec3 angular_velocity_world_rad_s{0.0};  // eye-in-world; 0 in a fixation held in the world
+  // A fixation of the eye in the head while the head moves (fixation, carried): the gaze moves
+  // with the head, the eye-in-head velocity is 0. angular_velocity_world is then the head's
+  // rotation from the newest sample to the display time.
+  bool carried = false;
   double uncertainty_deg = 0.0;  // angular uncertainty of direction_world (accuracy, age, speed), capped
   std::int64_t sample_t_ns = 0;  // newest valid sample used (0: none)
   bool suppressed = false;  // in a saccade or blink/loss, or within post_saccade_suppression after a saccade (false when !valid)
@@ -177,11 +209,15 @@ class GazeConditioner {
   struct Entry {
     std::int64_t t_ns = 0;
     glm::dvec3 world{0.0, 0.0, -1.0};
+    glm::dvec3 head{0.0, 0.0, -1.0};  // the eye-in-head direction of the same sample
   };
   struct Fit;
   Fit fit_newest(std::size_t count) const noexcept;
   const Entry& newest(std::size_t back) const noexcept;
-  void push_valid(std::int64_t t_ns, const glm::dvec3& world) noexcept;
+  void push_valid(std::int64_t t_ns, const glm::dvec3& world, const glm::dvec3& head) noexcept;
+  // Twice the log-likelihood ratio of "still in the head" over "still in the world" for the
+  // newest m samples, in noise variances; and the eye-in-head mean.
+  double carried_evidence(std::size_t m, glm::dvec3& head_mean) const noexcept;
   void push_invalid(std::int64_t t_ns) noexcept;
 
   ConditionerConfig config_;
@@ -206,6 +242,9 @@ class GazeConditioner {
   // The estimate at the newest valid sample: fixation mean, pursuit fit, or held.
   glm::dvec3 est_world_{0.0, 0.0, -1.0};
   glm::dvec3 omega_world_{0.0};  // pursuit only
+  bool carried_ = false;         // fixation: still in the head, not in the world
+  bool carried_prior_ = false;   // the fixation before the latest saccade was carried
+  glm::dvec3 est_head_{0.0, 0.0, -1.0};  // carried: the eye-in-head mean
   double speed_deg_s_ = 0.0;     // eye-in-world speed of the current motion (0 in fixation)
   double fixation_n_ = 0.0;      // samples in the fixation mean so far
   double noise_var_ = 0.0;       // long-run residual variance per axis in fixation, rad^2 (from precision_deg at first)

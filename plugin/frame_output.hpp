@@ -66,6 +66,7 @@ struct FrameDiagnostics {
   // is suppressed now (saccade, blink, shortly after a saccade), which releases coarsening.
   gaze::EyeMotion eye_motion = gaze::EyeMotion::loss;
   bool gaze_suppressed = false;
+  bool gaze_carried = false;  // a fixation carried by the moving head (ConditionedGaze::carried)
   // Samples the conditioning refused so far (NaN, zero length, backwards in time), all sources.
   std::int64_t gaze_bad_samples = 0;
   // The gaze's angular uncertainty (deg: the source's accuracy, grown with the sample's age

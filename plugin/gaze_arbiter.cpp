@@ -48,12 +48,21 @@ ArbiterResult GazeArbiter::update(std::int64_t t_ns) {
   auto must_report = [&](GazeSourceKind s) { return s != current_ || !reported_initial_ || newly_distrusted; };
 
   if (primary_ && !primary_distrusted_) {
-    if (auto s = usable(primary_->sample_at(t_ns))) {
+    const std::optional<gaze::GazeSample> raw = primary_->sample_at(t_ns);
+    if (auto s = usable(raw)) {
       primary_ever_ = true;
+      last_usable_t_ns_ = t_ns;
       result.source = config_.primary_kind;
       result.sample = *s;
       if (must_report(result.source))
         switch_to(config_.primary_kind, primary_->name() + " eye gaze delivered", false);
+      return result;
+    }
+    // A blink: bridged with the invalid samples themselves (ArbiterConfig::blink_bridge_ns).
+    if (primary_ever_ && raw && !raw->valid && current_ == config_.primary_kind &&
+        t_ns - last_usable_t_ns_ <= config_.blink_bridge_ns) {
+      result.source = config_.primary_kind;
+      result.sample = *raw;
       return result;
     }
     // Never delivered within the timeout: the runtime advertises gaze it does not have.

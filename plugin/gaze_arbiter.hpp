@@ -18,6 +18,14 @@ struct ArbiterConfig {
   // states) before it is distrusted for the rest of the session (ns). Gaps after it has
   // delivered (blinks, lost tracking) fall back only while they last.
   std::int64_t silence_timeout_ns = 1'000'000'000;
+  // A source that has delivered and now marks its samples invalid (a blink, a short loss)
+  // stays the source this long after its last usable sample: the invalid samples go to the
+  // conditioner, which holds its estimate as suppressed (blink suppression) rather than the
+  // head-fixed fallback widening the cone to every object in a blink and back after it
+  // (measured with gazelod eval family: a refinement and a coarsening per object per blink,
+  // outside the true suppression because the tracker reports the blink late). The plugin sets
+  // it to the conditioner's loss_hold_max.
+  std::int64_t blink_bridge_ns = 300'000'000;
   // What the primary source is (the runtime's eye gaze, or samples the application pushes),
   // and why there is none when it is null ("" = none was asked for).
   GazeSourceKind primary_kind = GazeSourceKind::openxr;
@@ -73,6 +81,7 @@ class GazeArbiter {
   bool focused_ = false;
   std::int64_t focused_t_ns_ = 0;
   bool primary_ever_ = false;
+  std::int64_t last_usable_t_ns_ = 0;  // frame time of the primary's last usable sample
   bool primary_distrusted_ = false;
   bool restart_pending_ = false;
 };

@@ -37,6 +37,7 @@ void LodCore::set_primary(gaze::GazeSource* primary, GazeSourceKind kind, std::s
   primary_kind_ = kind;
   ArbiterConfig ac;
   ac.silence_timeout_ns = static_cast<std::int64_t>(config_.gaze_silence_timeout_s * 1e9);
+  ac.blink_bridge_ns = config_.conditioning.loss_hold_max_ns;
   ac.primary_kind = kind;
   ac.why_no_primary = std::move(why_none);
   arbiter_ = std::make_unique<GazeArbiter>(primary, config_.external_source.get(), ac);
@@ -114,6 +115,7 @@ void LodCore::condition_gaze(const HeadMotion& head, std::int64_t t_ns, lod::Vie
   glm::dvec3 gaze_omega_world(0.0);
   double error_deg = config_.head_fixed_cone_deg;
   bool suppressed = false;
+  bool carried = false;
   diag_.eye_motion = gaze::EyeMotion::loss;
   GazeSourceKind used = GazeSourceKind::head_fixed;
   gaze_read_.present = false;
@@ -137,6 +139,7 @@ void LodCore::condition_gaze(const HeadMotion& head, std::int64_t t_ns, lod::Vie
       gaze_omega_world = cg.angular_velocity_world_rad_s;
       error_deg = cg.uncertainty_deg;
       suppressed = cg.suppressed;
+      carried = cg.carried;
       diag_.eye_motion = cg.motion;
     }
   } else {
@@ -145,12 +148,14 @@ void LodCore::condition_gaze(const HeadMotion& head, std::int64_t t_ns, lod::Vie
   // The selection takes the eye-in-head rotation: the eye's rotation in the world minus the
   // head's (a fixation held through a head turn counter-rotates the eye).
   v.gaze_angular_velocity_in_head_rad_s = gaze_omega_world - v.head_angular_velocity_rad_s;
-  if (used == GazeSourceKind::head_fixed) v.gaze_angular_velocity_in_head_rad_s = glm::dvec3(0.0);
+  // A fixation carried by the head (no VOR): the eye holds still in the head.
+  if (used == GazeSourceKind::head_fixed || carried) v.gaze_angular_velocity_in_head_rad_s = glm::dvec3(0.0);
   v.gaze_direction = gaze_world;
   v.tracker_error_deg = error_deg;
   frame_.gaze_source = used;
   frame_.gaze_valid = used != GazeSourceKind::head_fixed;
   diag_.gaze_suppressed = suppressed;
+  diag_.gaze_carried = carried;
   diag_.gaze_direction_head = gaze_head;
   diag_.gaze_error_deg = error_deg;
   (void)head;

@@ -174,7 +174,13 @@ std::optional<gaze::GazeSample> OpenXrGazeSource::sample_at(std::int64_t t_ns) {
       XR_SPACE_LOCATION_ORIENTATION_VALID_BIT | XR_SPACE_LOCATION_ORIENTATION_TRACKED_BIT;
   if ((loc.locationFlags & need) != need) {
     status_ = ever_delivered_ ? "gaze not tracked (blink or lost)" : "runtime has not delivered gaze";
-    return std::nullopt;
+    if (!ever_delivered_) return std::nullopt;
+    // A blink or a short loss: an invalid sample, which the arbiter bridges and the conditioner
+    // holds through (gaze_arbiter.hpp, blink_bridge_ns).
+    gaze::GazeSample blink;
+    blink.valid = false;
+    blink.t_ns = sample_time.time > 0 ? static_cast<std::int64_t>(sample_time.time) : t_ns;
+    return blink;
   }
   const XrQuaternionf& q = loc.pose.orientation;
   const glm::dquat orientation(q.w, q.x, q.y, q.z);

@@ -100,8 +100,10 @@ std::optional<gaze::GazeSample> PushedGazeSource::sample_at(std::int64_t t_ns) {
     const std::optional<glm::dquat> head = p.has_head_orientation ? std::optional<glm::dquat>(p.head_orientation)
                                                                    : heads_.at(p.sample.t_ns);
     if (!p.sample.valid) {
+      // A blink: handed on as invalid, so the plugin holds its estimate through it as it does
+      // for the runtime's gaze (gaze_arbiter.hpp, blink_bridge_ns).
       status_ = "the application pushed an invalid sample (blink or lost tracking)";
-      return std::nullopt;
+      return p.sample;
     }
     gaze::GazeSample s = p.sample;
     if (p.in_world) {

@@ -36,7 +36,7 @@ int run_compare(const CompareOptions& o, bool json, Io io) {
   if (json) {
     io.out << doc.dump(2) << "\n";
   } else {
-    print_compare_table(results, io.out);
+    print_compare_table(results, io.out, o.breakdown);
     io.out << "files: " << json_path.string() << ", compare.svg, <hmd>/summary.json, <hmd>/frames.svg\n";
   }
   return 0;
@@ -54,6 +54,8 @@ const Registrar reg("compare", "Compare the criteria sets (and the LOD-map thesi
   app.add_option("--out", *out, "Folder for compare.json, compare.svg and each run's report");
   app.add_flag("--json", *json, "Print the JSON document instead of the table");
   app.add_flag("--render", opt->render, "Render with Vulkan (default: selection only)");
+  app.add_flag("--breakdown", opt->breakdown,
+               "Print where each audit's figures come from (true gaze state, object class, oracle criterion)");
   return [=](Io io) {
     CompareOptions o = *opt;
     o.out_dir = *out;

@@ -6,6 +6,7 @@
 #include "apps/gazelod/command.hpp"
 #include "apps/gazelod/eval_clusters.hpp"
 #include "apps/gazelod/eval_experiments.hpp"
+#include "apps/gazelod/eval_family.hpp"
 #include "apps/gazelod/eval_gltfpack.hpp"
 #include "apps/gazelod/eval_tables.hpp"
 
@@ -93,7 +94,9 @@ const Registrar reg("eval", "Reproduce Reddy 1998's experiments (frame rate, ave
   app.add_flag("--no-render", flags->no_render, "Skip the rendered frame-rate runs (Figure 5)");
   const EvalSubcommand clusters = add_eval_clusters(app);  // gazelod eval clusters (eval_clusters.hpp)
   const EvalSubcommand gltfpack = add_eval_gltfpack(app);  // gazelod eval gltfpack (eval_gltfpack.hpp)
+  const EvalSubcommand family = add_eval_family(app);      // gazelod eval family (eval_family.hpp)
   return [=](Io io) {
+    if (family.app->parsed()) return family.action(io);
     if (clusters.app->parsed()) return clusters.action(io);
     if (gltfpack.app->parsed()) return gltfpack.action(io);
     return run_eval(*flags, io);

@@ -73,6 +73,8 @@ const Registrar reg("run", "Run an OpenXR session with gaze-contingent LOD and w
   app.add_option("--gaze", *gaze_source, "Gaze source for the whole run: runtime (default), hid (the first HID eye tracker) or trace:FILE");
   app.add_option("--capture-frame", opt->capture_frame, "Frame saved as frame.png (default: the middle one)");
   app.add_flag("--quiet", opt->quiet, "No progress lines");
+  app.add_flag("--breakdown", opt->breakdown,
+               "Print where the audit's figures come from: by true gaze state, object class and the oracle's criterion");
   app.add_option("--decisions", opt->decisions_path,
                  "Write the drawn level of every object in every frame to this CSV (frame,t_ns,<object>...)");
   app.add_option("--cluster-decisions", opt->cluster_decisions_path,

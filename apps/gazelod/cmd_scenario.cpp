@@ -4,6 +4,7 @@
 #include "apps/gazelod/command.hpp"
 #include "gaze/atomic_file.hpp"
 #include "sim/record_trace.hpp"
+#include "sim/scenario_family.hpp"
 #include "sim/simulator.hpp"
 
 #include <memory>
@@ -18,6 +19,7 @@ struct Options {
   bool truth = false;
   double rate_hz = 0.0;
   double duration_s = 0.0;
+  std::uint64_t seed = 0;
 };
 
 sim::Scenario load(const Options& o) {
@@ -67,6 +69,31 @@ int run_record(const Options& o, Io io) {
   return 0;
 }
 
+// One member of the scenario family (sim/scenario_family.hpp), checked by the loader before
+// it is printed or written.
+int run_family(const Options& o, Io io) {
+  const sim::FamilyScenario f = sim::family_scenario(o.seed, o.duration_s);
+  try {
+    (void)sim::load_scenario_json(f.json, "family seed " + std::to_string(o.seed));
+  } catch (const sim::ScenarioError& e) {
+    throw UsageError(std::string("internal: the family made a scenario its loader refuses: ") + e.what(), 1);
+  }
+  if (o.out.empty()) {
+    io.out << f.json << "\n";
+  } else {
+    try {
+      gaze::AtomicFile file(o.out);
+      file.stream() << f.json << "\n";
+      file.commit();
+    } catch (const gaze::WriteError& e) {
+      throw UsageError(std::string("--out: ") + e.what(), 1);
+    }
+    io.out << "wrote " << o.out << "\n";
+  }
+  io.err << "family seed " << o.seed << ": " << f.summary << "\n";
+  return 0;
+}
+
 void add_source(CLI::App* app, Options& o) {
   app->add_option("file", o.file, "scenario JSON file");
   app->add_flag("--default", o.use_default, "the embedded default scenario");
@@ -89,9 +116,15 @@ const Registrar registrar{
           ->check(CLI::Range(1.0, 100000.0));
       record->add_option("--duration", o->duration_s, "seconds to record (default: the scenario's)")
           ->check(CLI::Range(0.001, 1e6));
-      return [o, validate, print](Io io) {
+      CLI::App* family = sub.add_subcommand(
+          "family", "Print (or write) one scenario of the seeded family used to tune and evaluate (gazelod eval family)");
+      family->add_option("--seed", o->seed, "which member (any non-negative integer)")->required();
+      family->add_option("--out", o->out, "scenario JSON to write (default: print it)");
+      family->add_option("--duration", o->duration_s, "seconds (default 20)")->check(CLI::Range(1.0, 3600.0));
+      return [o, validate, print, family](Io io) {
         if (validate->parsed()) return run_validate(*o, io);
         if (print->parsed()) return run_print(*o, io);
+        if (family->parsed()) return run_family(*o, io);
         return run_record(*o, io);
       };
     }};

@@ -42,7 +42,7 @@ nlohmann::json compare_json(const std::vector<HmdComparison>& results) {
   return {{"hmds", hmds}};
 }
 
-void print_compare_table(const std::vector<HmdComparison>& results, std::ostream& out) {
+void print_compare_table(const std::vector<HmdComparison>& results, std::ostream& out, bool breakdown) {
   char line[256];
   for (const HmdComparison& c : results) {
     std::snprintf(line, sizeof line,
@@ -65,7 +65,7 @@ void print_compare_table(const std::vector<HmdComparison>& results, std::ostream
                   "reduction owed to: size %.1f%%, eccentricity %.1f%%, velocity %.1f%%, interaction %.1f%%\n",
                   100 * c.share_size, 100 * c.share_eccentricity, 100 * c.share_velocity, 100 * c.share_interaction);
     out << line;
-    print_audit(c.audit, out);
+    print_audit(c.audit, out, breakdown);
   }
 }
 

@@ -16,7 +16,7 @@ namespace gazelod::cli {
 
 // Runs hold "triangles" (mean per frame, per eye), "triangles_total" and "average_lod".
 nlohmann::json compare_json(const std::vector<HmdComparison>& results);
-void print_compare_table(const std::vector<HmdComparison>& results, std::ostream& out);
+void print_compare_table(const std::vector<HmdComparison>& results, std::ostream& out, bool breakdown = false);
 // Writes compare.svg into `dir`; throws std::runtime_error naming the file on failure.
 void write_compare_chart(const std::vector<HmdComparison>& results, const std::filesystem::path& dir);
 

@@ -93,6 +93,20 @@ AuditSummary audit_from(const nlohmann::json& summary, const std::string& source
   a.pursuit_frames = count(p, "frames", "audit.pursuit.", source);
   a.pursuit_degraded = count(p, "degraded", "audit.pursuit.", source);
   a.pursuit_degraded_share = number(p, "share", "audit.pursuit.", source);
+  // Summaries from before the visible / oracle switch counts and the breakdown have none.
+  if (sw.contains("visible_outside_suppression"))
+    a.visible_switches_fixation = rate_from(sw.at("visible_outside_suppression"),
+                                            "audit.switches.visible_outside_suppression.", source);
+  if (sw.contains("oracle_outside_suppression"))
+    a.oracle_switches_fixation = rate_from(sw.at("oracle_outside_suppression"),
+                                           "audit.switches.oracle_outside_suppression.", source);
+  if (j.contains("breakdown")) {
+    try {
+      a.breakdown = breakdown_from_json(j.at("breakdown"));
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(source + ": audit.breakdown." + e.what(), 1);
+    }
+  }
   return a;
 }
 

@@ -47,6 +47,7 @@ struct CompareOptions {
   std::int64_t frames = 0;     // 0 = the scenario's duration
   std::filesystem::path out_dir = "gazelod-compare";
   bool render = false;
+  bool breakdown = false;      // print each audit's breakdown (run_audit_breakdown.hpp)
 };
 
 // Throws UsageError when `hmd` is not a display preset.

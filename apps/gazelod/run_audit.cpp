@@ -1,6 +1,7 @@
 #include "apps/gazelod/run_audit.hpp"
 
 #include "apps/gazelod/eval_lod_map.hpp"
+#include "lod/angles.hpp"
 #include "lod/select.hpp"
 
 #include <glm/geometric.hpp>
@@ -57,7 +58,11 @@ AuditFrame audit_frame(const AuditFrameInput& in) {
       f.excess_levels += excess;
       f.excess_max = std::max(f.excess_max, excess);
     }
-    if (i < in.previous.size() && in.previous[i] != d) ++f.switches;
+    if (i < in.previous.size() && in.previous[i] != d) {
+      ++f.switches;
+      if (switch_visible(in.previous[i], d, o)) ++f.visible_switches;
+    }
+    if (i < in.previous_oracle.size() && in.previous_oracle[i] != o) ++f.oracle_switches;
     if (in.pursuit_object >= 0 && i == static_cast<std::size_t>(in.pursuit_object)) f.pursued = d > o ? 1 : 0;
   }
   f.object_s = static_cast<double>(f.in_view) * std::max(0.0, in.frame_s);
@@ -85,6 +90,10 @@ AuditSummary summarize_audit(std::span<const AuditFrame> frames, double after_sa
       excess_sum += f.excess_levels;
       s.excess_max = std::max(s.excess_max, f.excess_max);
       add_rate(s.switches_fixation, f);
+      s.visible_switches_fixation.switches += f.visible_switches;
+      s.visible_switches_fixation.object_s += f.object_s;
+      s.oracle_switches_fixation.switches += f.oracle_switches;
+      s.oracle_switches_fixation.object_s += f.object_s;
     }
     if (f.pursued >= 0) {
       ++s.pursuit_frames;
@@ -94,7 +103,8 @@ AuditSummary summarize_audit(std::span<const AuditFrame> frames, double after_sa
   s.degraded_share = ratio(static_cast<double>(s.degraded), static_cast<double>(s.object_frames));
   s.excess_mean = ratio(static_cast<double>(excess_sum), static_cast<double>(s.degraded));
   s.triangle_ratio = ratio(static_cast<double>(s.drawn_triangles), static_cast<double>(s.oracle_triangles));
-  for (SwitchRate* r : {&s.switches_fixation, &s.switches_suppressed})
+  for (SwitchRate* r : {&s.switches_fixation, &s.switches_suppressed, &s.visible_switches_fixation,
+                        &s.oracle_switches_fixation})
     r->per_object_s = ratio(static_cast<double>(r->switches), r->object_s);
   s.pursuit_degraded_share = ratio(static_cast<double>(s.pursuit_degraded), static_cast<double>(s.pursuit_frames));
   return s;
@@ -123,12 +133,17 @@ nlohmann::json audit_json(const AuditSummary& s) {
       {"triangles_in_view",
        {{"drawn", s.drawn_triangles}, {"oracle", s.oracle_triangles}, {"drawn_over_oracle", s.triangle_ratio}}},
       {"switches",
-       {{"outside_suppression", rate_json(s.switches_fixation)}, {"inside_suppression", rate_json(s.switches_suppressed)}}},
+       {{"outside_suppression", rate_json(s.switches_fixation)},
+        {"inside_suppression", rate_json(s.switches_suppressed)},
+        {"visible_outside_suppression", rate_json(s.visible_switches_fixation)},
+        {"oracle_outside_suppression", rate_json(s.oracle_switches_fixation)},
+        {"targets_use", "outside_suppression"}}},
+      {"breakdown", breakdown_json(s.breakdown)},
       {"pursuit",
        {{"frames", s.pursuit_frames}, {"degraded", s.pursuit_degraded}, {"share", s.pursuit_degraded_share}}}};
 }
 
-void print_audit(const AuditSummary& s, std::ostream& out) {
+void print_audit(const AuditSummary& s, std::ostream& out, bool breakdown) {
   if (!s.available) {
     out << "audit           unavailable (" << s.reason << ")\n";
     return;
@@ -149,8 +164,10 @@ void print_audit(const AuditSummary& s, std::ostream& out) {
                 static_cast<unsigned long long>(s.oracle_triangles));
   out << line;
   std::snprintf(line, sizeof line,
-                "audit           LOD switches per object-second %.3f outside suppression, %.3f inside\n",
-                s.switches_fixation.per_object_s, s.switches_suppressed.per_object_s);
+                "audit           LOD switches per object-second %.3f outside suppression (visible %.3f; the "
+                "oracle's own %.3f), %.3f inside\n",
+                s.switches_fixation.per_object_s, s.visible_switches_fixation.per_object_s,
+                s.oracle_switches_fixation.per_object_s, s.switches_suppressed.per_object_s);
   out << line;
   if (s.pursuit_frames > 0)
     std::snprintf(line, sizeof line,
@@ -159,6 +176,7 @@ void print_audit(const AuditSummary& s, std::ostream& out) {
   else
     std::snprintf(line, sizeof line, "audit           no pursuit with its object in view\n");
   out << line;
+  if (breakdown) print_breakdown(s.breakdown, out);
 }
 
 AuditOracle::AuditOracle(const sim::Scenario& scenario, const EnabledCriteria& criteria,
@@ -179,6 +197,8 @@ AuditOracle::AuditOracle(const sim::Scenario& scenario, const EnabledCriteria& c
   }
   fov_ = scenario.display.views[0].fov;
   for (auto* v : {&lod_, &limited_, &size_only_, &ecc_only_, &vel_only_, &in_view_}) v->assign(n, 0);
+  ecc_deg_.assign(n, 0.0f);
+  distance_m_.assign(n, 0.0f);
 }
 
 std::string AuditOracle::evaluate(sim::Simulator& simulator, std::int64_t t_ns, double xi_cpd) {
@@ -202,6 +222,7 @@ std::string AuditOracle::evaluate(sim::Simulator& simulator, std::int64_t t_ns, 
     const sim::ObjectState& o = objects[objects_[k]];
     store_.set_motion(static_cast<std::uint32_t>(k), o.position_m, o.velocity_m_s);
     in_view_[k] = sphere_in_view(o.position_m, radii_[k], head.position_m, head.orientation, fov_) ? 1 : 0;
+    distance_m_[k] = static_cast<float>(std::max(0.0, glm::length(o.position_m - head.position_m) - radii_[k]));
   }
 
   lod::Viewer v;
@@ -216,9 +237,11 @@ std::string AuditOracle::evaluate(sim::Simulator& simulator, std::int64_t t_ns, 
   v.use_eccentricity = criteria_.eccentricity;
   v.use_velocity = criteria_.velocity;
   viewer_ = v;
-  const lod::Decisions out{lod_, limited_, size_only_, ecc_only_, vel_only_, {}, {}, {}};
+  const lod::Decisions out{lod_, limited_, size_only_, ecc_only_, vel_only_, ecc_deg_, {}, {}};
   std::string err = lod::select_lods(v, store_.view(), out);
   if (!err.empty()) std::fill(lod_.begin(), lod_.end(), 0);
+  true_gaze_ = classify_true_gaze(truth_, suppressed_, glm::length(head.angular_velocity_rad_s) * lod::kDegPerRad,
+                                  glm::length(omega_) * lod::kDegPerRad);
   return err;
 }
 

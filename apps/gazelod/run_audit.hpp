@@ -8,6 +8,7 @@
 // kSuppressionAfterSaccadeMs after each saccade ends, from the simulator's truth).
 #pragma once
 
+#include "apps/gazelod/run_audit_breakdown.hpp"
 #include "lod/display.hpp"
 #include "lod/lod_chain.hpp"
 #include "lod/object_set.hpp"
@@ -45,6 +46,8 @@ struct AuditFrame {
   std::uint64_t drawn_triangles = 0;   // in view, per eye
   std::uint64_t oracle_triangles = 0;  // in view, per eye, every object at the oracle's level
   std::int64_t switches = 0;        // in-view objects whose drawn level differs from the previous frame's
+  std::int64_t visible_switches = 0;  // of those, switches whose coarser level the oracle does not allow
+  std::int64_t oracle_switches = 0;   // in-view objects whose oracle level differs from the previous frame's
   double object_s = 0.0;            // in-view objects x the time since the previous frame (0 on the first)
   int pursued = -1;                 // -1: no pursuit or its object not in view; 1: drawn coarser than
                                     // the oracle's level; 0: not coarser
@@ -55,6 +58,7 @@ struct AuditFrameInput {
   std::span<const std::uint8_t> drawn;     // FrameDecisions::lod
   std::span<const std::uint8_t> previous;  // the previous frame's drawn levels; empty on the first frame
   std::span<const std::uint8_t> oracle;    // the oracle's levels
+  std::span<const std::uint8_t> previous_oracle;  // the previous frame's; empty on the first frame
   std::span<const std::uint8_t> in_view;   // 1: the object is in view
   bool suppressed = false;
   int pursuit_object = -1;                 // sim::EyeTruth::pursuit_object
@@ -90,6 +94,13 @@ struct AuditSummary {
   double triangle_ratio = 0.0;
   SwitchRate switches_fixation;        // outside suppression (fixation, pursuit)
   SwitchRate switches_suppressed;      // inside suppression windows
+  // Outside suppression: the switches whose change is itself above threshold (the coarser of
+  // the two levels is coarser than the oracle allows), and the oracle's own switches (the rate
+  // the true gaze itself requires). The targets use the raw count, switches_fixation.
+  SwitchRate visible_switches_fixation;
+  SwitchRate oracle_switches_fixation;
+  // Where the figures come from (run_audit_breakdown.hpp); summed by the caller frame by frame.
+  AuditBreakdown breakdown;
   // The pursued object over pursuit frames where it is in view.
   std::int64_t pursuit_frames = 0;
   std::int64_t pursuit_degraded = 0;
@@ -102,8 +113,8 @@ AuditSummary summarize_audit(std::span<const AuditFrame> frames, double after_sa
 // summary.json's "audit" object: {"available": false, "reason"} or the figures with the
 // suppression window.
 nlohmann::json audit_json(const AuditSummary& s);
-// The terminal lines ("audit           ...").
-void print_audit(const AuditSummary& s, std::ostream& out);
+// The terminal lines ("audit           ..."), with the breakdown's table when asked.
+void print_audit(const AuditSummary& s, std::ostream& out, bool breakdown = false);
 
 // The oracle: owns its object store and output arrays (allocated once), so a frame allocates
 // nothing. Not thread-safe.
@@ -122,6 +133,10 @@ class AuditOracle {
   std::string evaluate(sim::Simulator& simulator, std::int64_t t_ns, double xi_cpd);
 
   std::span<const std::uint8_t> levels() const { return lod_; }
+  std::span<const std::uint8_t> limited_by() const { return limited_; }  // lod::Criterion
+  std::span<const float> eccentricity_deg() const { return ecc_deg_; }  // nearest point, true gaze
+  std::span<const float> distance_m() const { return distance_m_; }     // eye to the sphere's surface
+  TrueGaze true_gaze() const { return true_gaze_; }
   std::span<const std::uint8_t> in_view() const { return in_view_; }
   const sim::EyeTruth& truth() const { return truth_; }
   bool suppressed() const { return suppressed_; }
@@ -141,6 +156,8 @@ class AuditOracle {
   EnabledCriteria criteria_;
   std::int64_t after_saccade_ns_ = 0;
   std::vector<std::uint8_t> lod_, limited_, size_only_, ecc_only_, vel_only_, in_view_;
+  std::vector<float> ecc_deg_, distance_m_;
+  TrueGaze true_gaze_ = TrueGaze::fixation;
   sim::EyeTruth truth_;
   bool suppressed_ = false;
   glm::dvec3 omega_{0.0};

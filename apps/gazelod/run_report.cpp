@@ -118,7 +118,7 @@ RunSummary summarize(const std::vector<FrameRecord>& frames, double budget_ms) {
   return s;
 }
 
-void print_summary(const RunInfo& info, const RunSummary& s, std::ostream& out) {
+void print_summary(const RunInfo& info, const RunSummary& s, std::ostream& out, bool breakdown) {
   char line[256];
   out << "\n== gazelod run: " << info.scenario << " ==\n";
   out << "hmd " << info.hmd << ", runtime " << info.runtime << ", device " << info.device
@@ -162,7 +162,7 @@ void print_summary(const RunInfo& info, const RunSummary& s, std::ostream& out) 
                   100.0 * safe_ratio(static_cast<double>(s.frames_over_budget), static_cast<double>(s.frames)));
     out << line;
   }
-  print_audit(s.audit, out);
+  print_audit(s.audit, out, breakdown);
   if (s.clusters.meshes > 0) print_cluster_audit(s.clusters.audit, out);
 }
 
@@ -217,7 +217,7 @@ void write_report_files(const std::filesystem::path& dir, const RunInfo& info,
   std::ostream& csv = csv_file.stream();
   csv << "frame,t_s,frame_ms,select_ms,predicted_ms,triangles_drawn,triangles_full,"
          "triangles_size_only,triangles_size_eccentricity,triangles_size_velocity,"
-         "gaze_source,gaze_valid,saccade,head_speed_dps";
+         "gaze_source,gaze_valid,saccade,head_speed_dps,eye_motion,plugin_suppressed,gaze_error_deg";
   const int levels = reported_levels(s);
   for (int i = 0; i < levels; ++i) csv << ",lod" << i;
   // The audit's columns (empty cells without ground truth): see run_audit.hpp's AuditFrame.
@@ -229,7 +229,8 @@ void write_report_files(const std::filesystem::path& dir, const RunInfo& info,
     csv << f.index << ',' << f.t_s << ',' << f.frame_ms << ',' << f.select_ms << ',' << f.predicted_ms
         << ',' << f.triangles_drawn << ',' << f.triangles_full << ',' << f.triangles_size_only << ','
         << f.triangles_size_eccentricity << ',' << f.triangles_size_velocity << ',' << f.gaze_source
-        << ',' << (f.gaze_valid ? 1 : 0) << ',' << (f.saccade ? 1 : 0) << ',' << f.head_speed_dps;
+        << ',' << (f.gaze_valid ? 1 : 0) << ',' << (f.saccade ? 1 : 0) << ',' << f.head_speed_dps << ','
+        << f.eye_motion << ',' << (f.plugin_suppressed ? 1 : 0) << ',' << f.gaze_error_deg;
     for (int i = 0; i < levels; ++i) csv << ',' << f.lod_histogram[i];
     csv << ',' << f.objects_in_view;
     const AuditFrame& a = f.audit;

@@ -39,6 +39,9 @@ struct FrameRecord {
   bool gaze_valid = false;
   bool saccade = false;             // a saccade began at this frame (for the plot)
   double head_speed_dps = 0.0;
+  std::string eye_motion;            // the conditioner's reading (fixation, carried, saccade, pursuit, loss)
+  bool plugin_suppressed = false;    // the plugin took vision as suppressed (its switch policy's flag)
+  double gaze_error_deg = 0.0;       // the uncertainty that widened the foveal cone
   // For the evaluation (gazelod compare / eval): the object count, the summed levels of each
   // criteria set (average LOD = sum / objects), and the thesis's LOD map evaluated offline on
   // the same frame (apps/gazelod/eval_lod_map.hpp; nothing it picks is drawn).
@@ -124,7 +127,7 @@ struct RunSummary {
 
 RunSummary summarize(const std::vector<FrameRecord>& frames, double budget_ms);
 
-void print_summary(const RunInfo& info, const RunSummary& s, std::ostream& out);
+void print_summary(const RunInfo& info, const RunSummary& s, std::ostream& out, bool breakdown = false);
 // Writes summary.json, frames.csv, frames.svg and (when the audit is available) audit.svg into
 // `dir` (created if missing). Throws std::runtime_error naming the file that could not be written.
 void write_report_files(const std::filesystem::path& dir, const RunInfo& info,

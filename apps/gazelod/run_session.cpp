@@ -153,6 +153,8 @@ int run_session(const RunOptions& opt, Io io) {
   // land above their prediction.
   config.budget.headroom = 0.15;
   config.hmd_override = opt.hmd;
+  if (opt.switching) config.switching = *opt.switching;
+  if (opt.conditioning) config.conditioning = *opt.conditioning;
   const std::shared_ptr<TraceFromFirstFrame> trace = make_external_source(opt);
   config.external_source = trace;
   if (opt.hid_gaze) {
@@ -238,7 +240,8 @@ int run_session(const RunOptions& opt, Io io) {
   std::optional<ClusterAuditOracle> cluster_oracle;
   ClusterMotion cluster_motion(clusters);
   bool layout_checked = clusters.empty();
-  std::vector<std::uint8_t> previous_lod(chains.size(), 0);
+  std::vector<std::uint8_t> previous_lod(chains.size(), 0), previous_oracle(chains.size(), 0);
+  AuditBreakdown breakdown;  // summed frame by frame (not kept per frame)
   double previous_t_s = 0.0;
   bool exit_requested = false;
   bool png_saved = false;  // --capture-frame past the last frame saves none
@@ -366,6 +369,9 @@ int run_session(const RunOptions& opt, Io io) {
     r.gaze_source = to_string(d.gaze_source);
     r.gaze_valid = d.gaze_valid;
     r.head_speed_dps = glm::length(diag.head_angular_velocity_rad_s) * lod::kDegPerRad;
+    r.eye_motion = diag.gaze_carried ? "carried" : gaze::to_string(diag.eye_motion);
+    r.plugin_suppressed = diag.gaze_suppressed;
+    r.gaze_error_deg = diag.gaze_error_deg;
     // Eye-in-head movement: head turns are not saccades.
     r.saccade = saccades.update(d.gaze_valid, diag.gaze_direction_head, t_s);
     // The audit reads the simulator only (never the plugin's inputs): the oracle at the true gaze.
@@ -375,7 +381,7 @@ int run_session(const RunOptions& opt, Io io) {
       AuditFrameInput in;
       in.chains = &chains;
       in.drawn = d.lod;
-      if (!first) in.previous = previous_lod;
+      if (!first) in.previous = previous_lod, in.previous_oracle = previous_oracle;
       in.oracle = oracle->levels();
       in.in_view = oracle->in_view();
       in.suppressed = oracle->suppressed();
@@ -385,6 +391,22 @@ int run_session(const RunOptions& opt, Io io) {
       in.pursuit_object = known ? plugin_id[static_cast<std::size_t>(pursued)] : -1;
       in.frame_s = first ? 0.0 : t_s - previous_t_s;
       r.audit = audit_frame(in);
+      BreakdownFrameInput b;
+      b.chains = &chains;
+      b.drawn = d.lod;
+      b.previous = in.previous;
+      b.perceptual = diag.lod_perceptual;
+      b.oracle = in.oracle;
+      b.previous_oracle = in.previous_oracle;
+      b.oracle_limited_by = oracle->limited_by();
+      b.in_view = in.in_view;
+      b.eccentricity_deg = oracle->eccentricity_deg();
+      b.distance_m = oracle->distance_m();
+      b.gaze = oracle->true_gaze();
+      b.estimate = static_cast<std::uint8_t>(diag.eye_motion);
+      b.frame_s = in.frame_s;
+      add_breakdown_frame(b, breakdown);
+      std::copy_n(in.oracle.begin(), std::min(in.oracle.size(), previous_oracle.size()), previous_oracle.begin());
       if (cluster_oracle)
         r.cluster_audit = cluster_oracle->audit(oracle->viewer(), head.position_m, head.orientation,
                                                 scenario.display.views[0].fov, d.cluster_drawn, oracle->suppressed(),
@@ -424,6 +446,7 @@ int run_session(const RunOptions& opt, Io io) {
   summary.clusters.clusters = clusters.cluster_count();
   for (const ClusterMesh& m : clusters.meshes)
     for (std::uint8_t depth : m.primitive->hierarchy.depth) summary.clusters.leaves += depth == 0 ? 1 : 0;
+  if (summary.audit.available) summary.audit.breakdown = breakdown;
   if (!oracle) {
     summary.audit = AuditSummary{};
     summary.audit.reason = !opt.trace_path.empty() ? "no ground truth: the gaze is a replayed trace"
@@ -434,10 +457,13 @@ int run_session(const RunOptions& opt, Io io) {
   if (source_changes_unshown > 0)
     io.err << "gazelod run: the gaze source changed " << source_changes_unshown << " more time"
            << (source_changes_unshown == 1 ? "" : "s") << " (frames.csv has each frame's source)\n";
-  print_summary(info, summary, io.out);
-  write_report_files(opt.out_dir, info, summary, frames);
-  io.out << "files: " << (opt.out_dir / "summary.json").string() << ", frames.csv, frames.svg"
-         << (summary.audit.available ? ", audit.svg" : "") << (png_saved ? ", frame.png" : "");
+  print_summary(info, summary, io.out, opt.breakdown);
+  if (opt.result != nullptr) *opt.result = summary;
+  if (opt.write_reports) {
+    write_report_files(opt.out_dir, info, summary, frames);
+    io.out << "files: " << (opt.out_dir / "summary.json").string() << ", frames.csv, frames.svg"
+           << (summary.audit.available ? ", audit.svg" : "") << (png_saved ? ", frame.png" : "");
+  }
 
   if (frames.empty()) {
     io.out << "\n";

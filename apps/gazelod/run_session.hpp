@@ -8,9 +8,12 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 
 namespace gazelod::cli {
+
+struct RunSummary;  // run_report.hpp
 
 struct RunOptions {
   std::int64_t frames = 0;             // 0: the scenario's whole duration
@@ -35,8 +38,17 @@ struct RunOptions {
   std::int64_t capture_frame = -1;     // frame saved as PNG in out_dir (-1: the middle one)
   bool quiet = false;                  // no progress lines
   bool audit = true;                   // the visibility audit against the simulator's truth (run_audit.hpp)
+  bool breakdown = false;              // print the audit's breakdown (run_audit_breakdown.hpp)
   std::string decisions_path;          // "" = none; else the drawn levels per frame (DecisionsFile, run_report.hpp)
   std::string cluster_decisions_path;  // "" = none; else the drawn cut per frame (run_cluster_decisions.hpp)
+  // Callers that run sessions as a function (gazelod eval family): the switch policy and the
+  // gaze conditioning in place of the plugin's defaults; write_reports = false writes only the
+  // scenario the runtime reads (no summary.json, frames.csv or plots), and `result` (when set)
+  // receives the summary.
+  std::optional<lod::SwitchPolicyConfig> switching;
+  std::optional<gaze::ConditionerConfig> conditioning;
+  bool write_reports = true;
+  RunSummary* result = nullptr;
   // Tests only (no option): called with each counted frame's decisions and diagnostics, after
   // the frame is drawn; the spans are valid during the call.
   std::function<void(const FrameDecisions&, const FrameDiagnostics&)> frame_observer;

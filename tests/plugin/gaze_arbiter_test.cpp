@@ -108,6 +108,47 @@ TEST(GazeArbiter, FallsBackDuringGapsAndReturns) {
   EXPECT_FALSE(a.primary_distrusted());  // it had delivered: a gap is not distrust
 }
 
+// A source that reports blinks as invalid samples (as the OpenXR and pushed sources do once
+// they have delivered): invalid inside [from, to).
+class BlinkingSource : public gaze::GazeSource {
+ public:
+  BlinkingSource(std::int64_t from_ns, std::int64_t to_ns) : from_(from_ns), to_(to_ns) {}
+  std::string name() const override { return "openxr"; }
+  std::optional<gaze::GazeSample> sample_at(std::int64_t t_ns) override {
+    gaze::GazeSample s;
+    s.t_ns = t_ns;
+    s.valid = t_ns < from_ || t_ns >= to_;
+    return s;
+  }
+  std::string status() const override { return "gaze not tracked (blink or lost)"; }
+
+ private:
+  std::int64_t from_, to_;
+};
+
+TEST(GazeArbiter, BlinkIsBridgedWithItsInvalidSamplesThenLossFallsBack) {
+  Log log;
+  BlinkingSource blink(100 * kMs, 250 * kMs);  // a 150 ms blink
+  auto a = make(&blink, nullptr, log);
+  for (std::int64_t t = 0; t < 400 * kMs; t += 10 * kMs) {
+    const ArbiterResult r = a.update(t);
+    EXPECT_EQ(r.source, GazeSourceKind::openxr) << "t " << t / kMs << " ms: the blink stays on the source";
+    EXPECT_EQ(r.sample.valid, t < 100 * kMs || t >= 250 * kMs) << "t " << t / kMs << " ms";
+  }
+  EXPECT_EQ(log.sources.size(), 1u) << "no source change to report";
+
+  Log lost_log;
+  BlinkingSource lost(100 * kMs, 2000 * kMs);  // lost for longer than the bridge (300 ms)
+  auto b = make(&lost, nullptr, lost_log);
+  for (std::int64_t t = 0; t < 1000 * kMs; t += 10 * kMs) {
+    const ArbiterResult r = b.update(t);
+    const bool bridged = t - 90 * kMs <= 300 * kMs;  // the last usable sample at 90 ms
+    EXPECT_EQ(r.source, bridged ? GazeSourceKind::openxr : GazeSourceKind::head_fixed) << "t " << t / kMs << " ms";
+  }
+  ASSERT_EQ(lost_log.sources.size(), 2u);
+  EXPECT_EQ(lost_log.sources.back(), GazeSourceKind::head_fixed);
+}
+
 TEST(GazeArbiter, HeadFixedWithoutAnySource) {
   Log log;
   auto a = make(nullptr, nullptr, log);

@@ -1,0 +1,30 @@
+// A family of random but plausible scenarios, one per seed, for tuning and evaluating on
+// scenes nobody hand-picked ("a policy fitted to three files fails on the fourth"). Each seed
+// draws, independently:
+//   - a display among the eye-tracked presets;
+//   - a head-motion profile: still, sweeps, sweeps with fast turns, or walking (0.8-1.6 m/s)
+//     with sweeps and a turn and back;
+//   - the eyes: fixations and main-sequence saccades (fixation lengths and amplitudes drawn),
+//     held in the world by the vestibulo-ocular reflex or, in a quarter of the moving-head
+//     seeds, carried by the head; a pursuit of a target crossing at 5-30 deg/s in 60 % of them;
+//   - the tracker: 60-250 Hz, 5-80 ms latency, 0.2-1.5 deg noise, blinks, sometimes dropouts;
+//   - an object field: near clutter, an open field or a deep one (counts, sizes, depths, LOD
+//     chains of 3-5 levels dropping 2-4x a level).
+// The result is scenario JSON (sim/scenarios/README.md) that load_scenario_json accepts for
+// every seed; the same seed gives the same text, bit for bit (sim/random.hpp).
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace gazelod::sim {
+
+struct FamilyScenario {
+  std::string json;     // the scenario, version 1
+  std::string summary;  // one line: "walk 1.3 m/s, vor, pursuit 18 deg/s, psvr2, 120 Hz 35 ms 0.8 deg, open field"
+};
+
+// 20 s of the seed's draw; `duration_s` > 0 shortens or lengthens it (effects keep their times).
+FamilyScenario family_scenario(std::uint64_t seed, double duration_s = 20.0);
+
+}  // namespace gazelod::sim

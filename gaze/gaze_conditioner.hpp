@@ -149,8 +149,10 @@ struct ConditionerConfig {
 
   // Uncertainty growth with the age of the estimate (display time - sample time), deg/s: the
   // mean rate at which gaze moves, saccades included: ~3-4 fixations a second (Rayner 1998)
-  // joined by saccades mostly under 15 deg and typically ~5 deg (Bahill, Adler & Stark 1975).
-  double age_growth_deg_s = 15.0;
+  // joined by saccades mostly under 15 deg and typically ~5 deg (Bahill, Adler & Stark 1975),
+  // i.e. 10-20 deg/s. 10 was chosen from 10 and 15 with scripts/tune_family.py on the
+  // scenario family's tuning seeds (docs/evaluation.md, "Scenario family"; a 0.1 % difference).
+  double age_growth_deg_s = 10.0;
   // Relative error assumed for the pursuit velocity when predicting: a margin over the fit's
   // measured ~5-10% (tests/gaze/gaze_conditioner_test.cpp) for velocity changes within the
   // horizon (chosen here, as in the earlier GazePredictor).

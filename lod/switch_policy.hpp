@@ -55,12 +55,14 @@ struct SwitchPolicyConfig {
   // of a fixation is reached in it; caps coarsening at 5 per object-second. 0 turns the policy
   // into "draw the perceptual level" (coarsening at once).
   double coarsen_hold_s = 0.2;
-  // After the hold, how much longer a coarsening may wait for a suppressed frame. 1 s: with
-  // ~3 saccades a second in free viewing (Rayner 1998) the next one usually comes within a few
-  // hundred ms; 1 s is past nearly every fixation, so it only runs out in long fixations,
-  // smooth pursuit, or without saccade labels. Waiting only keeps detail (costs time, not
-  // quality).
-  double max_deferral_s = 1.0;
+  // After the hold, how much longer a coarsening may wait for a suppressed frame. With ~3
+  // saccades a second in free viewing (Rayner 1998) the next one usually comes within a few
+  // hundred ms; 0.6 s is past most fixations, so it runs out in long fixations, smooth pursuit
+  // or without saccade labels. Waiting keeps detail (costs triangles, not quality). Chosen with
+  // scripts/tune_family.py on the scenario family's tuning seeds (docs/evaluation.md,
+  // "Scenario family"): 0.3 s let the worst seed's degradations pass 0.5 %, 1 s kept more
+  // triangles under long pursuits; the optimum is flat (median triangles / oracle within 1 %).
+  double max_deferral_s = 0.6;
   // Coarsen inside saccadic suppression or a blink where one comes in time: changes up to
   // ~60 ms after a saccade go unnoticed (Loschky & Wolverton 2007), vision is suppressed in
   // blinks (Volkmann, Riggs & Moore 1980).

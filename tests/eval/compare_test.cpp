@@ -3,6 +3,7 @@
 #include "lod/display.hpp"
 #include "apps/gazelod/command.hpp"
 #include "apps/gazelod/compare_runs.hpp"
+#include "tests/eval/eval_cli.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -15,33 +16,10 @@
 namespace gazelod::cli {
 namespace {
 
-struct Result {
-  int rc = 0;
-  std::string out, err;
-};
-
-Result cli(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  Result r;
-  r.rc = run(args, out, err);
-  r.out = out.str();
-  r.err = err.str();
-  return r;
-}
-
-std::filesystem::path scratch() {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  auto dir = std::filesystem::path(GAZELOD_BINARY_DIR) / "test-scratch" / (std::string("eval.") + info->name());
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
-}
-
-void use_simulated_runtime() {
-  ::setenv("XR_RUNTIME_JSON", GAZELOD_XR_RUNTIME_JSON, 1);
-  ::setenv("GAZELOD_SIM_PACED", "0", 1);
-  ::unsetenv("GAZELOD_SIM_DURATION_S");
-}
+using testing::cli;
+using testing::Result;
+using testing::scratch;
+using testing::use_simulated_runtime;
 
 // A motion-rich scene: forward flight, head sweeping, saccades, so all criteria have work.
 std::filesystem::path write_scenario(const std::filesystem::path& dir) {

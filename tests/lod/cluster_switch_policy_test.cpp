@@ -122,7 +122,7 @@ TEST(ClusterSwitchPolicy, CoarsensAfterTheHoldRefinesAtOnce) {
 TEST(ClusterSwitchPolicy, WaitsForSuppressionAtMostTheDeferral) {
   State st(2);
   ASSERT_EQ(reset_cluster_switch_state(st.s(), kSelfErr, kParentErr), "");
-  const SwitchPolicyConfig c;  // hold 0.2, deferral 1, prefer suppression, 0 inside it
+  const SwitchPolicyConfig c;  // hold 0.2, deferral 0.6, prefer suppression, 0 inside it
   const auto frame = [&](double t, bool inv, bool suppressed = false) {
     ASSERT_EQ(apply_cluster_switch_policy(c, t, suppressed, bits_of(inv), st.s(), st.drawn, st.why), "");
   };
@@ -136,9 +136,10 @@ TEST(ClusterSwitchPolicy, WaitsForSuppressionAtMostTheDeferral) {
   EXPECT_EQ(st.drawn[1], 1);
   frame(0.8, false);
   frame(1.0, true);
-  frame(2.19, true);
+  const double due = 1.0 + c.coarsen_hold_s + c.max_deferral_s;
+  frame(due - 0.01, true);
   EXPECT_EQ(st.drawn[1], 0);
-  frame(2.21, true);  // hold + deferral passed without a saccade
+  frame(due + 0.01, true);  // hold + deferral passed without a saccade
   EXPECT_EQ(st.drawn[1], 1);
 }
 

@@ -44,7 +44,7 @@ TEST(SwitchPolicy, DefaultsAreValid) {
   const SwitchPolicyConfig c;
   EXPECT_EQ(validate_switch_config(c), "");
   EXPECT_EQ(c.coarsen_hold_s, 0.2);
-  EXPECT_EQ(c.max_deferral_s, 1.0);
+  EXPECT_EQ(c.max_deferral_s, 0.6);
   EXPECT_TRUE(c.prefer_suppression);
 }
 
@@ -181,14 +181,15 @@ TEST(SwitchPolicy, DeferralIsBoundedWithoutSuppression) {
     ASSERT_EQ(o.drawn[0], k < 96 ? 0 : 1) << k;
   }
   EXPECT_EQ(coarsenings, 1);
-  // Defaults at 90 Hz: the coarsening frame is the first at or after 0.2 + 1.0 s.
+  // Defaults at 90 Hz: the coarsening frame is the first at or after hold + deferral (0.2 + 0.6 s).
   Objects d(1);
   const SwitchPolicyConfig def;
   int k = 0;
   for (; d.drawn[0] == 0 && k < 1000; ++k) d.frame(def, k / 90.0, false, 2);
   const double t_switch = (k - 1) / 90.0;
-  EXPECT_GE(t_switch, 1.2);
-  EXPECT_LT(t_switch - 1.0 / 90.0, 1.2);
+  const double due = def.coarsen_hold_s + def.max_deferral_s;
+  EXPECT_GE(t_switch, due - 1e-9);
+  EXPECT_LT(t_switch - 1.0 / 90.0, due);
 }
 
 // Switches (changes of the drawn level) of one object fed `seq` at 90 Hz.

@@ -1,0 +1,102 @@
+// gazelod eval family end to end on the simulated runtime: the report's shape, determinism,
+// bad options, and the audit's distribution on held-out seeds (docs/evaluation.md, "Scenario
+// family"), which the defaults were not tuned on.
+#include "apps/gazelod/command.hpp"
+#include "apps/gazelod/eval_family.hpp"
+#include "tests/eval/eval_cli.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace gazelod::cli {
+namespace {
+
+using testing::Result;
+
+Result cli(const std::vector<std::string>& args) {
+  testing::use_simulated_runtime();
+  return testing::cli(args);
+}
+
+std::filesystem::path scratch() { return testing::scratch("family."); }
+
+std::string read(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST(EvalFamily, ReportShapeDeterminismAndSettings) {
+  const auto dir = scratch();
+  const std::vector<std::string> args{"eval", "family", "--seeds", "7-9", "--duration", "3",
+                                      "--out", (dir / "a").string(), "--set", "switch.coarsen_hold_s=0.3"};
+  const Result r = cli(args);
+  ASSERT_EQ(r.rc, 0) << r.err;
+  EXPECT_NE(r.err.find("[3/3] seed 9"), std::string::npos) << "a progress line per seed\n" << r.err;
+  EXPECT_NE(r.out.find("| 8 | "), std::string::npos) << r.out;
+  const nlohmann::json j = nlohmann::json::parse(read(dir / "a" / "family.json"));
+  ASSERT_EQ(j.at("members").size(), 3u);
+  EXPECT_EQ(j.at("settings_changed")[0], "switch.coarsen_hold_s=0.3");
+  for (const auto& [name, d] : j.at("distribution").items()) {
+    EXPECT_LE(d.at("median").get<double>(), d.at("p90").get<double>()) << name;
+    EXPECT_LE(d.at("p90").get<double>(), d.at("worst").get<double>()) << name;
+  }
+  EXPECT_TRUE(read(dir / "a" / "family.md").starts_with("<!-- written by: gazelod eval family --seeds 7-9"));
+  std::vector<std::string> again = args;
+  again[7] = (dir / "b").string();
+  ASSERT_EQ(cli(again).rc, 0);
+  EXPECT_EQ(read(dir / "b" / "family.json"), read(dir / "a" / "family.json")) << "the same seeds, the same figures";
+}
+
+TEST(EvalFamily, BadOptionsAreRefusedWithTheReason) {
+  const auto dir = scratch();
+  const auto refused = [&](std::vector<std::string> extra, const std::string& says) {
+    std::vector<std::string> args{"eval", "family", "--out", (dir / "x").string()};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const Result r = cli(args);
+    EXPECT_EQ(r.rc, 2) << says;
+    EXPECT_NE(r.err.find(says), std::string::npos) << r.err;
+  };
+  refused({"--set", "switch.nope=1"}, "unknown setting 'switch.nope'");
+  refused({"--set", "switch.coarsen_hold_s=abc"}, "is not a number");
+  refused({"--set", "switch.coarsen_hold_s=nan"}, "is not a number");
+  refused({"--set", "switch.coarsen_hold_s=-1"}, "must be in [0, 10]");
+  refused({"--set", "switch.prefer_suppression=0.5"}, "must be 0 or 1");
+  refused({"--set", "switch.coarsen_hold_s"}, "expected NAME=VALUE");
+  refused({"--seeds", "9-3"}, "ends before it starts");
+  refused({"--seeds", "0x10"}, "expected A-B or A");
+  refused({"--seeds", "0-20000"}, "at most 10000 seeds");
+  EXPECT_FALSE(std::filesystem::exists(dir / "x" / "family.md")) << "nothing written on a refusal";
+  const Result list = cli({"eval", "family", "--list-settings"});
+  ASSERT_EQ(list.rc, 0);
+  EXPECT_NE(list.out.find("switch.max_deferral_s=0.6"), std::string::npos) << list.out;
+  EXPECT_NE(list.out.find("conditioner.carried_evidence=12"), std::string::npos) << list.out;
+}
+
+// Held-out seeds (the defaults were tuned on 1000-1039): the bulk of the family within the
+// targets. Not every seed is (docs/evaluation.md lists the ones outside and why).
+TEST(EvalFamily, HeldOutSeedsMostlyWithinTheTargets) {
+  const auto dir = scratch();
+  const Result r = cli({"eval", "family", "--seeds", "2000-2019", "--out", dir.string()});
+  ASSERT_EQ(r.rc, 0) << r.err;
+  const nlohmann::json d = nlohmann::json::parse(read(dir / "family.json")).at("distribution");
+  const auto& degraded = d.at("visible degradations (fixation object-frames)");
+  const auto& triangles = d.at("triangles drawn / oracle");
+  const auto& switches = d.at("switches per object-second outside suppression");
+  EXPECT_LE(degraded.at("median").get<double>(), kTargetDegradedShare);
+  EXPECT_GE(degraded.at("within_target").get<int>(), 18);
+  EXPECT_LE(triangles.at("median").get<double>(), kTargetTriangleRatio);
+  EXPECT_GE(triangles.at("median").get<double>(), 1.0) << "below the oracle would be degradations";
+  EXPECT_GE(triangles.at("within_target").get<int>(), 14);
+  EXPECT_LE(switches.at("median").get<double>(), kTargetSwitchesPerObjectS);
+  EXPECT_GE(switches.at("within_target").get<int>(), 16);
+}
+
+}  // namespace
+}  // namespace gazelod::cli

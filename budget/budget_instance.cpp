@@ -1,11 +1,14 @@
 #include "budget/budget_instance.hpp"
 
+#include "auxiliary/json_strict.hpp"
+
 #include "budget/mckp_hierarchy.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
 
 namespace gazelod::budget {
@@ -129,9 +132,12 @@ budget::MckpInstance read_budget_instance(const std::string& path) {
     throw InstanceError("--instance: " + path + ": not a regular file (a directory, FIFO or device)");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InstanceError("--instance: cannot open " + path);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   json doc;
   try {
-    doc = json::parse(in);
+    doc = aux::parse_json_strict(text);
+  } catch (const aux::JsonStrictError& e) {
+    throw InstanceError(path + ": " + e.what());
   } catch (const json::parse_error& e) {
     throw InstanceError(path + ": JSON parse error at byte " + std::to_string(e.byte) + ": " + e.what());
   } catch (const json::exception& e) {  // e.g. out_of_range: a number too large for a double

@@ -1,5 +1,7 @@
 #include "layer/layer_config.hpp"
 
+#include "auxiliary/json_strict.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <cerrno>
@@ -157,7 +159,9 @@ ConfigResult parse_config_json(const std::string& text, const std::string& file,
   try {
     json j;
     try {
-      j = json::parse(text);
+      j = aux::parse_json_strict(text);
+    } catch (const aux::JsonStrictError& e) {
+      throw Bad{file + ": " + e.what()};
     } catch (const json::parse_error& e) {
       // nlohmann's message after its "[json.exception.parse_error.N] " tag.
       std::string what = e.what();

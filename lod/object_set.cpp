@@ -40,6 +40,13 @@ std::optional<ChainProblem> find_chain_problem(std::span<const LodLevel> levels)
         << kMaxLevelWeight << "]";
       return ChainProblem{k, m.str()};
     }
+    // A coarser level that costs more is a mislabelled chain (reports would show it as more
+    // than full detail, and the frame budget would coarsen into it to save time).
+    if (l.triangles > levels[k - 1].triangles) {
+      m << "has more triangles (" << l.triangles << ") than level " << k - 1 << " ("
+        << levels[k - 1].triangles << "): triangle counts must not increase along the chain";
+      return ChainProblem{k, m.str()};
+    }
     if (k >= 2 && level_weight(l) > level_weight(levels[k - 1])) {
       m << "must remove no finer detail than level " << k - 1
         << (l.detail_kind == DetailKind::removed_cycles_per_diameter

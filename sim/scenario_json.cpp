@@ -1,5 +1,6 @@
 // Loading a scenario (format: version 1; see sim/scenarios/*.json and the README section
 // "Scenario files"). Every error names the source and the JSON path.
+#include "auxiliary/json_strict.hpp"
 #include "sim/angles.hpp"
 #include "sim/effect.hpp"
 #include "sim/json_fields.hpp"
@@ -162,18 +163,13 @@ Scenario load_scenario_json(std::string_view json_text, std::string_view source_
   if (json_text.size() > kMaxScenarioBytes)
     throw_at(source, "", "must be at most " + bytes_text(kMaxScenarioBytes) + " of JSON, got " +
                              bytes_text(json_text.size()));
-  // Nesting is limited while parsing: a deeply nested value would cost stack in every later
-  // pass over it (dump, destruction) without ever being a valid scenario.
-  const nlohmann::json::parser_callback_t limit_depth = [&source](int depth, nlohmann::json::parse_event_t,
-                                                                  nlohmann::json&) {
-    if (depth > kMaxJsonDepth)
-      throw ScenarioError(source + ": JSON nesting must be at most " + std::to_string(kMaxJsonDepth) +
-                          " levels of arrays and objects, got more");
-    return true;
-  };
+  // Nesting is limited while parsing (a deeply nested value would cost stack in every later
+  // pass over it without ever being a valid scenario), and a key given twice is refused.
   nlohmann::json j;
   try {
-    j = nlohmann::json::parse(json_text, limit_depth);
+    j = aux::parse_json_strict(json_text, kMaxJsonDepth);
+  } catch (const aux::JsonStrictError& e) {
+    throw ScenarioError(source + ": " + (e.path().empty() ? "" : e.path() + ": ") + e.message());
   } catch (const nlohmann::json::parse_error& e) {
     throw ScenarioError(source + ":" + line_column(json_text, e.byte > 0 ? e.byte - 1 : 0) +
                         ": JSON syntax error: " + e.what());
@@ -189,7 +185,7 @@ Scenario load_scenario_json(std::string_view json_text, std::string_view source_
   const nlohmann::json* display = f.child("display");
   if (!display) f.fail("display", "missing (a preset name such as \"questpro\", or an object)");
   sc.display = read_display(*display, f);
-  sc.duration_s = f.number("duration_s", sc.duration_s, 1e-3, 1e6);
+  sc.duration_s = f.number("duration_s", sc.duration_s, 1e-3, kMaxScenarioDurationS);
   // The frame rate is the display's refresh rate (the runtime paces at display.refresh_hz).
   sc.frame_rate_hz = f.number("frame_rate_hz", sc.display.refresh_hz, 1.0, 1000.0);
   sc.display.refresh_hz = sc.frame_rate_hz;

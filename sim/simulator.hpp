@@ -64,6 +64,12 @@ struct HeadPath {
   glm::dvec3 velocity_m_s{0.0};
 };
 
+// The longest scenario (seconds, `duration_s`), and the slack `gazelod run` gives the simulated
+// runtime beyond its frames (the run, not the runtime, ends the session): the runtime accepts a
+// duration up to their sum, so every scenario that validates also runs.
+inline constexpr double kMaxScenarioDurationS = 1e6;
+inline constexpr double kRunSlackS = 1.0;
+
 struct Scenario {
   int version = 1;
   std::string name;

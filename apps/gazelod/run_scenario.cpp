@@ -236,7 +236,7 @@ void point_loader_at_simulator(const PreparedScenario& prepared, const RunOption
   // not end it first.
   std::ostringstream d;
   d.precision(17);
-  d << prepared.duration_s + 1.0;
+  d << prepared.duration_s + sim::kRunSlackS;
   set_env("GAZELOD_SIM_DURATION_S", d.str());
   set_env("GAZELOD_SIM_PACED", opt.paced ? "1" : "0");
 }

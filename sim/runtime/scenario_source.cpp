@@ -39,9 +39,10 @@ sim::Scenario load_runtime_scenario() {
   if (const char* d = env("GAZELOD_SIM_DURATION_S")) {
     char* end = nullptr;
     const double seconds = std::strtod(d, &end);
-    if (end == d || *end != '\0' || !std::isfinite(seconds) || seconds <= 0.0 || seconds > 1e6)
+    constexpr double kMax = sim::kMaxScenarioDurationS + sim::kRunSlackS;
+    if (end == d || *end != '\0' || !std::isfinite(seconds) || seconds <= 0.0 || seconds > kMax)
       throw std::runtime_error(std::string("GAZELOD_SIM_DURATION_S=\"") + d +
-                               "\": expected a number of seconds in (0, 1e6]");
+                               "\": expected a number of seconds in (0, 1e6 + 1]");
     scenario.duration_s = seconds;
   }
   scenario.runtime.paced = env_flag("GAZELOD_SIM_PACED", scenario.runtime.paced);

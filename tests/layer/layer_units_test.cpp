@@ -53,6 +53,8 @@ TEST(LayerConfig, DefaultsPerSource) {
 
 TEST(LayerConfig, ErrorsSayWhatAndWhere) {
   EXPECT_EQ(parse_error(R"({"override": 1})"), "c.json: override: must be true or false, got 1");
+  EXPECT_EQ(parse_error(R"({"override": true, "override": false})"),
+            "c.json: override: the key appears twice in one object (which one counts is undefined)");
   EXPECT_EQ(parse_error(R"({"freshness_ms": 0})"), "c.json: freshness_ms: must be in (0, 10000], got 0");
   EXPECT_EQ(parse_error(R"({"head_offset": {"position_m": [0, 0]}})"),
             "c.json: head_offset.position_m: must be an array of 3 numbers, got [0,0]");

@@ -321,6 +321,17 @@ TEST(SelectValidation, ChainsRefusedAtRegistration) {
   auto e = error_chain();
   e[2].detail = 0.001;  // smaller error than level 1
   EXPECT_NE(validate_chain(e).find("must not decrease"), std::string::npos);
+  // Triangle counts must not grow along the chain (a coarser level that costs more); equal
+  // counts (a simplifier that could not reduce) are allowed.
+  auto t = cycles_chain();
+  for (std::size_t k = 0; k < t.size(); ++k) t[k].triangles = static_cast<std::uint32_t>(1000 >> k);
+  EXPECT_EQ(validate_chain(t), "");
+  t[2].triangles = t[1].triangles;
+  EXPECT_EQ(validate_chain(t), "");
+  t[3].triangles = t[2].triangles + 1;
+  EXPECT_EQ(validate_chain(t), "level 3: has more triangles (501) than level 2 (500): triangle counts must not "
+                               "increase along the chain");
+  EXPECT_THROW(st.add({0, 0, -1}, 1, {}, t), std::invalid_argument);
 }
 
 TEST(SelectValidation, WeightsOutsideFloatRangeRefused) {

@@ -144,6 +144,14 @@ TEST(RuntimeQuirks, BadScenarioOrVariableFailsInstanceCreation) {
   EXPECT_EQ(xrCreateInstance(&info, &instance), XR_ERROR_INITIALIZATION_FAILED);
   setenv("GAZELOD_SIM_DURATION_S", "-1", 1);
   EXPECT_EQ(xrCreateInstance(&info, &instance), XR_ERROR_INITIALIZATION_FAILED);
+  // The longest scenario plus the second of slack `gazelod run` adds: a scenario that
+  // validates also runs (it once failed here, past 1e6).
+  setenv("GAZELOD_SIM_DURATION_S", "1000001", 1);
+  ASSERT_EQ(xrCreateInstance(&info, &instance), XR_SUCCESS);
+  xrDestroyInstance(instance);
+  instance = XR_NULL_HANDLE;
+  setenv("GAZELOD_SIM_DURATION_S", "1000001.5", 1);
+  EXPECT_EQ(xrCreateInstance(&info, &instance), XR_ERROR_INITIALIZATION_FAILED);
   use_runtime(2.0);
   setenv("GAZELOD_SIM_PACED", "yes", 1);
   EXPECT_EQ(xrCreateInstance(&info, &instance), XR_ERROR_INITIALIZATION_FAILED);

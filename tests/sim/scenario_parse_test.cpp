@@ -201,6 +201,23 @@ TEST(ScenarioParse, SyntaxErrorNamesLineAndColumn) {
   }
 }
 
+TEST(ScenarioParse, KeyGivenTwiceIsRefusedWithItsPath) {
+  // nlohmann would keep the last value silently: a 2 s scenario would run for 3.
+  try {
+    (void)load_scenario_json(R"({"version": 1, "display": "questpro", "duration_s": 2, "duration_s": 3})", "s.json");
+    FAIL() << "no error";
+  } catch (const ScenarioError& e) {
+    EXPECT_STREQ(e.what(), "s.json: duration_s: the key appears twice in one object (which one counts is undefined)");
+  }
+  try {
+    (void)load_scenario_json(R"({"version": 1, "display": "questpro", "effects": [{"type": "saccades"},
+                                {"type": "blinks", "rate_per_min": 5, "rate_per_min": 50}]})", "s.json");
+    FAIL() << "no error";
+  } catch (const ScenarioError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("s.json: effects[1].rate_per_min: the key appears twice"));
+  }
+}
+
 TEST(ScenarioParse, FileErrors) {
   EXPECT_THROW((void)load_scenario_file("/nonexistent/dir/none.json"), ScenarioError);
   const std::string path = std::string(GAZELOD_BINARY_DIR) + "/tests/sim/parse_test_bad.json";

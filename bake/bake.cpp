@@ -143,6 +143,14 @@ BakeReport bake_model(tinygltf::Model& m, const BakeOptions& o) {
   std::unique_ptr<Profiler> profiler;
   if (o.profile_viewpoints != 0 && total > 0)
     profiler = std::make_unique<Profiler>(ProfileOptions{o.profile_viewpoints});
+  // Every level of a file of degenerate triangles would be written (the cluster bake refuses it
+  // and `run --scene` has nothing to draw): the same refusal here.
+  std::size_t area = 0;
+  for (std::size_t mi = 0; mi < m.meshes.size() && area == 0; ++mi)
+    if (used[mi])
+      for (std::size_t p = 0; p < m.meshes[mi].primitives.size() && area == 0; ++p)
+        area += count_area_triangles(extract_primitive(m, static_cast<int>(mi), static_cast<int>(p)));
+  if (area == 0) throw BakeError(kNothingLeftToBake);
   std::vector<MeshChain> chains(m.meshes.size());
   std::size_t done = 0;
   for (std::size_t mi = 0; mi < m.meshes.size(); ++mi) {

@@ -229,8 +229,7 @@ ClusterBakeReport bake_clusters_model(tinygltf::Model& m, const ClusterBakeOptio
   // A file whose every triangle primitive was left with none would be written unchanged, with
   // no hierarchy: a failure to say, not an output.
   if (report.primitives.empty())
-    throw BakeError("nothing to bake: no triangle primitive has a triangle left once degenerate ones "
-                    "(two corners at one position) are dropped");
+    throw BakeError(kNothingLeftToBake);
   std::size_t degenerate = 0, with = 0;
   for (const ClusterPrimitiveReport& p : report.primitives)
     degenerate += p.degenerate_triangles, with += p.degenerate_triangles > 0;

@@ -4,8 +4,10 @@
 
 #include "bake/bake_error.hpp"
 
+#include <array>
 #include <cmath>
 #include <cstring>
+#include <sstream>
 
 namespace gazelod::bake {
 namespace {
@@ -140,9 +142,16 @@ std::vector<float> read_positions(const tinygltf::Model& m, int accessor,
   std::vector<float> out(3 * v.count);
   for (std::size_t i = 0; i < v.count; ++i) {
     std::memcpy(&out[3 * i], v.first + i * v.stride, 12);
-    for (int c = 0; c < 3; ++c)
+    for (int c = 0; c < 3; ++c) {
       if (!std::isfinite(out[3 * i + c]))
         throw BakeError(where + ": POSITION " + std::to_string(i) + " is not finite");
+      if (std::fabs(out[3 * i + c]) > kMaxPositionM) {
+        std::ostringstream m;
+        m << where << ": POSITION " << i << " is out of range: a coordinate of " << out[3 * i + c]
+          << " m (at most " << kMaxPositionM << " m)";
+        throw BakeError(m.str());
+      }
+    }
   }
   return out;
 }
@@ -153,6 +162,18 @@ bool draws_triangles(const tinygltf::Primitive& p) {
 }
 
 std::string mode_label(int mode) { return "mode " + std::to_string(mode) + " (" + mode_name(mode) + ")"; }
+
+std::size_t count_area_triangles(const PrimitiveGeometry& g) {
+  const auto at = [&](std::uint32_t i) {
+    return std::array<float, 3>{g.positions_xyz[3 * i], g.positions_xyz[3 * i + 1], g.positions_xyz[3 * i + 2]};
+  };
+  std::size_t n = 0;
+  for (std::size_t t = 0; t + 2 < g.indices.size(); t += 3) {
+    const auto a = at(g.indices[t]), b = at(g.indices[t + 1]), c = at(g.indices[t + 2]);
+    n += a != b && b != c && a != c ? 1 : 0;
+  }
+  return n;
+}
 
 PrimitiveGeometry extract_primitive(const tinygltf::Model& m, int mesh, int primitive) {
   const std::string where = primitive_label(m, mesh, primitive);

@@ -4,6 +4,7 @@
 
 #include <tiny_gltf.h>
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -37,6 +38,19 @@ std::string mode_label(int mode);
 // buffer, a non-finite position, an index out of range, or a list whose index count is not a
 // multiple of 3.
 PrimitiveGeometry extract_primitive(const tinygltf::Model& model, int mesh, int primitive);
+
+// Triangles that cover an area: not two corners at one position (by index or coordinates).
+// The cluster builder drops the others; a file with none left has nothing to bake, in either
+// bake (kNothingLeftToBake, the message both give).
+std::size_t count_area_triangles(const PrimitiveGeometry& geometry);
+inline constexpr const char* kNothingLeftToBake =
+    "nothing to bake: no triangle primitive has a triangle left once degenerate ones (two corners at one "
+    "position) are dropped";
+
+// Coordinates past this (metres, any axis) are refused where positions are read: beyond the
+// Moon's orbit no LOD decision means anything, and squared distances and bounds of ~3e38
+// overflow float (a bake wrote them out and `run --scene` then refused the file).
+inline constexpr double kMaxPositionM = 1e9;
 
 // Only the positions of accessor `accessor` (POSITION), with the same checks; `where` prefixes
 // error messages. Used by the baked-scene loader for bounding spheres.

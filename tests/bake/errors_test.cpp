@@ -264,3 +264,52 @@ TEST(BakeErrors, SceneGraphProblemsAreRefusedByBothBakes) {
 
 }  // namespace
 }  // namespace gazelod::bake
+
+namespace gazelod::bake {
+namespace {
+
+// What run --scene would refuse is refused by both bakes with one message: positions whose
+// size makes every distance and bound overflow, and a file whose triangles are all degenerate.
+TEST(BakeErrors, HugePositionsAndAllDegenerateRefusedByBothBakes) {
+  struct GeometryCase {
+    const char* name;
+    std::function<void(tinygltf::Model&)> edit;
+    const char* message;
+  };
+  const std::vector<GeometryCase> cases = {
+      {"huge", [](tinygltf::Model& g) {
+         const float x = 3e38f;
+         std::memcpy(g.buffers[0].data.data() + g.bufferViews[0].byteOffset + 12 * 7, &x, 4);
+       }, "mesh 0 'M' primitive 0: POSITION 7 is out of range"},
+      {"degenerate", [](tinygltf::Model& g) {
+         // Every triangle's first two corners at one vertex.
+         auto& acc = g.accessors[std::size_t(g.meshes[0].primitives[0].indices)];
+         const auto& view = g.bufferViews[std::size_t(acc.bufferView)];
+         const std::size_t size = acc.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT     ? 4
+                                  : acc.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? 2
+                                                                                                : 1;
+         for (std::size_t t = 0; t < acc.count / 3; ++t) {
+           unsigned char* p = g.buffers[0].data.data() + view.byteOffset + acc.byteOffset + 3 * size * t;
+           std::memcpy(p + size, p, size);
+         }
+       }, "nothing to bake: no triangle primitive has a triangle left once degenerate ones"},
+  };
+  for (const GeometryCase& c : cases) {
+    EXPECT_HAS(bake_edited(std::string("geom_") + c.name, c.edit), c.message);
+    const std::string dir = testing::temp_dir(std::string("geom_clusters_") + c.name);
+    tinygltf::Model m = testing::single_mesh_model(testing::icosphere(2, 1.0));
+    c.edit(m);
+    const std::string in = testing::write_model(m, dir + "/in.glb");
+    std::string msg;
+    try {
+      bake_clusters_file(in, dir + "/out.glb", ClusterBakeOptions{});
+    } catch (const BakeError& e) {
+      msg = e.what();
+    }
+    EXPECT_HAS(msg, c.message);
+    EXPECT_FALSE(fs::exists(dir + "/out.glb")) << c.name;
+  }
+}
+
+}  // namespace
+}  // namespace gazelod::bake

@@ -55,6 +55,24 @@ std::string read_bytes(const std::string& path) {
 
 #define EXPECT_HAS(msg, part) EXPECT_NE((msg).find(part), std::string::npos) << (msg)
 
+// The same edit refused by the chain bake and the cluster bake with `message`, no output left.
+void expect_both_bakes_refuse(const std::string& name, const std::function<void(tinygltf::Model&)>& edit,
+                              const std::string& message) {
+  EXPECT_HAS(bake_edited(name, edit), message);
+  const std::string dir = testing::temp_dir(name + "_clusters");
+  tinygltf::Model m = testing::single_mesh_model(testing::icosphere(2, 1.0));
+  edit(m);
+  const std::string in = testing::write_model(m, dir + "/in.glb");
+  std::string msg;
+  try {
+    bake_clusters_file(in, dir + "/out.glb", ClusterBakeOptions{});
+  } catch (const BakeError& e) {
+    msg = e.what();
+  }
+  EXPECT_HAS(msg, message);
+  EXPECT_FALSE(fs::exists(dir + "/out.glb")) << name;
+}
+
 TEST(BakeErrors, MissingFile) {
   const std::string dir = testing::temp_dir("err_missing");
   const std::string m = bake_error(dir + "/nope.glb", dir + "/out.glb");
@@ -245,21 +263,7 @@ TEST(BakeErrors, SceneGraphProblemsAreRefusedByBothBakes) {
       // (No NaN case: JSON cannot carry one; a rotation of zeros collapses the node too.)
       {"zero_rotation", [](tinygltf::Model& m) { m.nodes[0].rotation = {0.0, 0.0, 0.0, 0.0}; }, "a zero quaternion"},
   };
-  for (const GraphCase& c : cases) {
-    EXPECT_HAS(bake_edited(std::string("graph_") + c.name, c.edit), c.message);
-    const std::string dir = testing::temp_dir(std::string("graph_clusters_") + c.name);
-    tinygltf::Model m = testing::single_mesh_model(testing::icosphere(2, 1.0));
-    c.edit(m);
-    const std::string in = testing::write_model(m, dir + "/in.glb");
-    std::string msg;
-    try {
-      bake_clusters_file(in, dir + "/out.glb", ClusterBakeOptions{});
-    } catch (const BakeError& e) {
-      msg = e.what();
-    }
-    EXPECT_HAS(msg, c.message);
-    EXPECT_FALSE(fs::exists(dir + "/out.glb")) << c.name;
-  }
+  for (const GraphCase& c : cases) expect_both_bakes_refuse(std::string("graph_") + c.name, c.edit, c.message);
 }
 
 }  // namespace
@@ -294,21 +298,7 @@ TEST(BakeErrors, HugePositionsAndAllDegenerateRefusedByBothBakes) {
          }
        }, "nothing to bake: no triangle primitive has a triangle left once degenerate ones"},
   };
-  for (const GeometryCase& c : cases) {
-    EXPECT_HAS(bake_edited(std::string("geom_") + c.name, c.edit), c.message);
-    const std::string dir = testing::temp_dir(std::string("geom_clusters_") + c.name);
-    tinygltf::Model m = testing::single_mesh_model(testing::icosphere(2, 1.0));
-    c.edit(m);
-    const std::string in = testing::write_model(m, dir + "/in.glb");
-    std::string msg;
-    try {
-      bake_clusters_file(in, dir + "/out.glb", ClusterBakeOptions{});
-    } catch (const BakeError& e) {
-      msg = e.what();
-    }
-    EXPECT_HAS(msg, c.message);
-    EXPECT_FALSE(fs::exists(dir + "/out.glb")) << c.name;
-  }
+  for (const GeometryCase& c : cases) expect_both_bakes_refuse(std::string("geom_") + c.name, c.edit, c.message);
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 // The bake driver: per-mesh chains from per-primitive chains, progress, timing (bake.hpp).
 #include "bake/bake.hpp"
 
+#include "auxiliary/text.hpp"
+
 #include "bake/bake_error.hpp"
 #include "bake/detail.hpp"
 #include "bake/gltf_load.hpp"
@@ -161,8 +163,8 @@ BakeReport bake_model(tinygltf::Model& m, const BakeOptions& o) {
     rep.name = m.meshes[mi].name;
     if (o.progress)
       o.progress("bake: mesh " + std::to_string(done + 1) + "/" + std::to_string(total) + " " +
-                 mesh_label(m, rep.mesh) + " (" + std::to_string(m.meshes[mi].primitives.size()) +
-                 " primitives) ...");
+                 mesh_label(m, rep.mesh) + " (" +
+                 aux::counted(m.meshes[mi].primitives.size(), "primitive", "primitives") + ") ...");
     chains[mi] = bake_mesh(m, rep.mesh, o.chain, profiler.get(), rep);
     rep.seconds = seconds_since(tm);
     report.input_triangles += rep.levels.empty() ? 0 : rep.levels[0].triangles;

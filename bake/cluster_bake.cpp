@@ -2,6 +2,8 @@
 // (cluster_bake.hpp).
 #include "bake/cluster_bake.hpp"
 
+#include "auxiliary/text.hpp"
+
 #include "bake/bake_error.hpp"
 #include "bake/cluster_lod_gltf.hpp"
 #include "bake/glb_write.hpp"
@@ -210,9 +212,10 @@ ClusterBakeReport bake_clusters_model(tinygltf::Model& m, const ClusterBakeOptio
     if (std::none_of(failed.begin(), failed.end(), [](const std::exception_ptr& e) { return bool(e); })) store_ready();
   };
   if (o.progress)
-    o.progress("bake: building " + std::to_string(tasks.size()) + " primitives of " + std::to_string(meshes_to_build) +
-               " meshes (" + std::to_string(alone.size()) + " large ones alone, the rest side by side on " +
-               std::to_string(thread_count(o.build.threads)) + " threads) ...");
+    o.progress("bake: building " + aux::counted(tasks.size(), "primitive", "primitives") + " of " +
+               aux::counted(meshes_to_build, "mesh", "meshes") + " (" + std::to_string(alone.size()) +
+               " large ones alone, the rest side by side on " +
+               aux::counted(thread_count(o.build.threads), "thread", "threads") + ") ...");
   const auto tb = Clock::now();
   for (std::size_t i : alone) {
     if (o.progress)
@@ -234,9 +237,9 @@ ClusterBakeReport bake_clusters_model(tinygltf::Model& m, const ClusterBakeOptio
   for (const ClusterPrimitiveReport& p : report.primitives)
     degenerate += p.degenerate_triangles, with += p.degenerate_triangles > 0;
   if (degenerate > 0)
-    report.warnings.push_back(std::to_string(degenerate) + " degenerate triangles (two corners at one "
-                              "position) dropped in " + std::to_string(with) +
-                              " primitives (column 'degenerate')");
+    report.warnings.push_back(aux::counted(degenerate, "degenerate triangle", "degenerate triangles") +
+                              " (two corners at one position) dropped in " +
+                              aux::counted(with, "primitive", "primitives") + " (column 'degenerate')");
   report.seconds = seconds_since(t0);
   return report;
 }
@@ -274,22 +277,27 @@ std::string format_cluster_summary(const ClusterBakeReport& r) {
                   per_second(double(p.source_triangles + p.degenerate_triangles), p.build_seconds));
     s << line;
   }
-  std::snprintf(line, sizeof line,
-                "total: %zu meshes, %zu primitives with GAZELOD_cluster_lod, %llu input triangles, "
-                "hierarchy %.3f s (%.3g input triangles/s), %.3f s in all\n",
-                r.meshes, r.primitives.size(), static_cast<unsigned long long>(r.input_triangles),
-                r.build_seconds, per_second(double(r.input_triangles), r.build_seconds), r.seconds);
-  s << line;
+  // Notes on how the hierarchy was made, then the warnings, then the total: a good run ends
+  // with its result, not with a note that reads like a problem.
   if (r.shared_vertices > 0)
-    s << "kept at every level: " << r.shared_vertices
+    s << "note: kept at every level: " << r.shared_vertices
       << " vertices where primitives meet (open borders elsewhere are simplified)\n";
   if (r.folded_triangles > 0)
-    s << "folded over by meshoptimizer 0.18's simplifier (facing against the surface they replace): "
-      << r.folded_triangles << " of the stored simplified triangles\n";
+    s << "note: " << r.folded_triangles
+      << " of the stored simplified triangles face against the surface they replace (folded over by "
+         "meshoptimizer 0.18's simplifier; their groups' error is raised to cover them)\n";
   if (r.groups_across_seams > 0)
-    s << "simplified across attribute seams (stuck with them kept; --keep-seams: never): " << r.groups_across_seams
-      << " groups\n";
+    s << "note: " << r.groups_across_seams
+      << " groups simplified across attribute seams (stuck with them kept; --keep-seams: never)\n";
   for (const std::string& w : r.warnings) s << "warning: " << w << "\n";
+  std::snprintf(line, sizeof line,
+                "total: %s, %s with GAZELOD_cluster_lod, %llu input triangles, "
+                "hierarchy %.3f s (%.3g input triangles/s), %.3f s in all\n",
+                aux::counted(r.meshes, "mesh", "meshes").c_str(),
+                aux::counted(r.primitives.size(), "primitive", "primitives").c_str(),
+                static_cast<unsigned long long>(r.input_triangles),
+                r.build_seconds, per_second(double(r.input_triangles), r.build_seconds), r.seconds);
+  s << line;
   return s.str();
 }
 

@@ -1,6 +1,8 @@
 // Fixed-width text table for format_summary (summary.hpp).
 #include "bake/summary.hpp"
 
+#include "auxiliary/text.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -27,14 +29,14 @@ std::string format_summary(const BakeReport& r) {
     }
     if (!m.note.empty()) s << "  note: " << m.name << " " << m.note << "\n";
   }
+  // Warnings before the total: a run ends with its result.
+  for (const std::string& w : r.warnings) s << "warning: " << w << "\n";
   const double tps = r.seconds > 0.0 ? double(r.input_triangles) / r.seconds : 0.0;
-  std::snprintf(line, sizeof line,
-                "total: %zu meshes, %zu nodes with MSFT_lod, %llu input triangles, %.3f s "
-                "(%.3g input triangles/s)\n",
-                r.meshes.size(), r.lod_nodes, static_cast<unsigned long long>(r.input_triangles),
+  std::snprintf(line, sizeof line, "total: %s, %s with MSFT_lod, %llu input triangles, %.3f s (%.3g input triangles/s)\n",
+                aux::counted(r.meshes.size(), "mesh", "meshes").c_str(),
+                aux::counted(r.lod_nodes, "node", "nodes").c_str(), static_cast<unsigned long long>(r.input_triangles),
                 r.seconds, tps);
   s << line;
-  for (const std::string& w : r.warnings) s << "warning: " << w << "\n";
   return s.str();
 }
 

@@ -1,5 +1,7 @@
 #include "apps/gazelod/run_cluster_audit.hpp"
 
+#include "auxiliary/text.hpp"
+
 #include "apps/gazelod/eval_lod_map.hpp"
 #include "lod/cluster_select.hpp"
 
@@ -263,9 +265,9 @@ void print_cluster_run(const ClusterRunSummary& s, std::int64_t frames, std::ost
   const double n = static_cast<double>(std::max<std::int64_t>(frames, 1));
   char line[320];
   std::snprintf(line, sizeof line,
-                "clusters        %zu meshes, %zu clusters (%zu leaves): %.0f triangles drawn per frame of %.0f at "
+                "clusters        %s, %zu clusters (%zu leaves): %.0f triangles drawn per frame of %.0f at "
                 "full detail (%.1f%%, per eye; %.0f before the switch policy)\n",
-                s.meshes, s.clusters, s.leaves, static_cast<double>(s.triangles_drawn) / n,
+                aux::counted(s.meshes, "mesh", "meshes").c_str(), s.clusters, s.leaves, static_cast<double>(s.triangles_drawn) / n,
                 static_cast<double>(s.triangles_full) / n,
                 100.0 * ratio(static_cast<double>(s.triangles_drawn), static_cast<double>(s.triangles_full)),
                 static_cast<double>(s.triangles_perceptual) / n);

@@ -1,5 +1,7 @@
 #include "apps/gazelod/run_report.hpp"
 
+#include "auxiliary/text.hpp"
+
 #include "gaze/atomic_file.hpp"
 
 #include "apps/gazelod/svg_plot.hpp"
@@ -118,6 +120,10 @@ RunSummary summarize(const std::vector<FrameRecord>& frames, double budget_ms) {
   return s;
 }
 
+namespace {
+void print_per_object(const RunSummary& s, std::ostream& out);
+}  // namespace
+
 void print_summary(const RunInfo& info, const RunSummary& s, std::ostream& out, bool breakdown) {
   char line[256];
   out << "\n== gazelod run: " << info.scenario << " ==\n";
@@ -129,6 +135,35 @@ void print_summary(const RunInfo& info, const RunSummary& s, std::ostream& out, 
   std::snprintf(line, sizeof line, "frame time      mean %.3f ms, p95 %.3f ms, max %.3f ms (selection mean %.3f ms)\n",
                 s.mean_frame_ms, s.p95_frame_ms, s.max_frame_ms, s.mean_select_ms);
   out << line;
+  // A scene of cluster meshes only has no per-object lines to show (they would all read 0).
+  const bool per_object = s.triangles_full > 0 || s.clusters.meshes == 0;
+  if (!per_object) {
+    out << "objects         every object is a cluster mesh (no per-object LOD)\n";
+    print_cluster_run(s.clusters, s.frames, out);
+  } else {
+    print_per_object(s, out);
+  }
+  std::snprintf(line, sizeof line, "gaze            valid in %.1f%% of frames, %s",
+                100.0 * safe_ratio(static_cast<double>(s.gaze_valid_frames), static_cast<double>(s.frames)),
+                aux::counted(static_cast<std::uint64_t>(std::max<std::int64_t>(0, s.saccades)), "saccade", "saccades").c_str());
+  out << line;
+  if (s.gaze_bad_samples > 0) out << ", " << s.gaze_bad_samples << " bad samples refused (NaN, zero or backwards)";
+  out << "\n";
+  if (info.budget_ms > 0.0) {
+    std::snprintf(line, sizeof line, "budget          %.3f ms, exceeded in %lld frames (%.1f%%)\n",
+                  info.budget_ms, static_cast<long long>(s.frames_over_budget),
+                  100.0 * safe_ratio(static_cast<double>(s.frames_over_budget), static_cast<double>(s.frames)));
+    out << line;
+  }
+  if (per_object) print_audit(s.audit, out, breakdown);
+  if (s.clusters.meshes > 0) print_cluster_audit(s.clusters.audit, out);
+}
+
+namespace {
+
+// The per-object lines: triangles, the cluster meshes beside them, levels, the shares.
+void print_per_object(const RunSummary& s, std::ostream& out) {
+  char line[256];
   const double drawn_pct = 100.0 * safe_ratio(static_cast<double>(s.triangles_drawn),
                                               static_cast<double>(s.triangles_full));
   std::snprintf(line, sizeof line, "triangles       %llu drawn of %llu at full detail (%.1f%%, per eye)\n",
@@ -150,21 +185,9 @@ void print_summary(const RunInfo& info, const RunSummary& s, std::ostream& out, 
                 100 * s.shares.size, 100 * s.shares.eccentricity, 100 * s.shares.velocity,
                 100 * s.shares.interaction);
   out << line;
-  std::snprintf(line, sizeof line, "gaze            valid in %.1f%% of frames, %lld saccades",
-                100.0 * safe_ratio(static_cast<double>(s.gaze_valid_frames), static_cast<double>(s.frames)),
-                static_cast<long long>(s.saccades));
-  out << line;
-  if (s.gaze_bad_samples > 0) out << ", " << s.gaze_bad_samples << " bad samples refused (NaN, zero or backwards)";
-  out << "\n";
-  if (info.budget_ms > 0.0) {
-    std::snprintf(line, sizeof line, "budget          %.3f ms, exceeded in %lld frames (%.1f%%)\n",
-                  info.budget_ms, static_cast<long long>(s.frames_over_budget),
-                  100.0 * safe_ratio(static_cast<double>(s.frames_over_budget), static_cast<double>(s.frames)));
-    out << line;
-  }
-  print_audit(s.audit, out, breakdown);
-  if (s.clusters.meshes > 0) print_cluster_audit(s.clusters.audit, out);
 }
+
+}  // namespace
 
 void write_report_files(const std::filesystem::path& dir, const RunInfo& info,
                         const RunSummary& s, const std::vector<FrameRecord>& frames) {
@@ -325,9 +348,15 @@ Plot audit_plot(const RunInfo& info, const AuditSummary& s, const std::vector<Fr
       plot.spans.push_back({f.t_s, end, "#7f7f7f"});
     }
   }
-  plot.panels.push_back({"in-view objects", {degraded, excess}});
-  plot.panels.push_back({"switches per frame", {switches}});
-  plot.panels.push_back({"triangles in view", {drawn, oracle}});
+  // A scene of cluster meshes only: no empty per-object panels.
+  const bool objects_seen = std::any_of(frames.begin(), frames.end(), [](const FrameRecord& f) {
+    return f.audit.available && f.audit.in_view > 0;
+  });
+  if (objects_seen || !clusters_audited) {
+    plot.panels.push_back({"in-view objects", {degraded, excess}});
+    plot.panels.push_back({"switches per frame", {switches}});
+    plot.panels.push_back({"triangles in view", {drawn, oracle}});
+  }
   if (clusters_audited) {
     plot.panels.push_back({"in-view cluster leaves", {leaf_degraded, leaf_excess, leaf_miscovered}});
     plot.panels.push_back({"leaf switches per frame", {leaf_switches}});

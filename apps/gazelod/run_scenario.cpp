@@ -242,7 +242,9 @@ void point_loader_at_simulator(const PreparedScenario& prepared, const RunOption
 }
 
 TraceFromFirstFrame::TraceFromFirstFrame(std::vector<gaze::TraceRecord> records)
-    : start_ns_(records.empty() ? 0 : records.front().gaze.t_ns), replay_(std::move(records)) {}
+    : start_ns_(records.empty() ? 0 : records.front().gaze.t_ns),
+      duration_ns_(records.empty() ? 0 : records.back().gaze.t_ns - records.front().gaze.t_ns),
+      replay_(std::move(records)) {}
 
 void TraceFromFirstFrame::start_at(std::int64_t t_ns) {
   offset_ns_ = t_ns - start_ns_;

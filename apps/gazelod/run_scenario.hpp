@@ -51,9 +51,11 @@ class TraceFromFirstFrame final : public gaze::GazeSource {
   std::string name() const override { return "trace"; }
   std::optional<gaze::GazeSample> sample_at(std::int64_t t_ns) override;
   std::string status() const override { return replay_.status(); }
+  // From the first sample to the last (seconds): how long the trace can stand in for gaze.
+  double duration_s() const { return static_cast<double>(duration_ns_) * 1e-9; }
 
  private:
-  std::int64_t start_ns_ = 0, offset_ns_ = 0;
+  std::int64_t start_ns_ = 0, offset_ns_ = 0, duration_ns_ = 0;
   bool started_ = false;
   gaze::ReplaySource replay_;
 };

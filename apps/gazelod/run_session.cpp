@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <optional>
 
@@ -82,7 +83,9 @@ class SaccadeMarker {
 int run_session(const RunOptions& opt, Io io) {
   // The scenario: the runtime serves it; this process also steps it for object motion.
   const PreparedScenario prepared = prepare_scenario(opt);
-  for (const std::string& note : prepared.notes) io.err << "gazelod run: " << note << "\n";
+  // Routine notes (what the preparation did) only without --quiet; warnings always.
+  if (!opt.quiet)
+    for (const std::string& note : prepared.notes) io.err << "gazelod run: " << note << "\n";
   sim::Simulator simulator(prepared.scenario);
   const sim::Scenario& scenario = simulator.scenario();
   if (opt.runtime == "sim") point_loader_at_simulator(prepared, opt);
@@ -91,8 +94,7 @@ int run_session(const RunOptions& opt, Io io) {
   // the plugin's objects are the others, plain[k] being plugin object k's scenario index.
   const ClusterScene clusters = prepared.baked ? make_cluster_scene(*prepared.baked, prepared.scene_shift_m, scenario)
                                                : ClusterScene{};
-  if (!opt.quiet)
-    for (const std::string& note : clusters.notes) io.err << "gazelod run: --scene: " << note << "\n";
+  for (const std::string& note : clusters.notes) io.err << "gazelod run: --scene: " << note << "\n";
   std::vector<std::size_t> plain;
   std::vector<int> plugin_id(scenario.objects.size(), -1);
   for (std::size_t i = 0; i < scenario.objects.size(); ++i) {
@@ -220,6 +222,18 @@ int run_session(const RunOptions& opt, Io io) {
   const double rate = scenario.frame_rate_hz > 0 ? scenario.frame_rate_hz : 90.0;
   const std::int64_t planned = opt.frames > 0 ? opt.frames : static_cast<std::int64_t>(std::llround(scenario.duration_s * rate));
   const std::int64_t capture = opt.capture_frame >= 0 ? opt.capture_frame : planned / 2;
+  // A trace shorter than the run: past its end the gaze falls back to head-fixed (and says so
+  // then); say it before, with the way to bound the run.
+  if (trace && trace->duration_s() + 1.0 / rate < static_cast<double>(planned) / rate) {
+    const auto covered = static_cast<std::int64_t>(trace->duration_s() * rate) + 1;
+    char line[256];
+    std::snprintf(line, sizeof line,
+                  "gazelod run: --trace: the trace lasts %.2f s, the run %.2f s: frames after %lld fall back to "
+                  "head-fixed gaze (--frames %lld stops with the trace)\n",
+                  trace->duration_s(), static_cast<double>(planned) / rate, static_cast<long long>(covered),
+                  static_cast<long long>(covered));
+    io.err << line;
+  }
   std::vector<FrameRecord> frames;
   // Every frame keeps a record for the report: say so before a run that will hold gigabytes
   // (a scenario of hours at 1 kHz), and reserve at most 65,536 up front (a reserve of

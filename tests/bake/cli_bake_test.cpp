@@ -27,7 +27,7 @@ TEST(CliBake, BakesWithProgressAndSummary) {
   const std::string out = in.substr(0, in.rfind('/')) + "/out.glb";
   const Result r = run_cli({"bake", in, "-o", out, "--levels", "3"});
   ASSERT_EQ(r.rc, 0) << r.err;
-  EXPECT_HAS(r.err, "bake: mesh 1/2 mesh 0 'Sphere' (1 primitives) ...");
+  EXPECT_HAS(r.err, "bake: mesh 1/2 mesh 0 'Sphere' (1 primitive) ...");
   EXPECT_HAS(r.err, "overall 100%");
   EXPECT_HAS(r.out, "triangles");
   EXPECT_HAS(r.out, "5120");

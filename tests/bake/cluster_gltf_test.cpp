@@ -244,8 +244,8 @@ TEST(ClusterGltf, DegenerateTrianglesAreReported) {
   EXPECT_EQ(b.report.primitives[0].degenerate_triangles, 2u);
   EXPECT_EQ(b.report.primitives[0].source_triangles, 512u);
   const std::string summary = format_cluster_summary(b.report);
-  EXPECT_HAS(summary, "warning: 2 degenerate triangles (two corners at one position) dropped in 1 primitives");
-  EXPECT_HAS(summary, "total: 1 meshes, 1 primitives with GAZELOD_cluster_lod, 514 input triangles");
+  EXPECT_HAS(summary, "warning: 2 degenerate triangles (two corners at one position) dropped in 1 primitive");
+  EXPECT_HAS(summary, "total: 1 mesh, 1 primitive with GAZELOD_cluster_lod, 514 input triangles");
 }
 
 TEST(ClusterGltf, SingleTriangleIsOneCluster) {

@@ -123,7 +123,7 @@ TEST_F(ClusterRun, NoRenderRunReportsClusterFiguresAndTheirAudit) {
             std::string::npos)
       << r.err;
   EXPECT_NE(r.err.find("cluster triangles "), std::string::npos) << "progress lines: " << r.err;
-  EXPECT_NE(r.out.find("clusters        1 meshes, "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("clusters        1 mesh, "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("cluster audit   visible degradations "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("cluster audit   every frame's cut covers each leaf exactly once"), std::string::npos) << r.out;
 
@@ -488,6 +488,29 @@ TEST_F(ClusterRun, BadPlacementIsAUsageError) {
   EXPECT_EQ(r.rc, 2);
   EXPECT_NE(r.err.find("--scene-placement: needs --scene"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(out / "summary.json"));
+}
+
+// A scene whose every object is a cluster mesh: no per-object lines or audit panels that
+// would all read 0, the cluster ones instead.
+TEST(ClusterOnlyRun, ReportsHaveNoEmptyPerObjectLinesOrPanels) {
+  use_simulated_runtime("");
+  const auto dir = scratch_dir();
+  const std::string terrain = (dir / "terrain.glb").string(), baked = (dir / "terrain-clusters.glb").string();
+  ASSERT_EQ(run_cli({"scene", "generate", "terrain", terrain, "--triangles", "4000"}).rc, 0);
+  const CliResult b = run_cli({"bake", "--clusters", terrain, baked});
+  ASSERT_EQ(b.rc, 0) << b.err;
+  const CliResult r = run_cli({"run", "--no-render", "--quiet", "--frames", "30", "--scene", baked, "--scene-placement",
+                               "file", "--scenario", std::string(GAZELOD_SOURCE_DIR) + "/sim/scenarios/terrain-walk.json",
+                               "--out", (dir / "out").string()});
+  ASSERT_EQ(r.rc, 0) << r.err;
+  EXPECT_NE(r.out.find("objects         every object is a cluster mesh (no per-object LOD)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("clusters        1 mesh, "), std::string::npos) << r.out;
+  for (const char* gone : {"LOD histogram", "reduction owed", "triangles       0 drawn", "audit           visible"})
+    EXPECT_EQ(r.out.find(gone), std::string::npos) << gone << "\n" << r.out;
+  EXPECT_NE(r.out.find("cluster audit   visible degradations"), std::string::npos) << r.out;
+  const std::string svg = read_text(dir / "out" / "audit.svg");
+  EXPECT_EQ(svg.find("in-view objects"), std::string::npos) << "no empty per-object panel";
+  EXPECT_NE(svg.find("in-view cluster leaves"), std::string::npos);
 }
 
 }  // namespace

@@ -150,6 +150,15 @@ TEST(RunCli, TraceIsTheGazeSourceForTheWholeRun) {
   EXPECT_GE(head_fixed, 110);
   EXPECT_NE(r.err.find("gaze source head-fixed"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("trace unavailable"), std::string::npos) << r.err;
+  // Said before the run starts, with the bound that stops with the trace.
+  EXPECT_NE(r.err.find("--trace: the trace lasts 1.47 s, the run 3.00 s: frames after 132 fall back to head-fixed "
+                       "gaze (--frames 132 stops with the trace)"),
+            std::string::npos)
+      << r.err;
+  const CliResult fits = run_cli({"run", "--frames", "100", "--no-render", "--quiet", "--trace",
+                                  (dir / "trace.csv").string(), "--out", (dir / "out2").string()});
+  ASSERT_EQ(fits.rc, 0) << fits.err;
+  EXPECT_EQ(fits.err.find("the trace lasts"), std::string::npos) << "a trace as long as the run: no note\n" << fits.err;
   // No ground truth for a replayed trace.
   const auto summary = nlohmann::json::parse(read_text(dir / "out" / "summary.json"));
   EXPECT_FALSE(summary.at("audit").at("available").get<bool>());

@@ -1,5 +1,10 @@
-// A small SVG line-plot writer for reports (frames over time, per-HMD comparisons):
-// stacked panels sharing one x axis, optional vertical event markers. No dependencies.
+// A small SVG line-plot writer for reports (frames over time, per-HMD comparisons): stacked
+// panels sharing one x axis, optional vertical event markers and shaded bands. Axes from
+// plot_axis.hpp (round ticks, k/M labels, a log scale where a panel spans decades); margins
+// sized to the widest tick label and legend entry so no two texts overlap; a series identical
+// to an earlier one in its panel is dashed and says so; a series longer than the plot is wide
+// is thinned to each pixel column's minimum and maximum (what the pixels can show). No
+// dependencies.
 #pragma once
 
 #include <ostream>
@@ -14,9 +19,13 @@ struct PlotSeries {
   std::vector<double> y;       // one value per x; non-finite values break the line
 };
 
+enum class PlotScale { automatic, linear, log };
+
 struct PlotPanel {
   std::string y_label;
   std::vector<PlotSeries> series;
+  // automatic: log where every value is positive and they span two decades or more.
+  PlotScale scale = PlotScale::automatic;
 };
 
 struct PlotMarker {

@@ -3,6 +3,7 @@
 #include "lod/display.hpp"
 #include "apps/gazelod/command.hpp"
 #include "apps/gazelod/compare_runs.hpp"
+#include "tests/cli/svg_check.hpp"
 #include "tests/eval/eval_cli.hpp"
 
 #include <gtest/gtest.h>
@@ -20,6 +21,13 @@ using testing::cli;
 using testing::Result;
 using testing::scratch;
 using testing::use_simulated_runtime;
+
+std::string read_text_file(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
 
 // A motion-rich scene: forward flight, head sweeping, saccades, so all criteria have work.
 std::filesystem::path write_scenario(const std::filesystem::path& dir) {
@@ -87,6 +95,9 @@ TEST(Compare, JsonShapeAndNoCriterionAddsTriangles) {
     EXPECT_EQ(audit.at("suppression_window").at("after_saccade_ms").get<double>(), 50.0) << name;
   }
   EXPECT_TRUE(std::filesystem::file_size(dir / "out" / "compare.svg") > 500);
+  const std::string svg = read_text_file(dir / "out" / "compare.svg");
+  EXPECT_EQ(svgcheck::unround_ticks(svg), std::vector<std::string>{});
+  EXPECT_EQ(svgcheck::overlapping_texts(svg), std::vector<std::string>{});
   EXPECT_TRUE(std::filesystem::exists(dir / "out" / "questpro" / "summary.json"));
 }
 
@@ -208,6 +219,11 @@ TEST(EvalSmoke, HeadlessTablesAreWrittenAndConsistent) {
   EXPECT_EQ(rows, 2);
   EXPECT_TRUE(std::filesystem::exists(dir / "figure6.svg"));
   EXPECT_TRUE(std::filesystem::exists(dir / "head_turns.svg"));
+  for (const char* plot : {"figure6.svg", "head_turns.svg"}) {
+    const std::string svg = read_text_file(dir / plot);
+    EXPECT_EQ(svgcheck::unround_ticks(svg), std::vector<std::string>{}) << plot;
+    EXPECT_EQ(svgcheck::overlapping_texts(svg), std::vector<std::string>{}) << plot;
+  }
   EXPECT_FALSE(std::filesystem::exists(dir / "figure5.svg")) << "--no-render skips Figure 5";
 }
 

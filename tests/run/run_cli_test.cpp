@@ -1,6 +1,7 @@
 // `gazelod run` end to end on the simulated runtime: the report, its invariants, and the
 // fallbacks when eye gaze is missing.
 #include "run_test_util.hpp"
+#include "tests/cli/svg_check.hpp"
 #include "tests/skip_or_fail.hpp"
 #include "apps/gazelod/run_session.hpp"
 #include "gaze/trace_writer.hpp"
@@ -67,6 +68,12 @@ TEST(RunCli, DefaultScenario120FramesWritesAConsistentReport) {
   }
   EXPECT_EQ(rows, 120);
   EXPECT_TRUE(std::filesystem::file_size(dir / "frames.svg") > 1000);
+  // Plots a reader trusts at a glance: round ticks, no text over another.
+  for (const char* plot : {"frames.svg", "audit.svg"}) {
+    const std::string svg = read_text(dir / plot);
+    EXPECT_EQ(cli::svgcheck::unround_ticks(svg), std::vector<std::string>{}) << plot;
+    EXPECT_EQ(cli::svgcheck::overlapping_texts(svg), std::vector<std::string>{}) << plot;
+  }
   EXPECT_TRUE(std::filesystem::file_size(dir / "frame.png") > 1000);
   EXPECT_NE(r.out.find("triangles"), std::string::npos) << r.out;
 }

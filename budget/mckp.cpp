@@ -28,22 +28,13 @@ void reduce_ip_dominated(const MckpInstance& instance, std::vector<std::uint32_t
                                                 : std::numeric_limits<double>::infinity();
     for (std::uint32_t j = 0; j < items.size(); ++j)
       if (items[j].cost <= room || items[j].cost == own_lowest) kept.push_back(j);
-    // Insertion sort by (cost asc, profit desc, index asc): subsets are short and usually
-    // already in detail order, so this is close to one pass.
-    for (std::size_t a = begin + 1; a < kept.size(); ++a) {
-      const std::uint32_t v = kept[a];
-      std::size_t b = a;
-      auto before = [&](std::uint32_t x, std::uint32_t y) {
-        if (items[x].cost != items[y].cost) return items[x].cost < items[y].cost;
-        if (items[x].profit != items[y].profit) return items[x].profit > items[y].profit;
-        return x < y;
-      };
-      while (b > begin && before(v, kept[b - 1])) {
-        kept[b] = kept[b - 1];
-        --b;
-      }
-      kept[b] = v;
-    }
+    // By (cost asc, profit desc, index asc), a total order, so the result does not depend on
+    // the sort. (An insertion sort here was quadratic: 53 s for one subset of 200k items.)
+    std::sort(kept.begin() + static_cast<std::ptrdiff_t>(begin), kept.end(), [&](std::uint32_t x, std::uint32_t y) {
+      if (items[x].cost != items[y].cost) return items[x].cost < items[y].cost;
+      if (items[x].profit != items[y].profit) return items[x].profit > items[y].profit;
+      return x < y;
+    });
     // Keep only strictly increasing profit along increasing cost.
     std::size_t out = begin;
     for (std::size_t a = begin; a < kept.size(); ++a) {

@@ -79,15 +79,19 @@ void build_hmckp_tree(const MckpInstance& instance, std::span<const std::uint32_
       tree.nodes.push_back(n);
     }
     // A kept item maps to itself; a dropped item to the costliest kept item that costs no
-    // more (one always exists: the cheapest kept item is a cheapest item).
+    // more (one always exists: the cheapest kept item is a cheapest item). The kept items are
+    // in cost order, so that is a binary search (a scan per item was quadratic: 40 s for one
+    // subset of 200k items with nothing dropped).
+    const std::uint32_t first = kept_offsets[k], last = kept_offsets[k + 1];
+    for (std::uint32_t a = first; a < last; ++a) tree.chain_pos[base + kept[a]] = a - first;
+    std::vector<bool> is_kept(items.size(), false);
+    for (std::uint32_t a = first; a < last; ++a) is_kept[kept[a]] = true;
     for (std::uint32_t j = 0; j < items.size(); ++j) {
-      std::uint32_t pos = 0;
-      bool own = false;
-      for (std::uint32_t a = kept_offsets[k]; a < kept_offsets[k + 1] && !own; ++a) {
-        own = kept[a] == j;
-        if (own || items[kept[a]].cost <= items[j].cost) pos = a - kept_offsets[k];
-      }
-      tree.chain_pos[base + j] = pos;
+      if (is_kept[j]) continue;
+      const auto at = std::upper_bound(kept.begin() + first, kept.begin() + last, items[j].cost,
+                                       [&](double cost, std::uint32_t i) { return cost < items[i].cost; });
+      const auto above = static_cast<std::uint32_t>(at - (kept.begin() + first));
+      tree.chain_pos[base + j] = above > 0 ? above - 1 : 0;
     }
   }
   // Group impostor chains.

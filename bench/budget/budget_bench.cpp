@@ -22,6 +22,7 @@
 #include <cstdio>
 #include <cstring>
 #include <map>
+#include <random>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -138,7 +139,34 @@ void coherent_args(benchmark::internal::Benchmark* b) {
     for (int64_t n : {100, 1000, 10000, 100000}) b->Args({n, m});
 }
 
+// One subset of n items in random order (the `budget --instance` case of issue #40: one object
+// with 200k candidate levels): every solver's cost should grow as n log n (the sort), not n^2,
+// i.e. a little more than double from one n to the next.
+void BM_OneLargeSubset(benchmark::State& state) {
+  const auto kind = static_cast<SolverKind>(state.range(0));
+  const auto n = static_cast<std::size_t>(state.range(1));
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(0.0, 100.0);
+  std::vector<MckpItem> items(n);
+  for (MckpItem& it : items) it.profit = u(rng), it.cost = u(rng);
+  MckpInstance inst;
+  inst.capacity = 50.0;
+  inst.add_subset(items);
+  MckpSolution sol;
+  for (auto _ : state) {
+    sol = kind == SolverKind::exact ? solve_exact(inst, kExactNodeLimit) : solve(kind, inst);
+    benchmark::DoNotOptimize(sol.profit);
+  }
+  state.SetLabel(std::string(solver_name(kind)) + ", one subset");
+}
+
+void one_subset_args(benchmark::internal::Benchmark* b) {
+  for (SolverKind kind : {SolverKind::exact, SolverKind::mason_incremental, SolverKind::funkhouser_incremental})
+    for (int64_t n : {50000, 100000, 200000}) b->Args({static_cast<int64_t>(kind), n});
+}
+
 BENCHMARK(BM_Solve)->Apply(solve_args)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_OneLargeSubset)->Apply(one_subset_args)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_IncrementalCoherent)
     ->Apply(coherent_args)
     ->UseManualTime()

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The two set-up commands of the README:
 #   bash scripts/setup.sh run    install, build, run the main job
 #   bash scripts/setup.sh test   install, build, run every test (also under ASan + UBSan, TSan)
@@ -50,8 +51,11 @@ case "$what" in
     # libgazelod.so before the ThreadSanitizer runtime is set up (test_capi crashed loading it).
     build build-tsan -DGAZELOD_TSAN=ON -DGAZELOD_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=Debug \
       "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -g1 -DGAZELOD_NO_CLONES" -- test_hid test_faults test_bake_clusters test_capi
-    TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 ./build-tsan/tests/hid/test_hid
-    TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 ./build-tsan/tests/faults/test_faults --gtest_filter='HidFaults.*'
+    # Repeated: a test that reads what a thread publishes before it is published fails only
+    # sometimes (issue #40 item 11; 50 repeats ran clean before this landed, bench/RESULTS.md).
+    TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 ./build-tsan/tests/hid/test_hid --gtest_repeat=10 --gtest_brief=1
+    TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 ./build-tsan/tests/faults/test_faults --gtest_filter='HidFaults.*' \
+      --gtest_repeat=10 --gtest_brief=1
     # The C ABI: an application thread registering and reading beside the render thread.
     TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 ./build-tsan/tests/capi/test_capi --gtest_filter='CApiThreads.*'
     TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 ./build-tsan/tests/bake/test_bake_clusters \

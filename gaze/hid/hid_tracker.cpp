@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "gaze/hid/hid_tracker.hpp"
 
 #include "gaze/hid/enumerate.hpp"
@@ -13,14 +14,15 @@ namespace gazelod::gaze::hid {
 namespace {
 
 std::int64_t steady_now_ns() {
-  return std::chrono::duration_cast<std::chrono::nanoseconds>(
-             std::chrono::steady_clock::now().time_since_epoch())
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
       .count();
 }
 
 // Logs the first few of a kind of bad report, then every 1000th, so a babbling device cannot
 // flood the log but every kind of problem is seen.
-bool worth_logging(std::uint64_t count) { return count <= 10 || count % 1000 == 0; }
+bool worth_logging(std::uint64_t count) {
+  return count <= 10 || count % 1000 == 0;
+}
 
 std::string hex_id(std::uint8_t id) {
   static const char* digits = "0123456789abcdef";
@@ -37,7 +39,9 @@ HidTracker::HidTracker(HidTrackerConfig config)
   if (config_.reopen_interval_ms < 1) config_.reopen_interval_ms = 1;
 }
 
-HidTracker::~HidTracker() { stop(); }
+HidTracker::~HidTracker() {
+  stop();
+}
 
 void HidTracker::start() {
   if (thread_.joinable()) return;
@@ -55,7 +59,9 @@ void HidTracker::stop() {
   if (thread_.joinable()) thread_.join();
 }
 
-void HidTracker::log(const std::string& line) { config_.log("gazelod hid: " + line); }
+void HidTracker::log(const std::string& line) {
+  config_.log("gazelod hid: " + line);
+}
 
 void HidTracker::set_status(std::string s) {
   std::lock_guard lock(state_mutex_);
@@ -158,8 +164,7 @@ void HidTracker::read_features() {
     buf[0] = id;
     const int n = hid_get_feature_report(dev_, buf.data(), buf.size());
     if (n <= 0) {
-      log(std::string("could not read the ") + name +
-          " feature report: " + to_utf8(hid_error(dev_)));
+      log(std::string("could not read the ") + name + " feature report: " + to_utf8(hid_error(dev_)));
       return {};
     }
     return {buf.data(), static_cast<std::size_t>(n)};
@@ -206,18 +211,21 @@ void HidTracker::close_device(bool unplugged) {
   const std::string err = unplugged ? to_utf8(hid_error(dev_)) : "";
   hid_close(dev_);
   dev_ = nullptr;
-  connected_ = false;
-  if (!unplugged) return;
-  std::string path;
-  {
-    std::lock_guard lock(state_mutex_);
-    ++counters_.disconnects;
-    path = state_.path;
+  if (unplugged) {
+    std::string path;
+    {
+      std::lock_guard lock(state_mutex_);
+      ++counters_.disconnects;
+      path = state_.path;
+    }
+    said_no_device_ = true;   // the unplug line below is the one line for this absence
+    set_status("unplugged");  // before its log line, as above
+    log("lost " + path + " (hid_read returned -1" + (err.empty() ? "" : ": " + err) +
+        "); gaze unavailable until it is back");
   }
-  said_no_device_ = true;  // the unplug line below is the one line for this absence
-  set_status("unplugged");  // before its log line, as above
-  log("lost " + path + " (hid_read returned -1" + (err.empty() ? "" : ": " + err) +
-      "); gaze unavailable until it is back");
+  // Last: whoever sees connected() false also sees the counter, the status and the line above
+  // (a test read the status between the two and found the old one).
+  connected_ = false;
 }
 
 void HidTracker::bad_report(std::uint64_t& counter, const std::string& line) {
@@ -244,8 +252,7 @@ void HidTracker::handle_report(const std::uint8_t* data, std::size_t size, std::
       const DeviceState st = device_state();
       GazeSample s = st.screen ? gaze_from_screen(*d.value, *st.screen) : GazeSample{};
       // A tracker that says it is not ready (calibrating, needs setup) is not trusted.
-      if (st.status && st.status->configuration_status != ConfigurationStatus::kReady)
-        s.valid = false;
+      if (st.status && st.status->configuration_status != ConfigurationStatus::kReady) s.valid = false;
       s.t_ns = t_ns;
       queue_.push(s);
       std::lock_guard lock(state_mutex_);
@@ -268,8 +275,8 @@ void HidTracker::handle_report(const std::uint8_t* data, std::size_t size, std::
       return;
     }
     default:
-      return bad_report(counters_.unknown, "input report with unknown ID " + hex_id(data[0]) +
-                                               " (" + std::to_string(size) + " bytes)");
+      return bad_report(counters_.unknown,
+                        "input report with unknown ID " + hex_id(data[0]) + " (" + std::to_string(size) + " bytes)");
   }
 }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "auxiliary/json_strict.hpp"
 
 #include <cstddef>
@@ -64,8 +65,8 @@ class Checker {
   bool open(bool object) {
     if (static_cast<int>(open_.size()) >= max_depth_)
       // No path: it would be the nesting itself, [0][0][0]... 64 times.
-      throw JsonStrictError("", "JSON nesting must be at most " + std::to_string(max_depth_) +
-                                    " levels of arrays and objects, got more");
+      throw JsonStrictError(
+          "", "JSON nesting must be at most " + std::to_string(max_depth_) + " levels of arrays and objects, got more");
     open_.push_back(Open{object, {}, {}, 0});
     return true;
   }

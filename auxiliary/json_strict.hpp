@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Parsing JSON that people write by hand (scenarios, configurations, budget instances): RFC
 // 8259 leaves a key repeated in one object undefined and nlohmann::json keeps the last one
 // silently, so `"duration_s": 2, ..., "duration_s": 3` would run for 3 s without a word. The
@@ -22,7 +23,7 @@ class JsonStrictError : public std::runtime_error {
   // what(): "PATH: MESSAGE" ("scene.objects[2].name: the key appears twice in one object").
   JsonStrictError(std::string path, std::string message)
       : std::runtime_error(path + ": " + message), path_(std::move(path)), message_(std::move(message)) {}
-  const std::string& path() const { return path_; }        // "" for the document itself (and nesting)
+  const std::string& path() const { return path_; }  // "" for the document itself (and nesting)
   const std::string& message() const { return message_; }
 
  private:

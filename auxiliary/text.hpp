@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Counted nouns for messages a person reads: "1 mesh", "2 meshes", "0 saccades".
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The bake driver: per-mesh chains from per-primitive chains, progress, timing (bake.hpp).
 #include "bake/bake.hpp"
 
@@ -33,7 +34,7 @@ void bounds(const std::vector<PrimitiveGeometry>& prims, double& diameter_m, dou
   for (const auto& g : prims)
     for (std::size_t i = 0; i < g.positions_xyz.size(); ++i)
       lo[i % 3] = std::min(lo[i % 3], double(g.positions_xyz[i])),
-      hi[i % 3] = std::max(hi[i % 3], double(g.positions_xyz[i]));
+             hi[i % 3] = std::max(hi[i % 3], double(g.positions_xyz[i]));
   diameter_m = extent_m = 0.0;
   if (!(lo[0] <= hi[0])) return;  // no vertices
   const double c[3] = {(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2};
@@ -68,12 +69,10 @@ void profile_mesh(Profiler& profiler, const std::vector<PrimitiveGeometry>& geo,
     chain.levels[k].rendered_cycles_per_diameter = prof[k].rendered_cycles_per_diameter;
 }
 
-MeshChain bake_mesh(const tinygltf::Model& m, int mesh, const ChainOptions& o, Profiler* profiler,
-                    MeshReport& rep) {
+MeshChain bake_mesh(const tinygltf::Model& m, int mesh, const ChainOptions& o, Profiler* profiler, MeshReport& rep) {
   const auto& prims = m.meshes[static_cast<std::size_t>(mesh)].primitives;
   std::vector<PrimitiveGeometry> geo;
-  for (std::size_t p = 0; p < prims.size(); ++p)
-    geo.push_back(extract_primitive(m, mesh, static_cast<int>(p)));
+  for (std::size_t p = 0; p < prims.size(); ++p) geo.push_back(extract_primitive(m, mesh, static_cast<int>(p)));
   double extent_m = 0.0;
   MeshChain chain;
   bounds(geo, chain.diameter_m, extent_m);
@@ -93,9 +92,8 @@ MeshChain bake_mesh(const tinygltf::Model& m, int mesh, const ChainOptions& o, P
     if (k > 0) {
       const MeshLevel& prev = chain.levels.back();
       if (l.triangles == 0 || l.triangles >= prev.triangles) {
-        rep.note = "stops at level " + std::to_string(k - 1) + ": cannot get below " +
-                   std::to_string(prev.triangles) + " triangles" +
-                   (l.triangles == 0 ? " without losing every triangle" : "");
+        rep.note = "stops at level " + std::to_string(k - 1) + ": cannot get below " + std::to_string(prev.triangles) +
+                   " triangles" + (l.triangles == 0 ? " without losing every triangle" : "");
         break;
       }
       l.error_m = std::max(l.error_m, prev.error_m);
@@ -113,8 +111,8 @@ MeshChain bake_mesh(const tinygltf::Model& m, int mesh, const ChainOptions& o, P
   for (std::size_t k = 0; k < chain.levels.size(); ++k) {
     const MeshLevel& l = chain.levels[k];
     rep.levels.push_back({l.triangles, l.vertices, l.error_relative, l.error_m,
-                          k == 0 ? 0.0 : detail_cycles_per_diameter(chain.diameter_m, l.error_m),
-                          l.sloppy, l.rendered_cycles_per_diameter});
+                          k == 0 ? 0.0 : detail_cycles_per_diameter(chain.diameter_m, l.error_m), l.sloppy,
+                          l.rendered_cycles_per_diameter});
   }
   return chain;
 }
@@ -140,8 +138,7 @@ BakeReport bake_model(tinygltf::Model& m, const BakeOptions& o) {
   const auto total = static_cast<std::size_t>(std::count(used.begin(), used.end(), true));
 
   if (o.profile_viewpoints != 0 && o.profile_viewpoints != 6 && o.profile_viewpoints != 18)
-    throw BakeError("profile: viewpoints must be 0 (off), 6 or 18, got " +
-                    std::to_string(o.profile_viewpoints));
+    throw BakeError("profile: viewpoints must be 0 (off), 6 or 18, got " + std::to_string(o.profile_viewpoints));
   std::unique_ptr<Profiler> profiler;
   if (o.profile_viewpoints != 0 && total > 0)
     profiler = std::make_unique<Profiler>(ProfileOptions{o.profile_viewpoints});
@@ -172,8 +169,7 @@ BakeReport bake_model(tinygltf::Model& m, const BakeOptions& o) {
     if (o.progress) {
       std::ostringstream s;
       s << "bake: mesh " << done << "/" << total << " done:";
-      for (std::size_t k = 0; k < rep.levels.size(); ++k)
-        s << (k ? " -> " : " ") << rep.levels[k].triangles;
+      for (std::size_t k = 0; k < rep.levels.size(); ++k) s << (k ? " -> " : " ") << rep.levels[k].triangles;
       s << " triangles in " << std::lround(rep.seconds * 1000.0) << " ms; overall "
         << (100 * done / std::max<std::size_t>(total, 1)) << "%";
       if (!rep.note.empty()) s << " (" << rep.note << ")";

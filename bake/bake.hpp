@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // gazelod bake: a glTF scene in, the same scene with an MSFT_lod chain per mesh node out.
 // Pipeline: gltf_load -> mesh_extract -> simplify_chain (per primitive) -> mesh chain (here)
 // -> gltf_pack + msft_lod_writer -> glb_write. With options.profile_viewpoints 6 or 18 each
@@ -21,8 +22,8 @@ namespace gazelod::bake {
 struct BakeOptions {
   ChainOptions chain;
   std::function<void(const std::string&)> progress;  // one line per call; may be empty
-  int profile_viewpoints = 0;  // 0: no rendered profile; 6 or 18 viewpoints (needs Vulkan)
-  GltfLoadOptions load;        // where external uris may point
+  int profile_viewpoints = 0;                        // 0: no rendered profile; 6 or 18 viewpoints (needs Vulkan)
+  GltfLoadOptions load;                              // where external uris may point
 };
 
 struct LevelReport {
@@ -46,7 +47,7 @@ struct MeshReport {
 struct BakeReport {
   std::vector<MeshReport> meshes;  // meshes used by at least one node, in mesh order
   std::vector<std::string> warnings;
-  std::size_t lod_nodes = 0;       // nodes that got an MSFT_lod chain
+  std::size_t lod_nodes = 0;  // nodes that got an MSFT_lod chain
   std::uint64_t input_triangles = 0;
   double seconds = 0.0;
 };

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The one error type of the bake pipeline: a message that already names the file and where in
 // it (mesh / primitive / JSON path), ready for the user.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // load_baked_scene: scene traversal with world matrices, chain reading, bounding spheres.
 #include "bake/baked_scene.hpp"
 
@@ -36,8 +37,7 @@ struct Reader {
 
   double number(const Value& obj, const std::string& key, const std::string& where) const {
     const Value& v = member(obj, key, where);
-    if (!v.IsNumber() || !std::isfinite(v.GetNumberAsDouble()))
-      fail(where + "/" + key, "must be a finite number");
+    if (!v.IsNumber() || !std::isfinite(v.GetNumberAsDouble())) fail(where + "/" + key, "must be a finite number");
     return v.GetNumberAsDouble();
   }
 
@@ -51,8 +51,7 @@ struct Reader {
       fail(where, "missing: --scene takes what gazelod bake writes (gazelod bake IN OUT.glb, or bake --clusters)");
     const Value& e = n.extras.Get("gazelod_lod");
     if (!e.IsObject()) fail(where, "must be an object");
-    if (number(e, "level", where) != expect_level)
-      fail(where + "/level", "expected " + std::to_string(expect_level));
+    if (number(e, "level", where) != expect_level) fail(where + "/level", "expected " + std::to_string(expect_level));
     const double tri = number(e, "triangles", where);
     double det = number(e, "detail_cycles_per_diameter", where);
     // A rendered profile (bake --profile, Reddy's method) is preferred to the geometric estimate.
@@ -140,8 +139,7 @@ struct Reader {
       for (std::size_t k = 0; k < ids.ArrayLen(); ++k) {
         const Value& id = ids.Get(static_cast<int>(k));
         const std::string w = where + "/" + std::to_string(k);
-        if (!id.IsInt() || id.GetNumberAsInt() < 0 ||
-            static_cast<std::size_t>(id.GetNumberAsInt()) >= m.nodes.size())
+        if (!id.IsInt() || id.GetNumberAsInt() < 0 || static_cast<std::size_t>(id.GetNumberAsInt()) >= m.nodes.size())
           fail(w, "not a node index");
         if (m.nodes[static_cast<std::size_t>(id.GetNumberAsInt())].mesh < 0) fail(w, "node has no mesh");
         o.lods.push_back(level(id.GetNumberAsInt(), static_cast<int>(k + 1)));
@@ -160,8 +158,7 @@ struct Reader {
     out.push_back(std::move(o));
   }
 
-  void visit(int node, const glm::dmat4& parent, std::vector<bool>& on_path,
-             std::vector<BakedObject>& out) const {
+  void visit(int node, const glm::dmat4& parent, std::vector<bool>& on_path, std::vector<BakedObject>& out) const {
     if (node < 0 || static_cast<std::size_t>(node) >= m.nodes.size())
       fail("/nodes", "reference to missing node " + std::to_string(node));
     if (on_path[static_cast<std::size_t>(node)]) fail("/nodes/" + std::to_string(node), "node graph has a cycle");
@@ -198,12 +195,13 @@ BakedScene load_baked(const std::string& path, BakedLoad what) {
       if (auto lod = read_cluster_lod(g.model, c.mesh, static_cast<int>(p), path)) {
         // read_cluster_lod found POSITION; the cluster indices point into these vertices.
         const std::string where = path + ": /meshes/" + std::to_string(mi) + "/primitives/" + std::to_string(p);
-        std::vector<float> xyz = read_positions(g.model, g.model.meshes[mi].primitives[p].attributes.at("POSITION"), where);
+        std::vector<float> xyz =
+            read_positions(g.model, g.model.meshes[mi].primitives[p].attributes.at("POSITION"), where);
         if (xyz.size() != 3 * std::size_t{lod->vertex_count})
           throw BakeError(where + ": POSITION has " + std::to_string(xyz.size() / 3) + " vertices, expected " +
                           std::to_string(lod->vertex_count));
-        c.primitives.push_back({static_cast<int>(p), lod->vertex_count, lod->levels,
-                                std::move(lod->hierarchy), std::move(lod->indices), std::move(xyz)});
+        c.primitives.push_back({static_cast<int>(p), lod->vertex_count, lod->levels, std::move(lod->hierarchy),
+                                std::move(lod->indices), std::move(xyz)});
       }
     if (c.primitives.empty()) continue;
     cluster_mesh_of[mi] = static_cast<int>(scene.cluster_meshes.size());
@@ -220,6 +218,8 @@ BakedScene load_baked(const std::string& path, BakedLoad what) {
   return scene;
 }
 
-std::vector<BakedObject> load_baked_scene(const std::string& path) { return load_baked(path).objects; }
+std::vector<BakedObject> load_baked_scene(const std::string& path) {
+  return load_baked(path).objects;
+}
 
 }  // namespace gazelod::bake

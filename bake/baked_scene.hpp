@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reads a baked .glb/.gltf back as LOD chains for the selection: one object per scene node
 // with a mesh (default scene, or every scene when none is default), its chain from the node's
 // MSFT_lod ids and each level's extras.gazelod_lod, and its world-space bounding sphere; and
@@ -24,12 +25,12 @@ struct BakedLevelMesh {
 };
 
 struct BakedObject {
-  std::string name;           // node name, or "node N"
-  int node = -1;              // glTF node index of the finest level
-  int mesh = -1;              // glTF mesh index of the finest level
-  glm::dvec3 center_m{0.0};   // world space (node transforms applied)
-  double radius_m = 0.0;      // world space, encloses the full-detail mesh
-  glm::dmat4 world{1.0};      // the node's world transform (mesh space -> glTF world), as glTF's column-major matrices
+  std::string name;          // node name, or "node N"
+  int node = -1;             // glTF node index of the finest level
+  int mesh = -1;             // glTF mesh index of the finest level
+  glm::dvec3 center_m{0.0};  // world space (node transforms applied)
+  double radius_m = 0.0;     // world space, encloses the full-detail mesh
+  glm::dmat4 world{1.0};     // the node's world transform (mesh space -> glTF world), as glTF's column-major matrices
   // lods[0] is the full mesh; detail is removed cycles per diameter (0 at level 0), from the
   // geometric error (detail.hpp); passes lod::validate_chain.
   std::vector<lod::LodLevel> lods;
@@ -67,9 +68,9 @@ struct BakedScene {
 // Throws BakeError "PATH: /nodes/3/extras/gazelod_lod/triangles: ..." for a file that is not a
 // gazelod bake output or is inconsistent (bad ids, missing extras, chain that fails validation,
 // a malformed GAZELOD_cluster_lod; with level geometry, a level's mesh that is not triangles or
-// holds a bad accessor: BakeError "PATH: mesh 2 'Body' primitive 0: ..."). A node whose mesh has cluster hierarchies needs no
-// extras.gazelod_lod: its chain is then one level, the full mesh.
-// What load_baked reads beside the chains, bounds and cluster hierarchies.
+// holds a bad accessor: BakeError "PATH: mesh 2 'Body' primitive 0: ..."). A node whose mesh has cluster hierarchies
+// needs no extras.gazelod_lod: its chain is then one level, the full mesh. What load_baked reads beside the chains,
+// bounds and cluster hierarchies.
 enum class BakedLoad { chains, with_level_geometry };
 BakedScene load_baked(const std::string& path, BakedLoad what = BakedLoad::chains);
 // load_baked(path).objects.

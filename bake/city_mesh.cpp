@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "bake/city_mesh.hpp"
 
 #include "bake/terrain_mesh.hpp"  // kMaxGeneratedTriangles
@@ -26,8 +27,8 @@ std::uint32_t panels(double length_m, double panel_m) {
 
 // A planar grid of nu x nv panels from `origin` along u and v; u x v points outward, and the
 // triangles wind counter-clockwise around it.
-void add_face(GeneratedMesh& m, const glm::dvec3& origin, const glm::dvec3& u, const glm::dvec3& v,
-              std::uint32_t nu, std::uint32_t nv) {
+void add_face(GeneratedMesh& m, const glm::dvec3& origin, const glm::dvec3& u, const glm::dvec3& v, std::uint32_t nu,
+              std::uint32_t nv) {
   const glm::dvec3 c = glm::cross(u, v);
   const double len = glm::length(c);
   const glm::dvec3 n = len > 0.0 ? c / len : glm::dvec3(0.0, 1.0, 0.0);
@@ -35,7 +36,8 @@ void add_face(GeneratedMesh& m, const glm::dvec3& origin, const glm::dvec3& u, c
   for (std::uint32_t j = 0; j <= nv; ++j)
     for (std::uint32_t i = 0; i <= nu; ++i) {
       const glm::dvec3 p = origin + u * (static_cast<double>(i) / nu) + v * (static_cast<double>(j) / nv);
-      m.positions.insert(m.positions.end(), {static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z)});
+      m.positions.insert(m.positions.end(),
+                         {static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z)});
       m.normals.insert(m.normals.end(), {static_cast<float>(n.x), static_cast<float>(n.y), static_cast<float>(n.z)});
     }
   for (std::uint32_t j = 0; j < nv; ++j)
@@ -49,10 +51,10 @@ void add_face(GeneratedMesh& m, const glm::dvec3& origin, const glm::dvec3& u, c
 void add_building(GeneratedMesh& m, double x0, double x1, double z0, double z1, double h, double panel) {
   const glm::dvec3 up(0.0, h, 0.0);
   const std::uint32_t nx = panels(x1 - x0, panel), nz = panels(z1 - z0, panel), ny = panels(h, panel);
-  add_face(m, {x0, 0.0, z1}, {x1 - x0, 0.0, 0.0}, up, nx, ny);  // +Z wall
-  add_face(m, {x1, 0.0, z0}, {x0 - x1, 0.0, 0.0}, up, nx, ny);  // -Z wall
-  add_face(m, {x1, 0.0, z1}, {0.0, 0.0, z0 - z1}, up, nz, ny);  // +X wall
-  add_face(m, {x0, 0.0, z0}, {0.0, 0.0, z1 - z0}, up, nz, ny);  // -X wall
+  add_face(m, {x0, 0.0, z1}, {x1 - x0, 0.0, 0.0}, up, nx, ny);                 // +Z wall
+  add_face(m, {x1, 0.0, z0}, {x0 - x1, 0.0, 0.0}, up, nx, ny);                 // -Z wall
+  add_face(m, {x1, 0.0, z1}, {0.0, 0.0, z0 - z1}, up, nz, ny);                 // +X wall
+  add_face(m, {x0, 0.0, z0}, {0.0, 0.0, z1 - z0}, up, nz, ny);                 // -X wall
   add_face(m, {x0, h, z0}, {0.0, 0.0, z1 - z0}, {x1 - x0, 0.0, 0.0}, nz, nx);  // roof
 }
 
@@ -70,7 +72,8 @@ GeneratedMesh make_block(const CityOptions& o, int bx, int bz) {
     // A setback of 5 % to 25 % of the lot on each side, and the height.
     const double max_in = 0.25 * lot, min_in = 0.05 * lot;
     const double x0 = lx + rng.uniform(5 * k, min_in, max_in), x1 = lx + lot - rng.uniform(5 * k + 1, min_in, max_in);
-    const double z0 = lz + rng.uniform(5 * k + 2, min_in, max_in), z1 = lz + lot - rng.uniform(5 * k + 3, min_in, max_in);
+    const double z0 = lz + rng.uniform(5 * k + 2, min_in, max_in),
+                 z1 = lz + lot - rng.uniform(5 * k + 3, min_in, max_in);
     const double h = rng.uniform(5 * k + 4, o.height_min_m, o.height_max_m);
     add_building(m, x0, x1, z0, z1, h, o.panel_m);
   }

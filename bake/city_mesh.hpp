@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A generated city for large-mesh tests (`gazelod scene generate city`): square blocks of box
 // buildings on a ground plane, +Y up, centred on the origin, deterministic by seed. Blocks of
 // block_m lie on a grid with streets of street_m between them, the origin at a street
@@ -20,10 +21,10 @@ namespace gazelod::bake {
 struct CityOptions {
   std::uint64_t triangles = 1'000'000;  // at least this many, [2, kMaxGeneratedTriangles]
   std::uint64_t seed = 1;
-  double block_m = 60.0;       // [10, 1000]
-  double street_m = 16.0;      // [2, 1000]
-  double panel_m = 1.5;        // facade panel size, [0.25, 100]
-  double height_min_m = 8.0;   // building heights, [1, 1000], min <= max
+  double block_m = 60.0;      // [10, 1000]
+  double street_m = 16.0;     // [2, 1000]
+  double panel_m = 1.5;       // facade panel size, [0.25, 100]
+  double height_min_m = 8.0;  // building heights, [1, 1000], min <= max
   double height_max_m = 60.0;
 };
 

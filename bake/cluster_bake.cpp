@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The --clusters bake driver: per primitive extract, build, store; progress, timing, summary
 // (cluster_bake.hpp).
 #include "bake/cluster_bake.hpp"
@@ -32,7 +33,9 @@ double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-double per_second(double n, double seconds) { return seconds > 0.0 ? n / seconds : 0.0; }
+double per_second(double n, double seconds) {
+  return seconds > 0.0 ? n / seconds : 0.0;
+}
 
 // A primitive of at least this many triangles is built alone with every thread (its levels
 // have groups enough for them); smaller ones are built side by side, one thread each, which on
@@ -54,7 +57,8 @@ BuiltPrimitive build_primitive(const tinygltf::Model& m, int mesh, int primitive
   rep.label = primitive_label(m, mesh, primitive);
   b.label = rep.label;
   b.locked_vertices = locked;
-  rep.shared_vertices = static_cast<std::size_t>(std::count_if(locked.begin(), locked.end(), [](std::uint8_t f) { return f != 0; }));
+  rep.shared_vertices =
+      static_cast<std::size_t>(std::count_if(locked.begin(), locked.end(), [](std::uint8_t f) { return f != 0; }));
   const auto t0 = Clock::now();
   out.result = build_cluster_hierarchy(g.positions_xyz, g.indices, b);
   const ClusterBuildResult& r = out.result;
@@ -116,8 +120,7 @@ ClusterBakeReport bake_clusters_model(tinygltf::Model& m, const ClusterBakeOptio
           continue;
         }
         geometry[mi].emplace_back();
-        report.warnings.push_back(primitive_label(m, mesh, prim) + ": " +
-                                  mode_label(m.meshes[mi].primitives[p].mode) +
+        report.warnings.push_back(primitive_label(m, mesh, prim) + ": " + mode_label(m.meshes[mi].primitives[p].mode) +
                                   " kept as it is (only triangles get a cluster hierarchy)");
       }
   const auto shared = o.build.lock_open_borders ? std::vector<std::vector<std::vector<std::uint8_t>>>(m.meshes.size())
@@ -147,7 +150,8 @@ ClusterBakeReport bake_clusters_model(tinygltf::Model& m, const ClusterBakeOptio
   std::vector<std::exception_ptr> failed(tasks.size());
   std::vector<std::size_t> left(m.meshes.size(), 0);
   for (const Task& t : tasks) ++left[t.mesh];
-  const auto meshes_to_build = static_cast<std::size_t>(std::count_if(left.begin(), left.end(), [](std::size_t n) { return n > 0; }));
+  const auto meshes_to_build =
+      static_cast<std::size_t>(std::count_if(left.begin(), left.end(), [](std::size_t n) { return n > 0; }));
   std::size_t stored = 0, meshes_done = 0;
   std::mutex mutex;
   const auto store_ready = [&] {  // under mutex
@@ -224,15 +228,15 @@ ClusterBakeReport bake_clusters_model(tinygltf::Model& m, const ClusterBakeOptio
                  " triangles, alone on every thread ...");
     run(i, o.build.threads);
   }
-  parallel_for(side_by_side.size(), thread_count(o.build.threads), [&](std::size_t k, unsigned) { run(side_by_side[k], 1); });
+  parallel_for(side_by_side.size(), thread_count(o.build.threads),
+               [&](std::size_t k, unsigned) { run(side_by_side[k], 1); });
   report.build_seconds = seconds_since(tb);
   // The first failing primitive in mesh order, whichever thread met it first.
   for (const std::exception_ptr& e : failed)
     if (e) std::rethrow_exception(e);
   // A file whose every triangle primitive was left with none would be written unchanged, with
   // no hierarchy: a failure to say, not an output.
-  if (report.primitives.empty())
-    throw BakeError(kNothingLeftToBake);
+  if (report.primitives.empty()) throw BakeError(kNothingLeftToBake);
   std::size_t degenerate = 0, with = 0;
   for (const ClusterPrimitiveReport& p : report.primitives)
     degenerate += p.degenerate_triangles, with += p.degenerate_triangles > 0;
@@ -244,8 +248,7 @@ ClusterBakeReport bake_clusters_model(tinygltf::Model& m, const ClusterBakeOptio
   return report;
 }
 
-ClusterBakeReport bake_clusters_file(const std::string& in, const std::string& out,
-                                     const ClusterBakeOptions& o) {
+ClusterBakeReport bake_clusters_file(const std::string& in, const std::string& out, const ClusterBakeOptions& o) {
   const auto t0 = Clock::now();
   LoadedGltf loaded = load_gltf(in, o.load);
   ClusterBakeReport report;
@@ -264,16 +267,15 @@ ClusterBakeReport bake_clusters_file(const std::string& in, const std::string& o
 std::string format_cluster_summary(const ClusterBakeReport& r) {
   std::ostringstream s;
   char line[256];
-  std::snprintf(line, sizeof line, "%-34s %9s %10s %8s %6s %6s %8s %9s %9s %8s\n", "primitive",
-                "triangles", "degenerate", "clusters", "levels", "groups", "top_tris", "stored",
-                "build_ms", "tris/s");
+  std::snprintf(line, sizeof line, "%-34s %9s %10s %8s %6s %6s %8s %9s %9s %8s\n", "primitive", "triangles",
+                "degenerate", "clusters", "levels", "groups", "top_tris", "stored", "build_ms", "tris/s");
   s << line;
   for (const ClusterPrimitiveReport& p : r.primitives) {
     std::string name = p.label;
     if (name.size() > 34) name = name.substr(0, 31) + "...";
-    std::snprintf(line, sizeof line, "%-34s %9zu %10zu %8zu %6u %6zu %8zu %9zu %9.1f %8.3g\n",
-                  name.c_str(), p.source_triangles, p.degenerate_triangles, p.clusters, p.levels,
-                  p.groups, p.top_triangles, p.stored_triangles, p.build_seconds * 1000.0,
+    std::snprintf(line, sizeof line, "%-34s %9zu %10zu %8zu %6u %6zu %8zu %9zu %9.1f %8.3g\n", name.c_str(),
+                  p.source_triangles, p.degenerate_triangles, p.clusters, p.levels, p.groups, p.top_triangles,
+                  p.stored_triangles, p.build_seconds * 1000.0,
                   per_second(double(p.source_triangles + p.degenerate_triangles), p.build_seconds));
     s << line;
   }
@@ -295,8 +297,8 @@ std::string format_cluster_summary(const ClusterBakeReport& r) {
                 "hierarchy %.3f s (%.3g input triangles/s), %.3f s in all\n",
                 aux::counted(r.meshes, "mesh", "meshes").c_str(),
                 aux::counted(r.primitives.size(), "primitive", "primitives").c_str(),
-                static_cast<unsigned long long>(r.input_triangles),
-                r.build_seconds, per_second(double(r.input_triangles), r.build_seconds), r.seconds);
+                static_cast<unsigned long long>(r.input_triangles), r.build_seconds,
+                per_second(double(r.input_triangles), r.build_seconds), r.seconds);
   s << line;
   return s.str();
 }

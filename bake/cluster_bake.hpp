@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // gazelod bake --clusters: a glTF scene in, the same scene out with a cluster hierarchy
 // (bake/cluster_build.hpp) on every primitive of every mesh a node uses, stored as
 // GAZELOD_cluster_lod (bake/cluster_lod_gltf.hpp, docs/bake.md). Nothing else changes: no
@@ -20,33 +21,33 @@
 namespace gazelod::bake {
 
 struct ClusterBakeOptions {
-  ClusterBuildOptions build;  // `label` is set per primitive
+  ClusterBuildOptions build;                         // `label` is set per primitive
   std::function<void(const std::string&)> progress;  // one line per call; may be empty
-  GltfLoadOptions load;  // where external uris may point
+  GltfLoadOptions load;                              // where external uris may point
 };
 
 struct ClusterPrimitiveReport {
   int mesh = -1, primitive = -1;
-  std::string label;                   // "mesh 2 'Body' primitive 0"
-  std::size_t source_triangles = 0;    // kept
+  std::string label;                 // "mesh 2 'Body' primitive 0"
+  std::size_t source_triangles = 0;  // kept
   std::size_t degenerate_triangles = 0;
   std::size_t clusters = 0, groups = 0, top_clusters = 0, top_triangles = 0;
-  std::size_t stored_triangles = 0;    // all levels
+  std::size_t stored_triangles = 0;  // all levels
   std::uint32_t levels = 0;
-  std::size_t shared_vertices = 0;     // where another primitive or instance meets it: locked
-  std::size_t folded_triangles = 0;    // ClusterBuildResult's
+  std::size_t shared_vertices = 0;      // where another primitive or instance meets it: locked
+  std::size_t folded_triangles = 0;     // ClusterBuildResult's
   std::size_t groups_across_seams = 0;  // ClusterBuildResult's
-  double build_seconds = 0.0;          // build_cluster_hierarchy alone
+  double build_seconds = 0.0;           // build_cluster_hierarchy alone
 };
 
 struct ClusterBakeReport {
   std::vector<ClusterPrimitiveReport> primitives;  // with a hierarchy, in mesh order
   std::vector<std::string> warnings;
-  std::size_t meshes = 0;               // meshes used by at least one node
-  std::uint64_t input_triangles = 0;    // of those meshes, degenerate ones included
+  std::size_t meshes = 0;             // meshes used by at least one node
+  std::uint64_t input_triangles = 0;  // of those meshes, degenerate ones included
   std::size_t shared_vertices = 0, folded_triangles = 0, groups_across_seams = 0;  // all primitives' sums
-  double build_seconds = 0.0;           // hierarchy builds, all primitives
-  double seconds = 0.0;                 // everything (with reading and writing for a file)
+  double build_seconds = 0.0;                                                      // hierarchy builds, all primitives
+  double seconds = 0.0;  // everything (with reading and writing for a file)
 };
 
 // Per mesh, per primitive, per vertex: 1 where the primitive's open border meets another
@@ -62,8 +63,7 @@ ClusterBakeReport bake_clusters_model(tinygltf::Model& model, const ClusterBakeO
 
 // Loads `in`, bakes, writes `out` atomically. Throws BakeError ("IN: ..."), OutputError for
 // the output; `out` is untouched on failure.
-ClusterBakeReport bake_clusters_file(const std::string& in, const std::string& out,
-                                     const ClusterBakeOptions& options);
+ClusterBakeReport bake_clusters_file(const std::string& in, const std::string& out, const ClusterBakeOptions& options);
 
 // Table per primitive, then totals with input triangles per second of the hierarchy build.
 std::string format_cluster_summary(const ClusterBakeReport& report);

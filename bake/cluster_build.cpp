@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The cluster hierarchy build (cluster_build.hpp): input checks, position welding, source
 // clusters, then level by level grouping, group simplification (in parallel) and re-splitting.
 #include "bake/cluster_build.hpp"
@@ -29,7 +30,7 @@ namespace {
 constexpr std::uint32_t kNone = ~0u;
 
 constexpr std::size_t kMaxDepth = 255;  // depth is stored as uint8
-constexpr std::size_t kPrefetch = 16;  // measure(): queries ahead whose vertex data is fetched
+constexpr std::size_t kPrefetch = 16;   // measure(): queries ahead whose vertex data is fetched
 // A level with fewer groups than this measures each group's source vertices in slices of
 // kMeasureSlice in parallel (the top levels: few groups, each answering for many vertices).
 constexpr std::size_t kSlicedBelowGroups = 8;
@@ -64,8 +65,8 @@ struct Piece {
   float child_error_m = 0.0f;
   double fold_error_m = 0.0;
   bool simplified = false;
-  bool across_seams = false;  // simplified on welded positions (stuck_across_seams)
-  std::size_t folded_triangles = 0;  // in the result (cluster_flips.hpp)
+  bool across_seams = false;          // simplified on welded positions (stuck_across_seams)
+  std::size_t folded_triangles = 0;   // in the result (cluster_flips.hpp)
   std::size_t dropped_triangles = 0;  // source chunks: degenerate triangles left out
 };
 
@@ -118,8 +119,8 @@ class Builder {
           weld_ = weld_positions(pos_);
           if (o_.stuck_across_seams) seams_ = std::make_unique<SeamCopies>(pos_, weld_, source);
           if (seams_ && seams_->seam_positions() == 0) seams_.reset();  // nothing to cross
-        }
-        else chunks = source_chunks(pos_, source);
+        } else
+          chunks = source_chunks(pos_, source);
       });
     }
     locked_.assign(pos_.size() / 3, 0);  // per welded vertex
@@ -175,7 +176,8 @@ class Builder {
       if (++s.stamp == 0) std::fill(s.seen.begin(), s.seen.end(), 0u), s.stamp = 1;
       const std::size_t before = p.welded.size();
       for (std::size_t i = at; i < at + k; ++i)
-        if (const std::uint32_t w = weld_[p.indices[i]]; s.seen[w] != s.stamp) s.seen[w] = s.stamp, p.welded.push_back(w);
+        if (const std::uint32_t w = weld_[p.indices[i]]; s.seen[w] != s.stamp)
+          s.seen[w] = s.stamp, p.welded.push_back(w);
       p.welded_count.push_back(static_cast<std::uint32_t>(p.welded.size() - before));
       at += k;
     }
@@ -183,8 +185,8 @@ class Builder {
 
   // Source clusters of one chunk, each with its own sphere; degenerate triangles (two corners
   // welded together) dropped and counted.
-  void split_chunk(std::span<const std::uint32_t> source, std::span<const std::uint32_t> chunk,
-                   Scratch& s, Piece& p) const {
+  void split_chunk(std::span<const std::uint32_t> source, std::span<const std::uint32_t> chunk, Scratch& s,
+                   Piece& p) const {
     for (std::uint32_t t : chunk) {
       const std::uint32_t* v = &source[3 * std::size_t{t}];
       if (weld_[v[0]] == weld_[v[1]] || weld_[v[1]] == weld_[v[2]] || weld_[v[2]] == weld_[v[0]]) {
@@ -244,8 +246,8 @@ class Builder {
         if (shared_[weld_[s.global_of[l]]]) lock_position(s.local_xyz, l);
     // Simplified on the compact copy (group_simplify.hpp); its folds raise the group's error.
     const GroupSimplified r = simplify_group_triangles(
-        s.local_xyz, vcount, s.local,
-        {o_.simplify_ratio, o_.stuck_ratio, o_.fold_retries, o_.lock_open_borders}, s.simplified, s.simplify);
+        s.local_xyz, vcount, s.local, {o_.simplify_ratio, o_.stuck_ratio, o_.fold_retries, o_.lock_open_borders},
+        s.simplified, s.simplify);
     const std::size_t n = r.index_count;
     p.folded_triangles = r.folds.triangles;
     p.fold_error_m = r.folds.width_m;
@@ -299,12 +301,14 @@ class Builder {
     parallel_for(slices, [&](std::size_t i, Scratch& t) {
       const std::size_t at = i * kMeasureSlice;
       owned[i].assign(p.index_count.size(), {});
-      distance_m[i] = measure(std::span<const std::uint32_t>(s.region).subspan(at, std::min(kMeasureSlice, s.region.size() - at)),
-                              s, t.search, p.child_error_m, owned[i]);
+      distance_m[i] =
+          measure(std::span<const std::uint32_t>(s.region).subspan(at, std::min(kMeasureSlice, s.region.size() - at)),
+                  s, t.search, p.child_error_m, owned[i]);
     });
     p.owned.assign(p.index_count.size(), {});
     for (std::size_t k = 0; k < p.index_count.size(); ++k)
-      for (std::size_t i = 0; i < slices; ++i) p.owned[k].insert(p.owned[k].end(), owned[i][k].begin(), owned[i][k].end());
+      for (std::size_t i = 0; i < slices; ++i)
+        p.owned[k].insert(p.owned[k].end(), owned[i][k].begin(), owned[i][k].end());
     set_error(slices ? *std::max_element(distance_m.begin(), distance_m.end()) : 0.0, p);
     finish_measure(s, p);
   }
@@ -491,7 +495,8 @@ class Builder {
   // Runs task(i, scratch) for i < count on the configured threads (bake/parallel_for.hpp).
   template <typename Task>
   void parallel_for(std::size_t count, Task&& task) {
-    const unsigned threads = static_cast<unsigned>(std::min<std::size_t>(thread_count(o_.threads), std::max<std::size_t>(count, 1)));
+    const unsigned threads =
+        static_cast<unsigned>(std::min<std::size_t>(thread_count(o_.threads), std::max<std::size_t>(count, 1)));
     while (scratch_.size() < threads) scratch_.push_back(std::make_unique<Scratch>(pos_.size() / 3));
     bake::parallel_for(count, threads, [&](std::size_t i, unsigned t) { task(i, *scratch_[t]); });
   }
@@ -505,7 +510,7 @@ class Builder {
   std::vector<std::uint8_t> locked_, shared_;
   std::vector<std::uint32_t> group_of_;
   std::uint32_t group_base_ = 1;  // the first claim id of the next level
-  std::vector<Sphere> self_;  // self spheres, as Sphere (hierarchy holds the same, split up)
+  std::vector<Sphere> self_;      // self spheres, as Sphere (hierarchy holds the same, split up)
   // Per cluster: its distinct welded vertices at welded_[welded_first_[c]] on (list_welded()).
   std::vector<std::uint32_t> welded_, welded_first_, welded_count_;
   std::span<const std::uint32_t> welded_of(std::uint32_t c) const {
@@ -537,8 +542,7 @@ std::string validate_cluster_options(const ClusterBuildOptions& o) {
   return m.str();
 }
 
-ClusterBuildResult build_cluster_hierarchy(std::span<const float> pos,
-                                           std::span<const std::uint32_t> indices,
+ClusterBuildResult build_cluster_hierarchy(std::span<const float> pos, std::span<const std::uint32_t> indices,
                                            const ClusterBuildOptions& o) {
   if (std::string e = validate_cluster_options(o); !e.empty()) throw BakeError(o.label + ": " + e);
   if (pos.size() % 3 != 0)
@@ -554,8 +558,8 @@ ClusterBuildResult build_cluster_hierarchy(std::span<const float> pos,
   for (std::size_t v = 0; v < vcount; ++v)
     if (!std::isfinite(pos[3 * v]) || !std::isfinite(pos[3 * v + 1]) || !std::isfinite(pos[3 * v + 2])) {
       std::ostringstream m;
-      m << o.label << ": vertex " << v << " position (" << pos[3 * v] << ", " << pos[3 * v + 1]
-        << ", " << pos[3 * v + 2] << ") is not finite";
+      m << o.label << ": vertex " << v << " position (" << pos[3 * v] << ", " << pos[3 * v + 1] << ", "
+        << pos[3 * v + 2] << ") is not finite";
       throw BakeError(m.str());
     }
   if (!o.locked_vertices.empty() && o.locked_vertices.size() != vcount)

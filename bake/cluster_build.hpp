@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One mesh's cluster hierarchy (lod/cluster_hierarchy.hpp) with meshoptimizer 0.18, after
 // Karis et al. 2021 (Nanite) and meshoptimizer's cluster-LOD demo:
 //   1. the source triangles are split into clusters (bake/cluster_split.hpp);
@@ -46,7 +47,7 @@ struct ClusterBuildOptions {
   std::size_t group_size = 8;       // clusters per group, >= 2
   double simplify_ratio = 0.5;      // each group is simplified to this share of its triangles
   double stuck_ratio = 0.85;        // more than this share left: the group does not simplify
-  unsigned threads = 0;  // source chunks, groups and slices in parallel; 0: all cores; same result for any
+  unsigned threads = 0;             // source chunks, groups and slices in parallel; 0: all cores; same result for any
   // A group meshopt 0.18 folded is simplified again, up to this many times, with the folds'
   // surroundings locked (bake/cluster_flips.hpp, lock_around_folds); 0..kMaxFoldRetries.
   unsigned fold_retries = 2;
@@ -61,7 +62,7 @@ struct ClusterBuildOptions {
   // Empty, or one per input vertex: nonzero keeps that position at every level (a border
   // shared with another primitive: bake/shared_positions.hpp).
   std::span<const std::uint8_t> locked_vertices;
-  std::string label = "mesh";       // names the mesh in error messages
+  std::string label = "mesh";  // names the mesh in error messages
 };
 
 struct ClusterBuildResult {
@@ -82,7 +83,7 @@ struct ClusterBuildResult {
   std::size_t folded_triangles = 0;
   // Wall seconds per phase, for finding where a build's time goes (the bench prints them).
   struct Phases {
-    double weld_s = 0.0;            // welding and cutting the source into chunks
+    double weld_s = 0.0;             // welding and cutting the source into chunks
     double source_clusters_s = 0.0;  // splitting the chunks into clusters
     double grouping_s = 0.0;         // every level's grouping (one thread)
     double shared_s = 0.0;           // every level's shared-vertex marks
@@ -97,10 +98,9 @@ std::string validate_cluster_options(const ClusterBuildOptions& options);
 // positions_xyz: 3 floats per vertex; indices: a triangle list. Throws BakeError
 // "<label>: ..." for bad options, a position that is not finite ("vertex 12 ..."), an index out
 // of range ("index 7 is 40, but there are only 30 vertices"), an index count that is not a
-// multiple of 3 or locked_vertices of the wrong size. Degenerate triangles are dropped and counted. No triangles left: an empty
-// hierarchy. At most one cluster's worth: one cluster, depth 0, parent error kNoParentError.
-ClusterBuildResult build_cluster_hierarchy(std::span<const float> positions_xyz,
-                                           std::span<const std::uint32_t> indices,
+// multiple of 3 or locked_vertices of the wrong size. Degenerate triangles are dropped and counted. No triangles left:
+// an empty hierarchy. At most one cluster's worth: one cluster, depth 0, parent error kNoParentError.
+ClusterBuildResult build_cluster_hierarchy(std::span<const float> positions_xyz, std::span<const std::uint32_t> indices,
                                            const ClusterBuildOptions& options = {});
 
 }  // namespace gazelod::bake

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Uniform-grid nearest-triangle search (cluster_distance.hpp).
 #include "bake/cluster_distance.hpp"
 
@@ -9,7 +10,9 @@
 namespace gazelod::bake {
 namespace {
 
-double dot(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+double dot(const double a[3], const double b[3]) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
 
 double segment_distance_sq(const double p[3], const double a[3], const double b[3]) {
   const double ab[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, ap[3] = {p[0] - a[0], p[1] - a[1], p[2] - a[2]};
@@ -70,7 +73,8 @@ double TriangleGrid::distance_sq(std::uint32_t t, const double p[3], double belo
   const double* b = q + 16;
   const double* c = q + 19;
   const double v[3] = {p[0] - q[0], p[1] - q[1], p[2] - q[2]};
-  if (q[15] == 0.0) return std::min({segment_distance_sq(p, q, b), segment_distance_sq(p, b, c), segment_distance_sq(p, q, c)});
+  if (q[15] == 0.0)
+    return std::min({segment_distance_sq(p, q, b), segment_distance_sq(p, b, c), segment_distance_sq(p, q, c)});
   const double h = v[0] * q[9] + v[1] * q[10] + v[2] * q[11];
   if (h * h >= below_sq) return std::numeric_limits<double>::infinity();
   const double d20 = v[0] * q[3] + v[1] * q[4] + v[2] * q[5], d21 = v[0] * q[6] + v[1] * q[7] + v[2] * q[8];
@@ -104,9 +108,28 @@ void TriangleGrid::build(std::span<const float> pos, std::span<const std::uint32
     const double d00 = dot(u, u), d01 = dot(u, v), d11 = dot(v, v), gram = d00 * d11 - d01 * d01;
     // Nearly collinear corners: the edges alone give the distance.
     const bool flat = !(n_len > 0.0) || !(gram > 1e-12 * d00 * d11);
-    const double row[22] = {c[0], c[1], c[2], u[0], u[1], u[2], v[0], v[1], v[2],
-                            flat ? 0.0 : n[0] / n_len, flat ? 0.0 : n[1] / n_len, flat ? 0.0 : n[2] / n_len,
-                            d00, d01, d11, flat ? 0.0 : 1.0 / gram, c[3], c[4], c[5], c[6], c[7], c[8]};
+    const double row[22] = {c[0],
+                            c[1],
+                            c[2],
+                            u[0],
+                            u[1],
+                            u[2],
+                            v[0],
+                            v[1],
+                            v[2],
+                            flat ? 0.0 : n[0] / n_len,
+                            flat ? 0.0 : n[1] / n_len,
+                            flat ? 0.0 : n[2] / n_len,
+                            d00,
+                            d01,
+                            d11,
+                            flat ? 0.0 : 1.0 / gram,
+                            c[3],
+                            c[4],
+                            c[5],
+                            c[6],
+                            c[7],
+                            c[8]};
     std::copy(row, row + kStride, q);
   }
   const double extent_m = std::max({hi[0] - lo_[0], hi[1] - lo_[1], hi[2] - lo_[2]});
@@ -127,8 +150,10 @@ void TriangleGrid::build(std::span<const float> pos, std::span<const std::uint32
   range_.resize(6 * count);
   for (std::size_t t = 0; t < count; ++t) {
     const double* q = &tri_[kStride * t];
-    const double mn[3] = {std::min({q[0], q[16], q[19]}), std::min({q[1], q[17], q[20]}), std::min({q[2], q[18], q[21]})};
-    const double mx[3] = {std::max({q[0], q[16], q[19]}), std::max({q[1], q[17], q[20]}), std::max({q[2], q[18], q[21]})};
+    const double mn[3] = {std::min({q[0], q[16], q[19]}), std::min({q[1], q[17], q[20]}),
+                          std::min({q[2], q[18], q[21]})};
+    const double mx[3] = {std::max({q[0], q[16], q[19]}), std::max({q[1], q[17], q[20]}),
+                          std::max({q[2], q[18], q[21]})};
     cell_of(mn, &range_[6 * t]), cell_of(mx, &range_[6 * t + 3]);
   }
   auto each_cell = [&](std::size_t t, auto&& f) {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Point-to-surface distance for the errors of the cluster hierarchy (bake/cluster_build.hpp) and
 // of the LOD chain (bake/simplify_chain.hpp): the triangles of one simplified group or level in a
 // uniform grid of cubic cells, about one triangle's area
@@ -63,7 +64,7 @@ class TriangleGrid {
   double lo_[3] = {0, 0, 0}, cell_m_ = 1.0, per_cell_ = 1.0;
   int dim_[3] = {1, 1, 1};
   std::vector<std::uint32_t> first_, items_, fill_;  // per cell: first item; items; build scratch
-  std::vector<int> range_;  // build scratch: per triangle, its first and last cell (x, y, z)
+  std::vector<int> range_;                           // build scratch: per triangle, its first and last cell (x, y, z)
   // Per triangle: corner a, edges ab and ac, unit normal, ab.ab, ab.ac, ac.ac, 1 / Gram
   // determinant (0: degenerate), then corners b and c.
   std::vector<double> tri_;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // find_folds (cluster_flips.hpp): vertex normals from the triangles before, one dot product
 // per triangle after.
 #include "bake/cluster_flips.hpp"
@@ -11,16 +12,17 @@ namespace gazelod::bake {
 namespace {
 
 void face_normal(std::span<const float> p, std::uint32_t a, std::uint32_t b, std::uint32_t c, double n[3]) {
-  const double u[3] = {double(p[3 * b]) - p[3 * a], double(p[3 * b + 1]) - p[3 * a + 1], double(p[3 * b + 2]) - p[3 * a + 2]};
-  const double v[3] = {double(p[3 * c]) - p[3 * a], double(p[3 * c + 1]) - p[3 * a + 1], double(p[3 * c + 2]) - p[3 * a + 2]};
+  const double u[3] = {double(p[3 * b]) - p[3 * a], double(p[3 * b + 1]) - p[3 * a + 1],
+                       double(p[3 * b + 2]) - p[3 * a + 2]};
+  const double v[3] = {double(p[3 * c]) - p[3 * a], double(p[3 * c + 1]) - p[3 * a + 1],
+                       double(p[3 * c + 2]) - p[3 * a + 2]};
   n[0] = u[1] * v[2] - u[2] * v[1], n[1] = u[2] * v[0] - u[0] * v[2], n[2] = u[0] * v[1] - u[1] * v[0];
 }
 
 }  // namespace
 
-Folds find_folds(std::span<const float> p, std::span<const std::uint32_t> before,
-                 std::span<const std::uint32_t> after, std::vector<float>& normals,
-                 std::vector<std::uint32_t>* folded_corners) {
+Folds find_folds(std::span<const float> p, std::span<const std::uint32_t> before, std::span<const std::uint32_t> after,
+                 std::vector<float>& normals, std::vector<std::uint32_t>* folded_corners) {
   normals.assign(p.size(), 0.0f);
   for (std::size_t t = 0; t + 2 < before.size(); t += 3) {
     double n[3];

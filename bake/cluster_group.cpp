@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Greedy graph growing over the shared-vertex graph of clusters (cluster_group.hpp).
 #include "bake/cluster_group.hpp"
 
@@ -67,8 +68,7 @@ void ClusterGrouper::build_adjacency(const GroupingInput& set) {
   }
 }
 
-std::vector<std::vector<std::uint32_t>> ClusterGrouper::group(const GroupingInput& set,
-                                                               std::size_t group_size) {
+std::vector<std::vector<std::uint32_t>> ClusterGrouper::group(const GroupingInput& set, std::size_t group_size) {
   const std::size_t n = set.first.size();
   std::vector<std::vector<std::uint32_t>> groups;
   if (n == 0) return groups;
@@ -84,7 +84,7 @@ std::vector<std::vector<std::uint32_t>> ClusterGrouper::group(const GroupingInpu
     for (const Neighbour& e : adjacency_[c]) d += group_of[e.cluster] == kNone;
     return d;
   };
-  std::size_t scan = 0;           // clusters before this one are all assigned
+  std::size_t scan = 0;             // clusters before this one are all assigned
   std::uint32_t next_seed = kNone;  // an unassigned neighbour of the last group, if any
   while (true) {
     std::uint32_t seed = next_seed;
@@ -112,8 +112,7 @@ std::vector<std::vector<std::uint32_t>> ClusterGrouper::group(const GroupingInpu
         if (group_of[c] != kNone) continue;
         if (best == kNone || connection[c] > connection[best] ||
             (connection[c] == connection[best] &&
-             distance_squared(set.bounds[c], set.bounds[seed]) <
-                 distance_squared(set.bounds[best], set.bounds[seed])))
+             distance_squared(set.bounds[c], set.bounds[seed]) < distance_squared(set.bounds[best], set.bounds[seed])))
           best = c;
       }
       if (best == kNone) break;
@@ -140,12 +139,14 @@ std::vector<std::vector<std::uint32_t>> ClusterGrouper::group(const GroupingInpu
         const std::uint32_t h = group_of[e.cluster];
         if (h == g || groups[h].size() + groups[g].size() > room) continue;
         auto it = std::find_if(shared.begin(), shared.end(), [&](auto& p) { return p.first == h; });
-        if (it == shared.end()) shared.push_back({h, e.shared_vertices});
-        else it->second += e.shared_vertices;
+        if (it == shared.end())
+          shared.push_back({h, e.shared_vertices});
+        else
+          it->second += e.shared_vertices;
       }
     if (shared.empty()) continue;
-    const auto best = *std::max_element(shared.begin(), shared.end(),
-                                        [](auto& a, auto& b) { return a.second < b.second; });
+    const auto best =
+        *std::max_element(shared.begin(), shared.end(), [](auto& a, auto& b) { return a.second < b.second; });
     for (std::uint32_t m : groups[g]) group_of[m] = best.first, groups[best.first].push_back(m);
     groups[g].clear();
   }

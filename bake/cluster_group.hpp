@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Grouping of neighbouring clusters for the cluster hierarchy (bake/cluster_build.hpp). Each
 // group is later simplified as one piece with its border locked, so groups should be compact
 // and share few border vertices with each other (Karis et al. 2021 partition with METIS;

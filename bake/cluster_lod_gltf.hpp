@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // GAZELOD_cluster_lod: a mesh primitive's cluster hierarchy (lod/cluster_hierarchy.hpp) stored
 // in glTF, written by `gazelod bake --clusters` (format: docs/bake.md). On the primitive:
 //   "extensions": {"GAZELOD_cluster_lod": {
@@ -34,8 +35,7 @@ inline constexpr float kStoredNoParentError = FLT_MAX;
 
 // Appends the accessors to buffer 0 (the model must be packed, gltf_pack.hpp) and sets the
 // extension on meshes[mesh].primitives[primitive]. `vertex_count` is the primitive's.
-void write_cluster_lod(tinygltf::Model& model, int mesh, int primitive,
-                       const lod::ClusterHierarchy& hierarchy,
+void write_cluster_lod(tinygltf::Model& model, int mesh, int primitive, const lod::ClusterHierarchy& hierarchy,
                        std::span<const std::uint32_t> indices, std::size_t vertex_count);
 
 struct ClusterLod {

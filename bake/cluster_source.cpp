@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Welding and source chunks for the cluster hierarchy build (cluster_source.hpp).
 #include "bake/cluster_source.hpp"
 
@@ -48,10 +49,8 @@ std::vector<std::uint32_t> weld_positions(std::span<const float> pos) {
   return weld;
 }
 
-
 // Triangle ids in Morton order of their centroid's cell, cut into chunks at cell boundaries.
-std::vector<std::vector<std::uint32_t>> source_chunks(std::span<const float> pos,
-                                                      std::span<const std::uint32_t> tris) {
+std::vector<std::vector<std::uint32_t>> source_chunks(std::span<const float> pos, std::span<const std::uint32_t> tris) {
   const std::size_t n = tris.size() / 3;
   std::vector<std::vector<std::uint32_t>> chunks;
   if (n <= kChunkTriangles) {
@@ -68,8 +67,8 @@ std::vector<std::vector<std::uint32_t>> source_chunks(std::span<const float> pos
   for (std::size_t t = 0; t < n; ++t) {
     std::uint32_t q[3];
     for (int k = 0; k < 3; ++k) {
-      const double c = (double(pos[3 * tris[3 * t] + k]) + pos[3 * tris[3 * t + 1] + k] +
-                        pos[3 * tris[3 * t + 2] + k]) / 3.0;
+      const double c =
+          (double(pos[3 * tris[3 * t] + k]) + pos[3 * tris[3 * t + 1] + k] + pos[3 * tris[3 * t + 2] + k]) / 3.0;
       const double u = hi[k] > lo[k] ? (c - lo[k]) / (hi[k] - lo[k]) : 0.0;
       q[k] = std::min(side - 1, static_cast<std::uint32_t>(std::max(0.0, u) * side));
     }
@@ -85,8 +84,7 @@ std::vector<std::vector<std::uint32_t>> source_chunks(std::span<const float> pos
   for (std::size_t a = 0; a < n;) {
     std::size_t b = std::min(n, a + kChunkTriangles);
     while (b < n && cell[order[b]] == cell[order[b - 1]]) ++b;
-    chunks.emplace_back(order.begin() + static_cast<std::ptrdiff_t>(a),
-                        order.begin() + static_cast<std::ptrdiff_t>(b));
+    chunks.emplace_back(order.begin() + static_cast<std::ptrdiff_t>(a), order.begin() + static_cast<std::ptrdiff_t>(b));
     a = b;
   }
   return chunks;

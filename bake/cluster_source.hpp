@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Source-side steps of the cluster hierarchy build (bake/cluster_build.hpp): welding vertices by
 // position, and cutting the source triangles into spatially coherent chunks that are split into
 // clusters in parallel.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Ritter's (1990) bounding sphere, generalised from points to spheres (cluster_sphere.hpp).
 #include "bake/cluster_sphere.hpp"
 
@@ -12,11 +13,12 @@ struct Ball {
   double r;
 };
 
-Ball ball(const Sphere& s) { return {{s.x, s.y, s.z}, s.radius_m}; }
+Ball ball(const Sphere& s) {
+  return {{s.x, s.y, s.z}, s.radius_m};
+}
 
 double distance(const double a[3], const double b[3]) {
-  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
-                   (a[2] - b[2]) * (a[2] - b[2]));
+  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
 }
 
 // The smallest sphere around `a` and `b` (one of them when it holds the other).
@@ -27,9 +29,7 @@ Ball around_two(const Ball& a, const Ball& b) {
   const double r = (d + a.r + b.r) / 2.0;
   // d > 0 here: with d == 0 one of the tests above holds.
   const double t = (r - a.r) / d;
-  return {{a.c[0] + (b.c[0] - a.c[0]) * t, a.c[1] + (b.c[1] - a.c[1]) * t,
-           a.c[2] + (b.c[2] - a.c[2]) * t},
-          r};
+  return {{a.c[0] + (b.c[0] - a.c[0]) * t, a.c[1] + (b.c[1] - a.c[1]) * t, a.c[2] + (b.c[2] - a.c[2]) * t}, r};
 }
 
 double reach(const Sphere& outer_centre, const Sphere& s) {
@@ -62,8 +62,7 @@ Sphere enclosing_sphere(std::span<const Sphere> spheres) {
   for (const Sphere& q : spheres) s = around_two(s, ball(q));
 
   // Rounding the centre to float moves it: measure the radius again about the stored centre.
-  Sphere out{static_cast<float>(s.c[0]), static_cast<float>(s.c[1]), static_cast<float>(s.c[2]),
-             0.0f};
+  Sphere out{static_cast<float>(s.c[0]), static_cast<float>(s.c[1]), static_cast<float>(s.c[2]), 0.0f};
   double r = 0.0;
   for (const Sphere& q : spheres) r = std::max(r, reach(out, q));
   float rf = static_cast<float>(r);

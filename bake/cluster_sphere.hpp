@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Bounding spheres for the cluster hierarchy (bake/cluster_build.hpp): the sphere around a set
 // of spheres (a point is a sphere of radius 0). meshopt_computeSphereBounds is not in
 // meshoptimizer 0.18, so this is Ritter's (1990) grow pass; the radius is then recomputed about

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Greedy cluster splitting with an incrementally scored frontier (cluster_split.hpp).
 #include "bake/cluster_split.hpp"
 
@@ -12,9 +13,8 @@ constexpr std::uint32_t kRanks = 5;  // a frontier triangle's rank, 0 to 4 (spli
 
 }  // namespace
 
-void ClusterSplitter::split(std::span<const float> pos, std::size_t vertex_count,
-                            std::span<const std::uint32_t> tris, std::size_t max_vertices,
-                            std::size_t max_triangles, std::vector<std::uint32_t>& out,
+void ClusterSplitter::split(std::span<const float> pos, std::size_t vertex_count, std::span<const std::uint32_t> tris,
+                            std::size_t max_vertices, std::size_t max_triangles, std::vector<std::uint32_t>& out,
                             std::vector<std::uint32_t>& index_count) {
   const std::size_t n = tris.size() / 3;
   if (n == 0) return;
@@ -35,7 +35,8 @@ void ClusterSplitter::split(std::span<const float> pos, std::size_t vertex_count
     for (int k = 0; k < 3; ++k)
       if (distinct(t, k)) adjacent_[in_cluster_[tris[3 * t + k]]++] = static_cast<std::uint32_t>(t);
     for (int j = 0; j < 3; ++j)
-      centroid_[3 * t + j] = (pos[3 * tris[3 * t] + j] + pos[3 * tris[3 * t + 1] + j] + pos[3 * tris[3 * t + 2] + j]) / 3.0f;
+      centroid_[3 * t + j] =
+          (pos[3 * tris[3 * t] + j] + pos[3 * tris[3 * t + 1] + j] + pos[3 * tris[3 * t + 2] + j]) / 3.0f;
   }
   in_cluster_.assign(vertex_count, kNone);
   frontier_of_.assign(n, kNone);
@@ -50,7 +51,9 @@ void ClusterSplitter::split(std::span<const float> pos, std::size_t vertex_count
   // would be left dangling (1: the last triangle left using one of its corners), then by new
   // vertices (2 to 4). A rank only falls while a cluster grows; each frontier triangle is in
   // the bucket of every rank it has had in this cluster (the earlier ones stale).
-  auto rank_of = [&](std::uint32_t t) -> std::uint32_t { return score_[t] == 0 ? 0 : dangling_[t] ? 1 : score_[t] + 1; };
+  auto rank_of = [&](std::uint32_t t) -> std::uint32_t {
+    return score_[t] == 0 ? 0 : dangling_[t] ? 1 : score_[t] + 1;
+  };
   for (auto& b : bucket_) b.clear();
   std::uint32_t cluster = 0;
   dangling_.assign(n, 0);

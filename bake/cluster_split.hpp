@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Splitting a simplified group back into clusters (bake/cluster_build.hpp). meshopt 0.18's
 // meshopt_buildMeshlets rescores every triangle around every vertex of the growing cluster for
 // each triangle it adds, which made it the largest cost of the build; this greedy builder keeps
@@ -23,9 +24,9 @@ class ClusterSplitter {
   // Appends the triangles cluster by cluster to `out` and each cluster's index count to
   // `index_count`; every cluster has at most max_vertices distinct vertices and max_triangles
   // triangles.
-  void split(std::span<const float> positions_xyz, std::size_t vertex_count,
-             std::span<const std::uint32_t> triangles, std::size_t max_vertices, std::size_t max_triangles,
-             std::vector<std::uint32_t>& out, std::vector<std::uint32_t>& index_count);
+  void split(std::span<const float> positions_xyz, std::size_t vertex_count, std::span<const std::uint32_t> triangles,
+             std::size_t max_vertices, std::size_t max_triangles, std::vector<std::uint32_t>& out,
+             std::vector<std::uint32_t>& index_count);
 
  private:
   std::vector<std::uint32_t> first_, adjacent_, in_cluster_, frontier_, score_, frontier_of_, live_;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "bake/fractal_noise.hpp"
 
 #include "sim/random.hpp"
@@ -10,7 +11,9 @@ namespace {
 
 // Perlin 2002's fade 6t^5 - 15t^4 + 10t^3: zero first and second derivatives at the lattice,
 // so the summed terrain has no creases along cell edges.
-double fade(double t) { return t * t * t * (t * (t * 6.0 - 15.0) + 10.0); }
+double fade(double t) {
+  return t * t * t * (t * (t * 6.0 - 15.0) + 10.0);
+}
 
 // The eight lattice gradients: axes and diagonals, all of unit length.
 constexpr double kDiag = 0.70710678118654752440;
@@ -18,8 +21,8 @@ constexpr double kGradX[8] = {1.0, -1.0, 0.0, 0.0, kDiag, -kDiag, kDiag, -kDiag}
 constexpr double kGradY[8] = {0.0, 0.0, 1.0, -1.0, kDiag, kDiag, -kDiag, -kDiag};
 
 double corner(std::int64_t ix, std::int64_t iy, double dx, double dy, std::uint64_t seed, std::uint64_t stream) {
-  const std::uint64_t h = sim::mix64(sim::hash3(seed, stream, static_cast<std::uint64_t>(ix)) ^
-                                     static_cast<std::uint64_t>(iy));
+  const std::uint64_t h =
+      sim::mix64(sim::hash3(seed, stream, static_cast<std::uint64_t>(ix)) ^ static_cast<std::uint64_t>(iy));
   const std::size_t g = static_cast<std::size_t>(h >> 61);  // top 3 bits: 0..7
   return kGradX[g] * dx + kGradY[g] * dy;
 }
@@ -54,8 +57,8 @@ double fractal_noise(const FractalNoiseOptions& o, double x, double y) {
   for (int k = 0; k < o.octaves; ++k) {
     // An irrational offset per octave so the octaves' lattice points never coincide.
     const double offset = 0.618033988749895 * (k + 1);
-    sum += amplitude * gradient_noise(x * frequency + offset, y * frequency - offset, o.seed,
-                                      static_cast<std::uint64_t>(k));
+    sum += amplitude *
+           gradient_noise(x * frequency + offset, y * frequency - offset, o.seed, static_cast<std::uint64_t>(k));
     amplitudes += amplitude;
     amplitude *= o.gain;
     frequency *= o.lacunarity;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Fractal gradient noise in 2D for generated test terrain (bake/terrain_mesh.hpp): Perlin's
 // gradient noise with his quintic fade (Perlin 2002) summed over octaves as fractional
 // Brownian motion (Musgrave, in Ebert et al. 2003). Deterministic by seed: lattice gradients

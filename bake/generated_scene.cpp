@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "bake/generated_scene.hpp"
 
 #include "bake/glb_write.hpp"
@@ -16,12 +17,14 @@ constexpr std::size_t kMaxBufferBytes = std::size_t{1} << 31;  // what a GLB chu
 void check(const GeneratedMesh& m, std::size_t index) {
   const std::string who = "generated mesh " + std::to_string(index) + " '" + m.name + "': ";
   if (m.positions.empty() || m.positions.size() % 3 != 0)
-    throw std::invalid_argument(who + "positions: need a non-empty multiple of 3, got " + std::to_string(m.positions.size()));
+    throw std::invalid_argument(who + "positions: need a non-empty multiple of 3, got " +
+                                std::to_string(m.positions.size()));
   if (m.normals.size() != m.positions.size())
     throw std::invalid_argument(who + "normals: need one per vertex (" + std::to_string(m.positions.size()) +
                                 " values), got " + std::to_string(m.normals.size()));
   if (m.indices.empty() || m.indices.size() % 3 != 0)
-    throw std::invalid_argument(who + "indices: need a non-empty multiple of 3, got " + std::to_string(m.indices.size()));
+    throw std::invalid_argument(who + "indices: need a non-empty multiple of 3, got " +
+                                std::to_string(m.indices.size()));
   const std::size_t vertices = m.positions.size() / 3;
   if (vertices > std::numeric_limits<std::uint32_t>::max())
     throw std::invalid_argument(who + "more vertices than 32-bit indices reach");
@@ -93,9 +96,9 @@ tinygltf::Model generated_model(const std::vector<GeneratedMesh>& meshes) {
     tinygltf::Primitive p;
     p.mode = TINYGLTF_MODE_TRIANGLES;
     const std::size_t vertices = m.positions.size() / 3;
-    const int pos = add_accessor(model, add_view(model, m.positions.data(), m.positions.size() * sizeof(float),
-                                                 TINYGLTF_TARGET_ARRAY_BUFFER),
-                                 TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, vertices);
+    const int pos = add_accessor(
+        model, add_view(model, m.positions.data(), m.positions.size() * sizeof(float), TINYGLTF_TARGET_ARRAY_BUFFER),
+        TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, vertices);
     // glTF requires POSITION's bounds.
     auto& a = model.accessors[static_cast<std::size_t>(pos)];
     a.minValues = {m.positions[0], m.positions[1], m.positions[2]};
@@ -108,8 +111,9 @@ tinygltf::Model generated_model(const std::vector<GeneratedMesh>& meshes) {
     p.attributes["NORMAL"] = add_accessor(
         model, add_view(model, m.normals.data(), m.normals.size() * sizeof(float), TINYGLTF_TARGET_ARRAY_BUFFER),
         TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, vertices);
-    p.indices = add_accessor(model, add_view(model, m.indices.data(), m.indices.size() * sizeof(std::uint32_t),
-                                             TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER),
+    p.indices = add_accessor(model,
+                             add_view(model, m.indices.data(), m.indices.size() * sizeof(std::uint32_t),
+                                      TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER),
                              TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, m.indices.size());
     tinygltf::Mesh mesh;
     mesh.name = m.name;

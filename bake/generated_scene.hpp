@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Generated test scenes (`gazelod scene generate`: bake/terrain_mesh.hpp, bake/city_mesh.hpp)
 // as glTF: one node per mesh, each mesh one triangle-list primitive with POSITION, NORMAL and
 // 32-bit indices, every array in the GLB's one buffer, +Y up, metres. Written atomically with

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Serialise to memory with tinygltf, then write + fsync-free rename (see glb_write.hpp).
 #include "bake/glb_write.hpp"
 
@@ -18,8 +19,7 @@ namespace gazelod::bake {
 namespace {
 
 // Never re-encode an image: every image is already a bufferView (gltf_pack) or a kept URI.
-bool no_image_write(const std::string*, const std::string*, const tinygltf::Image*, bool,
-                    std::string*, void*) {
+bool no_image_write(const std::string*, const std::string*, const tinygltf::Image*, bool, std::string*, void*) {
   return false;
 }
 
@@ -40,7 +40,8 @@ std::string fill_empty_objects(std::string glb, const std::string& path) {
     throw OutputError(path + ": tinygltf wrote no GLB JSON chunk");
   const std::size_t json_length = le32(glb.data() + 12);
   if (20 + json_length > glb.size()) throw OutputError(path + ": tinygltf wrote a short GLB");
-  nlohmann::json doc = nlohmann::json::parse(glb.begin() + 20, glb.begin() + 20 + static_cast<std::ptrdiff_t>(json_length));
+  nlohmann::json doc =
+      nlohmann::json::parse(glb.begin() + 20, glb.begin() + 20 + static_cast<std::ptrdiff_t>(json_length));
   bool changed = false;
   for (const char* key : {"accessors", "animations", "buffers", "bufferViews", "cameras", "images", "materials",
                           "meshes", "nodes", "samplers", "scenes", "skins", "textures"}) {

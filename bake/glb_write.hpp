@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Writes a model as one .glb atomically: to "<out>.tmp-<pid>" in the same folder, then
 // rename() over the destination, so a failure never leaves a partial output.
 #pragma once

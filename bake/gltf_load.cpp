@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // load_gltf: read the bytes, check a GLB's declared length against the file, then tinygltf.
 #include "bake/gltf_load.hpp"
 
@@ -36,8 +37,7 @@ std::vector<unsigned char> read_all(const std::string& path) {
   if (std::filesystem::is_directory(path, ec)) throw BakeError(path + ": is a directory");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw BakeError(path + ": cannot open for reading (" + std::strerror(errno) + ")");
-  std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)),
-                                   std::istreambuf_iterator<char>());
+  std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   if (in.bad()) throw BakeError(path + ": read error");
   if (bytes.empty()) throw BakeError(path + ": file is empty");
   return bytes;
@@ -50,9 +50,15 @@ struct UriPolicy {
   GltfLoadOptions options;
 };
 
-bool uri_exists(const std::string&, void*) { return true; }  // the reader says why it cannot
-std::string uri_as_given(const std::string& path, void*) { return path; }
-bool no_writes(std::string*, const std::string&, const std::vector<unsigned char>&, void*) { return false; }
+bool uri_exists(const std::string&, void*) {
+  return true;
+}  // the reader says why it cannot
+std::string uri_as_given(const std::string& path, void*) {
+  return path;
+}
+bool no_writes(std::string*, const std::string&, const std::vector<unsigned char>&, void*) {
+  return false;
+}
 
 // 4 GiB: what a glTF buffer's byteLength (uint32 in practice) can address.
 constexpr std::uintmax_t kMaxExternalBytes = std::uintmax_t{1} << 32;
@@ -90,20 +96,24 @@ bool read_uri(std::vector<unsigned char>* out, std::string* err, const std::stri
 // range, no cycle, every transform finite and invertible. bake wrote such files with exit 0
 // and run refused them (or, without these checks, would have drawn NaNs).
 void check_scene_graph(const std::string& path, const tinygltf::Model& m) {
-  const auto fail = [&](const std::string& where, const std::string& why) { throw BakeError(path + ": " + where + ": " + why); };
+  const auto fail = [&](const std::string& where, const std::string& why) {
+    throw BakeError(path + ": " + where + ": " + why);
+  };
   const std::size_t nodes = m.nodes.size();
   for (std::size_t i = 0; i < nodes; ++i) {
     const tinygltf::Node& n = m.nodes[i];
     const std::string at = "/nodes/" + std::to_string(i);
     if (n.mesh >= 0 && static_cast<std::size_t>(n.mesh) >= m.meshes.size())
-      fail(at + "/mesh", "no mesh " + std::to_string(n.mesh) + " (the file has " + std::to_string(m.meshes.size()) + ")");
+      fail(at + "/mesh",
+           "no mesh " + std::to_string(n.mesh) + " (the file has " + std::to_string(m.meshes.size()) + ")");
     for (std::size_t k = 0; k < n.children.size(); ++k)
       if (n.children[k] < 0 || static_cast<std::size_t>(n.children[k]) >= nodes)
         fail(at + "/children/" + std::to_string(k), "no node " + std::to_string(n.children[k]));
     for (const std::vector<double>* v : {&n.matrix, &n.translation, &n.rotation, &n.scale})
       for (double x : *v)
         if (!std::isfinite(x)) fail(at, "a transform component is not finite");
-    if (n.rotation.size() == 4 && std::hypot(std::hypot(n.rotation[0], n.rotation[1]), std::hypot(n.rotation[2], n.rotation[3])) < 1e-6)
+    if (n.rotation.size() == 4 &&
+        std::hypot(std::hypot(n.rotation[0], n.rotation[1]), std::hypot(n.rotation[2], n.rotation[3])) < 1e-6)
       fail(at + "/rotation", "a zero quaternion is no rotation (glTF requires a unit one)");
     const double det = glm::determinant(node_local_matrix(n));
     if (!std::isfinite(det) || std::abs(det) < 1e-300)
@@ -132,7 +142,9 @@ void check_scene_graph(const std::string& path, const tinygltf::Model& m) {
         continue;
       }
       const auto child = static_cast<std::size_t>(children[next++]);
-      if (state[child] == 1) fail("/nodes/" + std::to_string(node) + "/children", "node graph has a cycle through node " + std::to_string(child));
+      if (state[child] == 1)
+        fail("/nodes/" + std::to_string(node) + "/children",
+             "node graph has a cycle through node " + std::to_string(child));
       if (state[child] == 0) {
         state[child] = 1;
         stack.push_back({child, 0});
@@ -142,8 +154,7 @@ void check_scene_graph(const std::string& path, const tinygltf::Model& m) {
 }
 
 std::uint32_t le32(const unsigned char* p) {
-  return std::uint32_t(p[0]) | std::uint32_t(p[1]) << 8 | std::uint32_t(p[2]) << 16 |
-         std::uint32_t(p[3]) << 24;
+  return std::uint32_t(p[0]) | std::uint32_t(p[1]) << 8 | std::uint32_t(p[2]) << 16 | std::uint32_t(p[3]) << 24;
 }
 
 std::string trim(std::string s) {
@@ -179,13 +190,11 @@ LoadedGltf load_gltf(const std::string& path, GltfLoadOptions options) {
   const bool glb = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
   if (glb) {
     if (bytes.size() < 20)
-      throw BakeError(path + ": truncated GLB: " + std::to_string(bytes.size()) +
-                      " bytes, the header alone needs 20");
+      throw BakeError(path + ": truncated GLB: " + std::to_string(bytes.size()) + " bytes, the header alone needs 20");
     const std::uint32_t declared = le32(bytes.data() + 8);
     if (declared > bytes.size())
-      throw BakeError(path + ": truncated GLB: header (byte 8) declares " +
-                      std::to_string(declared) + " bytes, file has " +
-                      std::to_string(bytes.size()));
+      throw BakeError(path + ": truncated GLB: header (byte 8) declares " + std::to_string(declared) +
+                      " bytes, file has " + std::to_string(bytes.size()));
   }
   if (bytes.size() > UINT32_MAX) throw BakeError(path + ": larger than 4 GiB");
 
@@ -203,10 +212,9 @@ LoadedGltf load_gltf(const std::string& path, GltfLoadOptions options) {
   tinygltf::FsCallbacks fs{&uri_exists, &uri_as_given, &read_uri, &no_writes, &policy};
   loader.SetFsCallbacks(fs);
   const auto n = static_cast<unsigned int>(bytes.size());
-  const bool ok =
-      glb ? loader.LoadBinaryFromMemory(&out.model, &err, &warn, bytes.data(), n, base_dir)
-          : loader.LoadASCIIFromString(&out.model, &err, &warn,
-                                       reinterpret_cast<const char*>(bytes.data()), n, base_dir);
+  const bool ok = glb ? loader.LoadBinaryFromMemory(&out.model, &err, &warn, bytes.data(), n, base_dir)
+                      : loader.LoadASCIIFromString(&out.model, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
+                                                   n, base_dir);
   if (!ok || !err.empty())
     throw BakeError(path + ": " + (glb ? "invalid GLB: " : "invalid glTF: ") +
                     (err.empty() ? std::string("tinygltf rejected the file") : trim(err)));

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reads a .gltf or .glb (told apart by the GLB magic, not the file name) with tinygltf.
 // Images are kept as their encoded bytes (never decoded and re-encoded), so textures survive
 // the bake bit for bit.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Buffer merging and image embedding (see gltf_pack.hpp).
 #include "bake/gltf_pack.hpp"
 
@@ -8,11 +9,12 @@
 namespace gazelod::bake {
 namespace {
 
-std::size_t align4(std::size_t n) { return (n + 3) & ~std::size_t{3}; }
+std::size_t align4(std::size_t n) {
+  return (n + 3) & ~std::size_t{3};
+}
 
 std::string mime_from_uri(const std::string& uri) {
-  std::string ext = uri.substr(uri.find_last_of('.') == std::string::npos ? uri.size()
-                                                                          : uri.find_last_of('.') + 1);
+  std::string ext = uri.substr(uri.find_last_of('.') == std::string::npos ? uri.size() : uri.find_last_of('.') + 1);
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (ext == "png") return "image/png";
@@ -49,8 +51,7 @@ std::vector<std::string> pack_single_buffer(tinygltf::Model& model) {
     for (std::size_t i = 0; i < model.buffers.size(); ++i) {
       merged.data.resize(align4(merged.data.size()), 0);
       offset[i] = merged.data.size();
-      merged.data.insert(merged.data.end(), model.buffers[i].data.begin(),
-                         model.buffers[i].data.end());
+      merged.data.insert(merged.data.end(), model.buffers[i].data.begin(), model.buffers[i].data.end());
     }
     for (tinygltf::BufferView& bv : model.bufferViews) {
       if (bv.buffer < 0 || static_cast<std::size_t>(bv.buffer) >= offset.size()) continue;

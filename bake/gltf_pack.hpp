@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Makes a model GLB-ready before anything is appended: all buffers merged into buffer 0 (the
 // GLB BIN chunk; tinygltf would otherwise base64 the others), and every image that came from
 // a URI (file or data:) moved, still encoded, into a bufferView of that buffer.

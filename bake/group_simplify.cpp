@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One group's simplification (group_simplify.hpp).
 #include "bake/group_simplify.hpp"
 

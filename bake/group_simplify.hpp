@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One group's simplification in the cluster hierarchy build (bake/cluster_build.hpp, step 3)
 // with meshoptimizer 0.18, on the group's own compact copy of its vertices:
 //   - to about `simplify_ratio` of its triangles, at whatever error that takes;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Accessor reading with explicit bounds checks: a malformed file must give a message, not a
 // read past the buffer (tinygltf does not check accessor ranges).
 #include "bake/mesh_extract.hpp"
@@ -14,13 +15,20 @@ namespace {
 
 const char* mode_name(int mode) {
   switch (mode) {
-    case TINYGLTF_MODE_POINTS: return "POINTS";
-    case TINYGLTF_MODE_LINE: return "LINES";
-    case TINYGLTF_MODE_LINE_LOOP: return "LINE_LOOP";
-    case TINYGLTF_MODE_LINE_STRIP: return "LINE_STRIP";
-    case TINYGLTF_MODE_TRIANGLE_STRIP: return "TRIANGLE_STRIP";
-    case TINYGLTF_MODE_TRIANGLE_FAN: return "TRIANGLE_FAN";
-    default: return "unknown";
+    case TINYGLTF_MODE_POINTS:
+      return "POINTS";
+    case TINYGLTF_MODE_LINE:
+      return "LINES";
+    case TINYGLTF_MODE_LINE_LOOP:
+      return "LINE_LOOP";
+    case TINYGLTF_MODE_LINE_STRIP:
+      return "LINE_STRIP";
+    case TINYGLTF_MODE_TRIANGLE_STRIP:
+      return "TRIANGLE_STRIP";
+    case TINYGLTF_MODE_TRIANGLE_FAN:
+      return "TRIANGLE_FAN";
+    default:
+      return "unknown";
   }
 }
 
@@ -31,8 +39,7 @@ struct View {
   std::size_t count = 0;
 };
 
-View checked_view(const tinygltf::Model& m, int accessor, std::size_t element_size,
-                  const std::string& where) {
+View checked_view(const tinygltf::Model& m, int accessor, std::size_t element_size, const std::string& where) {
   const std::string a_where = where + " (accessor " + std::to_string(accessor) + ")";
   if (accessor < 0 || static_cast<std::size_t>(accessor) >= m.accessors.size())
     throw BakeError(a_where + ": no such accessor");
@@ -51,32 +58,35 @@ View checked_view(const tinygltf::Model& m, int accessor, std::size_t element_si
   // Checked in this order so that no product can overflow.
   const bool past_end =
       bv.byteOffset > data.size() || bv.byteLength > data.size() - bv.byteOffset ||
-      (a.count > 0 && (a.byteOffset > bv.byteLength ||
-                       (a.count - 1) > (bv.byteLength - a.byteOffset) / stride ||
+      (a.count > 0 && (a.byteOffset > bv.byteLength || (a.count - 1) > (bv.byteLength - a.byteOffset) / stride ||
                        a.byteOffset + stride * (a.count - 1) + element_size > bv.byteLength));
   if (past_end)
-    throw BakeError(a_where + ": reads past the end of its bufferView " +
-                    std::to_string(a.bufferView) + " / buffer " + std::to_string(bv.buffer) +
-                    " (truncated data?)");
+    throw BakeError(a_where + ": reads past the end of its bufferView " + std::to_string(a.bufferView) + " / buffer " +
+                    std::to_string(bv.buffer) + " (truncated data?)");
   return {data.data() + bv.byteOffset + a.byteOffset, stride, a.count};
 }
 
 }  // namespace
 
-std::vector<std::uint32_t> read_index_accessor(const tinygltf::Model& m, int accessor,
-                                               std::size_t vertex_count, const std::string& where) {
+std::vector<std::uint32_t> read_index_accessor(const tinygltf::Model& m, int accessor, std::size_t vertex_count,
+                                               const std::string& where) {
   if (accessor < 0 || static_cast<std::size_t>(accessor) >= m.accessors.size())
     throw BakeError(where + ": indices accessor " + std::to_string(accessor) + " does not exist");
   const tinygltf::Accessor& a = m.accessors.at(static_cast<std::size_t>(accessor));
   std::size_t size = 0;
   switch (a.componentType) {
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: size = 1; break;
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: size = 2; break;
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: size = 4; break;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+      size = 1;
+      break;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+      size = 2;
+      break;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+      size = 4;
+      break;
     default:
-      throw BakeError(where + ": indices accessor " + std::to_string(accessor) +
-                      " has component type " + std::to_string(a.componentType) +
-                      " (need unsigned byte/short/int)");
+      throw BakeError(where + ": indices accessor " + std::to_string(accessor) + " has component type " +
+                      std::to_string(a.componentType) + " (need unsigned byte/short/int)");
   }
   if (a.type != TINYGLTF_TYPE_SCALAR)
     throw BakeError(where + ": indices accessor " + std::to_string(accessor) + " is not SCALAR");
@@ -85,19 +95,24 @@ std::vector<std::uint32_t> read_index_accessor(const tinygltf::Model& m, int acc
   for (std::size_t i = 0; i < v.count; ++i) {
     const unsigned char* p = v.first + i * v.stride;
     std::uint32_t x = 0;
-    if (size == 1) x = p[0];
-    else if (size == 2) { std::uint16_t s; std::memcpy(&s, p, 2); x = s; }
-    else std::memcpy(&x, p, 4);
+    if (size == 1)
+      x = p[0];
+    else if (size == 2) {
+      std::uint16_t s;
+      std::memcpy(&s, p, 2);
+      x = s;
+    } else
+      std::memcpy(&x, p, 4);
     if (x >= vertex_count)
-      throw BakeError(where + ": index " + std::to_string(i) + " is " + std::to_string(x) +
-                      ", but there are only " + std::to_string(vertex_count) + " vertices");
+      throw BakeError(where + ": index " + std::to_string(i) + " is " + std::to_string(x) + ", but there are only " +
+                      std::to_string(vertex_count) + " vertices");
     out[i] = x;
   }
   return out;
 }
 
-std::vector<unsigned char> read_accessor_bytes(const tinygltf::Model& m, int accessor,
-                                               std::size_t element_size, const std::string& where) {
+std::vector<unsigned char> read_accessor_bytes(const tinygltf::Model& m, int accessor, std::size_t element_size,
+                                               const std::string& where) {
   const View v = checked_view(m, accessor, element_size, where);
   std::vector<unsigned char> out(v.count * element_size);
   for (std::size_t i = 0; i < v.count; ++i)
@@ -120,8 +135,7 @@ std::vector<std::uint32_t> fan_to_list(const std::vector<std::uint32_t>& f) {
 
 std::string mesh_label(const tinygltf::Model& model, int mesh) {
   std::string s = "mesh " + std::to_string(mesh);
-  if (mesh >= 0 && static_cast<std::size_t>(mesh) < model.meshes.size() &&
-      !model.meshes[mesh].name.empty())
+  if (mesh >= 0 && static_cast<std::size_t>(mesh) < model.meshes.size() && !model.meshes[mesh].name.empty())
     s += " '" + model.meshes[mesh].name + "'";
   return s;
 }
@@ -130,8 +144,7 @@ std::string primitive_label(const tinygltf::Model& model, int mesh, int primitiv
   return mesh_label(model, mesh) + " primitive " + std::to_string(primitive);
 }
 
-std::vector<float> read_positions(const tinygltf::Model& m, int accessor,
-                                  const std::string& where) {
+std::vector<float> read_positions(const tinygltf::Model& m, int accessor, const std::string& where) {
   if (accessor < 0 || static_cast<std::size_t>(accessor) >= m.accessors.size())
     throw BakeError(where + ": POSITION accessor " + std::to_string(accessor) + " does not exist");
   const tinygltf::Accessor& a = m.accessors[accessor];
@@ -143,13 +156,12 @@ std::vector<float> read_positions(const tinygltf::Model& m, int accessor,
   for (std::size_t i = 0; i < v.count; ++i) {
     std::memcpy(&out[3 * i], v.first + i * v.stride, 12);
     for (int c = 0; c < 3; ++c) {
-      if (!std::isfinite(out[3 * i + c]))
-        throw BakeError(where + ": POSITION " + std::to_string(i) + " is not finite");
+      if (!std::isfinite(out[3 * i + c])) throw BakeError(where + ": POSITION " + std::to_string(i) + " is not finite");
       if (std::fabs(out[3 * i + c]) > kMaxPositionM) {
-        std::ostringstream m;
-        m << where << ": POSITION " << i << " is out of range: a coordinate of " << out[3 * i + c]
-          << " m (at most " << kMaxPositionM << " m)";
-        throw BakeError(m.str());
+        std::ostringstream msg;
+        msg << where << ": POSITION " << i << " is out of range: a coordinate of " << out[3 * i + c] << " m (at most "
+          << kMaxPositionM << " m)";
+        throw BakeError(msg.str());
       }
     }
   }
@@ -161,7 +173,9 @@ bool draws_triangles(const tinygltf::Primitive& p) {
          p.mode == TINYGLTF_MODE_TRIANGLE_FAN;
 }
 
-std::string mode_label(int mode) { return "mode " + std::to_string(mode) + " (" + mode_name(mode) + ")"; }
+std::string mode_label(int mode) {
+  return "mode " + std::to_string(mode) + " (" + mode_name(mode) + ")";
+}
 
 std::size_t count_area_triangles(const PrimitiveGeometry& g) {
   const auto at = [&](std::uint32_t i) {
@@ -177,8 +191,8 @@ std::size_t count_area_triangles(const PrimitiveGeometry& g) {
 
 PrimitiveGeometry extract_primitive(const tinygltf::Model& m, int mesh, int primitive) {
   const std::string where = primitive_label(m, mesh, primitive);
-  const tinygltf::Primitive& p = m.meshes.at(static_cast<std::size_t>(mesh))
-                                     .primitives.at(static_cast<std::size_t>(primitive));
+  const tinygltf::Primitive& p =
+      m.meshes.at(static_cast<std::size_t>(mesh)).primitives.at(static_cast<std::size_t>(primitive));
   if (!draws_triangles(p))
     throw BakeError(where + ": " + mode_label(p.mode) +
                     " is not supported; only triangles (TRIANGLES 4, TRIANGLE_STRIP 5, "
@@ -197,8 +211,7 @@ PrimitiveGeometry extract_primitive(const tinygltf::Model& m, int mesh, int prim
   if (p.mode == TINYGLTF_MODE_TRIANGLE_STRIP) g.indices = strip_to_list(g.indices);
   if (p.mode == TINYGLTF_MODE_TRIANGLE_FAN) g.indices = fan_to_list(g.indices);
   if (g.indices.size() % 3 != 0)
-    throw BakeError(where + ": " + std::to_string(g.indices.size()) +
-                    " indices is not a whole number of triangles");
+    throw BakeError(where + ": " + std::to_string(g.indices.size()) + " indices is not a whole number of triangles");
   return g;
 }
 

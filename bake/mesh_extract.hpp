@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A triangle primitive's positions and indices out of a glTF model, with every check the
 // simplifier relies on (float VEC3 positions, in-range indices, no sparse accessors, triangles).
 #pragma once
@@ -12,8 +13,8 @@
 namespace gazelod::bake {
 
 struct PrimitiveGeometry {
-  std::vector<float> positions_xyz;      // 3 per vertex, as stored (mesh-local units, metres)
-  std::vector<std::uint32_t> indices;    // triangle list; 0..n-1 for a non-indexed primitive
+  std::vector<float> positions_xyz;    // 3 per vertex, as stored (mesh-local units, metres)
+  std::vector<std::uint32_t> indices;  // triangle list; 0..n-1 for a non-indexed primitive
 };
 
 // glTF TRIANGLE_STRIP / TRIANGLE_FAN vertex order (glTF 2.0 spec 3.7.2.1) as a triangle list;
@@ -54,17 +55,16 @@ inline constexpr double kMaxPositionM = 1e9;
 
 // Only the positions of accessor `accessor` (POSITION), with the same checks; `where` prefixes
 // error messages. Used by the baked-scene loader for bounding spheres.
-std::vector<float> read_positions(const tinygltf::Model& model, int accessor,
-                                  const std::string& where);
+std::vector<float> read_positions(const tinygltf::Model& model, int accessor, const std::string& where);
 
 // The unsigned byte/short/int SCALAR accessor `accessor` as 32-bit values, each checked
 // < vertex_count; `where` prefixes error messages.
-std::vector<std::uint32_t> read_index_accessor(const tinygltf::Model& model, int accessor,
-                                               std::size_t vertex_count, const std::string& where);
+std::vector<std::uint32_t> read_index_accessor(const tinygltf::Model& model, int accessor, std::size_t vertex_count,
+                                               const std::string& where);
 
 // The elements of accessor `accessor` copied tightly packed (element_size bytes each, stride
 // removed) after the same bounds checks; the caller checks componentType and type.
-std::vector<unsigned char> read_accessor_bytes(const tinygltf::Model& model, int accessor,
-                                               std::size_t element_size, const std::string& where);
+std::vector<unsigned char> read_accessor_bytes(const tinygltf::Model& model, int accessor, std::size_t element_size,
+                                               const std::string& where);
 
 }  // namespace gazelod::bake

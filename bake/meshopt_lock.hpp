@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Locking a vertex in meshoptimizer 0.18's simplifier, which has no per-vertex lock
 // (vertex_lock came in 0.21): it never moves a position that three or more vertices share
 // ("many wedges", Kind_Locked in its classifyVertices), unreferenced ones included, so two

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // MSFT_lod nodes, meshes and index accessors (see msft_lod_writer.hpp).
 #include "bake/msft_lod_writer.hpp"
 
@@ -15,8 +16,7 @@ namespace {
 
 using Object = tinygltf::Value::Object;
 
-int add_index_accessor(tinygltf::Model& m, const std::vector<std::uint32_t>& idx,
-                       std::size_t vertex_count) {
+int add_index_accessor(tinygltf::Model& m, const std::vector<std::uint32_t>& idx, std::size_t vertex_count) {
   tinygltf::Accessor a;
   a.type = TINYGLTF_TYPE_SCALAR;
   a.count = idx.size();
@@ -40,7 +40,8 @@ std::size_t vertex_count_of(const tinygltf::Model& m, const tinygltf::Primitive&
 // Adds gazelod_lod to a node's extras, keeping whatever object was there.
 void set_lod_extras(tinygltf::Node& node, int node_index, tinygltf::Value v) {
   Object obj;
-  if (node.extras.IsObject()) obj = node.extras.Get<Object>();
+  if (node.extras.IsObject())
+    obj = node.extras.Get<Object>();
   else if (node.extras.Type() != tinygltf::NULL_TYPE)
     throw BakeError("node " + std::to_string(node_index) + " '" + node.name +
                     "': extras is not a JSON object, gazelod_lod cannot be added");
@@ -51,7 +52,7 @@ void set_lod_extras(tinygltf::Node& node, int node_index, tinygltf::Value v) {
 // Counts as JSON integers (tinygltf's integer Value is an int; larger ones stay exact as double).
 tinygltf::Value count_value(std::uint32_t n) {
   return n <= static_cast<std::uint32_t>(INT_MAX) ? tinygltf::Value(static_cast<int>(n))
-                                                 : tinygltf::Value(static_cast<double>(n));
+                                                  : tinygltf::Value(static_cast<double>(n));
 }
 
 }  // namespace
@@ -79,8 +80,7 @@ void write_msft_lod(tinygltf::Model& m, const std::vector<MeshChain>& chains) {
     const MeshChain& c = chains[mi];
     for (std::size_t k = 1; k < c.levels.size(); ++k) {
       tinygltf::Mesh lod = m.meshes[mi];  // copy: materials, targets, weights, extras survive
-      lod.name = (lod.name.empty() ? "mesh" + std::to_string(mi) : lod.name) + "_lod" +
-                 std::to_string(k);
+      lod.name = (lod.name.empty() ? "mesh" + std::to_string(mi) : lod.name) + "_lod" + std::to_string(k);
       lod.primitives.clear();
       for (std::size_t p = 0; p < m.meshes[mi].primitives.size(); ++p) {
         const std::vector<std::uint32_t>& idx = c.levels[k].primitive_indices.at(p);
@@ -104,8 +104,7 @@ void write_msft_lod(tinygltf::Model& m, const std::vector<MeshChain>& chains) {
     tinygltf::Value::Array ids;
     for (std::size_t k = 1; k < c.levels.size(); ++k) {
       tinygltf::Node lod = m.nodes[ni];  // same transform, skin, name-derived name
-      lod.name = (lod.name.empty() ? "node" + std::to_string(ni) : lod.name) + "_lod" +
-                 std::to_string(k);
+      lod.name = (lod.name.empty() ? "node" + std::to_string(ni) : lod.name) + "_lod" + std::to_string(k);
       lod.mesh = lod_mesh[static_cast<std::size_t>(mesh)][k - 1];
       lod.children.clear();  // children stay under the finest node only
       lod.extensions.erase("MSFT_lod");

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Puts baked LOD chains into a model as glTF MSFT_lod: for each node with a mesh, the coarser
 // levels become extra nodes (same transform, mesh "<name>_lod<k>", not in any scene) listed in
 // the node's extensions.MSFT_lod.ids, finest first. Every level's node carries
@@ -28,7 +29,7 @@ struct MeshLevel {
 };
 
 struct MeshChain {
-  double diameter_m = 0.0;  // bounding-sphere diameter of the full mesh
+  double diameter_m = 0.0;        // bounding-sphere diameter of the full mesh
   std::vector<MeshLevel> levels;  // levels[0] is the input mesh
 };
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // node_world.hpp: the node transform and the scene walk.
 #include "bake/node_world.hpp"
 
@@ -10,8 +11,7 @@ namespace {
 
 void visit(const tinygltf::Model& m, int node, const glm::dmat4& parent, std::vector<bool>& on_path,
            std::vector<MeshInstance>& out) {
-  if (node < 0 || static_cast<std::size_t>(node) >= m.nodes.size() || on_path[static_cast<std::size_t>(node)])
-    return;
+  if (node < 0 || static_cast<std::size_t>(node) >= m.nodes.size() || on_path[static_cast<std::size_t>(node)]) return;
   on_path[static_cast<std::size_t>(node)] = true;
   const tinygltf::Node& n = m.nodes[static_cast<std::size_t>(node)];
   const glm::dmat4 world = parent * node_local_matrix(n);
@@ -25,7 +25,8 @@ void visit(const tinygltf::Model& m, int node, const glm::dmat4& parent, std::ve
 glm::dmat4 node_local_matrix(const tinygltf::Node& n) {
   if (n.matrix.size() == 16) return glm::make_mat4(n.matrix.data());
   glm::dmat4 m(1.0);
-  if (n.translation.size() == 3) m = glm::translate(m, glm::dvec3(n.translation[0], n.translation[1], n.translation[2]));
+  if (n.translation.size() == 3)
+    m = glm::translate(m, glm::dvec3(n.translation[0], n.translation[1], n.translation[2]));
   if (n.rotation.size() == 4)  // glTF stores x, y, z, w
     m *= glm::mat4_cast(glm::dquat(n.rotation[3], n.rotation[0], n.rotation[1], n.rotation[2]));
   if (n.scale.size() == 3) m = glm::scale(m, glm::dvec3(n.scale[0], n.scale[1], n.scale[2]));

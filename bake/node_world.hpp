@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Where a glTF scene puts its meshes: node transforms (glTF 2.0 spec 3.5.3) composed from the
 // roots of the scene(s) a viewer sees, in double precision.
 #pragma once

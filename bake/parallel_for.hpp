@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The bake's one way of running work on several threads: items taken in turn from a shared
 // counter by `threads` threads (the caller's among them), each task told which thread runs it
 // (for per-thread scratch). Every task must write only its own output, so that the result is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Rendering the chain from the view sphere and reducing the differences (profile_render.hpp).
 #include "bake/profile_render.hpp"
 #include "lod/angles.hpp"
@@ -21,7 +22,9 @@
 namespace gazelod::bake {
 namespace {
 
-double deg_to_rad(double d) { return d * lod::kRadPerDeg; }
+double deg_to_rad(double d) {
+  return d * lod::kRadPerDeg;
+}
 
 // Eye on the view sphere at `dir` * distance, looking at the origin, +y up (+z when looking
 // along y). The sphere of radius 1 then just fills the square view.
@@ -95,7 +98,8 @@ std::vector<LevelProfile> Profiler::profile(std::span<const float> xyz,
   // Unit bounding-sphere frame: box centre, farthest vertex (as bake.cpp measures diameter).
   glm::dvec3 lo(INFINITY), hi(-INFINITY);
   for (std::size_t i = 0; i + 2 < xyz.size(); i += 3)
-    for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], double(xyz[i + a])), hi[a] = std::max(hi[a], double(xyz[i + a]));
+    for (int a = 0; a < 3; ++a)
+      lo[a] = std::min(lo[a], double(xyz[i + a])), hi[a] = std::max(hi[a], double(xyz[i + a]));
   const glm::dvec3 c = (lo + hi) / 2.0;
   double r = 0.0;
   for (std::size_t i = 0; i + 2 < xyz.size(); i += 3)

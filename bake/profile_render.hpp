@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reddy's perceptual profile of an LOD chain (Reddy 1998 sections 3.2-3.3, Figure 1): render the
 // full model and every level offscreen (Vulkan, lavapipe) from 6 or 18 viewpoints on the view
 // sphere, all looking at the centre; per level and viewpoint, the frequency of the difference
@@ -22,9 +23,9 @@
 namespace gazelod::bake {
 
 struct ProfileOptions {
-  int viewpoints = 6;           // 6 (cube faces) or 18 (faces + edges), Reddy 1998 Figure 1
-  std::uint32_t image_px = 256; // square; power of two in [16, 1024]
-  double half_fov_deg = 5.0;    // narrow perspective whose view just encloses the bounding sphere
+  int viewpoints = 6;            // 6 (cube faces) or 18 (faces + edges), Reddy 1998 Figure 1
+  std::uint32_t image_px = 256;  // square; power of two in [16, 1024]
+  double half_fov_deg = 5.0;     // narrow perspective whose view just encloses the bounding sphere
 };
 
 // Unit directions from the centre to the viewpoints: the 6 cube faces, then the 12 edges.
@@ -32,7 +33,7 @@ struct ProfileOptions {
 std::vector<glm::dvec3> view_directions(int viewpoints);
 
 struct LevelProfile {
-  double rendered_cycles_per_diameter = 0.0;      // the level's figure (0 at level 0)
+  double rendered_cycles_per_diameter = 0.0;         // the level's figure (0 at level 0)
   std::vector<double> per_view_cycles_per_diameter;  // < 0 where the view shows no difference
 };
 

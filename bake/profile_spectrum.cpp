@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Separable radix-2 FFT and the radial energy distribution (profile_spectrum.hpp).
 #include "bake/profile_spectrum.hpp"
 
@@ -34,16 +35,17 @@ void fft_inplace(std::span<double> re, std::span<double> im) {
 }
 
 double energy_frequency_cycles_per_width(std::span<const float> diff, std::uint32_t size) {
-  if (size < 2 || size > 4096 || (size & (size - 1)) != 0 ||
-      diff.size() != static_cast<std::size_t>(size) * size)
-    throw std::invalid_argument("profile spectrum: image must be size x size with size a power "
-                                "of two in [2, 4096], got size " + std::to_string(size) +
-                                " and " + std::to_string(diff.size()) + " values");
+  if (size < 2 || size > 4096 || (size & (size - 1)) != 0 || diff.size() != static_cast<std::size_t>(size) * size)
+    throw std::invalid_argument(
+        "profile spectrum: image must be size x size with size a power "
+        "of two in [2, 4096], got size " +
+        std::to_string(size) + " and " + std::to_string(diff.size()) + " values");
   const std::size_t n = size;
   std::vector<double> re(n * n), im(n * n, 0.0);
   bool any = false;
   for (std::size_t i = 0; i < n * n; ++i) {
-    if (!std::isfinite(diff[i])) throw std::invalid_argument("profile spectrum: value " + std::to_string(i) + " is not finite");
+    if (!std::isfinite(diff[i]))
+      throw std::invalid_argument("profile spectrum: value " + std::to_string(i) + " is not finite");
     re[i] = std::abs(diff[i]) < kNoiseFloor ? 0.0 : diff[i];
     any = any || re[i] != 0.0;
   }

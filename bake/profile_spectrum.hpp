@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The spatial frequency of a difference image (a level's render minus the full model's), the
 // FFT stand-in for Reddy's feature analysis (Reddy 1998 section 3.3: region growing, then the
 // length of each feature; a feature w pixels wide is half a cycle, 1 / (2 w) cycles/pixel).

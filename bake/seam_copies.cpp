@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "bake/seam_copies.hpp"
 
 #include <algorithm>
@@ -17,10 +18,18 @@ constexpr std::uint32_t kAllCopiesUpTo = 64;
 struct Vec {
   float x, y, z;
 };
-Vec at(std::span<const float> pos, std::uint32_t v) { return {pos[3 * v], pos[3 * v + 1], pos[3 * v + 2]}; }
-Vec sub(Vec a, Vec b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-Vec cross(Vec a, Vec b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
-float dot(Vec a, Vec b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+Vec at(std::span<const float> pos, std::uint32_t v) {
+  return {pos[3 * v], pos[3 * v + 1], pos[3 * v + 2]};
+}
+Vec sub(Vec a, Vec b) {
+  return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+Vec cross(Vec a, Vec b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+float dot(Vec a, Vec b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 Vec face_normal(std::span<const float> pos, const std::uint32_t* t) {  // twice the area long
   const Vec a = at(pos, t[0]);
   return cross(sub(at(pos, t[1]), a), sub(at(pos, t[2]), a));
@@ -105,7 +114,8 @@ void SeamCopies::choose(std::span<std::uint32_t> triangles, std::span<const std:
         const std::uint32_t s = slot(*it);
         if (facing(s) < best_cos - (1.0f - kSameFacingCos)) continue;
         const float inv = 1.0f / static_cast<float>(std::max<std::uint32_t>(triangles_of_[s], 1));
-        const Vec d = sub(c, Vec{centroid_sum_[3 * s] * inv, centroid_sum_[3 * s + 1] * inv, centroid_sum_[3 * s + 2] * inv});
+        const Vec d =
+            sub(c, Vec{centroid_sum_[3 * s] * inv, centroid_sum_[3 * s + 1] * inv, centroid_sum_[3 * s + 2] * inv});
         if (const float d2 = dot(d, d); d2 < best_d2) best_d2 = d2, chosen = s;
       }
       return copies_[chosen];

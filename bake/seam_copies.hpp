@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Simplifying a cluster group across attribute seams (bake/cluster_build.hpp, `stuck_across_seams`).
 // A seam is a position several vertices share with different normals or texture coordinates:
 // a CAD part's hard edge, a UV island's rim. meshoptimizer 0.18 keeps such a seam intact (it

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // shared_positions.hpp: one hash of world positions -> the first (primitive, instance) there.
 #include "bake/shared_positions.hpp"
 
@@ -23,7 +24,8 @@ struct KeyHash {
 Key world_key(std::span<const float> xyz, std::size_t v, const glm::dmat4& w) {
   const glm::dvec4 p = w * glm::dvec4(xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2], 1.0);
   Key k;
-  for (int i = 0; i < 3; ++i) k[static_cast<std::size_t>(i)] = std::bit_cast<std::uint32_t>(static_cast<float>(p[i]) + 0.0f);
+  for (int i = 0; i < 3; ++i)
+    k[static_cast<std::size_t>(i)] = std::bit_cast<std::uint32_t>(static_cast<float>(p[i]) + 0.0f);
   return k;
 }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Which vertices of a scene's primitives lie where another primitive, or another instance of
 // the same one, also has a vertex: the borders where separately baked meshes meet (terrain
 // tiles, parts of a model). A cluster bake keeps those positions at every level
@@ -14,9 +15,9 @@
 namespace gazelod::bake {
 
 struct PlacedPrimitive {
-  std::span<const float> positions_xyz;  // 3 floats per vertex, mesh space
+  std::span<const float> positions_xyz;    // 3 floats per vertex, mesh space
   std::span<const std::uint32_t> indices;  // triangle list
-  std::vector<glm::dmat4> world;         // one per instance; none: the primitive is not placed
+  std::vector<glm::dmat4> world;           // one per instance; none: the primitive is not placed
 };
 
 // Per primitive, per vertex: 1 where the vertex lies on the primitive's own open border (an

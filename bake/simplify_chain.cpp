@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // meshopt_simplify per level, meshopt_simplifySloppy when topology stops it short of the target,
 // meshopt_optimizeVertexCache on the result (see simplify_chain.hpp).
 #include "bake/simplify_chain.hpp"
@@ -96,17 +97,15 @@ PrimitiveChain simplify_chain(std::span<const float> pos, std::span<const std::u
     const auto target_tri = static_cast<std::size_t>(std::llround(static_cast<double>(tri0) * ratio));
     const std::size_t target = 3 * std::max<std::size_t>(1, target_tri);
     float err = 0.0f;
-    std::size_t n = idx.empty() ? 0
-                                : meshopt_simplify(dst.data(), idx.data(), idx.size(), pos.data(),
-                                                   vcount, 3 * sizeof(float), target,
-                                                   target_error,
-                                                   options.lock_borders ? unsigned(meshopt_SimplifyLockBorder) : 0u,
-                                                   &err);
+    std::size_t n =
+        idx.empty()
+            ? 0
+            : meshopt_simplify(dst.data(), idx.data(), idx.size(), pos.data(), vcount, 3 * sizeof(float), target,
+                               target_error, options.lock_borders ? unsigned(meshopt_SimplifyLockBorder) : 0u, &err);
     if (static_cast<double>(n) > kReachSlack * static_cast<double>(target)) {
       float serr = 0.0f;
-      const std::size_t ns = meshopt_simplifySloppy(sloppy.data(), idx.data(), idx.size(),
-                                                    pos.data(), vcount, 3 * sizeof(float), target,
-                                                    target_error, &serr);
+      const std::size_t ns = meshopt_simplifySloppy(sloppy.data(), idx.data(), idx.size(), pos.data(), vcount,
+                                                    3 * sizeof(float), target, target_error, &serr);
       if (ns < n) {  // closer to the target (possibly empty: the part vanishes at this level)
         dst.swap(sloppy);
         n = ns, err = serr, level.sloppy = true;
@@ -127,8 +126,9 @@ PrimitiveChain simplify_chain(std::span<const float> pos, std::span<const std::u
     // distance from the source's vertices cannot see the hole beside a fold.
     const Folds folds = find_folds(pos, idx, level.indices, normals);
     level.folded_triangles = folds.triangles;
-    const double error_m = n == 0 ? double(chain.scale_m)
-                                  : std::max(largest_source_distance_m(pos, idx, level.indices, grid, used), folds.width_m);
+    const double error_m =
+        n == 0 ? double(chain.scale_m)
+               : std::max(largest_source_distance_m(pos, idx, level.indices, grid, used), folds.width_m);
     level.error_m = std::max(error_m, prev.error_m);
     level.error_rel = chain.scale_m > 0.0 ? level.error_m / chain.scale_m : 0.0;
     chain.levels.push_back(std::move(level));

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One primitive's LOD chain with meshoptimizer (0.18 on Debian 12): every coarser level is
 // simplified from the full-detail indices, so its error is measured against the original.
 // meshopt 0.18 has no meshopt_simplifyWithAttributes: simplification is position-only, but it
@@ -32,8 +33,8 @@ struct SimplifiedLevel {
   // running maximum over levels; the whole extent for an empty level), and over scale_m.
   double error_m = 0.0;
   double error_rel = 0.0;
-  bool sloppy = false;                 // reached with meshopt_simplifySloppy
-  std::size_t folded_triangles = 0;    // facing against the source they replace
+  bool sloppy = false;               // reached with meshopt_simplifySloppy
+  std::size_t folded_triangles = 0;  // facing against the source they replace
 };
 
 struct PrimitiveChain {
@@ -48,7 +49,7 @@ std::string validate_chain_options(const ChainOptions& options);
 
 // positions_xyz: 3 floats per vertex, all finite; indices: a triangle list (size % 3 == 0) with
 // every index < vertex count. The caller checks both (mesh_extract does).
-PrimitiveChain simplify_chain(std::span<const float> positions_xyz,
-                              std::span<const std::uint32_t> indices, const ChainOptions& options);
+PrimitiveChain simplify_chain(std::span<const float> positions_xyz, std::span<const std::uint32_t> indices,
+                              const ChainOptions& options);
 
 }  // namespace gazelod::bake

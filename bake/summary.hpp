@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The bake's summary table: per mesh and level, triangles, vertices, errors, detail, method,
 // then totals and throughput.
 #pragma once

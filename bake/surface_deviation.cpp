@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // World-space soups and their one-sided distances (see surface_deviation.hpp).
 #include "bake/surface_deviation.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // How far one triangle mesh lies from another, for comparing simplifiers on equal terms (gazelod
 // eval gltfpack): both a model's source and each simplified version as one world-space triangle
 // soup (every mesh instance's triangle primitives through its node transforms), and the
@@ -15,8 +16,8 @@
 namespace gazelod::bake {
 
 struct TriangleSoup {
-  std::vector<float> positions_xyz;     // world space, metres
-  std::vector<std::uint32_t> indices;   // triangle list
+  std::vector<float> positions_xyz;    // world space, metres
+  std::vector<std::uint32_t> indices;  // triangle list
   std::size_t triangles() const { return indices.size() / 3; }
 };
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "bake/terrain_mesh.hpp"
 
 #include "bake/fractal_noise.hpp"
@@ -95,8 +96,10 @@ std::vector<GeneratedMesh> terrain_meshes(const TerrainOptions& o) {
           const double x = coord(col * per_tile + ii), z = coord(row * per_tile + jj);
           const double y = height(o, noise, x, z);
           // Central differences one grid step wide: the surface the grid samples.
-          const double dy_dx = (height(o, noise, x + spacing_m, z) - height(o, noise, x - spacing_m, z)) / (2.0 * spacing_m);
-          const double dy_dz = (height(o, noise, x, z + spacing_m) - height(o, noise, x, z - spacing_m)) / (2.0 * spacing_m);
+          const double dy_dx =
+              (height(o, noise, x + spacing_m, z) - height(o, noise, x - spacing_m, z)) / (2.0 * spacing_m);
+          const double dy_dz =
+              (height(o, noise, x, z + spacing_m) - height(o, noise, x, z - spacing_m)) / (2.0 * spacing_m);
           const double len = std::sqrt(dy_dx * dy_dx + 1.0 + dy_dz * dy_dz);  // >= 1
           m.positions.insert(m.positions.end(), {static_cast<float>(x), static_cast<float>(y), static_cast<float>(z)});
           m.normals.insert(m.normals.end(), {static_cast<float>(-dy_dx / len), static_cast<float>(1.0 / len),

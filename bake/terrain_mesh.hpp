@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A generated terrain for large-mesh tests (`gazelod scene generate terrain`): a regular
 // height-field grid over a square centred on the origin, +Y up, heights from fractal gradient
 // noise (bake/fractal_noise.hpp) deterministic by seed. A flat path runs along the Z axis at

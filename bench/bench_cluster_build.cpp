@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Cluster hierarchy build (bake/cluster_build.hpp) throughput in input triangles per second on
 // a generated terrain of 1,002,528 triangles (708 x 708 quads over 100 m, four octaves of
 // sines up to 4 m). Baseline in the same process, registered first: one meshopt_simplify of the
@@ -80,9 +81,8 @@ void BM_MeshoptSimplifyHalf(benchmark::State& state) {
   const auto t0 = std::chrono::steady_clock::now();
   for (auto _ : state) {
     float err = 0.0f;
-    benchmark::DoNotOptimize(meshopt_simplify(dst.data(), m.indices.data(), m.indices.size(),
-                                              m.positions.data(), m.positions.size() / 3, 12,
-                                              m.indices.size() / 2, 1.0f, 0, &err));
+    benchmark::DoNotOptimize(meshopt_simplify(dst.data(), m.indices.data(), m.indices.size(), m.positions.data(),
+                                              m.positions.size() / 3, 12, m.indices.size() / 2, 1.0f, 0, &err));
   }
   const double wall_s = seconds_since(t0);
   baseline_s() = wall_s / static_cast<double>(state.iterations());

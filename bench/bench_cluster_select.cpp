@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ns per cluster for select_clusters (lod/cluster_select.hpp) at 10k..1M clusters, beside
 // select_lods per object at the same count in the same run (the baseline: bench/lod's scene,
 // chains of 4 levels, a quarter of the objects moving).
@@ -49,14 +50,16 @@ Viewer viewer() {  // as bench/lod/bench_select.cpp
 // A quadtree over 2^levels x 2^levels cells of cell_m in the tile's x-z plane, one cluster per
 // node (a group of four simplified into one), leaves first.
 ClusterHierarchy quadtree_tile(int levels, double cell_m, double error_scale) {
-  struct Node { double x, y, z, r, e; };
+  struct Node {
+    double x, y, z, r, e;
+  };
   std::vector<std::vector<Node>> by_level;
   const int side = 1 << levels;
   std::vector<Node> leaves;
   for (int i = 0; i < side; ++i)
     for (int j = 0; j < side; ++j)
-      leaves.push_back({(i + 0.5) * cell_m, 0.05 * std::sin(i * 0.3) * std::cos(j * 0.2),
-                        (j + 0.5) * cell_m, 0.75 * cell_m, 0.0});
+      leaves.push_back(
+          {(i + 0.5) * cell_m, 0.05 * std::sin(i * 0.3) * std::cos(j * 0.2), (j + 0.5) * cell_m, 0.75 * cell_m, 0.0});
   by_level.push_back(leaves);
   for (int k = 1, n = side / 2; k <= levels; ++k, n /= 2) {
     const std::vector<Node>& below = by_level.back();
@@ -64,8 +67,8 @@ ClusterHierarchy quadtree_tile(int levels, double cell_m, double error_scale) {
     for (int i = 0; i < n; ++i)
       for (int j = 0; j < n; ++j) {
         Node p{0, 0, 0, 0, error_scale * 0.004 * cell_m * std::pow(2.0, k)};
-        const int kids[4] = {(2 * i) * 2 * n + 2 * j, (2 * i) * 2 * n + 2 * j + 1,
-                             (2 * i + 1) * 2 * n + 2 * j, (2 * i + 1) * 2 * n + 2 * j + 1};
+        const int kids[4] = {(2 * i) * 2 * n + 2 * j, (2 * i) * 2 * n + 2 * j + 1, (2 * i + 1) * 2 * n + 2 * j,
+                             (2 * i + 1) * 2 * n + 2 * j + 1};
         for (int c : kids) p.x += below[c].x / 4, p.y += below[c].y / 4, p.z += below[c].z / 4;
         for (int c : kids)
           p.r = std::max(p.r, std::hypot(below[c].x - p.x, below[c].y - p.y, below[c].z - p.z) + below[c].r);
@@ -109,8 +112,7 @@ const ClusterStore& cluster_scene(std::size_t n, bool dense = false) {
   store->reserve(tiles, tiles * tile.size());
   for (std::size_t t = 0; t < tiles; ++t) {
     InstanceTransform xf;
-    xf.translation_m = {(int(t) % per_row - per_row / 2.0) * tile_m, 0.0,
-                        (int(t) / per_row - per_row / 2.0) * tile_m};
+    xf.translation_m = {(int(t) % per_row - per_row / 2.0) * tile_m, 0.0, (int(t) / per_row - per_row / 2.0) * tile_m};
     const glm::dvec3 vel = t % 4 == 1 ? glm::dvec3{0.5, 0.0, -1.0} : glm::dvec3{0.0};
     store->add_mesh(tile, xf, vel, 0);
   }
@@ -214,10 +216,18 @@ void BM_SelectClusters(benchmark::State& state) {
 
 BENCHMARK(BM_SelectLodsBaseline)->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_SelectClusters)
-    ->Args({10000, 0, 0})->Args({100000, 0, 0})->Args({1000000, 0, 0})->Args({1000000, 1, 0})
-    ->Args({1000000, 0, 1})->Args({1000000, 0, 2})
-    ->Args({10000, 0, 3})->Args({100000, 0, 3})->Args({1000000, 0, 3})->Args({1000000, 1, 3})
-    ->ArgNames({"clusters", "dense", "mode"})->Unit(benchmark::kMicrosecond);
+    ->Args({10000, 0, 0})
+    ->Args({100000, 0, 0})
+    ->Args({1000000, 0, 0})
+    ->Args({1000000, 1, 0})
+    ->Args({1000000, 0, 1})
+    ->Args({1000000, 0, 2})
+    ->Args({10000, 0, 3})
+    ->Args({100000, 0, 3})
+    ->Args({1000000, 0, 3})
+    ->Args({1000000, 1, 3})
+    ->ArgNames({"clusters", "dense", "mode"})
+    ->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace gazelod::lod

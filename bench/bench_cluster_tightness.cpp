@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // How tight the cluster hierarchy's errors are (bake/cluster_build.hpp), on the generated terrain
 // of `gazelod scene generate terrain` (bake/terrain_mesh.hpp, default options: 1,002,528
 // triangles, +Y up). For each level of the plain simplification chain (bake/simplify_chain.hpp)
@@ -45,8 +46,7 @@ struct HeightField {
     for (std::size_t t = 0; t + 2 < index_count; t += 3) {
       std::int64_t gi[3], gj[3];
       double y[3];
-      for (int k = 0; k < 3; ++k)
-        gi[k] = tris[t + k] % side, gj[k] = tris[t + k] / side, y[k] = height(tris[t + k]);
+      for (int k = 0; k < 3; ++k) gi[k] = tris[t + k] % side, gj[k] = tris[t + k] / side, y[k] = height(tris[t + k]);
       const std::int64_t area = (gi[1] - gi[0]) * (gj[2] - gj[0]) - (gi[2] - gi[0]) * (gj[1] - gj[0]);
       if (area == 0) continue;
       const std::int64_t i0 = std::min({gi[0], gi[1], gi[2]}), i1 = std::max({gi[0], gi[1], gi[2]});
@@ -58,8 +58,7 @@ struct HeightField {
             const int a = (k + 1) % 3, b = (k + 2) % 3;
             w[k] = (gi[b] - gi[a]) * (j - gj[a]) - (i - gi[a]) * (gj[b] - gj[a]);
           }
-          const bool inside = area > 0 ? (w[0] >= 0 && w[1] >= 0 && w[2] >= 0)
-                                       : (w[0] <= 0 && w[1] <= 0 && w[2] <= 0);
+          const bool inside = area > 0 ? (w[0] >= 0 && w[1] >= 0 && w[2] >= 0) : (w[0] <= 0 && w[1] <= 0 && w[2] <= 0);
           if (!inside) continue;
           const double h = (double(w[0]) * y[0] + double(w[1]) * y[1] + double(w[2]) * y[2]) / double(area);
           worst = std::max(worst, std::abs(h - height(static_cast<std::uint32_t>(j * side + i))));
@@ -84,8 +83,8 @@ struct CutStats {
   std::vector<std::uint32_t> indices;
 };
 
-CutStats cut_stats(const ClusterBuildResult& r, const std::vector<double>& self_m,
-                   const std::vector<double>& parent_m, const std::vector<double>& true_m, double t) {
+CutStats cut_stats(const ClusterBuildResult& r, const std::vector<double>& self_m, const std::vector<double>& parent_m,
+                   const std::vector<double>& true_m, double t) {
   CutStats s;
   const lod::ClusterHierarchy& h = r.hierarchy;
   for (std::size_t c = 0; c < h.size(); ++c)
@@ -115,8 +114,8 @@ int run(std::uint64_t triangles, unsigned threads) {
   const ClusterBuildResult r = build_cluster_hierarchy(m.positions, m.indices, o);
   const double build_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const lod::ClusterHierarchy& h = r.hierarchy;
-  std::printf("hierarchy: %zu clusters, %zu groups, %u levels, build %.3f s (%u threads)\n", h.size(),
-              r.groups, r.levels, build_s, threads);
+  std::printf("hierarchy: %zu clusters, %zu groups, %u levels, build %.3f s (%u threads)\n", h.size(), r.groups,
+              r.levels, build_s, threads);
 
   std::vector<double> true_m(h.size()), self_m(h.size()), parent_m(h.size());
   for (std::size_t c = 0; c < h.size(); ++c) {
@@ -140,8 +139,8 @@ int run(std::uint64_t triangles, unsigned threads) {
     oself_m[c] = r.source_group[c] >= 0 ? mono_m[r.source_group[c]] : 0.0;
     oparent_m[c] = r.parent_group[c] >= 0 ? mono_m[r.parent_group[c]] : std::numeric_limits<double>::infinity();
   }
-  std::printf("\n%8s %9s %7s %10s | %9s %7s %10s %10s %10s %3s | %12s %7s\n", "t_m", "chain_tri", "share",
-              "chain_true", "cut_tri", "share", "cut_true", "cut_vert", "cut_bound", "ok", "vert_cut_tri", "share");
+  std::printf("\n%8s %9s %7s %10s | %9s %7s %10s %10s %10s %3s | %12s %7s\n", "t_m", "chain_tri", "share", "chain_true",
+              "cut_tri", "share", "cut_true", "cut_vert", "cut_bound", "ok", "vert_cut_tri", "share");
   std::vector<double> chain_true(chain.levels.size(), 0.0);
   for (std::size_t l = 1; l < chain.levels.size(); ++l)
     chain_true[l] = surface_error(m.positions, chain.levels[l].indices);
@@ -156,9 +155,9 @@ int run(std::uint64_t triangles, unsigned threads) {
       const bool ok = cut_true <= s.bound_m;
       all_ok = all_ok && ok;
       std::printf("%8.4f %9zu %6.2f%% %10.4f | %9zu %6.2f%% %10.4f %10.4f %10.4f %3s | %12zu %6.2f%%\n", t,
-                  lv.indices.size() / 3, 100.0 * double(lv.indices.size() / 3) / source, chain_true[l],
-                  s.triangles, 100.0 * double(s.triangles) / source, cut_true, s.true_m, s.bound_m,
-                  ok ? "yes" : "NO", o2.triangles, 100.0 * double(o2.triangles) / source);
+                  lv.indices.size() / 3, 100.0 * double(lv.indices.size() / 3) / source, chain_true[l], s.triangles,
+                  100.0 * double(s.triangles) / source, cut_true, s.true_m, s.bound_m, ok ? "yes" : "NO", o2.triangles,
+                  100.0 * double(o2.triangles) / source);
     }
 
   std::printf("\n%5s %9s %10s %8s %13s %12s\n", "depth", "clusters", "triangles", "share", "mean_bound_m",

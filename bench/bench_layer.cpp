@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The eye-gaze API layer's added cost (layer/), on the unpaced headless simulated runtime
 // without eye gaze, through the Khronos loader, each case against its baseline in the same
 // process:
@@ -25,7 +26,9 @@
 
 namespace {
 
-std::string trace_path() { return std::string(GAZELOD_BINARY_DIR) + "/bench/bench_layer_trace.csv"; }
+std::string trace_path() {
+  return std::string(GAZELOD_BINARY_DIR) + "/bench/bench_layer_trace.csv";
+}
 
 void write_trace() {
   std::ofstream out(trace_path());
@@ -166,9 +169,15 @@ void locate(benchmark::State& state, bool layer, bool gaze_space) {
   state.SetItemsProcessed(state.iterations());
 }
 
-void BM_LocateView_NoLayer(benchmark::State& s) { locate(s, false, false); }
-void BM_LocateView_Layer(benchmark::State& s) { locate(s, true, false); }
-void BM_LocateGaze_Layer(benchmark::State& s) { locate(s, true, true); }
+void BM_LocateView_NoLayer(benchmark::State& s) {
+  locate(s, false, false);
+}
+void BM_LocateView_Layer(benchmark::State& s) {
+  locate(s, true, false);
+}
+void BM_LocateGaze_Layer(benchmark::State& s) {
+  locate(s, true, true);
+}
 
 // wait + begin + end + sync per iteration.
 void frames(benchmark::State& state, bool layer) {
@@ -188,8 +197,12 @@ void frames(benchmark::State& state, bool layer) {
   state.SetItemsProcessed(state.iterations());
 }
 
-void BM_Frame_NoLayer(benchmark::State& s) { frames(s, false); }
-void BM_Frame_Layer(benchmark::State& s) { frames(s, true); }
+void BM_Frame_NoLayer(benchmark::State& s) {
+  frames(s, false);
+}
+void BM_Frame_Layer(benchmark::State& s) {
+  frames(s, true);
+}
 
 BENCHMARK(BM_LocateView_NoLayer);
 BENCHMARK(BM_LocateView_Layer);
@@ -204,7 +217,8 @@ class RatioReporter : public benchmark::ConsoleReporter {
     // The median over --benchmark_repetitions when there are several, else the one run.
     for (const Run& r : runs) {
       if (r.error_occurred) continue;
-      if (r.run_type == Run::RT_Iteration && median_.count(r.run_name.str()) == 0) ns_[r.run_name.str()] = r.GetAdjustedCPUTime();
+      if (r.run_type == Run::RT_Iteration && median_.count(r.run_name.str()) == 0)
+        ns_[r.run_name.str()] = r.GetAdjustedCPUTime();
       if (r.run_type == Run::RT_Aggregate && r.aggregate_name == "median") {
         median_[r.run_name.str()] = true;
         ns_[r.run_name.str()] = r.GetAdjustedCPUTime();
@@ -219,8 +233,8 @@ class RatioReporter : public benchmark::ConsoleReporter {
         std::printf("%-58s n/a\n", what);
         return;
       }
-      std::printf("%-58s %.3f  (%.0f ns / %.0f ns, +%.0f ns)\n", what, ia->second / ib->second, ia->second,
-                  ib->second, ia->second - ib->second);
+      std::printf("%-58s %.3f  (%.0f ns / %.0f ns, +%.0f ns)\n", what, ia->second / ib->second, ia->second, ib->second,
+                  ia->second - ib->second);
     };
     std::printf("\nratios (CPU time per operation%s):\n", median_.empty() ? "" : ", medians");
     ratio("xrLocateSpace gaze (layer) / VIEW (no layer)", "BM_LocateGaze_Layer", "BM_LocateView_NoLayer");

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "budget/budget_instance.hpp"
 
 #include "auxiliary/json_strict.hpp"
@@ -28,10 +29,9 @@ double number(const json& v, const std::string& where, const std::string& path, 
   return d;
 }
 
-std::uint32_t index(const json& v, std::size_t bound, const std::string& where,
-                    const std::string& path, const char* what) {
-  if (!v.is_number_integer() || v.get<long long>() < 0 ||
-      static_cast<unsigned long long>(v.get<long long>()) >= bound)
+std::uint32_t index(const json& v, std::size_t bound, const std::string& where, const std::string& path,
+                    const char* what) {
+  if (!v.is_number_integer() || v.get<long long>() < 0 || static_cast<unsigned long long>(v.get<long long>()) >= bound)
     fail(where, path, std::string("must be ") + what + " index in [0, " + std::to_string(bound) + ")");
   return static_cast<std::uint32_t>(v.get<long long>());
 }
@@ -60,11 +60,13 @@ void check_sums(const budget::MckpInstance& inst, const std::string& where) {
   for (const budget::MckpGroup& g : inst.groups) add_max(g.impostors);
   const char* limit = "the largest double, 1.8e308";
   if (!std::isfinite(profit))
-    fail(where, "subsets", std::string("the largest profits of the subsets (and impostors) must add up to at most ") +
-                               limit + ", got an overflow; scale the profits down");
+    fail(where, "subsets",
+         std::string("the largest profits of the subsets (and impostors) must add up to at most ") + limit +
+             ", got an overflow; scale the profits down");
   if (!std::isfinite(cost))
-    fail(where, "subsets", std::string("the largest costs of the subsets (and impostors) must add up to at most ") +
-                               limit + ", got an overflow; scale the costs and the capacity down");
+    fail(where, "subsets",
+         std::string("the largest costs of the subsets (and impostors) must add up to at most ") + limit +
+             ", got an overflow; scale the costs and the capacity down");
 }
 
 }  // namespace
@@ -87,8 +89,7 @@ budget::MckpInstance parse_budget_instance(const json& doc, const std::string& w
     const json& s = subsets[k];
     if (!s.is_array() || s.empty()) fail(where, path, "must be a non-empty array of items");
     items.clear();
-    for (std::size_t j = 0; j < s.size(); ++j)
-      items.push_back(item(s[j], where, path + "[" + std::to_string(j) + "]"));
+    for (std::size_t j = 0; j < s.size(); ++j) items.push_back(item(s[j], where, path + "[" + std::to_string(j) + "]"));
     inst.add_subset(items);
   }
   if (inst.items.size() >= std::numeric_limits<std::uint32_t>::max() / 2) fail(where, "subsets", "too many items");
@@ -108,9 +109,12 @@ budget::MckpInstance parse_budget_instance(const json& doc, const std::string& w
         if (!it->is_array()) fail(where, kp, "must be an array");
         for (std::size_t a = 0; a < it->size(); ++a) {
           const std::string ap = kp + "[" + std::to_string(a) + "]";
-          if (key == "subsets") grp.subsets.push_back(index((*it)[a], inst.subset_count(), where, ap, "a subset"));
-          else if (key == "groups") grp.groups.push_back(index((*it)[a], groups.size(), where, ap, "a group"));
-          else grp.impostors.push_back(item((*it)[a], where, ap));
+          if (key == "subsets")
+            grp.subsets.push_back(index((*it)[a], inst.subset_count(), where, ap, "a subset"));
+          else if (key == "groups")
+            grp.groups.push_back(index((*it)[a], groups.size(), where, ap, "a group"));
+          else
+            grp.impostors.push_back(item((*it)[a], where, ap));
         }
       }
       inst.groups.push_back(std::move(grp));

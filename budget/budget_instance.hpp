@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reads frame-budget knapsack instances (docs/budget.md): {"capacity": c, "subsets":
 // [[{"profit": p, "cost": w}, ...], ...], "groups": [...] optional}. Every error names the
 // JSON path and why ("subsets[3][1].cost: must be a finite number >= 0"). Profits and costs

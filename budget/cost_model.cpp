@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "budget/cost_model.hpp"
 
 #include <algorithm>
@@ -11,8 +12,7 @@ double object_cost_s(const CostCoefficients& c, double triangles, double vertice
   return std::max({geometry, fill, 0.0});
 }
 
-void add_object(const CostCoefficients& c, double triangles, double vertices, double pixels,
-                FrameCostFeatures& frame) {
+void add_object(const CostCoefficients& c, double triangles, double vertices, double pixels, FrameCostFeatures& frame) {
   triangles = std::max(triangles, 0.0);
   vertices = std::max(vertices, 0.0);
   pixels = std::max(pixels, 0.0);
@@ -49,8 +49,7 @@ FrameCostFeatures CostModelRls::begin_frame() const {
 
 bool CostModelRls::update(const FrameCostFeatures& frame, double measured_s) {
   if (!std::isfinite(measured_s) || measured_s < 0.0) return false;
-  const double raw[4] = {1.0, frame.triangles_geometry_bound, frame.vertices_geometry_bound,
-                         frame.pixels_fill_bound};
+  const double raw[4] = {1.0, frame.triangles_geometry_bound, frame.vertices_geometry_bound, frame.pixels_fill_bound};
   for (double v : raw)
     if (!std::isfinite(v)) return false;
   double theta[4] = {theta_[0], theta_[1], theta_[2], theta_[3]};

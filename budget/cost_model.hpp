@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Render-time cost of an object tuple after Funkhouser & Sequin (1993 sec. 4):
 // cost = max(C1 triangles + C2 vertices, C3 pixels), the per-primitive and per-pixel pipeline
 // stages whose slower one bounds the time. C1..C3 (plus a per-frame overhead C0) are fit online
@@ -29,8 +30,7 @@ struct FrameCostFeatures {
 };
 
 // Adds one drawn object to `frame` (call for each object of the frame).
-void add_object(const CostCoefficients& c, double triangles, double vertices, double pixels,
-                FrameCostFeatures& frame);
+void add_object(const CostCoefficients& c, double triangles, double vertices, double pixels, FrameCostFeatures& frame);
 
 // Recursive least squares with forgetting factor lambda in (0, 1]: theta <- theta + k e,
 // k = P x / (lambda + x'P x), P <- (P - k x'P) / lambda. The coefficients used for prediction
@@ -40,8 +40,7 @@ void add_object(const CostCoefficients& c, double triangles, double vertices, do
 // forgetting without excitation cannot blow it up.
 class CostModelRls {
  public:
-  explicit CostModelRls(const CostCoefficients& prior, double forgetting = 0.98,
-                        double initial_variance = 1e4);
+  explicit CostModelRls(const CostCoefficients& prior, double forgetting = 0.98, double initial_variance = 1e4);
 
   const CostCoefficients& coefficients() const { return coeff_; }
   // Frame overhead included. Starts a frame's features; add objects with add_object().
@@ -50,10 +49,10 @@ class CostModelRls {
   bool update(const FrameCostFeatures& frame, double measured_s);
 
  private:
-  CostCoefficients coeff_;          // clamped to >= 0, what predictions use
-  std::array<double, 4> theta_{};   // the unconstrained estimate (clamping it would bias RLS)
+  CostCoefficients coeff_;         // clamped to >= 0, what predictions use
+  std::array<double, 4> theta_{};  // the unconstrained estimate (clamping it would bias RLS)
   double lambda_;
-  double trace_cap_;  // largest variance of any one coefficient (scaled units)
+  double trace_cap_;                          // largest variance of any one coefficient (scaled units)
   std::array<std::array<double, 4>, 4> p_{};  // covariance, in scaled units
   std::array<double, 4> scale_{};             // regressor scaling (keeps P well conditioned)
 };
@@ -64,7 +63,7 @@ struct CostPredictionReport {
   double mean_abs_error_s = 0.0;
   double rms_error_s = 0.0;
   double max_abs_error_s = 0.0;
-  double mean_rel_error = 0.0;    // |pred - meas| / meas over frames with meas > 0
+  double mean_rel_error = 0.0;       // |pred - meas| / meas over frames with meas > 0
   double mean_signed_error_s = 0.0;  // bias: > 0 means the model over-predicts
   void add(double predicted_s, double measured_s);
 };

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "budget/frame_budget.hpp"
 
 #include <algorithm>
@@ -30,8 +31,8 @@ FrameBudget::FrameBudget(std::vector<std::vector<lod::LodLevel>> chains, double 
   for (std::size_t k = 0; k < chains_.size(); ++k) {
     const std::size_t m = chains_[k].size();
     if (m == 0 || m > 255)
-      throw std::invalid_argument("frame budget: object " + std::to_string(k) + " has " +
-                                  std::to_string(m) + " levels (1 to 255 allowed)");
+      throw std::invalid_argument("frame budget: object " + std::to_string(k) + " has " + std::to_string(m) +
+                                  " levels (1 to 255 allowed)");
   }
   level_first_.reserve(chains_.size() + 1);
   for (const auto& chain : chains_) {
@@ -64,27 +65,27 @@ FrameBudget::FrameBudget(std::vector<std::vector<lod::LodLevel>> chains, double 
   last_pixels_.assign(chains_.size(), 0.0);
 }
 
-void FrameBudget::set_budget_ms(double budget_ms) { budget_ms_ = checked_budget(budget_ms); }
+void FrameBudget::set_budget_ms(double budget_ms) {
+  budget_ms_ = checked_budget(budget_ms);
+}
 
 FrameBudget::MsCoefficients FrameBudget::ms_coefficients() const {
   const budget::CostCoefficients& c = rls_.coefficients();
   return {1e3 * c.c1_s_per_tri, 1e3 * c.c2_s_per_vert, 1e3 * c.c3_s_per_px};
 }
 
-bool FrameBudget::choose(std::span<const std::uint8_t> perceptual_lod,
-                         std::span<const BudgetObjectView> view, std::span<std::uint8_t> out_lod) {
+bool FrameBudget::choose(std::span<const std::uint8_t> perceptual_lod, std::span<const BudgetObjectView> view,
+                         std::span<std::uint8_t> out_lod) {
   const std::size_t n = chains_.size();
   if (perceptual_lod.size() != n || view.size() != n || out_lod.size() != n)
-    throw std::invalid_argument(
-        "frame budget: choose() needs " + std::to_string(n) + " objects in every span, got " +
-        std::to_string(perceptual_lod.size()) + " perceptual levels, " +
-        std::to_string(view.size()) + " views, " + std::to_string(out_lod.size()) + " outputs");
+    throw std::invalid_argument("frame budget: choose() needs " + std::to_string(n) + " objects in every span, got " +
+                                std::to_string(perceptual_lod.size()) + " perceptual levels, " +
+                                std::to_string(view.size()) + " views, " + std::to_string(out_lod.size()) + " outputs");
   for (std::size_t k = 0; k < n; ++k)
     if (perceptual_lod[k] >= level_first_[k + 1] - level_first_[k])
-      throw std::invalid_argument("frame budget: perceptual_lod[" + std::to_string(k) + "] = " +
-                                  std::to_string(perceptual_lod[k]) + " but object " +
-                                  std::to_string(k) + " has " +
-                                  std::to_string(chains_[k].size()) + " levels");
+      throw std::invalid_argument("frame budget: perceptual_lod[" + std::to_string(k) +
+                                  "] = " + std::to_string(perceptual_lod[k]) + " but object " + std::to_string(k) +
+                                  " has " + std::to_string(chains_[k].size()) + " levels");
 
   const double overhead_ms = 1e3 * rls_.coefficients().c0_s;
   const double capacity = budget_ms_ * (1.0 - clean(options_.headroom, 0.0, 0.9, 0.0)) - overhead_ms;
@@ -133,7 +134,7 @@ bool FrameBudget::choose(std::span<const std::uint8_t> perceptual_lod,
     std::uint32_t j = solution_.choice[k];
     const std::uint32_t ceiling = static_cast<std::uint32_t>(m - 1 - perceptual_lod[k]);
     if (infeasible_ || j == budget::kNoItem) j = 0;  // coarsest: the cheapest frame there is
-    j = std::min(j, ceiling);                     // belt and braces: never finer than needed
+    j = std::min(j, ceiling);                        // belt and braces: never finer than needed
     prev_choice_[k] = j;
     const auto level = static_cast<std::uint8_t>(m - 1 - j);
     out_lod[k] = level;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Frame-budget LOD scheduling for `gazelod run --budget-ms X`: per frame, choose one
 // level per object so that the predicted frame time stays under the budget, never finer than
 // the perceptual choice (finer levels buy nothing visible). Prediction: Funkhouser & Sequin's
@@ -29,8 +30,7 @@ class FrameBudget {
   // chains[k]: object k's levels, level 0 the finest (lod/lod_chain.hpp). Throws
   // std::invalid_argument naming the object when a chain is empty or has more than 255 levels,
   // or when budget_ms is not a positive finite number.
-  FrameBudget(std::vector<std::vector<lod::LodLevel>> chains, double budget_ms,
-              const FrameBudgetOptions& options = {});
+  FrameBudget(std::vector<std::vector<lod::LodLevel>> chains, double budget_ms, const FrameBudgetOptions& options = {});
 
   // One frame. perceptual_lod[k]: the finest level worth drawing (0 = full detail);
   // out_lod[k] receives the chosen level, never finer (smaller) than perceptual_lod[k].
@@ -39,16 +39,16 @@ class FrameBudget {
   // coarsest level of every object (the cheapest frame there is) and infeasible() says so.
   // Throws std::invalid_argument when a span's size is not the object count or a perceptual
   // level is past the end of its chain (naming the object).
-  bool choose(std::span<const std::uint8_t> perceptual_lod,
-              std::span<const BudgetObjectView> view, std::span<std::uint8_t> out_lod);
+  bool choose(std::span<const std::uint8_t> perceptual_lod, std::span<const BudgetObjectView> view,
+              std::span<std::uint8_t> out_lod);
 
   // Feeds the measured time of the frame last chosen (ms); updates the cost fit. Non-finite or
   // negative times are ignored (returns false), as is a call before any choose().
   bool observe(double measured_frame_ms);
 
-  double predicted_ms() const { return predicted_ms_; }  // of the last choose()
-  bool infeasible() const { return infeasible_; }        // of the last choose()
-  bool truncated() const { return truncated_; }  // last solve stopped at max_moves (or time)
+  double predicted_ms() const { return predicted_ms_; }                // of the last choose()
+  bool infeasible() const { return infeasible_; }                      // of the last choose()
+  bool truncated() const { return truncated_; }                        // last solve stopped at max_moves (or time)
   std::uint64_t solver_moves() const { return solution_.iterations; }  // last solve's moves
   double budget_ms() const { return budget_ms_; }
   void set_budget_ms(double budget_ms);  // throws std::invalid_argument unless positive finite

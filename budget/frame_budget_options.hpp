@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The frame budget's options and its per-object inputs, plain data (the plugin's
 // PluginConfig carries FrameBudgetOptions; budget/frame_budget.hpp uses them).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The frame-budget knapsack solvers behind one call (Funkhouser & Sequin 1993 sec. 6;
 // Mason 1999 Ch. 2-3, 6-7). Each solver is one source file, knapsack_<name>.cpp; all take an
 // MckpInstance and return an MckpSolution, and break ties by one strict order (mckp.hpp).
@@ -39,14 +40,12 @@ MckpSolution solve(SolverKind kind, const MckpInstance& instance, const SolveLim
 // The solvers, one per file.
 MckpSolution solve_exact(const MckpInstance& instance, std::uint64_t node_limit = 50'000'000);
 MckpSolution solve_funkhouser(const MckpInstance& instance);
-MckpSolution solve_funkhouser_incremental(const MckpInstance& instance,
-                                         const SolveLimits& limits = {});
+MckpSolution solve_funkhouser_incremental(const MckpInstance& instance, const SolveLimits& limits = {});
 // fill_after_critical: Fig. 20 as published keeps trying cheaper moves after the first that
 // does not fit; false stops there (the state the incremental algorithm converges to).
 MckpSolution solve_mason_greedy(const MckpInstance& instance, bool fill_after_critical = true);
 MckpSolution solve_mason_full(const MckpInstance& instance);
 MckpSolution solve_mason_incremental(const MckpInstance& instance, const SolveLimits& limits = {});
-MckpSolution solve_mason_hierarchical(const MckpInstance& instance,
-                                      bool fill_after_critical = true);
+MckpSolution solve_mason_hierarchical(const MckpInstance& instance, bool fill_after_critical = true);
 
 }  // namespace gazelod::budget

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Exact MCKP by depth-first branch and bound over objects, bounded by the linear relaxation
 // of the remaining objects (the upper convex hull of each, filled by slope). For tests and
 // small scenes: exponential in the worst case, so it stops at a node limit and then says the
@@ -96,8 +97,7 @@ class BranchAndBound {
     const auto& cw = cum_w_[k];
     const std::size_t a = static_cast<std::size_t>(std::upper_bound(cw.begin(), cw.end(), room) - cw.begin()) - 1;
     double p = base_p_[k] + cum_p_[k][a];
-    if (a < suffix_[k].size() && suffix_[k][a].dw > 0.0)
-      p += suffix_[k][a].dp * ((room - cw[a]) / suffix_[k][a].dw);
+    if (a < suffix_[k].size() && suffix_[k][a].dw > 0.0) p += suffix_[k][a].dp * ((room - cw[a]) / suffix_[k][a].dw);
     return p;
   }
 

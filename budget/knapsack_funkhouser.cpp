@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Funkhouser & Sequin's greedy (1993 sec. 6; Mason 1999 Fig. 9) exactly as published: all
 // items by value p/w, add an item that fits, replace an object's item by a more profitable one
 // when the cost still fits. Kept for comparison with its three flaws (Mason sec. 2.6.1): the
@@ -16,13 +17,11 @@ MckpSolution solve_funkhouser(const MckpInstance& instance) {
   std::iota(order.begin(), order.end(), 0u);
   std::vector<double> value(instance.items.size());
   for (std::size_t j = 0; j < value.size(); ++j) value[j] = item_value(instance.items[j]);
-  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-    return precedes(value[a], a, value[b], b);
-  });
+  std::sort(order.begin(), order.end(),
+            [&](std::uint32_t a, std::uint32_t b) { return precedes(value[a], a, value[b], b); });
   std::vector<std::uint32_t> owner(instance.items.size());
   for (std::uint32_t k = 0; k < r; ++k)
-    for (std::uint32_t j = instance.subset_offsets[k]; j < instance.subset_offsets[k + 1]; ++j)
-      owner[j] = k;
+    for (std::uint32_t j = instance.subset_offsets[k]; j < instance.subset_offsets[k + 1]; ++j) owner[j] = k;
 
   MckpSolution out;
   out.choice.assign(r, kNoItem);

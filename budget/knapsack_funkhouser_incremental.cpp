@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Funkhouser & Sequin's incremental algorithm (1993 sec. 6; Mason 1999 Fig. 14) as published:
 // increment the object whose next level has the highest value p/w, decrement those whose
 // current level has the lowest value until the frame fits, stop when an object goes up and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // An indexed binary heap of node ids for the knapsack solvers: O(1) top, O(log n) push,
 // erase and re-key, no allocation after reserve(). Order: the strict greedy order of
 // mckp.hpp on (key, stable id), either first-in-order on top (max) or last-in-order (min).
@@ -14,8 +15,7 @@ class KnapsackHeap {
  public:
   // `keys` and `ids` are indexed by node and must outlive the heap; `max_first`: the node
   // that comes first in the greedy order is on top, else the one that comes last.
-  KnapsackHeap(const std::vector<double>* keys, const std::vector<std::uint32_t>* ids,
-               bool max_first)
+  KnapsackHeap(const std::vector<double>* keys, const std::vector<std::uint32_t>* ids, bool max_first)
       : keys_(keys), ids_(ids), max_first_(max_first) {}
 
   void reserve(std::size_t universe) {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Frame-coherent LOD scheduling (Mason 1999 Fig. 41, sec. 9.3.5; Funkhouser & Sequin 1993
 // sec. 6): start from the previous frame's selection, increment the best replacement set,
 // decrement the worst until the frame fits, stop when the same set goes in and out or when the
@@ -52,8 +53,7 @@ class IncrementalScheduler {
   // a limit. It is always a complete, affordable level of detail when the lowest one fits.
   // `out` is overwritten; it allocates only the first time.
   void step(const MckpInstance& frame, std::span<const std::uint32_t> prev_choice,
-            std::span<const std::uint32_t> prev_group_choice, const SolveLimits& limits,
-            MckpSolution& out);
+            std::span<const std::uint32_t> prev_group_choice, const SolveLimits& limits, MckpSolution& out);
 
   void set_observer(Observer observer, void* context) {
     observer_ = observer;
@@ -69,8 +69,7 @@ class IncrementalScheduler {
     return src < n_items_ ? items_[src] : impostor_items_[src - n_items_];
   }
   double key_of(std::uint32_t node) const;  // key of replacing `node` by its set
-  void place(std::span<const std::uint32_t> prev_choice,
-             std::span<const std::uint32_t> prev_group_choice);
+  void place(std::span<const std::uint32_t> prev_choice, std::span<const std::uint32_t> prev_group_choice);
   void critical_solution(std::uint32_t critical, const MckpInstance& frame);
   // Flat instances (no groups: one chain per subset) take a fast path, in
   // knapsack_incremental_flat.cpp: one pass over the objects per frame, no tree walks.
@@ -80,13 +79,15 @@ class IncrementalScheduler {
   void place_flat(std::span<const std::uint32_t> prev_choice);
   void load_all_flat();
   void reload() {
-    if (flat_) load_all_flat();
-    else load_all();
+    if (flat_)
+      load_all_flat();
+    else
+      load_all();
   }
   void write_flat(MckpSolution& out) const;
   void consider_inc(std::uint32_t node);  // load into the heap, or leave out if far below the band
   void consider_dec(std::uint32_t node);
-  void load_all();                        // the band was too narrow: load every candidate
+  void load_all();  // the band was too narrow: load every candidate
   void increment(std::uint32_t node);
   void decrement(std::uint32_t node);
   void write(MckpSolution& out) const;
@@ -96,20 +97,20 @@ class IncrementalScheduler {
 
   Options options_;
   HmckpTree tree_;
-  bool flat_ = false;                // no groups: every node but the root is a chain node
-  bool flat_dirty_ = true;           // selected_ does not match pos_: clear it all
+  bool flat_ = false;       // no groups: every node but the root is a chain node
+  bool flat_dirty_ = true;  // selected_ does not match pos_: clear it all
   // Flat, nothing dropped and every subset's items already in cost order: node 1 + j is item j
   // (no index tables to read per frame). full_ is not kept on the flat path.
-  std::vector<std::uint32_t> pos_;   // flat: per subset, the selected chain position
-  std::vector<std::uint32_t> src_;   // flat: per node, its index into the frame's items
+  std::vector<std::uint32_t> pos_;  // flat: per subset, the selected chain position
+  std::vector<std::uint32_t> src_;  // flat: per node, its index into the frame's items
   bool flat_identity_ = false;
   const MckpInstance* frame_ = nullptr;
   const MckpItem* items_ = nullptr;  // frame_->items, cached for the hot loops
   std::size_t n_items_ = 0;
-  std::vector<MckpItem> impostor_items_;   // this frame's group impostors, by node source
-  std::vector<std::uint8_t> selected_;     // per node
-  std::vector<std::uint32_t> full_;        // per node: members of its set now selected
-  std::vector<double> keys_;               // per node
+  std::vector<MckpItem> impostor_items_;  // this frame's group impostors, by node source
+  std::vector<std::uint8_t> selected_;    // per node
+  std::vector<std::uint32_t> full_;       // per node: members of its set now selected
+  std::vector<double> keys_;              // per node
   std::vector<std::uint32_t> stack_;
   KnapsackHeap inc_{&keys_, &tree_.stable_id, true};   // selected nodes with a set
   KnapsackHeap dec_{&keys_, &tree_.stable_id, false};  // nodes whose whole set is selected

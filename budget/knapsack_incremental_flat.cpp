@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The incremental scheduler's fast path for flat instances (no groups: one chain of levels per
 // object, the frame-budget case). The general path walks the replacement-set tree with a stack
 // and clears per-node state every frame; here a frame is one pass over the objects that reads
@@ -25,8 +26,8 @@ void IncrementalScheduler::place_flat(std::span<const std::uint32_t> prev_choice
   const bool all = all_loaded_, identity = flat_identity_, dirty = flat_dirty_;
   const double lo = band_lo_, hi = band_hi_;
   // Keys are stored only for heaped nodes (the heaps read nothing else; reload() recomputes).
-  auto consider = [&](std::uint32_t sel, std::uint32_t target, std::uint32_t len,
-                      const MckpItem* prev, const MckpItem& cur, const MckpItem* next) {
+  auto consider = [&](std::uint32_t sel, std::uint32_t target, std::uint32_t len, const MckpItem* prev,
+                      const MckpItem& cur, const MckpItem* next) {
     if (target > 0) {
       const double key = move_key(*prev, cur);
       if (all || key <= hi) {
@@ -111,8 +112,7 @@ void IncrementalScheduler::write_flat(MckpSolution& out) const {
   if (flat_identity_) {
     std::copy(pos_.begin(), pos_.end(), out.choice.begin());
   } else {
-    for (std::size_t k = 0; k < r; ++k)
-      out.choice[k] = src_[tree_.subset_chain[k] + pos_[k]] - f.subset_offsets[k];
+    for (std::size_t k = 0; k < r; ++k) out.choice[k] = src_[tree_.subset_chain[k] + pos_[k]] - f.subset_offsets[k];
   }
   out.profit = profit_;
   out.cost = cost_;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Mason's full greedy for the MCKP (1999 Fig. 22, sec. 3.5): no convexity needed. From every
 // object's cheapest item, repeatedly take the candidate with the highest relative value to its
 // object's current item; a taken item implicitly drops the cheaper ones, a rejected one is
@@ -89,8 +90,7 @@ MckpSolution solve_mason_full(const MckpInstance& instance) {
     const MckpItem& s = items[kept[offsets[crit_k] + crit_q]];
     const MckpItem& b = items[kept[offsets[crit_k]]];
     out.error_bound = s.profit - crit_t_profit;
-    if (base_profit - b.profit + s.profit > profit &&
-        base_cost - b.cost + s.cost <= instance.capacity) {
+    if (base_profit - b.profit + s.profit > profit && base_cost - b.cost + s.cost <= instance.capacity) {
       std::fill(pos.begin(), pos.end(), 0u);
       pos[crit_k] = crit_q;
     }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Mason's simplified greedy for the MCKP (1999 Fig. 20, sec. 3.3-3.4): after IP-dominance
 // preprocessing, start from every object's cheapest item and apply upgrades in decreasing
 // relative value; the first upgrade that does not fit is the critical item s, and the answer
@@ -43,11 +44,10 @@ MckpSolution solve_mason_greedy(const MckpInstance& instance, bool fill_after_cr
   for (std::uint32_t k = 0; k < r; ++k) {
     const auto items = instance.subset(k);
     for (std::uint32_t a = offsets[k] + 1; a < offsets[k + 1]; ++a)
-      moves.push_back({relative_value(items[kept[a - 1]], items[kept[a]]),
-                       instance.subset_offsets[k] + kept[a], k, a - offsets[k]});
+      moves.push_back({relative_value(items[kept[a - 1]], items[kept[a]]), instance.subset_offsets[k] + kept[a], k,
+                       a - offsets[k]});
   }
-  std::sort(moves.begin(), moves.end(),
-            [](const Move& a, const Move& b) { return precedes(a.rv, a.id, b.rv, b.id); });
+  std::sort(moves.begin(), moves.end(), [](const Move& a, const Move& b) { return precedes(a.rv, a.id, b.rv, b.id); });
 
   double profit = base_profit, cost = base_cost;
   std::vector<std::uint8_t> rejected(r, 0);

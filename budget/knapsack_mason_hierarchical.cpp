@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Mason's greedy for the hierarchical MCKP (1999 Fig. 39-40, sec. 6.3): from the lowest level
 // of detail, replace selected nodes by their replacement sets in decreasing relative value of
 // the set; the first set that does not fit is critical, and the answer is compared with the
@@ -17,8 +18,7 @@ MckpSolution solve_mason_hierarchical(const MckpInstance& instance, bool fill_af
   std::vector<MckpItem> item(n);
   {
     std::vector<MckpItem> imps;
-    for (const MckpGroup& g : instance.groups)
-      imps.insert(imps.end(), g.impostors.begin(), g.impostors.end());
+    for (const MckpGroup& g : instance.groups) imps.insert(imps.end(), g.impostors.begin(), g.impostors.end());
     for (std::size_t i = 1; i < n; ++i) {
       const std::uint32_t src = tree.nodes[i].source;
       item[i] = src < instance.items.size() ? instance.items[src] : imps[src - instance.items.size()];
@@ -54,8 +54,7 @@ MckpSolution solve_mason_hierarchical(const MckpInstance& instance, bool fill_af
         selected[i] = 0;
         cost += set[i].cost - item[i].cost;
         profit += set[i].profit - item[i].profit;
-        for (std::uint32_t a = 0; a < tree.nodes[i].count; ++a)
-          select(tree.members[tree.nodes[i].first + a]);
+        for (std::uint32_t a = 0; a < tree.nodes[i].count; ++a) select(tree.members[tree.nodes[i].first + a]);
         continue;
       }
       if (critical == kNoItem) critical = i;
@@ -72,8 +71,7 @@ MckpSolution solve_mason_hierarchical(const MckpInstance& instance, bool fill_af
       }
       if (hp > profit && hw <= instance.capacity) {
         std::fill(selected.begin(), selected.end(), 0);
-        for (std::uint32_t a = 0; a < tree.nodes[0].count; ++a)
-          selected[tree.members[tree.nodes[0].first + a]] = 1;
+        for (std::uint32_t a = 0; a < tree.nodes[0].count; ++a) selected[tree.members[tree.nodes[0].first + a]] = 1;
         std::vector<std::uint32_t> path;
         for (std::uint32_t u = critical; u != 0; u = tree.nodes[u].parent) path.push_back(u);
         for (auto it = path.rbegin(); it != path.rend(); ++it) {
@@ -88,8 +86,10 @@ MckpSolution solve_mason_hierarchical(const MckpInstance& instance, bool fill_af
   out.group_choice.assign(instance.groups.size(), kNoItem);
   for (std::size_t i = 1; i < n; ++i) {
     if (!selected[i]) continue;
-    if (tree.nodes[i].subset != kNoItem) out.choice[tree.nodes[i].subset] = tree.nodes[i].index;
-    else out.group_choice[tree.nodes[i].group] = tree.nodes[i].index;
+    if (tree.nodes[i].subset != kNoItem)
+      out.choice[tree.nodes[i].subset] = tree.nodes[i].index;
+    else
+      out.group_choice[tree.nodes[i].group] = tree.nodes[i].index;
   }
   evaluate(instance, out);
   return out;

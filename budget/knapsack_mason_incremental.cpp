@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Mason's incremental predictive algorithm (1999, Fig. 41) on the replacement-set tree, with
 // two indexed heaps (sec. 7.3) and truncation (sec. 9.3.5) by a move limit, so that the answer
 // depends only on the inputs; a wall-clock limit applies only when the caller sets one. The
@@ -13,8 +14,10 @@ namespace gazelod::budget {
 void IncrementalScheduler::reset(const MckpInstance& structure, const Options& options) {
   options_ = options;
   std::vector<std::uint32_t> order, offsets;
-  if (options.drop_ip_dominated) reduce_ip_dominated(structure, order, offsets);
-  else cost_order(structure, order, offsets);
+  if (options.drop_ip_dominated)
+    reduce_ip_dominated(structure, order, offsets);
+  else
+    cost_order(structure, order, offsets);
   build_hmckp_tree(structure, order, offsets, tree_);
   const std::size_t n = tree_.nodes.size();
   selected_.assign(n, 0);
@@ -96,8 +99,7 @@ void IncrementalScheduler::place(std::span<const std::uint32_t> prev_choice,
       }
       bool expand;
       {
-        std::uint32_t gc = mn.group < prev_group_choice.size() ? prev_group_choice[mn.group]
-                                                               : (lowest ? 0u : kNoItem);
+        std::uint32_t gc = mn.group < prev_group_choice.size() ? prev_group_choice[mn.group] : (lowest ? 0u : kNoItem);
         const auto n_imp = static_cast<std::uint32_t>(f.groups[mn.group].impostors.size());
         if (gc != kNoItem && gc >= n_imp) gc = n_imp - 1;  // past the last: the last
         expand = gc == kNoItem || mn.index < gc;
@@ -222,8 +224,7 @@ void IncrementalScheduler::critical_solution(std::uint32_t critical, const MckpI
   }
   if (!(h.cost <= frame.capacity && h.profit > profit_)) return;
   std::fill(selected_.begin(), selected_.end(), 0);
-  for (std::uint32_t a = root.first; a < root.first + root.count; ++a)
-    selected_[tree_.members[a]] = 1;
+  for (std::uint32_t a = root.first; a < root.first + root.count; ++a) selected_[tree_.members[a]] = 1;
   stack_.clear();
   for (std::uint32_t u = critical; u != 0; u = tree_.nodes[u].parent) stack_.push_back(u);
   for (auto it = stack_.rbegin(); it != stack_.rend(); ++it) {  // top-down
@@ -268,8 +269,10 @@ void IncrementalScheduler::write(MckpSolution& out) const {
         continue;
       }
       const HmckpNode& mn = tree_.nodes[m];
-      if (mn.subset != kNoItem) out.choice[mn.subset] = mn.index;
-      else out.group_choice[mn.group] = mn.index;
+      if (mn.subset != kNoItem)
+        out.choice[mn.subset] = mn.index;
+      else
+        out.group_choice[mn.group] = mn.index;
       const MckpItem& it = item(m);
       profit += it.profit;
       cost += it.cost;
@@ -280,10 +283,9 @@ void IncrementalScheduler::write(MckpSolution& out) const {
   out.feasible = cost <= f.capacity;
 }
 
-void IncrementalScheduler::step(const MckpInstance& frame,
-                                std::span<const std::uint32_t> prev_choice,
-                                std::span<const std::uint32_t> prev_group_choice,
-                                const SolveLimits& limits, MckpSolution& out) {
+void IncrementalScheduler::step(const MckpInstance& frame, std::span<const std::uint32_t> prev_choice,
+                                std::span<const std::uint32_t> prev_group_choice, const SolveLimits& limits,
+                                MckpSolution& out) {
   using Clock = std::chrono::steady_clock;
   // The clock is read only when the caller asked for a wall-clock limit.
   const bool timed = limits.wall_clock_limit.has_value();
@@ -317,8 +319,10 @@ void IncrementalScheduler::step(const MckpInstance& frame,
   }
   // Pre-test (F&S, Mason): when the lowest level does not fit, answer it, marked infeasible.
   if (lowest_.cost > frame.capacity) {
-    if (flat_) place_flat({});
-    else place({}, {});
+    if (flat_)
+      place_flat({});
+    else
+      place({}, {});
     write(out);
     out.feasible = false;
     return;
@@ -326,8 +330,7 @@ void IncrementalScheduler::step(const MckpInstance& frame,
   if (!flat_) place(prev_choice, prev_group_choice);
   notify();
 
-  const std::uint64_t move_cap =
-      std::uint64_t{options_.max_moves_per_node} * tree_.nodes.size() + 64;
+  const std::uint64_t move_cap = std::uint64_t{options_.max_moves_per_node} * tree_.nodes.size() + 64;
   std::uint64_t moves = 0;
   std::uint32_t last = kNoItem;
   bool done = false;
@@ -377,8 +380,7 @@ void IncrementalScheduler::step(const MckpInstance& frame,
     } else {
       const HmckpNode& nd = tree_.nodes[last];
       double set_profit = 0.0;
-      for (std::uint32_t a = nd.first; a < nd.first + nd.count; ++a)
-        set_profit += item(tree_.members[a]).profit;
+      for (std::uint32_t a = nd.first; a < nd.first + nd.count; ++a) set_profit += item(tree_.members[a]).profit;
       out.error_bound = set_profit - item(last).profit;
       if (options_.critical_check) critical_solution(last, frame);
     }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "budget/mckp.hpp"
 
 #include <algorithm>
@@ -24,8 +25,8 @@ void reduce_ip_dominated(const MckpInstance& instance, std::vector<std::uint32_t
     double own_lowest = std::numeric_limits<double>::infinity();
     for (const MckpItem& it : items) own_lowest = std::min(own_lowest, it.cost);
     // (Flat instances only: with groups the lowest level is made of impostors.)
-    const double room = instance.groups.empty() ? instance.capacity - (lowest - own_lowest)
-                                                : std::numeric_limits<double>::infinity();
+    const double room =
+        instance.groups.empty() ? instance.capacity - (lowest - own_lowest) : std::numeric_limits<double>::infinity();
     for (std::uint32_t j = 0; j < items.size(); ++j)
       if (items[j].cost <= room || items[j].cost == own_lowest) kept.push_back(j);
     // By (cost asc, profit desc, index asc), a total order, so the result does not depend on
@@ -38,8 +39,7 @@ void reduce_ip_dominated(const MckpInstance& instance, std::vector<std::uint32_t
     // Keep only strictly increasing profit along increasing cost.
     std::size_t out = begin;
     for (std::size_t a = begin; a < kept.size(); ++a) {
-      if (out == begin || items[kept[a]].profit > items[kept[out - 1]].profit)
-        kept[out++] = kept[a];
+      if (out == begin || items[kept[a]].profit > items[kept[out - 1]].profit) kept[out++] = kept[a];
     }
     kept.resize(out);
     kept_offsets.push_back(static_cast<std::uint32_t>(kept.size()));
@@ -119,8 +119,10 @@ double lp_upper_bound(const MckpInstance& instance) {
       while (hull.size() >= 2) {
         const MckpItem& p0 = items[hull[hull.size() - 2]];
         const MckpItem& p1 = items[hull.back()];
-        if (relative_value(p0, p1) <= relative_value(p1, c)) hull.pop_back();
-        else break;
+        if (relative_value(p0, p1) <= relative_value(p1, c))
+          hull.pop_back();
+        else
+          break;
       }
       hull.push_back(kept[a]);
     }

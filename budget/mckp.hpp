@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Multiple-choice knapsack (MCKP) instances and answers, the form the frame budget takes
 // (Mason 1999 Def. 2.3, Funkhouser & Sequin 1993 sec. 6): exactly one item from every subset,
 // maximise total profit (benefit) with total cost (render time) <= capacity. Plain data.
@@ -22,9 +23,9 @@ struct MckpItem {
 // Optional hierarchy for the hierarchical MCKP (Mason Ch. 4, 6): a group of subsets and/or
 // other groups that may be drawn by shared impostors instead of its members.
 struct MckpGroup {
-  std::vector<std::uint32_t> subsets;   // member subsets (indices into MckpInstance subsets)
-  std::vector<std::uint32_t> groups;    // member groups (indices into MckpInstance::groups)
-  std::vector<MckpItem> impostors;      // shared impostors, coarsest first; may be empty
+  std::vector<std::uint32_t> subsets;  // member subsets (indices into MckpInstance subsets)
+  std::vector<std::uint32_t> groups;   // member groups (indices into MckpInstance::groups)
+  std::vector<MckpItem> impostors;     // shared impostors, coarsest first; may be empty
 };
 
 struct MckpInstance {
@@ -34,12 +35,8 @@ struct MckpInstance {
   std::vector<MckpGroup> groups;                 // empty: a plain MCKP
 
   std::size_t subset_count() const { return subset_offsets.size() - 1; }
-  std::uint32_t subset_size(std::size_t k) const {
-    return subset_offsets[k + 1] - subset_offsets[k];
-  }
-  std::span<const MckpItem> subset(std::size_t k) const {
-    return {items.data() + subset_offsets[k], subset_size(k)};
-  }
+  std::uint32_t subset_size(std::size_t k) const { return subset_offsets[k + 1] - subset_offsets[k]; }
+  std::span<const MckpItem> subset(std::size_t k) const { return {items.data() + subset_offsets[k], subset_size(k)}; }
   void add_subset(std::span<const MckpItem> subset_items);
 };
 
@@ -50,7 +47,7 @@ struct MckpSolution {
   std::vector<std::uint32_t> group_choice;  // impostor index per group, kNoItem when none
   double profit = 0.0;
   double cost = 0.0;
-  bool feasible = false;      // every leaf represented exactly once and cost <= capacity
+  bool feasible = false;        // every leaf represented exactly once and cost <= capacity
   bool proven_optimal = false;  // set by the exact solver only
   // Mason's a-posteriori bound: optimum - profit <= error_bound (p_s - p_t for the critical
   // item s); negative when the solver gives no such bound.
@@ -79,9 +76,9 @@ struct SolveLimits {
 
 // IP-dominance (Mason sec. 3.1): item j is dropped when another item of its subset costs no
 // more and profits no less, or when it cannot fit even with every other subset at its cheapest
-// (the cheapest items always stay; only without groups). `kept` holds, per subset, the surviving within-subset indices in
-// increasing cost (and so strictly increasing profit); offsets as in MckpInstance.
-// Reuses the capacity of `kept` / `kept_offsets` (no allocation once they are large enough).
+// (the cheapest items always stay; only without groups). `kept` holds, per subset, the surviving within-subset indices
+// in increasing cost (and so strictly increasing profit); offsets as in MckpInstance. Reuses the capacity of `kept` /
+// `kept_offsets` (no allocation once they are large enough).
 void reduce_ip_dominated(const MckpInstance& instance, std::vector<std::uint32_t>& kept,
                          std::vector<std::uint32_t>& kept_offsets);
 

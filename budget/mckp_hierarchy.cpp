@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "budget/mckp_hierarchy.hpp"
 
 #include <algorithm>
@@ -17,8 +18,8 @@ std::string check_hierarchy(const MckpInstance& instance) {
       const std::string here = at + ".subsets[" + std::to_string(a) + "]";
       if (s >= r) return here + ": no subset " + std::to_string(s);
       if (subset_owner[s] != kNoItem)
-        return here + ": subset " + std::to_string(s) + " is already in groups[" +
-               std::to_string(subset_owner[s]) + "]";
+        return here + ": subset " + std::to_string(s) + " is already in groups[" + std::to_string(subset_owner[s]) +
+               "]";
       subset_owner[s] = static_cast<std::uint32_t>(g);
     }
     for (std::size_t a = 0; a < grp.groups.size(); ++a) {
@@ -27,8 +28,7 @@ std::string check_hierarchy(const MckpInstance& instance) {
       if (h >= g_count) return here + ": no group " + std::to_string(h);
       if (h == g) return here + ": a group cannot contain itself";
       if (group_owner[h] != kNoItem)
-        return here + ": group " + std::to_string(h) + " is already in groups[" +
-               std::to_string(group_owner[h]) + "]";
+        return here + ": group " + std::to_string(h) + " is already in groups[" + std::to_string(group_owner[h]) + "]";
       group_owner[h] = static_cast<std::uint32_t>(g);
     }
     if (grp.subsets.empty() && grp.groups.empty()) return at + ": a group needs members";
@@ -42,8 +42,7 @@ std::string check_hierarchy(const MckpInstance& instance) {
   return {};
 }
 
-void cost_order(const MckpInstance& instance, std::vector<std::uint32_t>& order,
-                std::vector<std::uint32_t>& offsets) {
+void cost_order(const MckpInstance& instance, std::vector<std::uint32_t>& order, std::vector<std::uint32_t>& offsets) {
   order.clear();
   offsets.assign(1, 0);
   for (std::size_t k = 0; k < instance.subset_count(); ++k) {
@@ -174,8 +173,8 @@ bool is_valid_lod(const HmckpTree& tree, std::span<const std::uint8_t> selected)
   // Every leaf path ends at the finest item of a subset chain: walk up from each.
   for (std::uint32_t first : tree.subset_chain) {
     std::uint32_t last = first;
-    while (tree.nodes[last].count == 1 && tree.nodes[tree.members[tree.nodes[last].first]].subset ==
-                                              tree.nodes[first].subset)
+    while (tree.nodes[last].count == 1 &&
+           tree.nodes[tree.members[tree.nodes[last].first]].subset == tree.nodes[first].subset)
       last = tree.members[tree.nodes[last].first];
     int on_path = 0;
     for (std::uint32_t u = last; u != kNoItem; u = tree.nodes[u].parent) on_path += selected[u];

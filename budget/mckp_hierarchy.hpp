@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The hierarchical MCKP as a tree of replacement sets (Mason 1999 Def. 4.2, 4.8): every item
 // or group impostor is a node, and incrementing a selected node replaces it by its
 // replacement set. A plain MCKP is the special case of one chain per subset.
@@ -23,11 +24,11 @@ struct HmckpNode {
 };
 
 struct HmckpTree {
-  std::vector<HmckpNode> nodes;          // node 0: the root, "no representation"
-  std::vector<std::uint32_t> members;    // concatenated replacement sets
-  std::vector<std::uint32_t> stable_id;  // tie-break id per node (the node's `source`)
-  std::vector<std::uint32_t> chain_pos;  // per input item: position of the kept item it maps to
-  std::vector<std::uint32_t> subset_chain;  // per subset: node id of its cheapest kept item
+  std::vector<HmckpNode> nodes;                 // node 0: the root, "no representation"
+  std::vector<std::uint32_t> members;           // concatenated replacement sets
+  std::vector<std::uint32_t> stable_id;         // tie-break id per node (the node's `source`)
+  std::vector<std::uint32_t> chain_pos;         // per input item: position of the kept item it maps to
+  std::vector<std::uint32_t> subset_chain;      // per subset: node id of its cheapest kept item
   std::vector<std::uint32_t> subset_chain_len;  // per subset: kept items (chain nodes are
                                                 // contiguous: subset_chain[k] + position)
 };
@@ -44,8 +45,7 @@ void build_hmckp_tree(const MckpInstance& instance, std::span<const std::uint32_
                       std::span<const std::uint32_t> kept_offsets, HmckpTree& tree);
 
 // Every input item in cost order (ties by index); no item dropped.
-void cost_order(const MckpInstance& instance, std::vector<std::uint32_t>& order,
-                std::vector<std::uint32_t>& offsets);
+void cost_order(const MckpInstance& instance, std::vector<std::uint32_t>& order, std::vector<std::uint32_t>& offsets);
 
 // A valid level of detail: exactly one selected node on every root-to-leaf path (Def. 4.1).
 bool is_valid_lod(const HmckpTree& tree, std::span<const std::uint8_t> selected);

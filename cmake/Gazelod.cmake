@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Small helpers shared by the folders' CMakeLists. Each folder globs its own sources so that
 # adding a file needs no edit elsewhere; a sub-folder with its own CMakeLists.txt is added
 # when it exists.

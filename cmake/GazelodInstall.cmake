@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # `cmake --install`: the plugin's libraries and public headers, an exported CMake package
 # (find_package(gazelod CONFIG) -> gazelod::plugin, gazelod::lod, gazelod::budget,
 # gazelod::gaze), a pkg-config file, the simulated OpenXR runtime with an installed manifest,

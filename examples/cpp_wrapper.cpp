@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A C++17 application using gazelod through its header-only wrapper (<gazelod/gazelod.hpp>):
 // RAII for the plugin, exceptions carrying gazelod's message, the C ABI underneath. Data mode,
 // no OpenXR: a head held still, a gaze fixating one object of a row, pushed at 120 Hz.

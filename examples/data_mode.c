@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* data_mode.c: gazelod in data mode, with no OpenXR at all.
  *
  * What an application with its own display and eye tracker (a desktop simulator, a custom HMD
@@ -20,8 +21,8 @@
 #include <string.h>
 
 #define PI 3.14159265358979323846
-#define FRAME_NS 11111111LL  /* 90 Hz display */
-#define SAMPLE_NS 8333333LL  /* 120 Hz eye tracker */
+#define FRAME_NS 11111111LL   /* 90 Hz display */
+#define SAMPLE_NS 8333333LL   /* 120 Hz eye tracker */
 #define LATENCY_NS 25000000LL /* the frame is decided ~25 ms before it is shown */
 /* Each half lasts 1.5 s. An object no longer fixated coarsens after the switch policy's
  * 0.2 s hold, then waits up to 1 s for a saccade or blink to hide the change, so a
@@ -96,8 +97,8 @@ int main(void) {
   int frame, i;
 
   if (GZL_VERSION_MAJOR(gzl_version()) != GZL_VERSION_MAJOR(GZL_HEADER_VERSION)) {
-    fprintf(stderr, "libgazelod ABI %u, this program was built for %u\n",
-            (unsigned)GZL_VERSION_MAJOR(gzl_version()), (unsigned)GZL_VERSION_MAJOR(GZL_HEADER_VERSION));
+    fprintf(stderr, "libgazelod ABI %u, this program was built for %u\n", (unsigned)GZL_VERSION_MAJOR(gzl_version()),
+            (unsigned)GZL_VERSION_MAJOR(GZL_HEADER_VERSION));
     return 1;
   }
 
@@ -183,11 +184,12 @@ int main(void) {
       memcpy(end_levels[h], levels, sizeof levels);
       end_u[h] = cone.center_u;
       end_source[h] = info.gaze_source;
-      printf("%s half, frame %llu: gaze source %d, cone centre (%.3f, %.3f) radius %.1f deg, "
-             "triangles %llu of %llu\n  grid levels:", h == 0 ? "first" : "second",
-             (unsigned long long)info.frame_index, (int)info.gaze_source, cone.center_u,
-             cone.center_v, cone.half_angle_deg, (unsigned long long)info.triangles_drawn,
-             (unsigned long long)info.triangles_full);
+      printf(
+          "%s half, frame %llu: gaze source %d, cone centre (%.3f, %.3f) radius %.1f deg, "
+          "triangles %llu of %llu\n  grid levels:",
+          h == 0 ? "first" : "second", (unsigned long long)info.frame_index, (int)info.gaze_source, cone.center_u,
+          cone.center_v, cone.half_angle_deg, (unsigned long long)info.triangles_drawn,
+          (unsigned long long)info.triangles_full);
       for (i = 0; i < GRID * GRID; ++i) printf("%s%u", i % GRID == 0 ? "  " : " ", (unsigned)levels[i]);
       printf("   engine-style object: %u\n", (unsigned)levels[GRID * GRID]);
     }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* openxr_private_loader.c: gazelod in OpenXR mode, integrated the way an engine does it.
  *
  * Engines (Unity, Unreal, Godot) load the OpenXR loader privately: they dlopen it, take
@@ -42,11 +43,12 @@
 #endif
 
 /* The OpenXR functions this application uses, all from xrGetInstanceProcAddr. */
-#define XR_FUNCTIONS(X)                                                                                     \
-  X(DestroyInstance) X(GetSystem) X(GetSystemProperties) X(CreateSession) X(DestroySession) X(BeginSession) \
-  X(EndSession) X(RequestExitSession) X(PollEvent) X(WaitFrame) X(BeginFrame) X(EndFrame)                  \
-  X(CreateReferenceSpace) X(DestroySpace) X(StringToPath) X(CreateActionSet) X(CreateAction)               \
-  X(SuggestInteractionProfileBindings) X(AttachSessionActionSets) X(CreateActionSpace) X(SyncActions) X(GetActionStatePose) X(LocateSpace)
+#define XR_FUNCTIONS(X)                                                                                           \
+  X(DestroyInstance)                                                                                              \
+  X(GetSystem) X(GetSystemProperties) X(CreateSession) X(DestroySession) X(BeginSession) X(EndSession)            \
+      X(RequestExitSession) X(PollEvent) X(WaitFrame) X(BeginFrame) X(EndFrame) X(CreateReferenceSpace)           \
+          X(DestroySpace) X(StringToPath) X(CreateActionSet) X(CreateAction) X(SuggestInteractionProfileBindings) \
+              X(AttachSessionActionSets) X(CreateActionSpace) X(SyncActions) X(GetActionStatePose) X(LocateSpace)
 static struct {
   PFN_xrGetInstanceProcAddr GetInstanceProcAddr;
   PFN_xrCreateInstance CreateInstance;
@@ -129,8 +131,8 @@ int main(int argc, char** argv) {
 
   if (!LOAD(XR_NULL_HANDLE, CreateInstance)) return 1;
   {
-    XrInstanceCreateInfo info = {.type = XR_TYPE_INSTANCE_CREATE_INFO, .enabledExtensionCount = 2,
-                                 .enabledExtensionNames = extensions};
+    XrInstanceCreateInfo info = {
+        .type = XR_TYPE_INSTANCE_CREATE_INFO, .enabledExtensionCount = 2, .enabledExtensionNames = extensions};
     int loaded = 1;
     strcpy(info.applicationInfo.applicationName, "gazelod example");
     info.applicationInfo.apiVersion = XR_MAKE_VERSION(1, 0, 0);
@@ -224,8 +226,11 @@ int main(int argc, char** argv) {
     static const gzl_level lod[4] = {{0.0, 20000}, {0.01, 5000}, {0.04, 1250}, {0.16, 312}};
     const double deg = 3.14159265358979323846 / 180.0;
     const double yaw = (i % GRID - GRID / 2) * 10.0 * deg, pitch = (i / GRID - GRID / 2) * 10.0 * deg;
-    gzl_object_desc desc = {.type = GZL_TYPE_OBJECT_DESC, .radius_m = 1.5, .metric = GZL_LEVEL_GEOMETRIC_ERROR_M,
-                            .level_count = 4, .levels = lod};
+    gzl_object_desc desc = {.type = GZL_TYPE_OBJECT_DESC,
+                            .radius_m = 1.5,
+                            .metric = GZL_LEVEL_GEOMETRIC_ERROR_M,
+                            .level_count = 4,
+                            .levels = lod};
     desc.center_m.x = DISTANCE_M * cos(pitch) * sin(yaw);
     desc.center_m.y = DISTANCE_M * sin(pitch);
     desc.center_m.z = -DISTANCE_M * cos(pitch) * cos(yaw);
@@ -310,16 +315,18 @@ int main(int argc, char** argv) {
     }
   }
 
-  printf("%d frames; in frames %d..%d (%d): eye gaze tracked in %d, gaze source OPENXR in %d of those; "
-         "levels differing across objects in %d\n",
-         frames, WARMUP_FRAMES, FRAME_COUNT - 1, checked, tracked_frames, openxr_frames, varied_frames);
+  printf(
+      "%d frames; in frames %d..%d (%d): eye gaze tracked in %d, gaze source OPENXR in %d of those; "
+      "levels differing across objects in %d\n",
+      frames, WARMUP_FRAMES, FRAME_COUNT - 1, checked, tracked_frames, openxr_frames, varied_frames);
   if (checked < FRAME_COUNT - WARMUP_FRAMES) {
     fprintf(stderr, "FAIL the session ended after %d frames, before the %d to check\n", frames, FRAME_COUNT);
     ++g_failures;
   }
   if (tracked_frames < checked / 2 || openxr_frames != tracked_frames || varied_frames != checked) {
-    fprintf(stderr, "FAIL eye gaze through the application's loader must drive every tracked frame, "
-                    "and levels must differ across objects in every frame\n");
+    fprintf(stderr,
+            "FAIL eye gaze through the application's loader must drive every tracked frame, "
+            "and levels must differ across objects in every frame\n");
     ++g_failures;
   }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Fuzzes the frame-budget instance reader (a JSON file in, MckpInstance out). Invariants: an accepted
 // instance has a finite capacity >= 0, finite costs >= 0 and finite profits, and consistent
 // subset offsets; small accepted instances are also solved, and a solution never exceeds the
@@ -7,7 +8,6 @@
 #include "budget/knapsack.hpp"
 #include "budget/mckp.hpp"
 #include "budget/budget_instance.hpp"
-
 
 #include <cmath>
 #include <cstdio>
@@ -57,8 +57,7 @@ int budget_instance(const std::uint8_t* data, std::size_t size) {
       const budget::MckpSolution sol = budget::solve(*kind, inst);
       check(std::isfinite(sol.profit) && std::isfinite(sol.cost), "solution not finite");
       if (sol.feasible)
-        check(sol.cost <= inst.capacity * (1.0 + 1e-9) + 1e-12,
-              "a feasible solution exceeds the capacity");
+        check(sol.cost <= inst.capacity * (1.0 + 1e-9) + 1e-12, "a feasible solution exceeds the capacity");
     } catch (const std::invalid_argument&) {
       // documented: the solver cannot take this instance
     }

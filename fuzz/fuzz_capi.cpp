@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Fuzzes the C ABI (include/gazelod/gazelod.h) as an application drives it: the input bytes are
 // a little program of calls on a data-mode plugin (create with views and a configuration from
 // the bytes, objects, gaze samples, frames, the readers, shutdown, destroy), with NULL handles,
@@ -73,17 +74,28 @@ class Bytes {
     const std::uint8_t k = u8();
     if (k < 160) return static_cast<double>(static_cast<std::int16_t>(u16())) / 32768.0 * scale;
     switch (k % 12) {
-      case 0: return std::numeric_limits<double>::quiet_NaN();
-      case 1: return std::numeric_limits<double>::infinity();
-      case 2: return -std::numeric_limits<double>::infinity();
-      case 3: return 1e308;
-      case 4: return -1e308;
-      case 5: return 0.0;
-      case 6: return -0.0;
-      case 7: return std::numeric_limits<double>::denorm_min();
-      case 8: return 1e-12;
-      case 9: return scale;
-      case 10: return -scale;
+      case 0:
+        return std::numeric_limits<double>::quiet_NaN();
+      case 1:
+        return std::numeric_limits<double>::infinity();
+      case 2:
+        return -std::numeric_limits<double>::infinity();
+      case 3:
+        return 1e308;
+      case 4:
+        return -1e308;
+      case 5:
+        return 0.0;
+      case 6:
+        return -0.0;
+      case 7:
+        return std::numeric_limits<double>::denorm_min();
+      case 8:
+        return 1e-12;
+      case 9:
+        return scale;
+      case 10:
+        return -scale;
       default: {
         const std::uint64_t bits = u64();
         double d;
@@ -112,7 +124,8 @@ std::string last_error(gzl_plugin p) {
   std::size_t len2 = 0;
   check(gzl_get_last_error(p, s.data(), s.size(), &len2) == GZL_SUCCESS, "gzl_get_last_error failed");
   check(len2 == len, "gzl_get_last_error: length changed between two calls");
-  check(s[len] == '\0' && std::strlen(s.c_str()) == len, "gzl_get_last_error: message not NUL-terminated at its length");
+  check(s[len] == '\0' && std::strlen(s.c_str()) == len,
+        "gzl_get_last_error: message not NUL-terminated at its length");
   s.resize(len);
   return s;
 }
@@ -180,10 +193,18 @@ void make_views(Bytes& in, gzl_view* views, std::uint32_t count) {
         v.width_px = in.one_in(2) ? in.u16() : in.u32();
         v.height_px = in.one_in(2) ? in.u16() : in.u32();
         break;
-      case 2: v.orientation_in_head = {in.num(1.0), in.num(1.0), in.num(1.0), in.num(1.0)}; break;
-      case 3: v.position_in_head_m = {in.num(0.1), in.num(0.1), in.num(0.1)}; break;
-      case 4: v.fov.angle_left = v.fov.angle_right; break;  // zero width
-      default: v.fov = {-1.6, 1.6, 1.6, -1.6}; break;        // past 180 degrees
+      case 2:
+        v.orientation_in_head = {in.num(1.0), in.num(1.0), in.num(1.0), in.num(1.0)};
+        break;
+      case 3:
+        v.position_in_head_m = {in.num(0.1), in.num(0.1), in.num(0.1)};
+        break;
+      case 4:
+        v.fov.angle_left = v.fov.angle_right;
+        break;  // zero width
+      default:
+        v.fov = {-1.6, 1.6, 1.6, -1.6};
+        break;  // past 180 degrees
     }
   }
 }
@@ -210,7 +231,7 @@ struct Model {
   bool have_frame = false;
   std::int64_t last_frame_t = 0;  // of the last published frame
   bool have_sample = false;
-  std::int64_t last_sample_t = 0;  // of the last accepted sample
+  std::int64_t last_sample_t = 0;    // of the last accepted sample
   std::int64_t clock = 1'000 * kMs;  // where the realistic times are
 
   std::size_t live_count() const {
@@ -234,14 +255,22 @@ std::int64_t pick_time(Bytes& in, Model& m, bool sample) {
     return m.clock;
   }
   switch (k % 8) {
-    case 0: return m.clock;
-    case 1: return m.clock - static_cast<std::int64_t>(in.u16()) * kMs;
-    case 2: return m.clock + 2'000 * kMs;
-    case 3: return std::numeric_limits<std::int64_t>::max() - static_cast<std::int64_t>(in.u8());
-    case 4: return std::numeric_limits<std::int64_t>::min() + static_cast<std::int64_t>(in.u8());
-    case 5: return 0;
-    case 6: return -static_cast<std::int64_t>(in.u32());
-    default: return static_cast<std::int64_t>(in.u64());
+    case 0:
+      return m.clock;
+    case 1:
+      return m.clock - static_cast<std::int64_t>(in.u16()) * kMs;
+    case 2:
+      return m.clock + 2'000 * kMs;
+    case 3:
+      return std::numeric_limits<std::int64_t>::max() - static_cast<std::int64_t>(in.u8());
+    case 4:
+      return std::numeric_limits<std::int64_t>::min() + static_cast<std::int64_t>(in.u8());
+    case 5:
+      return 0;
+    case 6:
+      return -static_cast<std::int64_t>(in.u32());
+    default:
+      return static_cast<std::int64_t>(in.u64());
   }
 }
 
@@ -250,10 +279,14 @@ gzl_object pick_handle(Bytes& in, const Model& m) {
   const std::uint8_t k = in.u8();
   if (!m.objs.empty() && k < 200) return m.objs[in.pick(static_cast<std::uint32_t>(m.objs.size()))].handle;
   switch (k % 4) {
-    case 0: return GZL_NULL_OBJECT;
-    case 1: return m.max_handle + 1;
-    case 2: return std::numeric_limits<gzl_object>::max();
-    default: return in.u64();
+    case 0:
+      return GZL_NULL_OBJECT;
+    case 1:
+      return m.max_handle + 1;
+    case 2:
+      return std::numeric_limits<gzl_object>::max();
+    default:
+      return in.u64();
   }
 }
 
@@ -369,8 +402,10 @@ void op_add(Bytes& in, Model& m) {
   const bool null_out = in.one_in(32);
   const std::string sentinel = set_sentinel(m.p);
   gzl_object h = 12345;
-  const gzl_result r = checked(m.p, gzl_add_object(m.p, in.one_in(32) ? nullptr : &d, null_out ? nullptr : &h), sentinel);
-  if (m.shut_down) check(r == GZL_ERROR_SHUT_DOWN, "gzl_add_object after gzl_shutdown did not fail with GZL_ERROR_SHUT_DOWN");
+  const gzl_result r =
+      checked(m.p, gzl_add_object(m.p, in.one_in(32) ? nullptr : &d, null_out ? nullptr : &h), sentinel);
+  if (m.shut_down)
+    check(r == GZL_ERROR_SHUT_DOWN, "gzl_add_object after gzl_shutdown did not fail with GZL_ERROR_SHUT_DOWN");
   if (null_out) {
     check(r != GZL_SUCCESS, "gzl_add_object with a NULL output succeeded");
     return;
@@ -393,12 +428,14 @@ void check_handle_result(const Model& m, gzl_object h, gzl_result r, const char*
   for (const Obj& x : m.objs)
     if (x.handle == h) o = &x;
   if (m.shut_down) {
-    check(r == GZL_ERROR_SHUT_DOWN, (std::string(call) + " after gzl_shutdown did not fail with GZL_ERROR_SHUT_DOWN").c_str());
+    check(r == GZL_ERROR_SHUT_DOWN,
+          (std::string(call) + " after gzl_shutdown did not fail with GZL_ERROR_SHUT_DOWN").c_str());
     return;
   }
   if (o == nullptr || !o->live)
     check(r == GZL_ERROR_OBJECT_INVALID,
-          (std::string(call) + " with a removed or never-issued handle did not fail with GZL_ERROR_OBJECT_INVALID").c_str());
+          (std::string(call) + " with a removed or never-issued handle did not fail with GZL_ERROR_OBJECT_INVALID")
+              .c_str());
   else
     check(r == GZL_SUCCESS, (std::string(call) + " refused a live handle").c_str());
 }
@@ -424,10 +461,12 @@ void op_motion(Bytes& in, Model& m) {
   const gzl_object h = pick_handle(in, m);
   const bool wild = in.one_in(4);
   const gzl_vec3 c{in.num(40.0), wild ? in.num(10.0) : 1.6, wild ? in.num(50.0) : -2.0 - in.pick(40)};
-  const gzl_vec3 v = wild ? gzl_vec3{in.num(100.0), in.num(100.0), in.num(100.0)} : gzl_vec3{in.num(2.0), 0.0, in.num(2.0)};
+  const gzl_vec3 v =
+      wild ? gzl_vec3{in.num(100.0), in.num(100.0), in.num(100.0)} : gzl_vec3{in.num(2.0), 0.0, in.num(2.0)};
   const bool null_c = in.one_in(32), null_v = in.one_in(32);
   const std::string sentinel = set_sentinel(m.p);
-  const gzl_result r = checked(m.p, gzl_set_object_motion(m.p, h, null_c ? nullptr : &c, null_v ? nullptr : &v), sentinel);
+  const gzl_result r =
+      checked(m.p, gzl_set_object_motion(m.p, h, null_c ? nullptr : &c, null_v ? nullptr : &v), sentinel);
   const bool finite = std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z) && std::isfinite(v.x) &&
                       std::isfinite(v.y) && std::isfinite(v.z);
   if (!null_c && !null_v && finite) check_handle_result(m, h, r, "gzl_set_object_motion");
@@ -452,13 +491,16 @@ void op_push(Bytes& in, Model& m) {
     s.flags |= in.pick(4) << 1;
   }
   if (s.flags & GZL_GAZE_SAMPLE_HEAD_ORIENTATION)
-    s.head_orientation = plain ? gzl_quat{0.0, in.num(0.2), 0.0, 1.0} : gzl_quat{in.num(1.0), in.num(1.0), in.num(1.0), in.num(1.0)};
+    s.head_orientation =
+        plain ? gzl_quat{0.0, in.num(0.2), 0.0, 1.0} : gzl_quat{in.num(1.0), in.num(1.0), in.num(1.0), in.num(1.0)};
   const bool null_sample = in.one_in(64);
   const std::string sentinel = set_sentinel(m.p);
   const gzl_result r = checked(m.p, gzl_push_gaze_sample(m.p, null_sample ? nullptr : &s), sentinel);
-  if (m.shut_down) check(r == GZL_ERROR_SHUT_DOWN, "gzl_push_gaze_sample after gzl_shutdown did not fail with GZL_ERROR_SHUT_DOWN");
+  if (m.shut_down)
+    check(r == GZL_ERROR_SHUT_DOWN, "gzl_push_gaze_sample after gzl_shutdown did not fail with GZL_ERROR_SHUT_DOWN");
   if (r != GZL_SUCCESS) return;
-  check(!m.have_sample || s.time_ns >= m.last_sample_t, "gzl_push_gaze_sample accepted a sample older than the last one");
+  check(!m.have_sample || s.time_ns >= m.last_sample_t,
+        "gzl_push_gaze_sample accepted a sample older than the last one");
   m.have_sample = true;
   m.last_sample_t = s.time_ns;
 }
@@ -548,9 +590,11 @@ void op_frame(Bytes& in, Model& m) {
   const bool null_input = in.one_in(64);
   const std::string sentinel = set_sentinel(m.p);
   const gzl_result r = checked(m.p, gzl_begin_frame_data(m.p, null_input ? nullptr : &f), sentinel);
-  if (m.shut_down) check(r == GZL_ERROR_SHUT_DOWN, "gzl_begin_frame_data after gzl_shutdown did not fail with GZL_ERROR_SHUT_DOWN");
+  if (m.shut_down)
+    check(r == GZL_ERROR_SHUT_DOWN, "gzl_begin_frame_data after gzl_shutdown did not fail with GZL_ERROR_SHUT_DOWN");
   if (r != GZL_SUCCESS) return;
-  check(!m.have_frame || f.display_time_ns > m.last_frame_t, "gzl_begin_frame_data accepted a frame not after the last one");
+  check(!m.have_frame || f.display_time_ns > m.last_frame_t,
+        "gzl_begin_frame_data accepted a frame not after the last one");
   m.have_frame = true;
   m.last_frame_t = f.display_time_ns;
   ++m.frames;
@@ -567,10 +611,9 @@ void op_levels(Bytes& in, Model& m) {
   std::vector<std::uint8_t> levels(n, kUntouched);
   const bool null_objects = n > 0 && in.one_in(32), null_levels = n > 0 && in.one_in(32);
   const std::string sentinel = set_sentinel(m.p);
-  const gzl_result r = checked(m.p,
-                               gzl_get_levels(m.p, n, null_objects ? nullptr : handles.data(),
-                                              null_levels ? nullptr : levels.data()),
-                               sentinel, true);
+  const gzl_result r = checked(
+      m.p, gzl_get_levels(m.p, n, null_objects ? nullptr : handles.data(), null_levels ? nullptr : levels.data()),
+      sentinel, true);
   if (null_objects || null_levels) {
     check(r == GZL_ERROR_NULL_POINTER, "gzl_get_levels with NULL arrays did not fail with GZL_ERROR_NULL_POINTER");
     return;
@@ -591,9 +634,15 @@ void op_levels(Bytes& in, Model& m) {
     if (i == bad) continue;  // nothing written there either, but it may hold anything of ours
     const Obj& o = *m.find(handles[i]);
     switch (o.seen) {
-      case Seen::added_since: check(levels[i] == 0, "an object added after the last frame does not read level 0"); break;
-      case Seen::disabled: check(levels[i] == GZL_LEVEL_DISABLED, "an object disabled at the last frame is not GZL_LEVEL_DISABLED"); break;
-      case Seen::enabled: check(levels[i] < o.triangles.size(), "an object's level is past its chain"); break;
+      case Seen::added_since:
+        check(levels[i] == 0, "an object added after the last frame does not read level 0");
+        break;
+      case Seen::disabled:
+        check(levels[i] == GZL_LEVEL_DISABLED, "an object disabled at the last frame is not GZL_LEVEL_DISABLED");
+        break;
+      case Seen::enabled:
+        check(levels[i] < o.triangles.size(), "an object's level is past its chain");
+        break;
     }
   }
 }
@@ -606,7 +655,8 @@ void op_readers(Bytes& in, Model& m) {
       const gzl_result r = checked(m.p, gzl_get_frame_info(m.p, in.one_in(32) ? nullptr : &info), sentinel);
       if (r == GZL_SUCCESS) {
         check(info.frame_index == m.frames, "frame_info.frame_index is not the number of frames published");
-        if (m.frames > 0) check(info.display_time_ns == m.last_frame_t, "frame_info.display_time_ns is not the last frame's");
+        if (m.frames > 0)
+          check(info.display_time_ns == m.last_frame_t, "frame_info.display_time_ns is not the last frame's");
       }
       break;
     }
@@ -616,14 +666,16 @@ void op_readers(Bytes& in, Model& m) {
       const gzl_result r = checked(m.p, gzl_get_foveal_cone(m.p, view, in.one_in(32) ? nullptr : &cone), sentinel);
       if (r == GZL_SUCCESS) {
         check(m.frames > 0 && view < m.view_count, "gzl_get_foveal_cone accepted a view the last frame did not have");
-        check(std::isfinite(cone.half_angle_deg) && cone.half_angle_deg <= 180.0, "foveal cone half-angle not in [0, 180]");
+        check(std::isfinite(cone.half_angle_deg) && cone.half_angle_deg <= 180.0,
+              "foveal cone half-angle not in [0, 180]");
       }
       break;
     }
     case 2: {
       gzl_frame_record rec{in.type(GZL_TYPE_FRAME_RECORD), nullptr};
       const gzl_result r = checked(m.p, gzl_get_frame_record(m.p, in.one_in(32) ? nullptr : &rec), sentinel);
-      if (r == GZL_SUCCESS && m.frames > 0) check(rec.display_time_ns == m.last_frame_t, "frame_record is not the last frame's");
+      if (r == GZL_SUCCESS && m.frames > 0)
+        check(rec.display_time_ns == m.last_frame_t, "frame_record is not the last frame's");
       break;
     }
     default: {
@@ -662,33 +714,47 @@ void op_misc(Bytes& in, Model& m) {
     case 0: {
       const double ms = in.one_in(4) ? in.num(1e5) : 5.0 + in.pick(20);
       const gzl_result r = checked(m.p, gzl_end_frame(m.p, ms), sentinel);
-      if (m.shut_down) check(r == GZL_ERROR_SHUT_DOWN, "gzl_end_frame after gzl_shutdown did not fail with GZL_ERROR_SHUT_DOWN");
+      if (m.shut_down)
+        check(r == GZL_ERROR_SHUT_DOWN, "gzl_end_frame after gzl_shutdown did not fail with GZL_ERROR_SHUT_DOWN");
       if (!std::isfinite(ms) || ms < 0.0) check(r != GZL_SUCCESS, "gzl_end_frame accepted a bad time");
       break;
     }
     case 1: {
-      const std::uint32_t view = in.pick(6), w = in.one_in(4) ? in.u32() : 1 + in.u16(), h = in.one_in(4) ? in.u32() : 1 + in.u16();
+      const std::uint32_t view = in.pick(6), w = in.one_in(4) ? in.u32() : 1 + in.u16(),
+                          h = in.one_in(4) ? in.u32() : 1 + in.u16();
       const gzl_result r = checked(m.p, gzl_set_view_resolution(m.p, view, w, h), sentinel);
-      if (r == GZL_SUCCESS) check(view < m.view_count, "gzl_set_view_resolution accepted a view the plugin does not have");
+      if (r == GZL_SUCCESS)
+        check(view < m.view_count, "gzl_set_view_resolution accepted a view the plugin does not have");
       break;
     }
     case 2: {
       const auto state = static_cast<std::int32_t>(in.one_in(4) ? in.u32() : in.pick(10));
       const gzl_result r = checked(m.p, gzl_on_session_state(m.p, state, pick_time(in, m, true)), sentinel);
-      if (m.shut_down) check(r == GZL_ERROR_SHUT_DOWN, "gzl_on_session_state after gzl_shutdown did not fail with GZL_ERROR_SHUT_DOWN");
+      if (m.shut_down)
+        check(r == GZL_ERROR_SHUT_DOWN,
+              "gzl_on_session_state after gzl_shutdown did not fail with GZL_ERROR_SHUT_DOWN");
       break;
     }
     case 3: {  // OpenXR-mode calls on a data-mode plugin
       gzl_result r = GZL_SUCCESS;
       gzl_gaze_binding b{GZL_TYPE_GAZE_BINDING, nullptr};
       switch (in.pick(4)) {
-        case 0: r = gzl_begin_frame_openxr(m.p, pick_time(in, m, false)); break;
-        case 1: r = gzl_set_base_space(m.p, in.u64()); break;
-        case 2: r = gzl_action_sets_attached(m.p); break;
-        default: r = gzl_get_gaze_binding(m.p, &b); break;
+        case 0:
+          r = gzl_begin_frame_openxr(m.p, pick_time(in, m, false));
+          break;
+        case 1:
+          r = gzl_set_base_space(m.p, in.u64());
+          break;
+        case 2:
+          r = gzl_action_sets_attached(m.p);
+          break;
+        default:
+          r = gzl_get_gaze_binding(m.p, &b);
+          break;
       }
       checked(m.p, r, sentinel);
-      check(r == (m.shut_down ? GZL_ERROR_SHUT_DOWN : GZL_ERROR_WRONG_MODE), "an OpenXR-mode call on a data-mode plugin was not refused");
+      check(r == (m.shut_down ? GZL_ERROR_SHUT_DOWN : GZL_ERROR_WRONG_MODE),
+            "an OpenXR-mode call on a data-mode plugin was not refused");
       break;
     }
     case 4: {
@@ -729,23 +795,57 @@ void op_null_handle(Bytes& in) {
   const gzl_vec3 zero{0.0, 0.0, 0.0};
   char buf[8];
   switch (in.pick(18)) {
-    case 0: r = gzl_add_object(nullptr, &d, &h); break;
-    case 1: r = gzl_remove_object(nullptr, one); break;
-    case 2: r = gzl_set_object_enabled(nullptr, one, 1); break;
-    case 3: r = gzl_set_object_motion(nullptr, one, &zero, &zero); break;
-    case 4: r = gzl_push_gaze_sample(nullptr, &s); break;
-    case 5: r = gzl_begin_frame_data(nullptr, &f); break;
-    case 6: r = gzl_end_frame(nullptr, 1.0); break;
-    case 7: r = gzl_get_levels(nullptr, 1, &one, &level); break;
-    case 8: r = gzl_get_frame_info(nullptr, &info); break;
-    case 9: r = gzl_get_foveal_cone(nullptr, 0, &cone); break;
-    case 10: r = gzl_get_frame_record(nullptr, &rec); break;
-    case 11: r = gzl_shutdown(nullptr); break;
-    case 12: r = gzl_set_view_resolution(nullptr, 0, 100, 100); break;
-    case 13: r = gzl_on_session_state(nullptr, 5, 0); break;
-    case 14: r = gzl_begin_frame_openxr(nullptr, 1); break;
-    case 15: r = gzl_set_base_space(nullptr, 1); break;
-    case 16: r = gzl_action_sets_attached(nullptr); break;
+    case 0:
+      r = gzl_add_object(nullptr, &d, &h);
+      break;
+    case 1:
+      r = gzl_remove_object(nullptr, one);
+      break;
+    case 2:
+      r = gzl_set_object_enabled(nullptr, one, 1);
+      break;
+    case 3:
+      r = gzl_set_object_motion(nullptr, one, &zero, &zero);
+      break;
+    case 4:
+      r = gzl_push_gaze_sample(nullptr, &s);
+      break;
+    case 5:
+      r = gzl_begin_frame_data(nullptr, &f);
+      break;
+    case 6:
+      r = gzl_end_frame(nullptr, 1.0);
+      break;
+    case 7:
+      r = gzl_get_levels(nullptr, 1, &one, &level);
+      break;
+    case 8:
+      r = gzl_get_frame_info(nullptr, &info);
+      break;
+    case 9:
+      r = gzl_get_foveal_cone(nullptr, 0, &cone);
+      break;
+    case 10:
+      r = gzl_get_frame_record(nullptr, &rec);
+      break;
+    case 11:
+      r = gzl_shutdown(nullptr);
+      break;
+    case 12:
+      r = gzl_set_view_resolution(nullptr, 0, 100, 100);
+      break;
+    case 13:
+      r = gzl_on_session_state(nullptr, 5, 0);
+      break;
+    case 14:
+      r = gzl_begin_frame_openxr(nullptr, 1);
+      break;
+    case 15:
+      r = gzl_set_base_space(nullptr, 1);
+      break;
+    case 16:
+      r = gzl_action_sets_attached(nullptr);
+      break;
     default:
       // The only entry point that does not leave a message for a NULL plugin (it is a reader
       // of the plugin's own strings); its code is still GZL_ERROR_NULL_HANDLE.
@@ -762,10 +862,22 @@ void op_null_handle(Bytes& in) {
 // What capi() below does for op byte k (for the trace).
 const char* op_name(std::uint8_t k, bool have_plugin) {
   if (!have_plugin || k % 32 == 0) return k % 4 == 3 ? "call with a NULL plugin" : "create";
-  static const char* const kNames[16] = {"add_object", "add_object", "add_object", "remove_object",
-                                         "set_object_enabled", "set_object_motion", "push_gaze_sample", "push_gaze_sample",
-                                         "begin_frame_data", "begin_frame_data", "begin_frame_data", "get_levels",
-                                         "frame info / cone / record / gaze status", "get_last_error", "misc", ""};
+  static const char* const kNames[16] = {"add_object",
+                                         "add_object",
+                                         "add_object",
+                                         "remove_object",
+                                         "set_object_enabled",
+                                         "set_object_motion",
+                                         "push_gaze_sample",
+                                         "push_gaze_sample",
+                                         "begin_frame_data",
+                                         "begin_frame_data",
+                                         "begin_frame_data",
+                                         "get_levels",
+                                         "frame info / cone / record / gaze status",
+                                         "get_last_error",
+                                         "misc",
+                                         ""};
   if (k % 16 != 15) return kNames[k % 16];
   return k % 64 == 15 ? "destroy" : "call with a NULL plugin";
 }
@@ -781,8 +893,9 @@ int capi(const std::uint8_t* data, std::size_t size) {
   int creates = 0;
   for (std::size_t op = 0; op < kMaxOps && !in.empty(); ++op) {
     if (trace && op > 0)
-      std::fprintf(stderr, "  -> plugin %s, %zu handles (%zu live), %llu frames%s\n", m.p ? "live" : "NULL", m.objs.size(),
-                   m.live_count(), static_cast<unsigned long long>(m.frames), m.shut_down ? ", shut down" : "");
+      std::fprintf(stderr, "  -> plugin %s, %zu handles (%zu live), %llu frames%s\n", m.p ? "live" : "NULL",
+                   m.objs.size(), m.live_count(), static_cast<unsigned long long>(m.frames),
+                   m.shut_down ? ", shut down" : "");
     const std::uint8_t k = in.u8();
     if (trace) std::fprintf(stderr, "op %zu: %s\n", op, op_name(k, m.p != nullptr));
     if (m.p == nullptr || k % 32 == 0) {
@@ -800,19 +913,39 @@ int capi(const std::uint8_t* data, std::size_t size) {
     switch (k % 16) {
       case 0:
       case 1:
-      case 2: op_add(in, m); break;
-      case 3: op_remove(in, m); break;
-      case 4: op_enable(in, m); break;
-      case 5: op_motion(in, m); break;
+      case 2:
+        op_add(in, m);
+        break;
+      case 3:
+        op_remove(in, m);
+        break;
+      case 4:
+        op_enable(in, m);
+        break;
+      case 5:
+        op_motion(in, m);
+        break;
       case 6:
-      case 7: op_push(in, m); break;
+      case 7:
+        op_push(in, m);
+        break;
       case 8:
       case 9:
-      case 10: op_frame(in, m); break;
-      case 11: op_levels(in, m); break;
-      case 12: op_readers(in, m); break;
-      case 13: op_last_error(in, m); break;
-      case 14: op_misc(in, m); break;
+      case 10:
+        op_frame(in, m);
+        break;
+      case 11:
+        op_levels(in, m);
+        break;
+      case 12:
+        op_readers(in, m);
+        break;
+      case 13:
+        op_last_error(in, m);
+        break;
+      case 14:
+        op_misc(in, m);
+        break;
       default:
         if (k % 64 == 15) {  // destroy: the next call makes a new plugin or uses a NULL one
           destroy(m);

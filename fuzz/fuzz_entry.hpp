@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The fuzz entry points: one function per target, plain bytes in. Each returns 0 for every input
 // the code under test handles correctly (accepted, or rejected with its documented error type)
 // and aborts (through check()) when an invariant is broken; any other exception escapes, which

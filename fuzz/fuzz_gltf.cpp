@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Fuzzes bake's glTF loading path: load_gltf (tinygltf, .gltf or .glb by magic) and then
 // extract_primitive on every triangle primitive, which is what `gazelod bake` reads before
 // simplifying. load_gltf takes a path, so the input goes through a temporary file.
@@ -18,8 +19,7 @@ namespace {
 
 std::string temp_path() {
   const char* dir = std::getenv("TMPDIR");
-  return std::string(dir && *dir ? dir : "/tmp") + "/gazelod_fuzz_gltf_" +
-         std::to_string(::getpid()) + ".glb";
+  return std::string(dir && *dir ? dir : "/tmp") + "/gazelod_fuzz_gltf_" + std::to_string(::getpid()) + ".glb";
 }
 
 }  // namespace

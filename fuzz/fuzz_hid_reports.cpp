@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Fuzzes the HID report decoders with every layout. Invariants: exactly one of value / error is
 // set; an error's byte offset lies within the report (or just past its end for a short one).
 #include "fuzz/fuzz_entry.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Fuzzes the scenario loader. Invariants: a loaded scenario has a positive finite duration and
 // frame rate, and what scenario_to_json writes loads back.
 #include "fuzz/fuzz_entry.hpp"
@@ -18,8 +19,7 @@ int scenario(const std::uint8_t* data, std::size_t size) {
     return 0;  // the documented rejection (names the JSON path)
   }
   check(std::isfinite(s.duration_s) && s.duration_s > 0.0, "duration_s not finite and > 0");
-  check(std::isfinite(s.frame_rate_hz) && s.frame_rate_hz > 0.0,
-        "frame_rate_hz not finite and > 0");
+  check(std::isfinite(s.frame_rate_hz) && s.frame_rate_hz > 0.0, "frame_rate_hz not finite and > 0");
   // Round trip: the writer's output must be accepted by the reader.
   const std::string again = sim::scenario_to_json(s);
   // Generated objects written out explicitly can pass the text-size limit the reader checks

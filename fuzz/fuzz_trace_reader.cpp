@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Fuzzes the trace CSV readers (gazelod's own, GazeBase VR, Pupil Core, Pupil Cloud, SRanipal),
 // strict and lenient. Invariants: time never goes backwards; a valid gaze is a finite unit vector.
 #include "fuzz/fuzz_entry.hpp"
@@ -41,14 +42,12 @@ void read_all(const std::string& text, bool lenient) {
         const double len = glm::length(rec.gaze.direction);
         check(std::abs(len - 1.0) < 1e-2, "valid gaze direction is not a unit vector");
         check(finite(rec.gaze.origin_m), "valid gaze with a non-finite origin");
-        check(rec.gaze.confidence >= 0.0f && rec.gaze.confidence <= 1.0f,
-              "confidence outside [0, 1]");
+        check(rec.gaze.confidence >= 0.0f && rec.gaze.confidence <= 1.0f, "confidence outside [0, 1]");
       }
       if (rec.has_head && rec.head.valid) {
         check(finite(rec.head.position_m), "valid head with a non-finite position");
         const glm::dquat& q = rec.head.orientation;
-        check(std::isfinite(q.w) && std::isfinite(q.x) && std::isfinite(q.y) &&
-                  std::isfinite(q.z),
+        check(std::isfinite(q.w) && std::isfinite(q.x) && std::isfinite(q.y) && std::isfinite(q.z),
               "valid head with a non-finite orientation");
       }
     }

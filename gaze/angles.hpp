@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Gaze-layer angle helpers on top of lod/angles.hpp (units, angle_between_rad): tangent bases,
 // angular offsets and slerp of gaze directions. atan2 throughout, never acos.
 #pragma once
@@ -25,8 +26,8 @@ inline void tangent_basis(const glm::dvec3& c, glm::dvec3& e1, glm::dvec3& e2) {
 }
 
 // Angular offset (radians, two components) of `d` from unit centre `c` in basis (e1, e2).
-inline glm::dvec2 angular_offset_rad(const glm::dvec3& d, const glm::dvec3& c,
-                                     const glm::dvec3& e1, const glm::dvec3& e2) {
+inline glm::dvec2 angular_offset_rad(const glm::dvec3& d, const glm::dvec3& c, const glm::dvec3& e1,
+                                     const glm::dvec3& e2) {
   const double along = glm::dot(d, c);
   return {std::atan2(glm::dot(d, e1), along), std::atan2(glm::dot(d, e2), along)};
 }

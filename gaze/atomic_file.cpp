@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Atomic output files (see atomic_file.hpp): a file-descriptor stream buffer that keeps the
 // errno of the first failed write, a temporary created with O_EXCL beside the destination,
 // fsync + close + rename on commit.
@@ -67,7 +68,9 @@ class FdBuf final : public std::streambuf {
   std::uint64_t written_ = 0;
 };
 
-std::string reason(int e) { return std::strerror(e); }
+std::string reason(int e) {
+  return std::strerror(e);
+}
 
 std::atomic<unsigned> g_counter{0};
 
@@ -143,9 +146,15 @@ AtomicFile::~AtomicFile() {
   if (impl_ && !impl_->committed) impl_->discard();
 }
 
-std::ostream& AtomicFile::stream() { return impl_->os; }
-const std::string& AtomicFile::path() const { return impl_->path; }
-const std::string& AtomicFile::temp_path() const { return impl_->temp; }
+std::ostream& AtomicFile::stream() {
+  return impl_->os;
+}
+const std::string& AtomicFile::path() const {
+  return impl_->path;
+}
+const std::string& AtomicFile::temp_path() const {
+  return impl_->temp;
+}
 
 void AtomicFile::commit() {
   Impl& m = *impl_;
@@ -164,7 +173,7 @@ void AtomicFile::commit() {
   m.buf.fd = -1;
   if (::close(fd) != 0) m.fail(reason(errno));
   if (!m.in_place) {
-    const int rename_error = m.buf.faults.rename_errno != 0                  ? m.buf.faults.rename_errno
+    const int rename_error = m.buf.faults.rename_errno != 0                    ? m.buf.faults.rename_errno
                              : ::rename(m.temp.c_str(), m.target.c_str()) != 0 ? errno
                                                                                : 0;
     if (rename_error != 0) m.fail(reason(rename_error) + " (renaming '" + m.temp + "' over it)");

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Writing an output file atomically: the bytes go to a temporary file in the destination's
 // folder, which commit() flushes, fsyncs and renames over the destination. A failure (full
 // disk, missing or read-only folder, a directory in the way) throws WriteError with the

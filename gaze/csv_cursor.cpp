@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "gaze/csv_cursor.hpp"
 
 #include <charconv>
@@ -8,7 +9,9 @@
 namespace gazelod::gaze {
 namespace {
 
-bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
+bool is_space(char c) {
+  return c == ' ' || c == '\t' || c == '\r' || c == '\n';
+}
 
 std::string_view trim(std::string_view s, std::size_t& offset) {
   std::size_t b = 0;
@@ -57,8 +60,8 @@ bool CsvCursor::read_line() {
 
 void CsvCursor::fail_no_header() const {
   if (bytes_ == 0) throw TraceError({file_, 0, 0, "empty file (0 bytes): no header row"});
-  throw TraceError({file_, 0, 0,
-                    "no header row: the file's " + std::to_string(line_) + " line(s) are all blank or comments"});
+  throw TraceError(
+      {file_, 0, 0, "no header row: the file's " + std::to_string(line_) + " line(s) are all blank or comments"});
 }
 
 bool CsvCursor::next_row() {
@@ -116,8 +119,8 @@ void CsvCursor::fail(std::size_t column, const std::string& message) const {
 const CsvField& CsvCursor::field(std::size_t index, std::string_view name) const {
   if (index >= fields_.size()) {
     const std::size_t col = buffer_.size() + 1;
-    fail(col, "missing field for column '" + std::string(name) + "' (row has " +
-                  std::to_string(fields_.size()) + " fields)");
+    fail(col, "missing field for column '" + std::string(name) + "' (row has " + std::to_string(fields_.size()) +
+                  " fields)");
   }
   return fields_[index];
 }
@@ -126,8 +129,7 @@ bool CsvCursor::is_empty(std::size_t index) const {
   return index >= fields_.size() || fields_[index].text.empty();
 }
 
-std::optional<double> CsvCursor::number_or_missing(std::size_t index,
-                                                   std::string_view name) const {
+std::optional<double> CsvCursor::number_or_missing(std::size_t index, std::string_view name) const {
   const CsvField& f = field(index, name);
   if (f.text.empty()) return std::nullopt;
   double v = 0.0;
@@ -135,8 +137,7 @@ std::optional<double> CsvCursor::number_or_missing(std::size_t index,
   auto [p, ec] = std::from_chars(f.text.data(), end, v);
   if (ec == std::errc::result_out_of_range)
     fail(f.column, std::string(name) + ": " + quoted(f.text) + " is out of range");
-  if (ec != std::errc{} || p != end)
-    fail(f.column, std::string(name) + ": " + quoted(f.text) + " is not a number");
+  if (ec != std::errc{} || p != end) fail(f.column, std::string(name) + ": " + quoted(f.text) + " is not a number");
   if (std::isnan(v)) return std::nullopt;
   if (!std::isfinite(v)) fail(f.column, std::string(name) + ": infinite value");
   return v;
@@ -158,8 +159,7 @@ std::int64_t CsvCursor::integer(std::size_t index, std::string_view name) const 
   if (f.text.empty()) fail(f.column, std::string(name) + ": empty field, expected an integer");
   if (ec == std::errc::result_out_of_range)
     fail(f.column, std::string(name) + ": " + quoted(f.text) + " is out of range");
-  if (ec != std::errc{} || p != end)
-    fail(f.column, std::string(name) + ": " + quoted(f.text) + " is not an integer");
+  if (ec != std::errc{} || p != end) fail(f.column, std::string(name) + ": " + quoted(f.text) + " is not an integer");
   return v;
 }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Line-at-a-time CSV reading shared by the trace reader and the importers: one reused line
 // buffer (streaming, a one-hour trace never sits in memory), field splitting that remembers
 // each field's column, number parsing with errors that name file:line:column, and the

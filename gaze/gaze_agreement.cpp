@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "gaze/gaze_agreement.hpp"
 
 #include <stdexcept>
@@ -18,21 +19,23 @@ std::size_t count_overlapped(const Overlaps& events) {
 
 }  // namespace
 
-EventAgreement compare_events(std::span<const std::uint32_t> ours,
-                              std::span<const std::uint32_t> reference) {
+EventAgreement compare_events(std::span<const std::uint32_t> ours, std::span<const std::uint32_t> reference) {
   if (ours.size() != reference.size())
-    throw std::invalid_argument("compare_events: " + std::to_string(ours.size()) +
-                                " samples of ours, " + std::to_string(reference.size()) +
-                                " of the reference");
+    throw std::invalid_argument("compare_events: " + std::to_string(ours.size()) + " samples of ours, " +
+                                std::to_string(reference.size()) + " of the reference");
   EventAgreement a;
   ConfusionCounts& c = a.samples;
   Overlaps ours_events, reference_events;
   for (std::size_t i = 0; i < ours.size(); ++i) {
     const bool o = ours[i] != 0, r = reference[i] != 0;
-    if (o && r) ++c.both;
-    else if (o) ++c.ours_only;
-    else if (r) ++c.reference_only;
-    else ++c.neither;
+    if (o && r)
+      ++c.both;
+    else if (o)
+      ++c.ours_only;
+    else if (r)
+      ++c.reference_only;
+    else
+      ++c.neither;
     if (o) ours_events[ours[i]] |= r;
     if (r) reference_events[reference[i]] |= o;
   }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Agreement of two per-sample event classifications of one trace: gazelod's classifier
 // ("ours") against a reference (Pupil Cloud's own `fixation id` / `blink id`). Plain data in
 // and out; `gazelod trace stats` calls it (trace_stats.hpp).
@@ -17,7 +18,7 @@
 namespace gazelod::gaze {
 
 struct ConfusionCounts {
-  std::size_t both = 0;            // in an event for both
+  std::size_t both = 0;  // in an event for both
   std::size_t ours_only = 0;
   std::size_t reference_only = 0;
   std::size_t neither = 0;
@@ -26,7 +27,7 @@ struct ConfusionCounts {
 
 struct EventAgreement {
   ConfusionCounts samples;
-  double agreement = 0.0;        // (both + neither) / total; 0 when there are no samples
+  double agreement = 0.0;  // (both + neither) / total; 0 when there are no samples
   // nullopt when chance agreement is 1 (both sides put every sample in the same class), where
   // kappa is 0 / 0; never NaN.
   std::optional<double> kappa;
@@ -38,7 +39,6 @@ struct EventAgreement {
 // ours[i], reference[i]: the event id of sample i, 0 = in no such event; the samples of one
 // event share its id (ids need not be contiguous or ordered). Throws std::invalid_argument
 // when the lengths differ.
-EventAgreement compare_events(std::span<const std::uint32_t> ours,
-                              std::span<const std::uint32_t> reference);
+EventAgreement compare_events(std::span<const std::uint32_t> ours, std::span<const std::uint32_t> reference);
 
 }  // namespace gazelod::gaze

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "gaze/gaze_conditioner.hpp"
 
 #include "gaze/angles.hpp"
@@ -15,7 +16,7 @@ namespace {
 constexpr double kSPerNs = 1e-9;
 constexpr std::size_t kMinVelocitySamples = 3;  // a slope from fewer is a two-sample difference
 constexpr std::size_t kMinPursuitSamples = 5;   // residuals need a few degrees of freedom
-constexpr double kNoiseTau_s = 2.0;              // averaging time of the long-run noise level
+constexpr double kNoiseTau_s = 2.0;             // averaging time of the long-run noise level
 // The carried test's window: most fixations are shorter (Rayner 1998); a long one is judged on
 // its latest second, so a head that stops moving is noticed.
 constexpr std::int64_t kCarriedWindowNs = 1'000'000'000;
@@ -95,10 +96,14 @@ ConditionerConfig sanitized(ConditionerConfig c) {
 
 const char* to_string(EyeMotion motion) {
   switch (motion) {
-    case EyeMotion::fixation: return "fixation";
-    case EyeMotion::saccade: return "saccade";
-    case EyeMotion::pursuit: return "pursuit";
-    case EyeMotion::loss: return "loss";
+    case EyeMotion::fixation:
+      return "fixation";
+    case EyeMotion::saccade:
+      return "saccade";
+    case EyeMotion::pursuit:
+      return "pursuit";
+    case EyeMotion::loss:
+      return "loss";
   }
   return "unknown";
 }
@@ -107,12 +112,12 @@ const char* to_string(EyeMotion motion) {
 // (atan2, radians) about the newest direction, against time in seconds from the newest sample.
 struct GazeConditioner::Fit {
   std::size_t n = 0;
-  double span_s = 0.0;         // newest - oldest sample time
+  double span_s = 0.0;  // newest - oldest sample time
   glm::dvec3 ref{0.0, 0.0, -1.0}, e1{1.0, 0.0, 0.0}, e2{0.0, 1.0, 0.0};
-  glm::dvec2 slope{0.0};       // rad/s along e1, e2
-  glm::dvec2 at_newest{0.0};   // fitted angles at the newest sample's time, rad
-  double ctt = 0.0;            // sum of squared time deviations, s^2
-  double resid_var = 0.0;      // residual variance per component, rad^2 (0 unless n > 2)
+  glm::dvec2 slope{0.0};                                      // rad/s along e1, e2
+  glm::dvec2 at_newest{0.0};                                  // fitted angles at the newest sample's time, rad
+  double ctt = 0.0;                                           // sum of squared time deviations, s^2
+  double resid_var = 0.0;                                     // residual variance per component, rad^2 (0 unless n > 2)
   double slope_se = std::numeric_limits<double>::infinity();  // standard error per component
   bool ok = false;
 
@@ -146,9 +151,14 @@ GazeConditioner::Fit GazeConditioner::fit_newest(std::size_t count) const noexce
     const Entry& e = newest(i);
     const double t = static_cast<double>(e.t_ns - last.t_ns) * kSPerNs;
     const glm::dvec2 a = angular_offset_rad(e.world, f.ref, f.e1, f.e2);
-    st += t; sx += a.x; sy += a.y;
-    stt += t * t; stx += t * a.x; sty += t * a.y;
-    sxx += a.x * a.x; syy += a.y * a.y;
+    st += t;
+    sx += a.x;
+    sy += a.y;
+    stt += t * t;
+    stx += t * a.x;
+    sty += t * a.y;
+    sxx += a.x * a.x;
+    syy += a.y * a.y;
   }
   const double n = static_cast<double>(count);
   const double mt = st / n, mx = sx / n, my = sy / n;
@@ -272,8 +282,7 @@ void GazeConditioner::push_valid(std::int64_t t_ns, const glm::dvec3& world, con
     omega_world_ = glm::dvec3(0.0);
     carried_ = carried_prior_ = false;
   }
-  const double dt_s =
-      segment_count_ > 0 ? static_cast<double>(sat_sub(t_ns, newest(0).t_ns)) * kSPerNs : 0.0;
+  const double dt_s = segment_count_ > 0 ? static_cast<double>(sat_sub(t_ns, newest(0).t_ns)) * kSPerNs : 0.0;
   ring_[head_] = Entry{t_ns, world, head};
   head_ = (head_ + 1) % kCapacity;
   segment_count_ = std::min(segment_count_ + 1, kCapacity);
@@ -357,8 +366,7 @@ void GazeConditioner::push_valid(std::int64_t t_ns, const glm::dvec3& world, con
     if (prev != EyeMotion::pursuit) {
       omega_world_ = om;
     } else {
-      const double a =
-          ema_alpha(dt_s, static_cast<double>(config_.pursuit_velocity_tau_ns) * kSPerNs);
+      const double a = ema_alpha(dt_s, static_cast<double>(config_.pursuit_velocity_tau_ns) * kSPerNs);
       omega_world_ += a * (om - omega_world_);
     }
     if (!finite3(omega_world_)) omega_world_ = glm::dvec3(0.0);
@@ -378,12 +386,10 @@ void GazeConditioner::push_valid(std::int64_t t_ns, const glm::dvec3& world, con
       }
     } else {
       fixation_n_ += 1.0;
-      const double a = std::max(
-          1.0 / fixation_n_,
-          ema_alpha(dt_s, static_cast<double>(config_.fixation_smoothing_tau_ns) * kSPerNs));
+      const double a = std::max(1.0 / fixation_n_,
+                                ema_alpha(dt_s, static_cast<double>(config_.fixation_smoothing_tau_ns) * kSPerNs));
       glm::dvec3 next;
-      if (normalized_dir(slerp_direction(est_world_, world, std::clamp(a, 0.0, 1.0)), next))
-        est_world_ = next;
+      if (normalized_dir(slerp_direction(est_world_, world, std::clamp(a, 0.0, 1.0)), next)) est_world_ = next;
     }
     // Still in the head rather than in the world (the eyes carried by a moving head)? The
     // evidence grows with the phase, so it is taken over the whole fixation (up to
@@ -411,8 +417,7 @@ void GazeConditioner::push_valid(std::int64_t t_ns, const glm::dvec3& world, con
   have_estimate_ = true;
 }
 
-ConditionedGaze GazeConditioner::at(std::int64_t display_t_ns,
-                                    const glm::dquat& head_at_display) noexcept {
+ConditionedGaze GazeConditioner::at(std::int64_t display_t_ns, const glm::dquat& head_at_display) noexcept {
   have_display_ = true;
   last_display_t_ns_ = display_t_ns;
   ConditionedGaze g;
@@ -502,8 +507,7 @@ ConditionedGaze GazeConditioner::at(std::int64_t display_t_ns,
     }
   }
   g.suppressed = motion_ == EyeMotion::saccade || motion_ == EyeMotion::loss ||
-                 (have_saccade_ &&
-                  sat_sub(display_t_ns, saccade_last_t_ns_) <= config_.post_saccade_suppression_ns);
+                 (have_saccade_ && sat_sub(display_t_ns, saccade_last_t_ns_) <= config_.post_saccade_suppression_ns);
   return g;
 }
 

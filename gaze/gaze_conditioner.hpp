@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Gaze conditioning for the frame loop: raw tracker samples in, one clean gaze estimate per
 // frame out (docs/gaze.md, "Conditioning").
 //
@@ -174,7 +175,7 @@ struct ConditionerConfig {
 };
 
 struct ConditionedGaze {
-  bool valid = false;                   // false: no usable gaze (never seen, lost too long, or all input bad)
+  bool valid = false;  // false: no usable gaze (never seen, lost too long, or all input bad)
   EyeMotion motion = EyeMotion::loss;
   glm::dvec3 direction_world{0, 0, -1};  // predicted to the display time, unit
   glm::dvec3 direction_head{0, 0, -1};   // the same in the head at the display time (head_at_display^-1 * world)
@@ -185,7 +186,8 @@ struct ConditionedGaze {
   bool carried = false;
   double uncertainty_deg = 0.0;  // angular uncertainty of direction_world (accuracy, age, speed), capped
   std::int64_t sample_t_ns = 0;  // newest valid sample used (0: none)
-  bool suppressed = false;  // in a saccade or blink/loss, or within post_saccade_suppression after a saccade (false when !valid)
+  bool suppressed =
+      false;  // in a saccade or blink/loss, or within post_saccade_suppression after a saccade (false when !valid)
   std::int64_t bad_samples = 0;  // NaN / zero / non-finite / backwards / far-future samples refused so far
 };
 
@@ -228,11 +230,11 @@ class GazeConditioner {
   std::size_t segment_count_ = 0;  // newest samples since the last gap / invalid sample / reset
   std::size_t phase_count_ = 0;    // newest samples since the current fixation/pursuit phase began
 
-  bool have_seen_ = false;       // any sample pushed (for repeats)
+  bool have_seen_ = false;  // any sample pushed (for repeats)
   std::int64_t last_seen_t_ns_ = 0;
-  bool have_time_ = false;       // any sample accepted (valid or not)
-  std::int64_t last_t_ns_ = 0;   // newest accepted sample (valid or not)
-  bool have_valid_ = false;      // a valid sample since the last reset
+  bool have_time_ = false;      // any sample accepted (valid or not)
+  std::int64_t last_t_ns_ = 0;  // newest accepted sample (valid or not)
+  bool have_valid_ = false;     // a valid sample since the last reset
   std::int64_t last_valid_t_ns_ = 0;
   glm::dvec3 last_raw_world_{0.0, 0.0, -1.0};
   glm::dquat last_head_{1.0, 0.0, 0.0, 0.0};
@@ -243,15 +245,15 @@ class GazeConditioner {
   bool have_estimate_ = false;
   // The estimate at the newest valid sample: fixation mean, pursuit fit, or held.
   glm::dvec3 est_world_{0.0, 0.0, -1.0};
-  glm::dvec3 omega_world_{0.0};  // pursuit only
-  bool carried_ = false;         // fixation: still in the head, not in the world
-  bool carried_prior_ = false;   // the fixation before the latest saccade was carried
+  glm::dvec3 omega_world_{0.0};          // pursuit only
+  bool carried_ = false;                 // fixation: still in the head, not in the world
+  bool carried_prior_ = false;           // the fixation before the latest saccade was carried
   glm::dvec3 est_head_{0.0, 0.0, -1.0};  // carried: the eye-in-head mean
-  double speed_deg_s_ = 0.0;     // eye-in-world speed of the current motion (0 in fixation)
-  double fixation_n_ = 0.0;      // samples in the fixation mean so far
-  double noise_var_ = 0.0;       // long-run residual variance per axis in fixation, rad^2 (from precision_deg at first)
+  double speed_deg_s_ = 0.0;             // eye-in-world speed of the current motion (0 in fixation)
+  double fixation_n_ = 0.0;              // samples in the fixation mean so far
+  double noise_var_ = 0.0;  // long-run residual variance per axis in fixation, rad^2 (from precision_deg at first)
   bool have_saccade_ = false;
-  std::int64_t saccade_last_t_ns_ = 0;  // newest saccade-labelled sample
+  std::int64_t saccade_last_t_ns_ = 0;   // newest saccade-labelled sample
   std::int64_t saccade_start_t_ns_ = 0;  // first sample of the saccade in progress
   std::int64_t bad_samples_ = 0;
 };

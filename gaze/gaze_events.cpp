@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "gaze/gaze_events.hpp"
 
 #include "gaze/angles.hpp"
@@ -8,11 +9,8 @@ EventTracker::Finished EventTracker::close() {
   Finished f;
   if (run_ == GazeLabel::saccade) {
     f.saccade = SaccadeEvent{first_.sample.t_ns, last_.sample.t_ns,
-                             angle_between_rad(first_.sample.direction, last_.sample.direction) *
-                                 kDegPerRad,
-                             peak_};
-  } else if (run_ == GazeLabel::fixation &&
-             last_.sample.t_ns - first_.sample.t_ns >= options_.min_fixation_ns) {
+                             angle_between_rad(first_.sample.direction, last_.sample.direction) * kDegPerRad, peak_};
+  } else if (run_ == GazeLabel::fixation && last_.sample.t_ns - first_.sample.t_ns >= options_.min_fixation_ns) {
     f.fixation = FixationEvent{first_.sample.t_ns, last_.sample.t_ns};
   }
   run_ = GazeLabel::unknown;
@@ -32,6 +30,8 @@ EventTracker::Finished EventTracker::push(const LabeledSample& s) {
   return f;
 }
 
-EventTracker::Finished EventTracker::finish() { return close(); }
+EventTracker::Finished EventTracker::finish() {
+  return close();
+}
 
 }  // namespace gazelod::gaze

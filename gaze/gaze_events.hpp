@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Groups labeled samples into fixation and saccade events (streaming), for statistics and
 // for the replay source's "never interpolate across a saccade" rule.
 #pragma once

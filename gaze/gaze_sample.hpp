@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Gaze and head samples: the plain data every gaze source, trace file and filter exchanges.
 // Axes are OpenXR's: in head space -Z is forward, +Y up, +X right. Times are nanoseconds on
 // the host clock the frame loop uses.
@@ -15,7 +16,7 @@ struct GazeSample {
   glm::dvec3 direction{0.0, 0.0, -1.0};  // unit vector, head space
   glm::dvec3 origin_m{0.0, 0.0, 0.0};    // cyclopean eye position, head space
   bool valid = false;
-  float confidence = 0.0f;               // 0..1
+  float confidence = 0.0f;  // 0..1
 };
 
 struct HeadSample {

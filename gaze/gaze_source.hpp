@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The one small interface every gaze source implements (trace replay, HID tracker,
 // simulator, OpenXR eye-gaze action). Sources never block the caller's frame loop.
 #pragma once

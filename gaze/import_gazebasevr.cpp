@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "gaze/import_gazebasevr.hpp"
 
 #include "gaze/trace_reader.hpp"
@@ -15,8 +16,7 @@ GazeBaseVrReader::GazeBaseVrReader(std::istream& in, std::string file, ReadOptio
   std::string missing;
   for (const char* name : {"n", "x", "y"})
     if (!h.find(name)) missing += std::string(missing.empty() ? "" : ",") + name;
-  if (!missing.empty())
-    cursor_.fail(0, "missing required GazeBaseVR column(s): " + missing);
+  if (!missing.empty()) cursor_.fail(0, "missing required GazeBaseVR column(s): " + missing);
   n_ = *h.find("n");
   x_ = *h.find("x");
   y_ = *h.find("y");
@@ -26,8 +26,7 @@ GazeBaseVrReader::GazeBaseVrReader(std::istream& in, std::string file, ReadOptio
 void GazeBaseVrReader::parse_row(TraceRecord& out) {
   const CsvCursor& c = cursor_;
   if (c.fields().size() != fields_)
-    c.fail(0, "row has " + std::to_string(c.fields().size()) + " fields, header has " +
-                  std::to_string(fields_));
+    c.fail(0, "row has " + std::to_string(c.fields().size()) + " fields, header has " + std::to_string(fields_));
   const double n_ms = c.number(n_, "n");
   const auto t_ns = seconds_to_ns(n_ms * 1e-3);
   if (!t_ns) c.fail(c.fields()[n_].column, "n: out of range");

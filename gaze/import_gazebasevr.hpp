@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Importer for GazeBaseVR recordings (Lohr et al. 2023, Sci Data 10:177; 250 Hz, SRanipal on
 // an HTC Vive Pro Eye). Columns used: n (ms since recording start), x, y (cyclopean gaze, deg
 // of visual angle: x horizontal positive right, y vertical positive up). lx, ly, rx, ry (per-eye

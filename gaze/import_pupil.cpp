@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "gaze/import_pupil.hpp"
 
 #include <glm/geometric.hpp>
@@ -18,8 +19,7 @@ glm::dvec3 pupil_camera_to_openxr_m(const glm::dvec3& p_mm) {
   return glm::dvec3(p_mm.x, -p_mm.y, -p_mm.z) * 1e-3;
 }
 
-PupilReader::PupilReader(std::istream& in, std::string file, ReadOptions options,
-                         PupilImportOptions pupil)
+PupilReader::PupilReader(std::istream& in, std::string file, ReadOptions options, PupilImportOptions pupil)
     : CsvRecordStream(in, std::move(file), options), pupil_(pupil) {
   if (!cursor_.next_row()) cursor_.fail_no_header();
   const CsvHeader h(cursor_);
@@ -35,8 +35,7 @@ PupilReader::PupilReader(std::istream& in, std::string file, ReadOptions options
   gaze_ = {need(kGaze[0]), need(kGaze[1]), need(kGaze[2])};
   if (!missing.empty()) {
     std::string msg = "missing required Pupil gaze_positions.csv column(s): " + missing;
-    if (h.find("norm_pos_x"))
-      msg += " (a 2D-only export: norm_pos needs camera intrinsics, use a 3D gaze mapper)";
+    if (h.find("norm_pos_x")) msg += " (a 2D-only export: norm_pos needs camera intrinsics, use a 3D gaze mapper)";
     cursor_.fail(0, msg);
   }
   auto group = [&](const char* const names[3]) -> std::optional<Cols3> {
@@ -49,8 +48,7 @@ PupilReader::PupilReader(std::istream& in, std::string file, ReadOptions options
   time_field_ = t_;
 }
 
-std::optional<glm::dvec3> PupilReader::point_mm(const Cols3& cols,
-                                                const char* const names[3]) const {
+std::optional<glm::dvec3> PupilReader::point_mm(const Cols3& cols, const char* const names[3]) const {
   glm::dvec3 p;
   for (int k = 0; k < 3; ++k) {
     auto v = cursor_.number_or_missing(cols[static_cast<std::size_t>(k)], names[k]);
@@ -63,8 +61,7 @@ std::optional<glm::dvec3> PupilReader::point_mm(const Cols3& cols,
 void PupilReader::parse_row(TraceRecord& out) {
   const CsvCursor& c = cursor_;
   if (c.fields().size() != fields_)
-    c.fail(0, "row has " + std::to_string(c.fields().size()) + " fields, header has " +
-                  std::to_string(fields_));
+    c.fail(0, "row has " + std::to_string(c.fields().size()) + " fields, header has " + std::to_string(fields_));
   const auto t_ns = seconds_to_ns(c.number(t_, "gaze_timestamp"));
   if (!t_ns) c.fail(c.fields()[t_].column, "gaze_timestamp: out of range");
   out.gaze.t_ns = *t_ns;
@@ -90,8 +87,7 @@ void PupilReader::parse_row(TraceRecord& out) {
   const glm::dvec3 d = pupil_camera_to_openxr_m(*target - origin_mm);
   const double len = glm::length(d);
   if (!(len > 1e-9)) {
-    if (conf >= pupil_.min_confidence)
-      c.fail(c.fields()[gaze_[0]].column, "gaze point coincides with the eye centre");
+    if (conf >= pupil_.min_confidence) c.fail(c.fields()[gaze_[0]].column, "gaze point coincides with the eye centre");
     return;
   }
   out.gaze.direction = d / len;

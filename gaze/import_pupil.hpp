@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Importer for Pupil Labs (Pupil Core / Pupil Player) gaze_positions.csv exports.
 // Columns used: gaze_timestamp (s, Pupil time), confidence (0..1), gaze_point_3d_x/y/z (mm,
 // 3D world-camera space) and, when present, eye_center0_3d_* / eye_center1_3d_* (mm).
@@ -27,8 +28,7 @@ struct PupilImportOptions {
 
 class PupilReader : public CsvRecordStream {
  public:
-  PupilReader(std::istream& in, std::string file, ReadOptions options = {},
-              PupilImportOptions pupil = {});
+  PupilReader(std::istream& in, std::string file, ReadOptions options = {}, PupilImportOptions pupil = {});
   bool has_head() const override { return false; }
 
  protected:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "gaze/import_pupil_cloud.hpp"
 
 #include "gaze/trace_reader.hpp"
@@ -23,8 +24,7 @@ constexpr const char* kBlinkEnd = "end timestamp [ns]";
 
 void check_field_count(const CsvCursor& c, std::size_t header_fields) {
   if (c.fields().size() != header_fields)
-    c.fail(0, "row has " + std::to_string(c.fields().size()) + " fields, header has " +
-                  std::to_string(header_fields));
+    c.fail(0, "row has " + std::to_string(c.fields().size()) + " fields, header has " + std::to_string(header_fields));
 }
 
 // Unix nanoseconds: non-negative, so differences between two of them cannot overflow.
@@ -54,8 +54,7 @@ PupilCloudBlinks read_pupil_cloud_blinks(std::istream& in, const std::string& fi
   while (c.next_row()) {
     check_field_count(c, h.size());
     PupilCloudBlink b{unix_ns(c, start, kBlinkStart), unix_ns(c, end, kBlinkEnd)};
-    if (b.end_ns < b.start_ns)
-      c.fail(c.fields()[end].column, std::string(kBlinkEnd) + ": before " + kBlinkStart);
+    if (b.end_ns < b.start_ns) c.fail(c.fields()[end].column, std::string(kBlinkEnd) + ": before " + kBlinkStart);
     out.intervals.push_back(b);
   }
   std::stable_sort(out.intervals.begin(), out.intervals.end(),
@@ -74,8 +73,7 @@ std::optional<std::string> pupil_cloud_blinks_path(const std::string& gaze_path)
   return std::nullopt;
 }
 
-PupilCloudReader::PupilCloudReader(std::istream& in, std::string file, ReadOptions options,
-                                   PupilCloudBlinks blinks)
+PupilCloudReader::PupilCloudReader(std::istream& in, std::string file, ReadOptions options, PupilCloudBlinks blinks)
     : CsvRecordStream(in, std::move(file), options), blinks_(std::move(blinks)) {
   if (!cursor_.next_row()) cursor_.fail_no_header();
   const CsvHeader h(cursor_);
@@ -100,8 +98,7 @@ std::uint32_t PupilCloudReader::event_id(const std::optional<std::size_t>& col, 
   if (!col || cursor_.is_empty(*col)) return 0;
   const std::int64_t id = cursor_.integer(*col, name);
   if (id < 1 || id > std::numeric_limits<std::uint32_t>::max())
-    cursor_.fail(cursor_.fields()[*col].column,
-                 std::string(name) + ": must be empty or an integer in [1, 4294967295]");
+    cursor_.fail(cursor_.fields()[*col].column, std::string(name) + ": must be empty or an integer in [1, 4294967295]");
   return static_cast<std::uint32_t>(id);
 }
 
@@ -109,8 +106,7 @@ bool PupilCloudReader::in_blink(std::int64_t t_unix_ns) {
   // Intervals sorted by start, samples in increasing time: one pass over both.
   const auto& v = blinks_.intervals;
   while (next_blink_ < v.size() && v[next_blink_].start_ns <= t_unix_ns) {
-    blink_end_max_ns_ = any_blink_started_ ? std::max(blink_end_max_ns_, v[next_blink_].end_ns)
-                                           : v[next_blink_].end_ns;
+    blink_end_max_ns_ = any_blink_started_ ? std::max(blink_end_max_ns_, v[next_blink_].end_ns) : v[next_blink_].end_ns;
     any_blink_started_ = true;
     ++next_blink_;
   }
@@ -130,9 +126,8 @@ void PupilCloudReader::parse_row(TraceRecord& out) {
   if (recording_id_) {
     const std::string_view id = c.field(*recording_id_, kRecordingId).text;
     if (have_first_ && id != recording_id_value_)
-      c.fail(c.fields()[*recording_id_].column,
-             std::string(kRecordingId) + ": changes from '" + recording_id_value_ + "' to '" +
-                 std::string(id) + "': export one recording per file");
+      c.fail(c.fields()[*recording_id_].column, std::string(kRecordingId) + ": changes from '" + recording_id_value_ +
+                                                    "' to '" + std::string(id) + "': export one recording per file");
   }
   bool worn = true;
   if (worn_) {

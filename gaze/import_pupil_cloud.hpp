@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Importer for Pupil Cloud's gaze.csv export (Pupil Invisible and Pupil Neon, "Timeseries
 // Data"): `section id,recording id,timestamp [ns],gaze x [px],gaze y [px],worn,fixation id,
 // blink id,azimuth [deg],elevation [deg]`. Columns are found by name; Neon exports may add
@@ -45,7 +46,7 @@ struct PupilCloudBlink {
 };
 
 struct PupilCloudBlinks {
-  std::string file;                       // where they came from ("" = none)
+  std::string file;                        // where they came from ("" = none)
   std::vector<PupilCloudBlink> intervals;  // sorted by start
 };
 
@@ -64,8 +65,7 @@ struct PupilCloudEventIds {
 
 class PupilCloudReader : public CsvRecordStream {
  public:
-  PupilCloudReader(std::istream& in, std::string file, ReadOptions options = {},
-                   PupilCloudBlinks blinks = {});
+  PupilCloudReader(std::istream& in, std::string file, ReadOptions options = {}, PupilCloudBlinks blinks = {});
   bool has_head() const override { return false; }
 
   // Pupil Cloud's ids of the record next() returned last.
@@ -83,7 +83,7 @@ class PupilCloudReader : public CsvRecordStream {
   std::uint32_t event_id(const std::optional<std::size_t>& col, const char* name) const;
 
   PupilCloudBlinks blinks_;
-  std::size_t next_blink_ = 0;        // first interval not yet started
+  std::size_t next_blink_ = 0;         // first interval not yet started
   std::int64_t blink_end_max_ns_ = 0;  // latest end among the started intervals
   bool any_blink_started_ = false;
   std::size_t samples_in_blinks_ = 0;

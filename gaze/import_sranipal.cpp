@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "gaze/import_sranipal.hpp"
 
 #include "gaze/angles.hpp"
@@ -38,7 +39,8 @@ std::optional<std::int64_t> dotnet_ticks_to_unix_ns(std::int64_t ticks) {
 glm::dquat unity_euler_deg_to_openxr(const glm::dvec3& euler_deg) {
   const auto about = [](double deg, const glm::dvec3& axis) { return glm::angleAxis(deg * kRadPerDeg, axis); };
   // Unity applies z first, then x, then y (each about the world's axes).
-  const glm::dquat unity = about(euler_deg.y, {0, 1, 0}) * about(euler_deg.x, {1, 0, 0}) * about(euler_deg.z, {0, 0, 1});
+  const glm::dquat unity =
+      about(euler_deg.y, {0, 1, 0}) * about(euler_deg.x, {1, 0, 0}) * about(euler_deg.z, {0, 0, 1});
   return glm::normalize(glm::dquat(unity.w, -unity.x, -unity.y, unity.z));
 }
 
@@ -61,8 +63,9 @@ SranipalReader::SranipalReader(std::istream& in, std::string file, ReadOptions o
   if (!missing.empty()) {
     // One column holding the names: the header is not split on the logger's semicolons.
     if (h.size() == 1 && cursor_.fields()[0].text.find("time(100ns),") != std::string_view::npos)
-      cursor_.fail(0, "an SRanipal (HTC Vive Pro Eye) header separated by commas: this layout is read with the "
-                      "Unity logger's semicolons");
+      cursor_.fail(0,
+                   "an SRanipal (HTC Vive Pro Eye) header separated by commas: this layout is read with the "
+                   "Unity logger's semicolons");
     cursor_.fail(0, "missing required SRanipal (HTC Vive Pro Eye) column(s): " + missing);
   }
   // Optional groups: used only when every column of the group is there.
@@ -104,14 +107,15 @@ void SranipalReader::parse_row(TraceRecord& out) {
   int eyes = 0, origins = 0;
   for (std::size_t e = 0; e < 2; ++e) {
     const std::int64_t bits = c.integer(valid_[e], kValid[e]);
-    if (bits < 0 || bits > 31) c.fail(c.fields()[valid_[e]].column, std::string(kValid[e]) + ": must be in [0, 31] (validity bits)");
+    if (bits < 0 || bits > 31)
+      c.fail(c.fields()[valid_[e]].column, std::string(kValid[e]) + ": must be in [0, 31] (validity bits)");
     if (!(bits & kDirectionValid)) continue;
     const glm::dvec3 d = vec(direction_[e], kDirection[e]);
     const double length = glm::length(d);
     if (length == 0.0) continue;  // flagged, but no vector: the eye is lost all the same
     if (std::fabs(length - 1.0) > 0.05)
-      c.fail(c.fields()[direction_[e][0]].column,
-             std::string(kDirection[e][0]).substr(0, 13) + ": not a unit vector (length " + std::to_string(length) + ")");
+      c.fail(c.fields()[direction_[e][0]].column, std::string(kDirection[e][0]).substr(0, 13) +
+                                                      ": not a unit vector (length " + std::to_string(length) + ")");
     direction_sum += sranipal_to_openxr(d / length);
     ++eyes;
     if (origin_ && (bits & kOriginValid)) {
@@ -119,7 +123,8 @@ void SranipalReader::parse_row(TraceRecord& out) {
       // An eye sits a few centimetres from the tracker; a metre away is no eye position.
       for (std::size_t k = 0; k < 3; ++k)
         if (std::fabs(o[static_cast<glm::length_t>(k)]) > kMaxOriginMm)
-          c.fail(c.fields()[(*origin_)[e][k]].column, std::string(kOrigin[e][k]) + ": beyond 1000 mm of the eye tracker");
+          c.fail(c.fields()[(*origin_)[e][k]].column,
+                 std::string(kOrigin[e][k]) + ": beyond 1000 mm of the eye tracker");
       origin_sum_mm += sranipal_to_openxr(o);
       ++origins;
     }

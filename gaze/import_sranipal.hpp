@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Importer for HTC Vive Pro Eye recordings logged from Unity through HTC's SRanipal SDK: one
 // semicolon-separated row per eye-tracker sample (about 120 Hz), per-eye validity, gaze
 // direction and origin, and the headset's pose.
@@ -69,7 +70,9 @@ class SranipalReader : public CsvRecordStream {
 std::optional<std::int64_t> dotnet_ticks_to_unix_ns(std::int64_t ticks);
 
 // SRanipal's eye frame (+x left, +y up, +z forward) to OpenXR head axes.
-inline glm::dvec3 sranipal_to_openxr(const glm::dvec3& v) { return {-v.x, v.y, -v.z}; }
+inline glm::dvec3 sranipal_to_openxr(const glm::dvec3& v) {
+  return {-v.x, v.y, -v.z};
+}
 
 // Unity's Transform.eulerAngles (degrees; applied z, then x, then y) to the same rotation in
 // OpenXR's axes.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "gaze/ivt_classifier.hpp"
 
 #include "gaze/angles.hpp"
@@ -46,14 +47,18 @@ void IvtClassifier::emit_front(std::vector<LabeledSample>& out) {
       for (std::size_t j = lo; j <= hi; ++j) {
         const double t = static_cast<double>(window_[j].t_ns - c.t_ns) * 1e-9;
         const glm::dvec2 a = angular_offset_rad(window_[j].direction, cd, e1, e2);
-        st += t; sx += a.x; sy += a.y; stt += t * t; stx += t * a.x; sty += t * a.y;
+        st += t;
+        sx += a.x;
+        sy += a.y;
+        stt += t * t;
+        stx += t * a.x;
+        sty += t * a.y;
       }
       const double denom = n * stt - st * st;
       if (denom > 1e-18) {  // not all at the same time stamp
         const double vx = (n * stx - st * sx) / denom, vy = (n * sty - st * sy) / denom;
         ls.velocity_deg_s = std::hypot(vx, vy) * kDegPerRad;
-        ls.label = ls.velocity_deg_s > options_.saccade_threshold_deg_s ? GazeLabel::saccade
-                                                                         : GazeLabel::fixation;
+        ls.label = ls.velocity_deg_s > options_.saccade_threshold_deg_s ? GazeLabel::saccade : GazeLabel::fixation;
       }
     }
   }
@@ -67,8 +72,7 @@ void IvtClassifier::emit_front(std::vector<LabeledSample>& out) {
   }
 }
 
-std::vector<LabeledSample> classify_ivt(const std::vector<GazeSample>& samples,
-                                        IvtOptions options) {
+std::vector<LabeledSample> classify_ivt(const std::vector<GazeSample>& samples, IvtOptions options) {
   IvtClassifier c(options);
   std::vector<LabeledSample> out;
   out.reserve(samples.size());

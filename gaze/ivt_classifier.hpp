@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // I-VT fixation/saccade classification (Salvucci & Goldberg 2000), streaming.
 // Velocity at each sample is the least-squares slope of the angular position over a window of
 // up to 2k+1 neighbouring valid samples (a Savitzky-Golay first derivative): with k = 3 at
@@ -49,7 +50,6 @@ class IvtClassifier {
 };
 
 // Whole-vector convenience: one label per sample.
-std::vector<LabeledSample> classify_ivt(const std::vector<GazeSample>& samples,
-                                        IvtOptions options = {});
+std::vector<LabeledSample> classify_ivt(const std::vector<GazeSample>& samples, IvtOptions options = {});
 
 }  // namespace gazelod::gaze

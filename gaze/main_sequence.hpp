@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Main-sequence facts about saccades used to set and test the filters.
 //  - Duration grows about linearly with amplitude: D ~= 2.2 ms/deg * A + 21 ms for A in
 //    about 1..50 deg (Carpenter 1988, "Movements of the Eyes", 2nd ed.; Bahill, Clark & Stark
@@ -13,7 +14,9 @@
 namespace gazelod::gaze::main_sequence {
 
 // Typical saccade duration for an amplitude (Carpenter 1988), seconds.
-constexpr double duration_s(double amplitude_deg) { return 0.021 + 0.0022 * amplitude_deg; }
+constexpr double duration_s(double amplitude_deg) {
+  return 0.021 + 0.0022 * amplitude_deg;
+}
 
 // I-VT threshold commonly used for 250 Hz-class trackers (Olsen 2012).
 inline constexpr double kIvtThreshold_deg_s = 30.0;

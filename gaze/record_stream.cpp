@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "gaze/record_stream.hpp"
 
 #include <utility>
@@ -13,11 +14,9 @@ bool CsvRecordStream::next(TraceRecord& out) {
       TraceRecord rec;
       parse_row(rec);
       if (have_last_ && rec.gaze.t_ns < last_t_ns_) {
-        const std::size_t col = time_field_ < cursor_.fields().size()
-                                    ? cursor_.fields()[time_field_].column
-                                    : 0;
-        cursor_.fail(col, "time goes backwards: " + std::to_string(rec.gaze.t_ns) +
-                              " ns after " + std::to_string(last_t_ns_) + " ns");
+        const std::size_t col = time_field_ < cursor_.fields().size() ? cursor_.fields()[time_field_].column : 0;
+        cursor_.fail(col, "time goes backwards: " + std::to_string(rec.gaze.t_ns) + " ns after " +
+                              std::to_string(last_t_ns_) + " ns");
       }
       have_last_ = true;
       last_t_ns_ = rec.gaze.t_ns;

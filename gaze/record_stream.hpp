@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A stream of trace records read one at a time from a CSV file: gazelod's own format or an
 // imported layout. Strict mode throws TraceError at the first bad line; lenient mode skips bad
 // lines and lists them in skipped() (never silent). Time must never go backwards.

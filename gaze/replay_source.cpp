@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "gaze/replay_source.hpp"
 
 #include "gaze/angles.hpp"
@@ -14,8 +15,7 @@ ReplaySource::ReplaySource(std::vector<TraceRecord> records, ReplayOptions optio
     : records_(std::move(records)), options_(options) {
   for (std::size_t i = 1; i < records_.size(); ++i)
     if (records_[i].gaze.t_ns < records_[i - 1].gaze.t_ns)
-      throw std::invalid_argument("ReplaySource: record " + std::to_string(i) +
-                                  " is earlier than the one before it");
+      throw std::invalid_argument("ReplaySource: record " + std::to_string(i) + " is earlier than the one before it");
   labels_.resize(records_.size(), GazeLabel::unknown);
   IvtClassifier ivt(options_.ivt);
   std::vector<LabeledSample> out;
@@ -66,8 +66,8 @@ std::optional<GazeSample> ReplaySource::sample_at(std::int64_t t_ns) {
   if (a.valid && i + 1 < records_.size()) {
     const GazeSample& b = records_[i + 1].gaze;
     const std::int64_t span = b.t_ns - a.t_ns;
-    if (b.valid && span > 0 && span <= options_.max_interp_gap_ns && t > a.t_ns &&
-        labels_[i] != GazeLabel::saccade && labels_[i + 1] != GazeLabel::saccade) {
+    if (b.valid && span > 0 && span <= options_.max_interp_gap_ns && t > a.t_ns && labels_[i] != GazeLabel::saccade &&
+        labels_[i + 1] != GazeLabel::saccade) {
       const double f = static_cast<double>(t - a.t_ns) / static_cast<double>(span);
       GazeSample s = a;
       s.t_ns = t_ns;
@@ -102,8 +102,7 @@ std::optional<HeadSample> ReplaySource::head_at(std::int64_t t_ns) {
   if (a.has_head && a.head.valid && i + 1 < records_.size()) {
     const TraceRecord& b = records_[i + 1];
     const std::int64_t span = b.gaze.t_ns - a.gaze.t_ns;
-    if (b.has_head && b.head.valid && span > 0 && span <= options_.max_interp_gap_ns &&
-        t > a.gaze.t_ns) {
+    if (b.has_head && b.head.valid && span > 0 && span <= options_.max_interp_gap_ns && t > a.gaze.t_ns) {
       const double f = static_cast<double>(t - a.gaze.t_ns) / static_cast<double>(span);
       HeadSample h = a.head;
       h.t_ns = t_ns;

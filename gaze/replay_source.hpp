@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Trace replay as a GazeSource. The trace is loaded once (one copy in memory; reading it is
 // streaming) so that sample_at() never touches a file: it only searches and interpolates.
 //  - Between two valid samples less than max_interp_gap apart and neither labelled saccade
@@ -19,7 +20,7 @@
 namespace gazelod::gaze {
 
 struct ReplayOptions {
-  std::int64_t time_offset_ns = 0;             // host time = trace time + offset
+  std::int64_t time_offset_ns = 0;              // host time = trace time + offset
   std::int64_t max_interp_gap_ns = 25'000'000;  // no interpolation across dropped samples
   std::int64_t hold_max_ns = 150'000'000;       // hold-last-good bound
   IvtOptions ivt;                               // saccade labels: no interpolation across

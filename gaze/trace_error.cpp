@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "gaze/trace_error.hpp"
 
 #include <utility>
@@ -13,7 +14,6 @@ std::string TraceIssue::to_string() const {
   return s + ": " + message;
 }
 
-TraceError::TraceError(TraceIssue issue)
-    : std::runtime_error(issue.to_string()), issue_(std::move(issue)) {}
+TraceError::TraceError(TraceIssue issue) : std::runtime_error(issue.to_string()), issue_(std::move(issue)) {}
 
 }  // namespace gazelod::gaze

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Errors and skipped-line reports of the trace readers and importers: always with the file,
 // line and column, so a user can open the file at the spot.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Column names and version of gazelod's gaze-trace CSV format (spec: docs/gaze.md).
 // One place for the names so that writer, reader and importers cannot drift apart.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "gaze/trace_open.hpp"
 
 #include "gaze/import_gazebasevr.hpp"
@@ -122,7 +123,8 @@ PupilCloudBlinks blinks_beside(const std::string& gaze_path) {
   const auto path = pupil_cloud_blinks_path(gaze_path);
   struct stat st {};
   if (!path || ::stat(path->c_str(), &st) != 0) return {};  // no blinks file: none applied
-  if (!S_ISREG(st.st_mode)) throw TraceError({*path, 0, 0, "is not a regular file (the blinks file beside the gaze file)"});
+  if (!S_ISREG(st.st_mode))
+    throw TraceError({*path, 0, 0, "is not a regular file (the blinks file beside the gaze file)"});
   std::ifstream in(*path, std::ios::binary);
   if (!in) throw TraceError({*path, 0, 0, std::string("cannot open file for reading: ") + std::strerror(errno)});
   return read_pupil_cloud_blinks(in, *path);
@@ -131,20 +133,26 @@ PupilCloudBlinks blinks_beside(const std::string& gaze_path) {
 }  // namespace
 
 std::optional<TraceFormat> parse_trace_format(std::string_view name) {
-  for (auto f : {TraceFormat::gazelod, TraceFormat::gazebasevr, TraceFormat::pupil,
-                 TraceFormat::pupil_cloud, TraceFormat::sranipal, TraceFormat::automatic})
+  for (auto f : {TraceFormat::gazelod, TraceFormat::gazebasevr, TraceFormat::pupil, TraceFormat::pupil_cloud,
+                 TraceFormat::sranipal, TraceFormat::automatic})
     if (name == trace_format_name(f)) return f;
   return std::nullopt;
 }
 
 std::string_view trace_format_name(TraceFormat format) {
   switch (format) {
-    case TraceFormat::gazelod: return "gazelod";
-    case TraceFormat::gazebasevr: return "gazebasevr";
-    case TraceFormat::pupil: return "pupil";
-    case TraceFormat::pupil_cloud: return "pupil_cloud";
-    case TraceFormat::sranipal: return "sranipal";
-    case TraceFormat::automatic: return "auto";
+    case TraceFormat::gazelod:
+      return "gazelod";
+    case TraceFormat::gazebasevr:
+      return "gazebasevr";
+    case TraceFormat::pupil:
+      return "pupil";
+    case TraceFormat::pupil_cloud:
+      return "pupil_cloud";
+    case TraceFormat::sranipal:
+      return "sranipal";
+    case TraceFormat::automatic:
+      return "auto";
   }
   return "?";
 }
@@ -162,8 +170,7 @@ TraceFormat detect_trace_format(const std::vector<std::string>& header_columns, 
   return TraceFormat::gazelod;
 }
 
-std::unique_ptr<RecordStream> open_trace(const std::string& path, TraceFormat format,
-                                         ReadOptions options) {
+std::unique_ptr<RecordStream> open_trace(const std::string& path, TraceFormat format, ReadOptions options) {
   // What is at `path` first: a directory or a device opens, then reads as nothing (a
   // directory) or forever (/dev/zero). A pipe is read as a stream (lines are bounded).
   struct stat st {};
@@ -174,8 +181,7 @@ std::unique_ptr<RecordStream> open_trace(const std::string& path, TraceFormat fo
     throw TraceError({path, 0, 0, "is a device, not a trace file (give a regular file or a pipe)"});
   if (S_ISSOCK(st.st_mode)) throw TraceError({path, 0, 0, "is a socket, not a trace file"});
   auto file = std::make_unique<std::ifstream>(path, std::ios::binary);
-  if (!*file)
-    throw TraceError({path, 0, 0, std::string("cannot open file for reading: ") + std::strerror(errno)});
+  if (!*file) throw TraceError({path, 0, 0, std::string("cannot open file for reading: ") + std::strerror(errno)});
   auto input = std::make_unique<InputFile>(std::move(file));
   if (format == TraceFormat::automatic) format = sniff(input->buf);
   input->buf.rewind();
@@ -187,11 +193,11 @@ std::unique_ptr<RecordStream> open_trace(const std::string& path, TraceFormat fo
     case TraceFormat::pupil:
       return std::make_unique<OwningStream<PupilReader>>(std::move(input), path, options);
     case TraceFormat::pupil_cloud:
-      return std::make_unique<OwningStream<PupilCloudReader>>(std::move(input), path, options,
-                                                              blinks_beside(path));
+      return std::make_unique<OwningStream<PupilCloudReader>>(std::move(input), path, options, blinks_beside(path));
     case TraceFormat::sranipal:
       return std::make_unique<OwningStream<SranipalReader>>(std::move(input), path, options);
-    case TraceFormat::automatic: break;  // replaced by the detected layout above
+    case TraceFormat::automatic:
+      break;  // replaced by the detected layout above
   }
   throw TraceError({path, 0, 0, "unknown trace format"});
 }

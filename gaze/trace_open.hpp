@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Opening a trace file in any supported layout as a RecordStream (the stream owns the file).
 #pragma once
 
@@ -33,8 +34,7 @@ TraceFormat detect_trace_format(const std::vector<std::string>& header_columns, 
 // reads at most 2 * kMaxLineBytes ahead to find the header and reads them again (a pipe too).
 // pupil_cloud also reads the blinks file beside `path` when there is one
 // (pupil_cloud_blinks_path in import_pupil_cloud.hpp; errors name that file).
-std::unique_ptr<RecordStream> open_trace(const std::string& path, TraceFormat format,
-                                         ReadOptions options = {});
+std::unique_ptr<RecordStream> open_trace(const std::string& path, TraceFormat format, ReadOptions options = {});
 
 // The layout of a stream open_trace returned (after `automatic`: the one detected).
 std::optional<TraceFormat> opened_trace_format(const RecordStream& stream);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "gaze/trace_reader.hpp"
 
 #include "gaze/angles.hpp"
@@ -24,8 +25,7 @@ int parse_version(const CsvCursor& c) {
     while (!s.empty() && s.front() == ' ') s.remove_prefix(1);
     int v = 0;
     auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-    if (ec != std::errc{} || v < 1)
-      throw TraceError({c.file(), 0, 0, "bad format version line '" + comment + "'"});
+    if (ec != std::errc{} || v < 1) throw TraceError({c.file(), 0, 0, "bad format version line '" + comment + "'"});
     if (v > tf::kVersion)
       throw TraceError({c.file(), 0, 0,
                         "format version " + std::to_string(v) + " is newer than this reader (" +
@@ -44,8 +44,7 @@ glm::dvec3 direction_from_yaw_pitch_deg(double yaw_deg, double pitch_deg) {
 
 TraceReader::TraceReader(std::istream& in, std::string file, ReadOptions options)
     : CsvRecordStream(in, std::move(file), options) {
-  if (!cursor_.next_row())
-    cursor_.fail_no_header();
+  if (!cursor_.next_row()) cursor_.fail_no_header();
   version_ = parse_version(cursor_);
   const CsvHeader h(cursor_);
   header_fields_ = h.size();
@@ -77,8 +76,7 @@ TraceReader::TraceReader(std::istream& in, std::string file, ReadOptions options
   } else {
     missing.emplace_back("gaze_x,gaze_y,gaze_z or gaze_yaw_deg,gaze_pitch_deg");
   }
-  if (group_present({tf::kEyeX, tf::kEyeY, tf::kEyeZ}))
-    eye_ = Cols3{need(tf::kEyeX), need(tf::kEyeY), need(tf::kEyeZ)};
+  if (group_present({tf::kEyeX, tf::kEyeY, tf::kEyeZ})) eye_ = Cols3{need(tf::kEyeX), need(tf::kEyeY), need(tf::kEyeZ)};
   if (group_present({tf::kHeadQw, tf::kHeadQx, tf::kHeadQy, tf::kHeadQz}))
     head_q_ = Cols4{need(tf::kHeadQw), need(tf::kHeadQx), need(tf::kHeadQy), need(tf::kHeadQz)};
   if (group_present({tf::kHeadPx, tf::kHeadPy, tf::kHeadPz})) {
@@ -98,8 +96,7 @@ TraceReader::TraceReader(std::istream& in, std::string file, ReadOptions options
 void TraceReader::parse_row(TraceRecord& out) {
   const CsvCursor& c = cursor_;
   if (c.fields().size() != header_fields_)
-    c.fail(0, "row has " + std::to_string(c.fields().size()) + " fields, header has " +
-                  std::to_string(header_fields_));
+    c.fail(0, "row has " + std::to_string(c.fields().size()) + " fields, header has " + std::to_string(header_fields_));
   GazeSample& g = out.gaze;
   if (time_ns_) {
     g.t_ns = c.integer(time_field_, tf::kTimeNs);
@@ -117,8 +114,7 @@ void TraceReader::parse_row(TraceRecord& out) {
   g.confidence = g.valid ? 1.0f : 0.0f;
   if (confidence_) {
     const double conf = c.number(*confidence_, tf::kConfidence);
-    if (conf < 0.0 || conf > 1.0)
-      c.fail(c.fields()[*confidence_].column, "confidence: must be in [0, 1]");
+    if (conf < 0.0 || conf > 1.0) c.fail(c.fields()[*confidence_].column, "confidence: must be in [0, 1]");
     g.confidence = static_cast<float>(conf);
   }
   std::size_t gaze_col = 0;
@@ -142,30 +138,24 @@ void TraceReader::parse_row(TraceRecord& out) {
     if (std::fabs(n - 1.0) > kUnitTolerance)
       c.fail(gaze_col, "gaze vector is not unit length (|g| = " + std::to_string(n) + ")");
   }
-  if (eye_)
-    g.origin_m = {c.number(eye_->x, tf::kEyeX), c.number(eye_->y, tf::kEyeY),
-                  c.number(eye_->z, tf::kEyeZ)};
+  if (eye_) g.origin_m = {c.number(eye_->x, tf::kEyeX), c.number(eye_->y, tf::kEyeY), c.number(eye_->z, tf::kEyeZ)};
 
   out.has_head = false;
   if (head_q_) {
     // A row whose head cells are all empty has no head pose (the writer does this).
-    bool all_empty = c.is_empty(head_q_->w) && c.is_empty(head_q_->x) &&
-                     c.is_empty(head_q_->y) && c.is_empty(head_q_->z);
-    if (head_p_) all_empty = all_empty && c.is_empty(head_p_->x) && c.is_empty(head_p_->y) &&
-                             c.is_empty(head_p_->z);
+    bool all_empty =
+        c.is_empty(head_q_->w) && c.is_empty(head_q_->x) && c.is_empty(head_q_->y) && c.is_empty(head_q_->z);
+    if (head_p_) all_empty = all_empty && c.is_empty(head_p_->x) && c.is_empty(head_p_->y) && c.is_empty(head_p_->z);
     if (head_valid_) all_empty = all_empty && c.is_empty(*head_valid_);
     if (!all_empty) {
       HeadSample& h = out.head;
       out.has_head = true;
       h.t_ns = g.t_ns;
-      h.orientation = glm::dquat(c.number(head_q_->w, tf::kHeadQw),
-                                 c.number(head_q_->x, tf::kHeadQx),
-                                 c.number(head_q_->y, tf::kHeadQy),
-                                 c.number(head_q_->z, tf::kHeadQz));
+      h.orientation = glm::dquat(c.number(head_q_->w, tf::kHeadQw), c.number(head_q_->x, tf::kHeadQx),
+                                 c.number(head_q_->y, tf::kHeadQy), c.number(head_q_->z, tf::kHeadQz));
       const double qn = std::sqrt(glm::dot(h.orientation, h.orientation));
       if (std::fabs(qn - 1.0) > kUnitTolerance)
-        c.fail(c.fields()[head_q_->w].column,
-               "head quaternion is not unit length (|q| = " + std::to_string(qn) + ")");
+        c.fail(c.fields()[head_q_->w].column, "head quaternion is not unit length (|q| = " + std::to_string(qn) + ")");
       if (head_p_)
         h.position_m = {c.number(head_p_->x, tf::kHeadPx), c.number(head_p_->y, tf::kHeadPy),
                         c.number(head_p_->z, tf::kHeadPz)};

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Streaming reader of gazelod's own gaze-trace CSV (spec: docs/gaze.md). Reads one line at a
 // time; reads back exactly what TraceWriter writes. Errors name file:line:column.
 #pragma once
@@ -22,8 +23,12 @@ class TraceReader : public CsvRecordStream {
   void parse_row(TraceRecord& out) override;
 
  private:
-  struct Cols3 { std::size_t x, y, z; };
-  struct Cols4 { std::size_t w, x, y, z; };
+  struct Cols3 {
+    std::size_t x, y, z;
+  };
+  struct Cols4 {
+    std::size_t w, x, y, z;
+  };
   bool time_ns_ = true;
   std::optional<Cols3> gaze_vec_, eye_, head_p_;
   std::optional<std::pair<std::size_t, std::size_t>> yaw_pitch_;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "gaze/trace_stats.hpp"
 
 #include "gaze/import_pupil_cloud.hpp"
@@ -63,8 +64,8 @@ ClassifierAgreement agreement_of(const EventIdBuilder& ours, const PupilCloudRea
 
 }  // namespace
 
-TraceStats compute_trace_stats(RecordStream& stream, IvtOptions ivt, EventOptions events,
-                               ConditionerConfig conditioner, TraceClassification* classification) {
+TraceStats compute_trace_stats(RecordStream& stream, IvtOptions ivt, EventOptions events, ConditionerConfig conditioner,
+                               TraceClassification* classification) {
   TraceStats st;
   IvtClassifier classifier(ivt);
   EventTracker tracker(events);
@@ -81,8 +82,7 @@ TraceStats compute_trace_stats(RecordStream& stream, IvtOptions ivt, EventOption
     if (f.saccade) {
       ++st.saccades;
       amplitude_sum += f.saccade->amplitude_deg;
-      st.max_saccade_peak_velocity_deg_s =
-          std::max(st.max_saccade_peak_velocity_deg_s, f.saccade->peak_velocity_deg_s);
+      st.max_saccade_peak_velocity_deg_s = std::max(st.max_saccade_peak_velocity_deg_s, f.saccade->peak_velocity_deg_s);
     }
     if (f.fixation) ++st.fixations;
     if (classification) {
@@ -98,8 +98,7 @@ TraceStats compute_trace_stats(RecordStream& stream, IvtOptions ivt, EventOption
         classification->velocity_deg_s.push_back(ls.velocity_deg_s);
       }
       take(tracker.push(ls));
-      if (pupil)
-        ivt_ids.push(ls.label == GazeLabel::fixation, ls.label == GazeLabel::invalid, ls.sample.t_ns);
+      if (pupil) ivt_ids.push(ls.label == GazeLabel::fixation, ls.label == GazeLabel::invalid, ls.sample.t_ns);
     }
     labeled.clear();
   };
@@ -145,10 +144,8 @@ TraceStats compute_trace_stats(RecordStream& stream, IvtOptions ivt, EventOption
   drain();
   take(tracker.finish());
   st.duration_s = static_cast<double>(st.last_ns - st.first_ns) * 1e-9;
-  if (st.samples >= 2 && st.duration_s > 0.0)
-    st.rate_hz = static_cast<double>(st.samples - 1) / st.duration_s;
-  if (st.samples > 0)
-    st.invalid_fraction = static_cast<double>(st.invalid) / static_cast<double>(st.samples);
+  if (st.samples >= 2 && st.duration_s > 0.0) st.rate_hz = static_cast<double>(st.samples - 1) / st.duration_s;
+  if (st.samples > 0) st.invalid_fraction = static_cast<double>(st.invalid) / static_cast<double>(st.samples);
   if (st.saccades > 0) st.mean_saccade_amplitude_deg = amplitude_sum / static_cast<double>(st.saccades);
   if (pupil) {
     ivt_ids.finish();

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Summary of a trace, computed in one streaming pass (the `gazelod trace stats` numbers).
 #pragma once
 
@@ -27,11 +28,11 @@ struct ClassifierAgreement {
 // `blink id`. Its blinks file, when there is one, made those samples invalid before either
 // classifier saw them, so blink agreement then checks that import, not a blink detector.
 struct ReferenceAgreement {
-  std::string blinks_file;           // "" = none beside the trace
+  std::string blinks_file;  // "" = none beside the trace
   std::size_t blinks_in_file = 0;
   std::size_t samples_in_blinks = 0;  // marked invalid from the blinks file
-  ClassifierAgreement ivt;   // trace stats' classifier (IvtClassifier)
-  ClassifierAgreement ivdt;  // the plugin's (GazeConditioner's I-VDT; pursuit is not fixation)
+  ClassifierAgreement ivt;            // trace stats' classifier (IvtClassifier)
+  ClassifierAgreement ivdt;           // the plugin's (GazeConditioner's I-VDT; pursuit is not fixation)
 };
 
 struct TraceStats {
@@ -46,10 +47,10 @@ struct TraceStats {
   // eye-in-head gaze turned by the last pose; the classifier restarts there, so no velocity is
   // taken across the switch), in the head before it. In the head, the reflex that keeps the
   // eyes on a point while the head turns reads as eye motion.
-  bool classified_in_world = false;   // some samples were (the trace has head poses)
+  bool classified_in_world = false;    // some samples were (the trace has head poses)
   std::size_t classified_in_head = 0;  // samples before the first head pose
   std::size_t saccades = 0;
-  std::size_t fixations = 0;      // runs of at least EventOptions::min_fixation_ns
+  std::size_t fixations = 0;  // runs of at least EventOptions::min_fixation_ns
   double mean_saccade_amplitude_deg = 0.0;
   double max_saccade_peak_velocity_deg_s = 0.0;
   // Only for traces with a reference classification (Pupil Cloud); it keeps 6 ids per sample

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Writer for gazelod's gaze-trace CSV (spec: docs/gaze.md). Numbers are written with
 // std::to_chars' shortest round-trip form, so reading them back yields the same doubles.
 #include "gaze/trace_writer.hpp"
@@ -28,22 +29,20 @@ void append_number(std::string& line, T v) {
 
 }  // namespace
 
-TraceWriter::TraceWriter(std::ostream& out, TraceWriterOptions options)
-    : out_(out), options_(options) {
+TraceWriter::TraceWriter(std::ostream& out, TraceWriterOptions options) : out_(out), options_(options) {
   std::string header;
   header += tf::kMagic;
   header += ' ';
   header += std::to_string(tf::kVersion);
   header += '\n';
   header += options_.time_in_ns ? tf::kTimeNs : tf::kTimeS;
-  for (auto name : {tf::kGazeX, tf::kGazeY, tf::kGazeZ, tf::kEyeX, tf::kEyeY, tf::kEyeZ,
-                    tf::kValid, tf::kConfidence}) {
+  for (auto name : {tf::kGazeX, tf::kGazeY, tf::kGazeZ, tf::kEyeX, tf::kEyeY, tf::kEyeZ, tf::kValid, tf::kConfidence}) {
     header += ',';
     header += name;
   }
   if (options_.write_head) {
-    for (auto name : {tf::kHeadQw, tf::kHeadQx, tf::kHeadQy, tf::kHeadQz, tf::kHeadPx,
-                      tf::kHeadPy, tf::kHeadPz, tf::kHeadValid}) {
+    for (auto name :
+         {tf::kHeadQw, tf::kHeadQx, tf::kHeadQy, tf::kHeadQz, tf::kHeadPx, tf::kHeadPy, tf::kHeadPz, tf::kHeadValid}) {
       header += ',';
       header += name;
     }
@@ -61,8 +60,7 @@ void TraceWriter::write(const TraceRecord& record) {
   } else {
     append_number(line, static_cast<double>(g.t_ns) * 1e-9);
   }
-  for (double v : {g.direction.x, g.direction.y, g.direction.z, g.origin_m.x, g.origin_m.y,
-                   g.origin_m.z}) {
+  for (double v : {g.direction.x, g.direction.y, g.direction.z, g.origin_m.x, g.origin_m.y, g.origin_m.z}) {
     line += ',';
     append_number(line, v);
   }
@@ -71,8 +69,8 @@ void TraceWriter::write(const TraceRecord& record) {
   if (options_.write_head) {
     if (record.has_head) {
       const HeadSample& h = record.head;
-      for (double v : {h.orientation.w, h.orientation.x, h.orientation.y, h.orientation.z,
-                       h.position_m.x, h.position_m.y, h.position_m.z}) {
+      for (double v : {h.orientation.w, h.orientation.x, h.orientation.y, h.orientation.z, h.position_m.x,
+                       h.position_m.y, h.position_m.z}) {
         line += ',';
         append_number(line, v);
       }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Writes gazelod's own gaze-trace CSV format (versioned; documented in docs/gaze.md and the
 // README). The reader (trace_reader.hpp) reads back exactly what this writes.
 #pragma once
@@ -11,8 +12,8 @@
 namespace gazelod::gaze {
 
 struct TraceWriterOptions {
-  bool time_in_ns = true;   // column t_ns (exact) rather than t_s
-  bool write_head = true;   // head_q*, head_p* columns
+  bool time_in_ns = true;  // column t_ns (exact) rather than t_s
+  bool write_head = true;  // head_q*, head_p* columns
 };
 
 class TraceWriter {

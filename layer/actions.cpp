@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Actions and bindings for the emulated XR_EXT_eye_gaze_interaction: suggestions for
 // /interaction_profiles/ext/eye_gaze_interaction are kept here (the runtime would refuse them);
 // every other profile goes down. Attached actions bound to /user/eyes_ext/input/gaze_ext/pose
@@ -18,7 +19,9 @@ namespace {
 
 using Lock = std::lock_guard<std::mutex>;
 
-EmulatedInstance* emulated() { return layer_state().emulated.get(); }
+EmulatedInstance* emulated() {
+  return layer_state().emulated.get();
+}
 
 // The session's gaze action `action`, if it is one (not destroyed).
 GazeActionState* gaze_action(EmulatedInstance& e, XrSession session, XrAction action, SessionRecord** record) {
@@ -98,8 +101,10 @@ XrResult CreateAction(XrActionSet actionSet, const XrActionCreateInfo* createInf
     std::vector<XrPath> kept;
     bool eyes_subaction = false;
     for (uint32_t i = 0; i < createInfo->countSubactionPaths; ++i) {
-      if (createInfo->subactionPaths[i] == eyes && eyes != XR_NULL_PATH) eyes_subaction = true;
-      else kept.push_back(createInfo->subactionPaths[i]);
+      if (createInfo->subactionPaths[i] == eyes && eyes != XR_NULL_PATH)
+        eyes_subaction = true;
+      else
+        kept.push_back(createInfo->subactionPaths[i]);
     }
     XrActionCreateInfo down = *createInfo;
     down.countSubactionPaths = static_cast<uint32_t>(kept.size());
@@ -217,8 +222,8 @@ XrResult SyncActions(XrSession session, const XrActionsSyncInfo* syncInfo) {
       const auto a = e->actions.find(action);
       for (uint32_t i = 0; i < syncInfo->countActiveActionSets && a != e->actions.end(); ++i) {
         const XrActiveActionSet& active = syncInfo->activeActionSets[i];
-        set_active = set_active || (active.actionSet == a->second.set &&
-                                    (active.subactionPath == XR_NULL_PATH || active.subactionPath == e->paths.eyes_user));
+        set_active = set_active || (active.actionSet == a->second.set && (active.subactionPath == XR_NULL_PATH ||
+                                                                          active.subactionPath == e->paths.eyes_user));
       }
       state.active = fresh && set_active && !state.destroyed;
     }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What the layer does with an instance, decided once at xrCreateInstance (and printed by
 // `gazelod layer check`, from the same function):
 //  - the application did not enable XR_EXT_eye_gaze_interaction: pass through;

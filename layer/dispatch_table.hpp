@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The next layer's (or the runtime's) commands the layer calls, looked up once through the
 // next xrGetInstanceProcAddr when the instance is created. Only what the eye-gaze emulation
 // needs; everything else the application reaches directly (xrGetInstanceProcAddr hands out
@@ -12,14 +13,13 @@ namespace gazelod::layer {
 
 // X(name) for each core command the layer calls: one list, so the table, its lookup and the
 // check that nothing is missing cannot drift apart.
-#define GAZELOD_LAYER_NEXT_COMMANDS(X)                                        \
-  X(DestroyInstance) X(GetSystemProperties) X(PollEvent) X(StringToPath)      \
-  X(CreateSession) X(DestroySession) X(WaitFrame) X(CreateReferenceSpace)     \
-  X(CreateActionSpace) X(LocateSpace) X(DestroySpace) X(CreateActionSet)      \
-  X(DestroyActionSet) X(CreateAction) X(DestroyAction)                        \
-  X(SuggestInteractionProfileBindings) X(AttachSessionActionSets)             \
-  X(SyncActions) X(GetActionStatePose) X(GetCurrentInteractionProfile)        \
-  X(EnumerateBoundSourcesForAction) X(GetInputSourceLocalizedName)
+#define GAZELOD_LAYER_NEXT_COMMANDS(X)                                                                        \
+  X(DestroyInstance)                                                                                          \
+  X(GetSystemProperties) X(PollEvent) X(StringToPath) X(CreateSession) X(DestroySession) X(WaitFrame)         \
+      X(CreateReferenceSpace) X(CreateActionSpace) X(LocateSpace) X(DestroySpace) X(CreateActionSet)          \
+          X(DestroyActionSet) X(CreateAction) X(DestroyAction) X(SuggestInteractionProfileBindings)           \
+              X(AttachSessionActionSets) X(SyncActions) X(GetActionStatePose) X(GetCurrentInteractionProfile) \
+                  X(EnumerateBoundSourcesForAction) X(GetInputSourceLocalizedName)
 
 struct NextDispatch {
   PFN_xrGetInstanceProcAddr GetInstanceProcAddr = nullptr;
@@ -32,7 +32,7 @@ struct NextDispatch {
 
 // Fills `table` from `next_gipa` for `instance`. Returns "" or the first command the next
 // layer does not give (the instance is then unusable for the emulation).
-std::string load_next_dispatch(PFN_xrGetInstanceProcAddr next_gipa, XrInstance instance,
-                               bool want_timespec, NextDispatch& table);
+std::string load_next_dispatch(PFN_xrGetInstanceProcAddr next_gipa, XrInstance instance, bool want_timespec,
+                               NextDispatch& table);
 
 }  // namespace gazelod::layer

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Every OpenXR command the layer implements, with the exact signature of its PFN_xr* type
 // (negotiate.cpp checks each at compile time). One file per concept defines them: instance and
 // system (instance.cpp), sessions and frames (session.cpp), actions and bindings (actions.cpp),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "layer/gaze_feed.hpp"
 
 #include "gaze/hid/enumerate.hpp"
@@ -42,9 +43,13 @@ std::optional<gaze::GazeSample> TraceFeed::sample_at(std::int64_t t_ns) {
   return s;
 }
 
-bool TraceFeed::fresh() { return mapped_ && sample_at(now_ns_).has_value(); }
+bool TraceFeed::fresh() {
+  return mapped_ && sample_at(now_ns_).has_value();
+}
 
-std::string TraceFeed::status() const { return mapped_ ? replay_->status() : "waiting for the session's first frame"; }
+std::string TraceFeed::status() const {
+  return mapped_ ? replay_->status() : "waiting for the session's first frame";
+}
 
 std::unique_ptr<TraceFeed> open_trace_feed(const LayerConfig& config) {
   auto stream = gaze::open_trace(config.trace_path, config.trace_format);

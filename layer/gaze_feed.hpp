@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The layer's gaze feed: one gaze::GazeSource (a trace replayed on the session's clock, or the
 // HID eye tracker on the runtime's clock) with what the OpenXR side asks of it: a sample for a
 // requested XrTime, and whether gaze is fresh now (an action is active only then). Not
@@ -59,7 +60,7 @@ class TraceFeed final : public GazeFeed {
 std::unique_ptr<TraceFeed> open_trace_feed(const LayerConfig& config);
 
 struct HidFeedOptions {
-  std::function<std::int64_t()> now_ns;           // the runtime's clock now (XrTime)
+  std::function<std::int64_t()> now_ns;         // the runtime's clock now (XrTime)
   std::function<void(const std::string&)> log;  // one line, no prefix
 };
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Gaze spaces: xrCreateActionSpace on a gaze action gives a layer-owned space whose handle is a
 // VIEW reference space created on the runtime (so it is unique and the runtime tears it down
 // with the session). xrLocateSpace composes the head pose the runtime gives for that VIEW space
@@ -129,8 +130,8 @@ XrResult LocateSpace(XrSpace space, XrSpace baseSpace, XrTime time, XrSpaceLocat
     location->locationFlags = 0;
     location->pose = XrPosef{{0.0f, 0.0f, 0.0f, 1.0f}, {0.0f, 0.0f, 0.0f}};
     if (located && (heads.locationFlags & XR_SPACE_LOCATION_ORIENTATION_VALID_BIT) != 0) {
-      Pose p = from_xr(heads.pose);                       // space's head (or space) in base's head (or base)
-      if (of_space.eye) p = compose(p, *of_space.eye);    // ... the eye in its head
+      Pose p = from_xr(heads.pose);                            // space's head (or space) in base's head (or base)
+      if (of_space.eye) p = compose(p, *of_space.eye);         // ... the eye in its head
       if (of_base.eye) p = compose(inverse(*of_base.eye), p);  // ... in the base's eye
       location->pose = to_xr(p);
       location->locationFlags = heads.locationFlags & kAllLocationBits;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Instance and system: at xrCreateApiLayerInstance the layer decides (decision.hpp) whether to
 // emulate XR_EXT_eye_gaze_interaction; emulating, it takes the extension off the create info
 // it passes down (adding XR_KHR_convert_timespec_time for the HID source's clock when the
@@ -26,8 +27,7 @@ bool has_name(const XrInstanceCreateInfo* info, std::string_view name) {
 // The extensions of what lies below (the runtime, through any layers under this one).
 std::vector<std::string> next_extensions(PFN_xrGetInstanceProcAddr next_gipa) {
   PFN_xrVoidFunction fn = nullptr;
-  if (XR_FAILED(next_gipa(XR_NULL_HANDLE, "xrEnumerateInstanceExtensionProperties", &fn)) || fn == nullptr)
-    return {};
+  if (XR_FAILED(next_gipa(XR_NULL_HANDLE, "xrEnumerateInstanceExtensionProperties", &fn)) || fn == nullptr) return {};
   auto enumerate = reinterpret_cast<PFN_xrEnumerateInstanceExtensionProperties>(fn);
   uint32_t n = 0;
   if (XR_FAILED(enumerate(nullptr, 0, &n, nullptr))) return {};
@@ -56,7 +56,8 @@ std::string open_source(const LayerConfig& config, EmulatedInstance& e, std::str
       return "";
     }
     if (e.next.ConvertTimespecTimeToTimeKHR == nullptr)
-      return "the HID eye tracker needs XR_KHR_convert_timespec_time (the runtime's clock), which the runtime does not offer";
+      return "the HID eye tracker needs XR_KHR_convert_timespec_time (the runtime's clock), which the runtime does not "
+             "offer";
     HidFeedOptions o;
     const auto convert = e.next.ConvertTimespecTimeToTimeKHR;
     const XrInstance handle = e.handle;
@@ -132,8 +133,9 @@ XrResult CreateApiLayerInstance(const XrInstanceCreateInfo* info, const XrApiLay
     }
 
     // Emulating: the extension stays above; the HID source's clock goes down with it.
-    const bool want_timespec = in.config_error.empty() && config.trace_path.empty() &&
-                               std::find(below.begin(), below.end(), XR_KHR_CONVERT_TIMESPEC_TIME_EXTENSION_NAME) != below.end();
+    const bool want_timespec =
+        in.config_error.empty() && config.trace_path.empty() &&
+        std::find(below.begin(), below.end(), XR_KHR_CONVERT_TIMESPEC_TIME_EXTENSION_NAME) != below.end();
     std::vector<const char*> names;
     for (uint32_t i = 0; i < info->enabledExtensionCount; ++i) {
       const char* n = info->enabledExtensionNames[i];

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "layer/layer_config.hpp"
 
 #include "auxiliary/json_strict.hpp"
@@ -33,8 +34,7 @@ std::string shown(const json& v) {
   return s.size() > 40 ? s.substr(0, 37) + "..." : s;
 }
 
-double number_in(const std::string& file, const std::string& path, const json& v, double lo, double hi,
-                 bool lo_open) {
+double number_in(const std::string& file, const std::string& path, const json& v, double lo, double hi, bool lo_open) {
   if (!v.is_number()) bad(file, path, "must be a number, got " + shown(v));
   const double x = v.get<double>();
   const bool above = lo_open ? x > lo : x >= lo;
@@ -46,8 +46,8 @@ double number_in(const std::string& file, const std::string& path, const json& v
   return x;
 }
 
-std::vector<double> numbers(const std::string& file, const std::string& path, const json& v, std::size_t n,
-                            double lo, double hi, bool lo_open) {
+std::vector<double> numbers(const std::string& file, const std::string& path, const json& v, std::size_t n, double lo,
+                            double hi, bool lo_open) {
   if (!v.is_array() || v.size() != n)
     bad(file, path, "must be an array of " + std::to_string(n) + " numbers, got " + shown(v));
   std::vector<double> out;
@@ -145,8 +145,7 @@ std::string read_config_file(const std::string& path) {
   char buf[4096];
   while (in.read(buf, sizeof buf) || in.gcount() > 0) {
     text.append(buf, static_cast<std::size_t>(in.gcount()));
-    if (text.size() > kMaxConfigBytes)
-      throw Bad{where + ": larger than " + std::to_string(kMaxConfigBytes) + " bytes"};
+    if (text.size() > kMaxConfigBytes) throw Bad{where + ": larger than " + std::to_string(kMaxConfigBytes) + " bytes"};
   }
   if (in.bad()) throw Bad{where + ": read failed: " + std::strerror(errno)};
   return text;
@@ -191,6 +190,8 @@ ConfigResult load_config(const char* trace_env, const char* config_env) {
   return parse_config_json(text, c.config_path, c);
 }
 
-ConfigResult load_config_from_env() { return load_config(std::getenv(kTraceEnv), std::getenv(kConfigEnv)); }
+ConfigResult load_config_from_env() {
+  return load_config(std::getenv(kTraceEnv), std::getenv(kConfigEnv));
+}
 
 }  // namespace gazelod::layer

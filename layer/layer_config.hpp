@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What configures the eye-gaze layer (docs/layer.md): GAZELOD_LAYER_TRACE=FILE replays a trace,
 // otherwise the first HID eye tracker is the source; GAZELOD_LAYER_CONFIG=FILE is an optional
 // JSON object for the rest. A bad value is one line saying what and where (file, JSON path or
@@ -25,16 +26,16 @@ inline constexpr std::int64_t kHidFreshnessNs = 100'000'000;
 inline constexpr std::size_t kMaxConfigBytes = 1 << 20;
 
 struct LayerConfig {
-  std::string trace_path;  // GAZELOD_LAYER_TRACE; empty: the HID eye tracker
+  std::string trace_path;                                         // GAZELOD_LAYER_TRACE; empty: the HID eye tracker
   gaze::TraceFormat trace_format = gaze::TraceFormat::automatic;  // "trace_format"
-  std::string config_path;          // GAZELOD_LAYER_CONFIG, for messages ("" = none)
-  bool override_runtime = false;    // "override": emulate even when the runtime has eye gaze
+  std::string config_path;                                        // GAZELOD_LAYER_CONFIG, for messages ("" = none)
+  bool override_runtime = false;  // "override": emulate even when the runtime has eye gaze
   // "head_offset": the tracker's frame in the head (VIEW) space; identity by default.
   glm::dvec3 tracker_position_m{0.0};
   glm::dquat tracker_orientation{1.0, 0.0, 0.0, 0.0};
-  std::int64_t freshness_ns = 0;    // "freshness_ms"; 0: the source's default (above)
-  std::string hid_path;             // "hid.path": a hidapi path; empty: the first tracker
-  std::string hid_layout = "packed";  // "hid.layout": packed | dmf (gaze/hid/README.md)
+  std::int64_t freshness_ns = 0;                               // "freshness_ms"; 0: the source's default (above)
+  std::string hid_path;                                        // "hid.path": a hidapi path; empty: the first tracker
+  std::string hid_layout = "packed";                           // "hid.layout": packed | dmf (gaze/hid/README.md)
   double hid_screen_width_m = 0.0, hid_screen_height_m = 0.0;  // "hid.screen_mm"; 0: the device's
 
   std::int64_t effective_freshness_ns() const {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "layer/layer_state.hpp"
 
 #include <cstdio>
@@ -5,7 +6,8 @@
 namespace gazelod::layer {
 
 LayerState& layer_state() {
-  static LayerState state;  // lives as long as the library: the loader may unload it at any time after the last instance
+  static LayerState
+      state;  // lives as long as the library: the loader may unload it at any time after the last instance
   return state;
 }
 

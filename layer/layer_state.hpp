@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The layer's bookkeeping, all behind one mutex (any command may come from any thread; the HID
 // source's reader thread only ever touches its own queue): the instance it emulates eye gaze
 // for, that instance's actions and eye-gaze bindings, its sessions (attached action sets, the
@@ -61,7 +62,7 @@ struct EmulatedInstance {
   bool gaze_available = false;
   Paths paths;
   Pose tracker_in_head;
-  std::unique_ptr<GazeFeed> feed;  // null without gaze
+  std::unique_ptr<GazeFeed> feed;                     // null without gaze
   std::unordered_map<XrActionSet, bool> action_sets;  // -> attached to some session
   std::unordered_map<XrAction, ActionRecord> actions;
   std::vector<XrAction> eye_bindings;  // the last suggestion for the eye-gaze profile

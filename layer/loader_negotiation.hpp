@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The loader <-> API layer interface, version 1 (OpenXR loader specification, "API Layer
 // Negotiation" and "xrCreateApiLayerInstance"). Debian's OpenXR 1.0.20 packages install no
 // loader_interfaces.h / openxr_loader_negotiation.h, so the structures are declared here with

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The loader negotiation (the library's one exported symbol) and xrGetInstanceProcAddr: for an
 // instance the layer emulates eye gaze for, its own commands; for everything else (and every
 // instance it passes through) the next layer's pointers, unchanged.
@@ -16,8 +17,10 @@ struct Entry {
 };
 
 // static_cast to the PFN type checks each signature against the headers.
-#define GAZELOD_LAYER_ENTRY(name) \
-  Entry { "xr" #name, reinterpret_cast<PFN_xrVoidFunction>(static_cast<PFN_xr##name>(&name)) }
+#define GAZELOD_LAYER_ENTRY(name)                                                      \
+  Entry {                                                                              \
+    "xr" #name, reinterpret_cast<PFN_xrVoidFunction>(static_cast<PFN_xr##name>(&name)) \
+  }
 
 // Commands the emulation takes over (instance.cpp, session.cpp, actions.cpp, gaze_space.cpp).
 const Entry kEmulated[] = {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The layer's poses: the shared rigid-pose math (xr/pose_math.hpp) in this namespace, and the
 // eye-gaze pose of a gaze sample.
 #pragma once
@@ -22,8 +23,7 @@ using namespace gazelod::xr;
 inline std::optional<Pose> eye_pose(const gaze::GazeSample& s) {
   const double len = glm::length(s.direction);
   if (!s.valid || !std::isfinite(len) || !(len > 1e-9)) return std::nullopt;
-  if (!std::isfinite(s.origin_m.x) || !std::isfinite(s.origin_m.y) || !std::isfinite(s.origin_m.z))
-    return std::nullopt;
+  if (!std::isfinite(s.origin_m.x) || !std::isfinite(s.origin_m.y) || !std::isfinite(s.origin_m.z)) return std::nullopt;
   return Pose{gaze_orientation(s.direction / len), s.origin_m};
 }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Sessions and frames: the layer records each session of the instance it emulates for, drops
 // its gaze spaces and owed events when it goes, and gives the gaze feed every predicted display
 // time (a trace is replayed from the session's first one).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The OpenXR headers as the layer compiles them: with XR_KHR_convert_timespec_time's types
 // (the HID source puts its samples on the runtime's clock through it).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reddy's acuity model with its seams repaired (see acuity.hpp for the why).
 #include "lod/acuity.hpp"
 
@@ -47,7 +48,7 @@ double acuity_cpd(double vel_dps, double ecc_deg, double xi_cpd, double scale) {
 double eccentricity_threshold_deg(double freq_cpd, double vel_dps) {
   if (!(freq_cpd > 0.0)) return std::numeric_limits<double>::infinity();
   const double g = velocity_acuity_cpd(vel_dps);
-  if (freq_cpd > g) return 0.0;  // below freq_cpd already at the fovea
+  if (freq_cpd > g) return 0.0;       // below freq_cpd already at the fovea
   const double ratio = freq_cpd / g;  // in (0, 1]
   // M(E) = ratio  <=>  (0.3 E + 1)^2 = 7.49 / ratio. Past 5.79 only: M is 1 before it.
   const double e = (std::sqrt(kMNumerator / ratio) - 1.0) / kMSlope;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reddy's spatiotemporal acuity model (Reddy 1998, section 3.4, equations 1-5): the highest
 // spatial frequency (cycles/deg) a viewer resolves at retinal velocity v and eccentricity E,
 // limited by the display (xi) and scaled by the fixed-frame-rate factor s (section 6).
@@ -16,12 +17,12 @@
 
 namespace gazelod::lod {
 
-inline constexpr double kAcuityMaxCpd = 60.0;          // G below the velocity seam
-inline constexpr double kVelocitySeamDps = 0.825;      // G's seam as published
-inline constexpr double kEccentricitySeamDeg = 5.79;   // M's seam
-inline constexpr double kGSlope = 27.78;               // G = -kGSlope log10 v + kGIntercept
+inline constexpr double kAcuityMaxCpd = 60.0;         // G below the velocity seam
+inline constexpr double kVelocitySeamDps = 0.825;     // G's seam as published
+inline constexpr double kEccentricitySeamDeg = 5.79;  // M's seam
+inline constexpr double kGSlope = 27.78;              // G = -kGSlope log10 v + kGIntercept
 inline constexpr double kGIntercept = 57.69;
-inline constexpr double kMNumerator = 7.49;            // M = kMNumerator / (kMSlope E + 1)^2
+inline constexpr double kMNumerator = 7.49;  // M = kMNumerator / (kMSlope E + 1)^2
 inline constexpr double kMSlope = 0.3;
 
 // Velocity where the log branch reaches 0 (10^(57.69/27.78) = 119.31 deg/s): G is 0 beyond.

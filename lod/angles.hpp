@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Angles and their units, for every layer (gaze/ and sim/ build their own helpers on these).
 // atan2 throughout: no acos of a dot product, which loses all precision for the tiny angles
 // between successive gaze samples.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One mesh's cluster hierarchy as plain data (structure of arrays, one entry per cluster), the
 // form `gazelod bake --clusters` writes and the per-cluster selection (lod/cluster_select.hpp)
 // reads. The hierarchy follows the cluster-DAG construction of Karis et al. 2021 (Nanite) and
@@ -33,8 +34,7 @@ struct ClusterHierarchy {
   // self bounds (sphere) and error, metres
   std::vector<float> self_center_x_m, self_center_y_m, self_center_z_m, self_radius_m, self_error_m;
   // parent bounds (sphere) and error, metres; kNoParentError for the hierarchy's top
-  std::vector<float> parent_center_x_m, parent_center_y_m, parent_center_z_m, parent_radius_m,
-      parent_error_m;
+  std::vector<float> parent_center_x_m, parent_center_y_m, parent_center_z_m, parent_radius_m, parent_error_m;
   // The cluster's triangles: index_count indices from first_index in the mesh's index buffer
   // (triangle list, so index_count is a multiple of 3).
   std::vector<std::uint32_t> first_index, index_count;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Per-cluster selection (see cluster_select.hpp): validation, the frame and mesh constants
 // (rounded towards keeping detail), and the block loop over each mesh's clusters; the
 // arithmetic is in cluster_select_kernel.cpp.
@@ -40,32 +41,27 @@ bool finite3(float x, float y, float z) {
 std::string check_lengths(const ClusterSet& c) {
   const std::size_t n = c.size(), m = c.mesh_count();
   for (std::span<const float> s :
-       {c.self_center_x_m, c.self_center_y_m, c.self_center_z_m, c.self_radius_m,
-        c.parent_center_x_m, c.parent_center_y_m, c.parent_center_z_m, c.parent_radius_m,
-        c.parent_error_m})
+       {c.self_center_x_m, c.self_center_y_m, c.self_center_z_m, c.self_radius_m, c.parent_center_x_m,
+        c.parent_center_y_m, c.parent_center_z_m, c.parent_radius_m, c.parent_error_m})
     if (s.size() != n) return "cluster arrays differ in length (self_error_m has " + std::to_string(n) + ")";
   const bool moving = !c.mesh_vel_x_m_s.empty() || !c.mesh_vel_y_m_s.empty() || !c.mesh_vel_z_m_s.empty();
   if (c.mesh_first_cluster.size() != m || c.mesh_finest_error_m.size() != m ||
-      (moving && (c.mesh_vel_x_m_s.size() != m || c.mesh_vel_y_m_s.size() != m ||
-                  c.mesh_vel_z_m_s.size() != m)))
+      (moving && (c.mesh_vel_x_m_s.size() != m || c.mesh_vel_y_m_s.size() != m || c.mesh_vel_z_m_s.size() != m)))
     return "mesh arrays differ in length (mesh_cluster_count has " + std::to_string(m) + ")";
   // Back to back from 0 over all clusters (O(meshes)): every output byte is written.
   std::size_t next = 0;
   for (std::size_t k = 0; k < m; ++k) {
     if (c.mesh_first_cluster[k] != next)
-      return "mesh " + std::to_string(k) + ": mesh_first_cluster is " +
-             std::to_string(c.mesh_first_cluster[k]) + ", expected " + std::to_string(next) +
-             " (meshes lie back to back)";
+      return "mesh " + std::to_string(k) + ": mesh_first_cluster is " + std::to_string(c.mesh_first_cluster[k]) +
+             ", expected " + std::to_string(next) + " (meshes lie back to back)";
     next += c.mesh_cluster_count[k];
   }
-  if (next != n)
-    return "meshes cover " + std::to_string(next) + " clusters, the arrays hold " + std::to_string(n);
+  if (next != n) return "meshes cover " + std::to_string(next) + " clusters, the arrays hold " + std::to_string(n);
   if (!c.has_records()) return {};
   // The distinct records: their arrays, one range per mesh (none empty where the mesh has
   // clusters), back to back over all of them.
   const std::size_t r = c.record_count();
-  for (std::span<const float> s :
-       {c.record_center_x_m, c.record_center_y_m, c.record_center_z_m, c.record_radius_m})
+  for (std::span<const float> s : {c.record_center_x_m, c.record_center_y_m, c.record_center_z_m, c.record_radius_m})
     if (s.size() != r) return "record arrays differ in length (record_error_m has " + std::to_string(r) + ")";
   if (c.self_record.size() != n || c.parent_record.size() != n)
     return "self_record and parent_record must have one entry per cluster (" + std::to_string(n) + ")";
@@ -75,13 +71,12 @@ std::string check_lengths(const ClusterSet& c) {
   for (std::size_t k = 0; k < m; ++k) {
     if (c.mesh_first_record[k] != next || (c.mesh_record_count[k] == 0 && c.mesh_cluster_count[k] > 0) ||
         c.mesh_record_count[k] > std::uint32_t{std::numeric_limits<std::int32_t>::max()})
-      return "mesh " + std::to_string(k) + ": its record range [" + std::to_string(c.mesh_first_record[k]) +
-             ", +" + std::to_string(c.mesh_record_count[k]) + ") must start at " + std::to_string(next) +
+      return "mesh " + std::to_string(k) + ": its record range [" + std::to_string(c.mesh_first_record[k]) + ", +" +
+             std::to_string(c.mesh_record_count[k]) + ") must start at " + std::to_string(next) +
              " and hold a record where the mesh has clusters (at most 2^31 - 1)";
     next += c.mesh_record_count[k];
   }
-  if (next != r)
-    return "meshes cover " + std::to_string(next) + " records, the arrays hold " + std::to_string(r);
+  if (next != r) return "meshes cover " + std::to_string(next) + " records, the arrays hold " + std::to_string(r);
   return {};
 }
 
@@ -99,15 +94,16 @@ std::string record_index_problem(const ClusterSet& c) {
         if (at < lo || at >= hi)
           return "cluster " + std::to_string(i) + ": " + name + " " + std::to_string(at) +
                  " is outside its mesh's records [" + std::to_string(lo) + ", " + std::to_string(hi) + ")";
-        const bool equal =
-            which == 0
-                ? same(c.record_center_x_m[at], c.self_center_x_m[i]) && same(c.record_center_y_m[at], c.self_center_y_m[i]) &&
-                      same(c.record_center_z_m[at], c.self_center_z_m[i]) && same(c.record_radius_m[at], c.self_radius_m[i]) &&
-                      same(c.record_error_m[at], c.self_error_m[i])
-                : same(c.record_center_x_m[at], c.parent_center_x_m[i]) &&
-                      same(c.record_center_y_m[at], c.parent_center_y_m[i]) &&
-                      same(c.record_center_z_m[at], c.parent_center_z_m[i]) &&
-                      same(c.record_radius_m[at], c.parent_radius_m[i]) && same(c.record_error_m[at], c.parent_error_m[i]);
+        const bool equal = which == 0 ? same(c.record_center_x_m[at], c.self_center_x_m[i]) &&
+                                            same(c.record_center_y_m[at], c.self_center_y_m[i]) &&
+                                            same(c.record_center_z_m[at], c.self_center_z_m[i]) &&
+                                            same(c.record_radius_m[at], c.self_radius_m[i]) &&
+                                            same(c.record_error_m[at], c.self_error_m[i])
+                                      : same(c.record_center_x_m[at], c.parent_center_x_m[i]) &&
+                                            same(c.record_center_y_m[at], c.parent_center_y_m[i]) &&
+                                            same(c.record_center_z_m[at], c.parent_center_z_m[i]) &&
+                                            same(c.record_radius_m[at], c.parent_radius_m[i]) &&
+                                            same(c.record_error_m[at], c.parent_error_m[i]);
         if (!equal)
           return "cluster " + std::to_string(i) + ": " + name + " " + std::to_string(at) +
                  " differs from the cluster's own " + (which == 0 ? "self" : "parent") + " record";
@@ -134,8 +130,8 @@ ClusterFrame make_cluster_frame(const Viewer& v) {
   f.ecc_offset_rad = round_up(v.tracker_error_deg * kRadPerDeg + kEccentricitySlackRad);
   f.scale = round_up(v.scale);
   f.scale_xi_cpd = round_up(v.scale * v.xi_cpd);
-  f.static_limit_cpd = v.use_size ? round_up(v.scale * std::min(kAcuityMaxCpd, v.xi_cpd))
-                                  : std::numeric_limits<float>::infinity();
+  f.static_limit_cpd =
+      v.use_size ? round_up(v.scale * std::min(kAcuityMaxCpd, v.xi_cpd)) : std::numeric_limits<float>::infinity();
   f.error_factor = round_up(kErrorFactor * kThresholdMargin);
   f.on_eccentricity = v.use_eccentricity ? 1.0f : 0.0f;
   f.on_velocity = v.use_velocity ? 1.0f : 0.0f;
@@ -186,20 +182,19 @@ std::string record_problem(const ClusterSet& c, std::size_t i) {
   else if (std::isfinite(pe)) {
     // Containment, to the float rounding of the coordinates (1e-6 of their magnitude).
     const double px = c.parent_center_x_m[i], py = c.parent_center_y_m[i], pz = c.parent_center_z_m[i];
-    const double reach = std::hypot(px - c.self_center_x_m[i], py - c.self_center_y_m[i],
-                                    pz - c.self_center_z_m[i]) + sr;
+    const double reach =
+        std::hypot(px - c.self_center_x_m[i], py - c.self_center_y_m[i], pz - c.self_center_z_m[i]) + sr;
     const double scale = std::max({std::abs(px), std::abs(py), std::abs(pz), double(pr), double(sr)});
     if (!(reach <= double(pr) + 1e-6 * scale))
-      bad() << "parent sphere (radius " << pr << ") does not contain the self sphere (which reaches "
-            << reach << " from the parent centre)";
+      bad() << "parent sphere (radius " << pr << ") does not contain the self sphere (which reaches " << reach
+            << " from the parent centre)";
   }
   return m ? m->str() : std::string();
 }
 
 }  // namespace
 
-double finest_cluster_error_m(std::span<const float> self_error_m,
-                              std::span<const float> parent_error_m) {
+double finest_cluster_error_m(std::span<const float> self_error_m, std::span<const float> parent_error_m) {
   double finest = kInf;
   for (std::span<const float> s : {self_error_m, parent_error_m})
     for (float e : s)
@@ -220,13 +215,13 @@ std::string validate_clusters(const ClusterSet& c) {
                     std::isfinite(c.mesh_vel_z_m_s[k])))
       return where + "velocity is not finite";
     const std::size_t first = c.mesh_first_cluster[k], count = c.mesh_cluster_count[k];
-    const double finest = finest_cluster_error_m(c.self_error_m.subspan(first, count),
-                                                 c.parent_error_m.subspan(first, count));
+    const double finest =
+        finest_cluster_error_m(c.self_error_m.subspan(first, count), c.parent_error_m.subspan(first, count));
     const double given = c.mesh_finest_error_m[k];
     if (!(given > 0.0) || (std::isfinite(finest) && !(given <= finest))) {
       std::ostringstream m;
-      m << where << "mesh_finest_error_m must be > 0 and <= the mesh's finest positive error "
-        << finest << ", got " << given;
+      m << where << "mesh_finest_error_m must be > 0 and <= the mesh's finest positive error " << finest << ", got "
+        << given;
       return m.str();
     }
   }
@@ -236,9 +231,9 @@ std::string validate_clusters(const ClusterSet& c) {
 namespace {
 
 // Where the block of clusters from `base` on writes its outcomes.
-detail::ClusterOutput output_at(const ClusterDecisions& out, std::size_t base, bool per_criterion,
-                                bool records) {
-  return {out.drawn.data() + base, out.limited_by.data() + base,
+detail::ClusterOutput output_at(const ClusterDecisions& out, std::size_t base, bool per_criterion, bool records) {
+  return {out.drawn.data() + base,
+          out.limited_by.data() + base,
           per_criterion ? out.drawn_size_only.data() + base : nullptr,
           per_criterion ? out.drawn_eccentricity_only.data() + base : nullptr,
           per_criterion ? out.drawn_velocity_only.data() + base : nullptr,
@@ -253,10 +248,10 @@ std::string select_clusters(const Viewer& viewer, const ClusterSet& c, const Clu
   const std::size_t n = c.size();
   if (out.drawn.size() < n || out.limited_by.size() < n)
     return "decisions: drawn or limited_by is shorter than the cluster count";
-  const bool per_criterion = !out.drawn_size_only.empty() || !out.drawn_eccentricity_only.empty() ||
-                             !out.drawn_velocity_only.empty();
-  if (per_criterion && (out.drawn_size_only.size() < n || out.drawn_eccentricity_only.size() < n ||
-                        out.drawn_velocity_only.size() < n))
+  const bool per_criterion =
+      !out.drawn_size_only.empty() || !out.drawn_eccentricity_only.empty() || !out.drawn_velocity_only.empty();
+  if (per_criterion &&
+      (out.drawn_size_only.size() < n || out.drawn_eccentricity_only.size() < n || out.drawn_velocity_only.size() < n))
     return "decisions: the per-criterion outputs must all be given, each at least the cluster count";
   const bool records = !out.record_invisible.empty();
   if (records && out.record_invisible.size() < n)
@@ -268,15 +263,12 @@ std::string select_clusters(const Viewer& viewer, const ClusterSet& c, const Clu
   const bool by_record = c.has_records() && !out.record_flags.empty();
 
   const detail::ClusterFrame frame = detail::make_cluster_frame(viewer);
-  const detail::RecordInput self_in{c.self_center_x_m.data(), c.self_center_y_m.data(),
-                                    c.self_center_z_m.data(), c.self_radius_m.data(),
-                                    c.self_error_m.data()};
+  const detail::RecordInput self_in{c.self_center_x_m.data(), c.self_center_y_m.data(), c.self_center_z_m.data(),
+                                    c.self_radius_m.data(), c.self_error_m.data()};
   const detail::RecordInput parent_in{c.parent_center_x_m.data(), c.parent_center_y_m.data(),
-                                      c.parent_center_z_m.data(), c.parent_radius_m.data(),
-                                      c.parent_error_m.data()};
-  const detail::RecordInput table_in{c.record_center_x_m.data(), c.record_center_y_m.data(),
-                                     c.record_center_z_m.data(), c.record_radius_m.data(),
-                                     c.record_error_m.data()};
+                                      c.parent_center_z_m.data(), c.parent_radius_m.data(), c.parent_error_m.data()};
+  const detail::RecordInput table_in{c.record_center_x_m.data(), c.record_center_y_m.data(), c.record_center_z_m.data(),
+                                     c.record_radius_m.data(), c.record_error_m.data()};
   detail::RecordBlock self_blk, parent_blk;  // 10 KiB each, reused per block
   for (std::size_t k = 0; k < c.mesh_count(); ++k) {
     const detail::ClusterMeshFrame mesh = detail::make_cluster_mesh_frame(viewer, c, k);
@@ -288,8 +280,8 @@ std::string select_clusters(const Viewer& viewer, const ClusterSet& c, const Clu
       for (std::size_t base = lo; base < hi; base += detail::kClusterBlock) {
         const std::size_t m = std::min(detail::kClusterBlock, hi - base);
         detail::evaluate_records(frame, mesh, table_in, base, m, true,
-                                 per_criterion ? detail::RecordScreen::trivial : detail::RecordScreen::by_size,
-                                 nullptr, self_blk);
+                                 per_criterion ? detail::RecordScreen::trivial : detail::RecordScreen::by_size, nullptr,
+                                 self_blk);
         detail::pack_record_flags(m, self_blk, out.record_flags.data() + base);
       }
       const auto first = static_cast<std::uint32_t>(lo), last = static_cast<std::uint32_t>(hi - 1);
@@ -307,10 +299,8 @@ std::string select_clusters(const Viewer& viewer, const ClusterSet& c, const Clu
       // one, only the trivial records are screened). The parent first: where it is invisible
       // the cluster is not drawn and its self record is invisible too (nesting), so that is not
       // evaluated.
-      const detail::RecordScreen screen =
-          per_criterion ? detail::RecordScreen::trivial : detail::RecordScreen::by_size;
-      detail::evaluate_records(frame, mesh, parent_in, base, m, per_criterion, screen, nullptr,
-                               parent_blk);
+      const detail::RecordScreen screen = per_criterion ? detail::RecordScreen::trivial : detail::RecordScreen::by_size;
+      detail::evaluate_records(frame, mesh, parent_in, base, m, per_criterion, screen, nullptr, parent_blk);
       detail::evaluate_records(frame, mesh, self_in, base, m, true, screen,
                                per_criterion ? nullptr : parent_blk.combined, self_blk);
       detail::combine_records(m, self_blk, parent_blk, output_at(out, base, per_criterion, records));

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Per-cluster LOD selection: Reddy's rule (lod/select.hpp) applied to every cluster of a
 // cluster hierarchy (lod/cluster_hierarchy.hpp; Karis et al. 2021), so that detail follows
 // the fovea across one mesh instead of one level for all of it.
@@ -69,10 +70,8 @@ namespace gazelod::lod {
 // The records of one or many meshes' clusters, world space, one entry per cluster (the fields
 // of lod/cluster_hierarchy.hpp after the instance transform), and the meshes they belong to.
 struct ClusterSet {
-  std::span<const float> self_center_x_m, self_center_y_m, self_center_z_m, self_radius_m,
-      self_error_m;
-  std::span<const float> parent_center_x_m, parent_center_y_m, parent_center_z_m,
-      parent_radius_m, parent_error_m;
+  std::span<const float> self_center_x_m, self_center_y_m, self_center_z_m, self_radius_m, self_error_m;
+  std::span<const float> parent_center_x_m, parent_center_y_m, parent_center_z_m, parent_radius_m, parent_error_m;
   // Mesh m owns clusters [mesh_first_cluster[m], + mesh_cluster_count[m]); the meshes lie back
   // to back from cluster 0 and cover every cluster.
   std::span<const std::uint32_t> mesh_first_cluster, mesh_cluster_count;
@@ -89,17 +88,14 @@ struct ClusterSet {
   // ClusterDecisions::record_flags, select_clusters evaluates each distinct record once (a
   // group's record is shared by its members and by the clusters it produced) instead of twice
   // per cluster; every output is the same.
-  std::span<const float> record_center_x_m, record_center_y_m, record_center_z_m, record_radius_m,
-      record_error_m;
+  std::span<const float> record_center_x_m, record_center_y_m, record_center_z_m, record_radius_m, record_error_m;
   std::span<const std::uint32_t> self_record, parent_record;
   std::span<const std::uint32_t> mesh_first_record, mesh_record_count;
 
   std::size_t size() const { return self_error_m.size(); }
   std::size_t mesh_count() const { return mesh_cluster_count.size(); }
   std::size_t record_count() const { return record_error_m.size(); }
-  bool has_records() const {
-    return !record_error_m.empty() || !self_record.empty() || !mesh_first_record.empty();
-  }
+  bool has_records() const { return !record_error_m.empty() || !self_record.empty() || !mesh_first_record.empty(); }
 };
 
 struct ClusterDecisions {
@@ -121,22 +117,21 @@ struct ClusterDecisions {
 
 // The smallest positive error among the records (+inf if there is none finite): a mesh's
 // mesh_finest_error_m.
-double finest_cluster_error_m(std::span<const float> self_error_m,
-                              std::span<const float> parent_error_m);
+double finest_cluster_error_m(std::span<const float> self_error_m, std::span<const float> parent_error_m);
 
 // "" when the set is consistent, else a message naming the first bad cluster (or mesh) and
 // field: span lengths, finite centres, radii and errors >= 0 (parent error +inf allowed), self
 // error <= parent error, the parent sphere containing the self sphere (to float rounding) where
 // the parent error is finite, mesh ranges back to back over all clusters, finite velocities,
 // mesh_finest_error_m as above; with distinct records, their ranges back to back over all of
-// them and every cluster's two indices inside its mesh's range, on records equal to its own. Linear time: run it at registration, not per frame.
+// them and every cluster's two indices inside its mesh's range, on records equal to its own. Linear time: run it at
+// registration, not per frame.
 std::string validate_clusters(const ClusterSet& clusters);
 
 // One frame. Refuses an invalid Viewer, spans of the wrong length or mesh ranges that do not
 // tile the clusters with a message (outputs untouched). Data that validate_clusters would
 // refuse (not checked per frame) never yields NaN or a byte out of range: a cluster with a
 // non-finite or negative field is not drawn and gets Criterion::invalid_input.
-std::string select_clusters(const Viewer& viewer, const ClusterSet& clusters,
-                            const ClusterDecisions& out);
+std::string select_clusters(const Viewer& viewer, const ClusterSet& clusters, const ClusterDecisions& out);
 
 }  // namespace gazelod::lod

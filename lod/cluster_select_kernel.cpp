@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The per-cluster kernel (see cluster_select_kernel.hpp): straight-line float arithmetic per
 // record so that GCC vectorises the loop, in the conventions of lod/select_kernel.cpp (every
 // "if" a ternary, '&' and '|' on same-width masks, 0/1 factors for loop-invariant switches,
@@ -32,8 +33,8 @@ namespace gazelod::lod::detail {
 namespace {
 
 constexpr float kDegPerRadF = static_cast<float>(kDegPerRad);
-constexpr float kD2Low = 1.0f - 0x1p-19f;     // |r|^2 lowered for "inside" and h
-constexpr float kNormLow = 1.0f - 0x1p-20f;   // the rotated pair's length over |r|^2
+constexpr float kD2Low = 1.0f - 0x1p-19f;    // |r|^2 lowered for "inside" and h
+constexpr float kNormLow = 1.0f - 0x1p-20f;  // the rotated pair's length over |r|^2
 constexpr float kSeamF = static_cast<float>(kVelocitySeamDps);
 constexpr float kCapF = 200.0f;  // v clamped here before the log (G is 0 from 119.3 on)
 constexpr float kGInterceptF = static_cast<float>(kGIntercept) + kGSlackCpd;
@@ -50,8 +51,8 @@ struct Geometry {
   float rx, ry, rz, d2, d, dn;
   bool ok, near;
 };
-[[gnu::always_inline]] inline Geometry geometry(const ClusterFrame& f, float cx, float cy,
-                                                float cz, float rho, float e) {
+[[gnu::always_inline]] inline Geometry geometry(const ClusterFrame& f, float cx, float cy, float cz, float rho,
+                                                float e) {
   Geometry g;
   g.rx = (cx - f.eye_hi_m[0]) - f.eye_lo_m[0];
   g.ry = (cy - f.eye_hi_m[1]) - f.eye_lo_m[1];
@@ -79,17 +80,16 @@ struct Geometry {
 // set only for an error of 0 (invisible under any criterion): the limiting criterion is size
 // there whatever they would be, so they are not computed.
 template <bool kAll, bool kBySize>
-[[gnu::always_inline]] inline void screen_loop(const ClusterFrame& f, const RecordInput& in,
-                                               std::size_t begin, std::size_t count,
-                                               RecordBlock& out) {
+[[gnu::always_inline]] inline void screen_loop(const ClusterFrame& f, const RecordInput& in, std::size_t begin,
+                                               std::size_t count, RecordBlock& out) {
   const float* __restrict cx = in.center_x_m + begin;
   const float* __restrict cy = in.center_y_m + begin;
   const float* __restrict cz = in.center_z_m + begin;
   const float* __restrict rad = in.radius_m + begin;
   const float* __restrict err = in.error_m + begin;
   constexpr float kInfF = std::numeric_limits<float>::infinity();
-GAZELOD_IVDEP  // no overlap (select_kernel.hpp)
-  for (std::size_t i = 0; i < count; ++i) {
+  GAZELOD_IVDEP  // no overlap (select_kernel.hpp)
+      for (std::size_t i = 0; i < count; ++i) {
     const float e = err[i];
     const Geometry g = geometry(f, cx[i], cy[i], cz[i], rad[i], e);
     const bool zero = e == 0.0f, never = e == kInfF, size_ok = kBySize && by_size(f, e, g.dn);
@@ -112,9 +112,8 @@ GAZELOD_IVDEP  // no overlap (select_kernel.hpp)
 // and thresholds so that neither loop runs out of registers). Input [begin, begin + count),
 // output [at, at + count).
 [[gnu::always_inline]] inline void geometry_loop(const ClusterFrame& f, const ClusterMeshFrame& m,
-                                                 const RecordInput& in, std::size_t begin,
-                                                 std::size_t at, std::size_t count,
-                                                 RecordBlock& out) {
+                                                 const RecordInput& in, std::size_t begin, std::size_t at,
+                                                 std::size_t count, RecordBlock& out) {
   const float* __restrict cx = in.center_x_m + begin;
   const float* __restrict cy = in.center_y_m + begin;
   const float* __restrict cz = in.center_z_m + begin;
@@ -136,7 +135,7 @@ GAZELOD_IVDEP  // no overlap (select_kernel.hpp)
   const float lip_w = (1.0f + kVelocitySlack) * w_norm;
   const float slack_v = kVelocitySlack * v_norm, slack_w = kVelocitySlack * w_norm;
 
-GAZELOD_IVDEP
+  GAZELOD_IVDEP
   for (std::size_t i = 0; i < count; ++i) {
     const float rho = rad[i];
     const Geometry g = geometry(f, cx[i], cy[i], cz[i], rho, err[i]);
@@ -180,9 +179,8 @@ GAZELOD_IVDEP
 // The full evaluation, second loop: G, M and the decisions.
 template <bool kAll>
 [[gnu::always_inline]] inline void decision_loop(const ClusterFrame& f, const ClusterMeshFrame& m,
-                                                 const RecordInput& in, std::size_t begin,
-                                                 std::size_t at, std::size_t count,
-                                                 RecordBlock& out) {
+                                                 const RecordInput& in, std::size_t begin, std::size_t at,
+                                                 std::size_t count, RecordBlock& out) {
   const float* __restrict err = in.error_m + begin;
   const float on_e = f.on_eccentricity, on_v = f.on_velocity;
   const float s = f.scale, s_xi = f.scale_xi_cpd, k_err = f.error_factor;
@@ -190,7 +188,7 @@ template <bool kAll>
   // combined rule does, exactly, as it does exactly.
   const float s_60 = s * kMaxCpdF;
   const float cap = m.cap_m, cap_c = m.cap_combined_m;
-GAZELOD_IVDEP
+  GAZELOD_IVDEP
   for (std::size_t j = at; j < at + count; ++j) {
     const float e = err[j - at];
     const float dn = out.near_m[j], ecc_deg = out.ecc_deg[j], v_deg = out.vel_dps[j];
@@ -215,16 +213,15 @@ GAZELOD_IVDEP
     const float x_xi = s_xi * b, x_g = (s * g) * b;
     const float dist_c = dn < cap_c ? dn : cap_c;
     const bool size_ok = by_size(f, e, dn), zero = e == 0.0f;  // 0 goes even at a 0 cap
-    const bool comb = size_ok | zero | (x_xi < dist_c) | (x_g < dist_c) |
-                      (beyond & (kMNumeratorF * x_g < dist_c * mq2));
+    const bool comb =
+        size_ok | zero | (x_xi < dist_c) | (x_g < dist_c) | (beyond & (kMNumeratorF * x_g < dist_c * mq2));
     out.combined[j] = (ok & comb) ? 1.0f : 0.0f;
     if constexpr (kAll) {
       // Each criterion alone (the others off; size off: the mesh's cap), a switched-off one
       // only an error of 0.
       const float dist_o = dn < cap ? dn : cap;
       const float x_60 = s_60 * b;  // as x_g with G = 60
-      const bool by_ecc =
-          (x_xi < dist_o) | (x_60 < dist_o) | (beyond & (kMNumeratorF * x_60 < dist_o * mq2));
+      const bool by_ecc = (x_xi < dist_o) | (x_60 < dist_o) | (beyond & (kMNumeratorF * x_60 < dist_o * mq2));
       const bool by_vel = (x_xi < dist_o) | (x_g < dist_o);
       const float zf = zero ? 1.0f : 0.0f;
       const float fe = by_ecc ? on_e : 0.0f, fv = by_vel ? on_v : 0.0f;
@@ -242,9 +239,8 @@ GAZELOD_IVDEP
 // values, so the decisions do not depend on where a record sits. Where most are pending, the
 // whole block is evaluated in place instead (cheaper than gathering).
 template <bool kAll>
-[[gnu::always_inline]] inline void evaluate(const ClusterFrame& f, const ClusterMeshFrame& m,
-                                            const RecordInput& in, std::size_t begin,
-                                            std::size_t count, RecordScreen how,
+[[gnu::always_inline]] inline void evaluate(const ClusterFrame& f, const ClusterMeshFrame& m, const RecordInput& in,
+                                            std::size_t begin, std::size_t count, RecordScreen how,
                                             const float* implied, RecordBlock& out) {
   const bool screen = how != RecordScreen::none;
   if (how == RecordScreen::by_size) screen_loop<kAll, true>(f, in, begin, count, out);
@@ -252,7 +248,7 @@ template <bool kAll>
   // A record implied invisible is left out of the full evaluation (and set below, after it).
   const bool imply = screen && implied != nullptr;
   if (imply) {
-GAZELOD_IVDEP
+    GAZELOD_IVDEP
     for (std::size_t j = 0; j < count; ++j) out.pending[j] = implied[j] > 0.5f ? 0 : out.pending[j];
   }
   std::uint16_t list[kClusterBlock];
@@ -293,15 +289,14 @@ GAZELOD_IVDEP
     }
   }
   if (imply) {  // whichever path ran: a valid record implied invisible is invisible
-GAZELOD_IVDEP
+    GAZELOD_IVDEP
     for (std::size_t j = 0; j < count; ++j)
       out.combined[j] = ((implied[j] > 0.5f) & (out.invalid[j] < 0.5f)) ? 1.0f : out.combined[j];
   }
 }
 
 template <bool kPerCriterion, bool kRecords>
-[[gnu::always_inline]] inline void combine_loop(std::size_t count, const RecordBlock& self,
-                                                const RecordBlock& parent,
+[[gnu::always_inline]] inline void combine_loop(std::size_t count, const RecordBlock& self, const RecordBlock& parent,
                                                 const ClusterOutput& out) {
   // Pointers copied out of `out` first: a byte store may alias them, so GCC would reload them
   // per iteration (and not vectorise).
@@ -311,7 +306,7 @@ template <bool kPerCriterion, bool kRecords>
   std::uint8_t* __restrict only_e = out.eccentricity_only;
   std::uint8_t* __restrict only_v = out.velocity_only;
   std::uint8_t* __restrict bits_out = out.record_invisible;
-GAZELOD_IVDEP
+  GAZELOD_IVDEP
   for (std::size_t j = 0; j < count; ++j) {
     // A product, not std::max: max of two array elements becomes a load from a selected
     // address, which GCC does not vectorise.
@@ -348,18 +343,20 @@ void evaluate_records(const ClusterFrame& frame, const ClusterMeshFrame& mesh,
                       const RecordInput& in, std::size_t begin, std::size_t count,
                       bool all_criteria, RecordScreen screen, const float* implied_invisible,
                       RecordBlock& out) {
-  if (all_criteria) evaluate<true>(frame, mesh, in, begin, count, screen, implied_invisible, out);
-  else evaluate<false>(frame, mesh, in, begin, count, screen, implied_invisible, out);
+  if (all_criteria)
+    evaluate<true>(frame, mesh, in, begin, count, screen, implied_invisible, out);
+  else
+    evaluate<false>(frame, mesh, in, begin, count, screen, implied_invisible, out);
 }
 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GAZELOD_NO_CLONES)
 __attribute__((target_clones("default", "arch=x86-64-v3", "arch=x86-64-v4")))
 #endif
 void pack_record_flags(std::size_t count, const RecordBlock& in, std::uint32_t* __restrict flags) {
-GAZELOD_IVDEP
+  GAZELOD_IVDEP
   for (std::size_t j = 0; j < count; ++j) {
-    const float bits = in.combined[j] + 2.0f * in.size[j] + 4.0f * in.eccentricity[j] +
-                       8.0f * in.velocity[j] + 16.0f * in.positive[j] + 32.0f * in.invalid[j];
+    const float bits = in.combined[j] + 2.0f * in.size[j] + 4.0f * in.eccentricity[j] + 8.0f * in.velocity[j] +
+                       16.0f * in.positive[j] + 32.0f * in.invalid[j];
     flags[j] = static_cast<std::uint32_t>(static_cast<std::int32_t>(bits));
   }
 }
@@ -370,14 +367,14 @@ namespace {
 template <bool kPerCriterion, bool kRecords>
 [[gnu::always_inline]] inline void combine_flags_loop(std::size_t count, const std::uint32_t* __restrict flags,
                                                       const std::uint32_t* __restrict self_index,
-                                                      const std::uint32_t* __restrict parent_index,
-                                                      std::uint32_t lo, std::uint32_t hi,
-                                                      std::uint8_t* __restrict drawn, std::uint8_t* __restrict why_out,
-                                                      std::uint8_t* __restrict only_s, std::uint8_t* __restrict only_e,
-                                                      std::uint8_t* __restrict only_v, std::uint8_t* __restrict bits_out) {
+                                                      const std::uint32_t* __restrict parent_index, std::uint32_t lo,
+                                                      std::uint32_t hi, std::uint8_t* __restrict drawn,
+                                                      std::uint8_t* __restrict why_out, std::uint8_t* __restrict only_s,
+                                                      std::uint8_t* __restrict only_e, std::uint8_t* __restrict only_v,
+                                                      std::uint8_t* __restrict bits_out) {
   constexpr auto kNone = static_cast<std::uint32_t>(Criterion::none);
   constexpr auto kInvalid = static_cast<std::uint32_t>(Criterion::invalid_input);
-GAZELOD_IVDEP
+  GAZELOD_IVDEP
   for (std::size_t j = 0; j < count; ++j) {
     // combine_loop's arithmetic on the packed bits (the same limiting_criterion, on 0/1 words).
     // Offsets from the mesh's first record, as int32 (what a vector gather takes).
@@ -417,12 +414,14 @@ void combine_record_flags(std::size_t count, const std::uint32_t* flags, const s
                           const ClusterOutput& out) {
   const auto run = [&]<bool kPerCriterion, bool kRecords>() {
     combine_flags_loop<kPerCriterion, kRecords>(count, flags + lo, self_index, parent_index, lo, hi, out.drawn,
-                                                out.limited_by, out.size_only, out.eccentricity_only,
-                                                out.velocity_only, out.record_invisible);
+                                                out.limited_by, out.size_only, out.eccentricity_only, out.velocity_only,
+                                                out.record_invisible);
   };
   const bool per_criterion = out.size_only != nullptr, records = out.record_invisible != nullptr;
-  if (per_criterion) records ? run.operator()<true, true>() : run.operator()<true, false>();
-  else records ? run.operator()<false, true>() : run.operator()<false, false>();
+  if (per_criterion)
+    records ? run.operator()<true, true>() : run.operator()<true, false>();
+  else
+    records ? run.operator()<false, true>() : run.operator()<false, false>();
 }
 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GAZELOD_NO_CLONES)
@@ -432,11 +431,15 @@ void combine_records(std::size_t count, const RecordBlock& self, const RecordBlo
                      const ClusterOutput& out) {
   const bool per_criterion = out.size_only != nullptr, records = out.record_invisible != nullptr;
   if (per_criterion) {
-    if (records) combine_loop<true, true>(count, self, parent, out);
-    else combine_loop<true, false>(count, self, parent, out);
+    if (records)
+      combine_loop<true, true>(count, self, parent, out);
+    else
+      combine_loop<true, false>(count, self, parent, out);
   } else {
-    if (records) combine_loop<false, true>(count, self, parent, out);
-    else combine_loop<false, false>(count, self, parent, out);
+    if (records)
+      combine_loop<false, true>(count, self, parent, out);
+    else
+      combine_loop<false, false>(count, self, parent, out);
   }
 }
 

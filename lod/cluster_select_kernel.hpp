@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The vectorised parts of select_clusters (lod/cluster_select.cpp), per block of clusters:
 //   evaluate_records: for one record per cluster (the self or the parent bounds+error), whether
 //     its error is invisible under the combined rule and, on request, under each criterion
@@ -43,23 +44,23 @@ inline constexpr std::size_t kClusterBlock = 256;  // clusters per block: block 
 inline constexpr float kNearFloorM = static_cast<float>(kNearestPointFloorM);
 
 // Slacks (see above; bounds derived in cluster_select_kernel.cpp, measured by the tests).
-inline constexpr float kDistanceLow = 1.0f - 0x1p-20f;      // d = |c - eye| times this
-inline constexpr float kEccentricitySlackRad = 4e-6f;       // E lowered by this
-inline constexpr float kVelocitySlack = 1e-5f;               // v lowered by this x (|V|/dn + |w|)
-inline constexpr float kGSlackCpd = 1e-4f;                   // G raised by this
-inline constexpr double kThresholdMargin = 1.0 + 0x1p-16;    // A e K raised by this factor
+inline constexpr float kDistanceLow = 1.0f - 0x1p-20f;     // d = |c - eye| times this
+inline constexpr float kEccentricitySlackRad = 4e-6f;      // E lowered by this
+inline constexpr float kVelocitySlack = 1e-5f;             // v lowered by this x (|V|/dn + |w|)
+inline constexpr float kGSlackCpd = 1e-4f;                 // G raised by this
+inline constexpr double kThresholdMargin = 1.0 + 0x1p-16;  // A e K raised by this factor
 
 // Frame constants, from a valid Viewer (cluster_select.cpp), in float.
 struct ClusterFrame {
   float eye_hi_m[3], eye_lo_m[3];  // the eye as a float pair: c - eye keeps float precision
   float gaze_unit[3];
   float gaze_omega_rad_s[3], gaze_omega_norm_rad_s;  // |w| rounded up
-  float ecc_offset_rad;     // tracker error + kEccentricitySlackRad, rounded up
-  float scale;              // s, rounded up
-  float scale_xi_cpd;       // s xi, rounded up
-  float static_limit_cpd;   // a0 = s min(60, xi), rounded up; +inf with size off
-  float error_factor;       // K kThresholdMargin (deg per radian, twice), rounded up
-  float on_eccentricity, on_velocity;  // 0 / 1
+  float ecc_offset_rad;                              // tracker error + kEccentricitySlackRad, rounded up
+  float scale;                                       // s, rounded up
+  float scale_xi_cpd;                                // s xi, rounded up
+  float static_limit_cpd;                            // a0 = s min(60, xi), rounded up; +inf with size off
+  float error_factor;                                // K kThresholdMargin (deg per radian, twice), rounded up
+  float on_eccentricity, on_velocity;                // 0 / 1
 };
 
 // Per mesh: its velocity relative to the eye, and the size-off distance cap (metres) at which
@@ -67,14 +68,13 @@ struct ClusterFrame {
 // combined rule: cap_combined_m).
 struct ClusterMeshFrame {
   float rel_vel_m_s[3], rel_speed_m_s;  // |V| rounded up
-  float cap_m;                           // for the per-criterion decisions (size off)
-  float cap_combined_m;                  // cap_m with size off, +inf with size on
+  float cap_m;                          // for the per-criterion decisions (size off)
+  float cap_combined_m;                 // cap_m with size off, +inf with size on
 };
 
 // The constants select_clusters derives (cluster_select.cpp); viewer valid, mesh < mesh count.
 ClusterFrame make_cluster_frame(const Viewer& viewer);
-ClusterMeshFrame make_cluster_mesh_frame(const Viewer& viewer, const ClusterSet& clusters,
-                                         std::size_t mesh);
+ClusterMeshFrame make_cluster_mesh_frame(const Viewer& viewer, const ClusterSet& clusters, std::size_t mesh);
 
 // One record per cluster, structure of arrays, indexed [begin, begin + count).
 struct RecordInput {
@@ -112,9 +112,8 @@ enum class RecordScreen { none, trivial, by_size };
 // is known to be invisible without evaluating it (the cluster's parent record is invisible, and
 // a parent invisible implies its children's records are, cluster_select.hpp): such a record,
 // if valid, is invisible and never fully evaluated (its other flags stay the screen's).
-void evaluate_records(const ClusterFrame& frame, const ClusterMeshFrame& mesh,
-                      const RecordInput& in, std::size_t begin, std::size_t count,
-                      bool all_criteria, RecordScreen screen, const float* implied_invisible,
+void evaluate_records(const ClusterFrame& frame, const ClusterMeshFrame& mesh, const RecordInput& in, std::size_t begin,
+                      std::size_t count, bool all_criteria, RecordScreen screen, const float* implied_invisible,
                       RecordBlock& out);
 
 // Distinct records (ClusterSet's record table): evaluated block by block like the per-cluster
@@ -139,7 +138,6 @@ struct ClusterOutput {
 
 // self: evaluated with all_criteria; parent: with all_criteria when the per-criterion outputs
 // are set.
-void combine_records(std::size_t count, const RecordBlock& self, const RecordBlock& parent,
-                     const ClusterOutput& out);
+void combine_records(std::size_t count, const RecordBlock& self, const RecordBlock& parent, const ClusterOutput& out);
 
 }  // namespace gazelod::lod::detail

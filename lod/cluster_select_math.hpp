@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Float forms of lod/fast_math.hpp's branch-free atan2 and log10, for the per-cluster kernel
 // (lod/cluster_select_kernel.cpp): 16 lanes per AVX-512 vector instead of 8, which the cluster
 // budget (5 ns for two records) needs. Same reductions as the double versions (half-angle
@@ -48,7 +49,7 @@ namespace gazelod::lod::fastf {
   const std::uint32_t bits = std::bit_cast<std::uint32_t>(x);
   const float e = static_cast<float>(static_cast<std::int32_t>(bits >> 23) - 127) + 0.5f;
   const float m_raw = std::bit_cast<float>((bits & 0x007fffffu) | 0x3f800000u);
-  const float t = m_raw * (1.0f / std::numbers::sqrt2_v<float>) - 1.0f;
+  const float t = m_raw * (1.0f / std::numbers::sqrt2_v<float>)-1.0f;
   const float t2 = t * t, t4 = t2 * t2;
   const float p01 = 1.44269652f + t * -0.721360179f;
   const float p23 = 0.480613125f + t * -0.359524455f;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Instance transforms and the cluster store (see cluster_select_store.hpp).
 #include "lod/cluster_select_store.hpp"
 
@@ -30,13 +31,10 @@ struct RecordArrays {
 };
 
 // world = t + scale R local for both centres; radii and errors times scale, rounded up.
-void transform_records(const ClusterHierarchy& h, const InstanceTransform& xf,
-                       const RecordArrays& out) {
+void transform_records(const ClusterHierarchy& h, const InstanceTransform& xf, const RecordArrays& out) {
   const glm::dmat3 rot = glm::mat3_cast(glm::normalize(xf.rotation));
   const double s = xf.scale;
-  const auto centre = [&](float x, float y, float z) {
-    return xf.translation_m + s * (rot * glm::dvec3{x, y, z});
-  };
+  const auto centre = [&](float x, float y, float z) { return xf.translation_m + s * (rot * glm::dvec3{x, y, z}); };
   for (std::size_t i = 0; i < h.size(); ++i) {
     const glm::dvec3 sc = centre(h.self_center_x_m[i], h.self_center_y_m[i], h.self_center_z_m[i]);
     const glm::dvec3 pc = centre(h.parent_center_x_m[i], h.parent_center_y_m[i], h.parent_center_z_m[i]);
@@ -52,12 +50,25 @@ void transform_records(const ClusterHierarchy& h, const InstanceTransform& xf,
 // A one-mesh, static ClusterSet over a hierarchy's records.
 struct OneMesh {
   explicit OneMesh(const ClusterHierarchy& h)
-      : first{0}, count{static_cast<std::uint32_t>(h.size())},
+      : first{0},
+        count{static_cast<std::uint32_t>(h.size())},
         finest{finest_cluster_error_m(h.self_error_m, h.parent_error_m)} {
-    set = ClusterSet{h.self_center_x_m, h.self_center_y_m, h.self_center_z_m, h.self_radius_m,
-                     h.self_error_m, h.parent_center_x_m, h.parent_center_y_m,
-                     h.parent_center_z_m, h.parent_radius_m, h.parent_error_m,
-                     {&first, 1}, {&count, 1}, {}, {}, {}, {&finest, 1}};
+    set = ClusterSet{h.self_center_x_m,
+                     h.self_center_y_m,
+                     h.self_center_z_m,
+                     h.self_radius_m,
+                     h.self_error_m,
+                     h.parent_center_x_m,
+                     h.parent_center_y_m,
+                     h.parent_center_z_m,
+                     h.parent_radius_m,
+                     h.parent_error_m,
+                     {&first, 1},
+                     {&count, 1},
+                     {},
+                     {},
+                     {},
+                     {&finest, 1}};
   }
   OneMesh(const OneMesh&) = delete;  // set points into this object
   OneMesh& operator=(const OneMesh&) = delete;
@@ -86,51 +97,46 @@ std::string validate_cluster_hierarchy(const ClusterHierarchy& h, std::size_t in
   const std::size_t n = h.size();
   if (n > std::numeric_limits<std::uint32_t>::max()) return "more clusters than a uint32 counts";
   if (h.first_index.size() != n || h.index_count.size() != n || h.depth.size() != n)
-    return "first_index, index_count and depth must have one entry per cluster (" +
-           std::to_string(n) + ")";
+    return "first_index, index_count and depth must have one entry per cluster (" + std::to_string(n) + ")";
   if (std::string e = validate_clusters(OneMesh(h).set); !e.empty()) return e;
   for (std::size_t i = 0; i < n; ++i) {
     const std::uint64_t first = h.first_index[i], count = h.index_count[i];
     if (count % 3 == 0 && first + count <= index_buffer_size) continue;
     std::ostringstream m;  // built on failure only
-    if (count % 3 != 0) m << "cluster " << i << ": index_count " << count << " is not a multiple of 3";
+    if (count % 3 != 0)
+      m << "cluster " << i << ": index_count " << count << " is not a multiple of 3";
     else
-      m << "cluster " << i << ": indices [" << first << ", " << first + count
-        << ") out of range of the index buffer (" << index_buffer_size << ")";
+      m << "cluster " << i << ": indices [" << first << ", " << first + count << ") out of range of the index buffer ("
+        << index_buffer_size << ")";
     return m.str();
   }
   return {};
 }
 
-std::string transform_hierarchy(const ClusterHierarchy& local, const InstanceTransform& xf,
-                                ClusterHierarchy& world) {
+std::string transform_hierarchy(const ClusterHierarchy& local, const InstanceTransform& xf, ClusterHierarchy& world) {
   if (std::string e = validate_instance_transform(xf); !e.empty()) return e;
   const std::size_t n = local.size();
-  for (auto* v : {&world.self_center_x_m, &world.self_center_y_m, &world.self_center_z_m,
-                  &world.self_radius_m, &world.self_error_m, &world.parent_center_x_m,
-                  &world.parent_center_y_m, &world.parent_center_z_m, &world.parent_radius_m,
-                  &world.parent_error_m})
+  for (auto* v : {&world.self_center_x_m, &world.self_center_y_m, &world.self_center_z_m, &world.self_radius_m,
+                  &world.self_error_m, &world.parent_center_x_m, &world.parent_center_y_m, &world.parent_center_z_m,
+                  &world.parent_radius_m, &world.parent_error_m})
     v->resize(n);
   world.first_index = local.first_index;
   world.index_count = local.index_count;
   world.depth = local.depth;
   transform_records(local, xf,
-                    {world.self_center_x_m.data(), world.self_center_y_m.data(),
-                     world.self_center_z_m.data(), world.self_radius_m.data(),
-                     world.self_error_m.data(), world.parent_center_x_m.data(),
-                     world.parent_center_y_m.data(), world.parent_center_z_m.data(),
-                     world.parent_radius_m.data(), world.parent_error_m.data()});
+                    {world.self_center_x_m.data(), world.self_center_y_m.data(), world.self_center_z_m.data(),
+                     world.self_radius_m.data(), world.self_error_m.data(), world.parent_center_x_m.data(),
+                     world.parent_center_y_m.data(), world.parent_center_z_m.data(), world.parent_radius_m.data(),
+                     world.parent_error_m.data()});
   return {};
 }
 
-void ClusterStore::write_records(std::size_t mesh, const ClusterHierarchy& local,
-                                 const InstanceTransform& xf) {
+void ClusterStore::write_records(std::size_t mesh, const ClusterHierarchy& local, const InstanceTransform& xf) {
   const std::size_t f = first_[mesh];
   transform_records(local, xf,
-                    {self_x_.data() + f, self_y_.data() + f, self_z_.data() + f,
-                     self_radius_.data() + f, self_error_.data() + f, parent_x_.data() + f,
-                     parent_y_.data() + f, parent_z_.data() + f, parent_radius_.data() + f,
-                     parent_error_.data() + f});
+                    {self_x_.data() + f, self_y_.data() + f, self_z_.data() + f, self_radius_.data() + f,
+                     self_error_.data() + f, parent_x_.data() + f, parent_y_.data() + f, parent_z_.data() + f,
+                     parent_radius_.data() + f, parent_error_.data() + f});
   // The distinct records: copies of the clusters' world records they stand for.
   for (std::size_t r = rec_first_[mesh]; r < rec_first_[mesh] + rec_count_[mesh]; ++r) {
     const std::size_t i = rec_source_[r] / 2;
@@ -166,11 +172,11 @@ void ClusterStore::index_records(const ClusterHierarchy& h) {
   rec_first_.push_back(first_record);
   for (std::size_t i = 0; i < h.size(); ++i)
     for (int which = 0; which < 2; ++which) {  // self, then parent
-      const Key key = which == 0 ? Key{bits(h.self_center_x_m[i]), bits(h.self_center_y_m[i]),
-                                       bits(h.self_center_z_m[i]), bits(h.self_radius_m[i]), bits(h.self_error_m[i])}
-                                 : Key{bits(h.parent_center_x_m[i]), bits(h.parent_center_y_m[i]),
-                                       bits(h.parent_center_z_m[i]), bits(h.parent_radius_m[i]),
-                                       bits(h.parent_error_m[i])};
+      const Key key = which == 0
+                          ? Key{bits(h.self_center_x_m[i]), bits(h.self_center_y_m[i]), bits(h.self_center_z_m[i]),
+                                bits(h.self_radius_m[i]), bits(h.self_error_m[i])}
+                          : Key{bits(h.parent_center_x_m[i]), bits(h.parent_center_y_m[i]),
+                                bits(h.parent_center_z_m[i]), bits(h.parent_radius_m[i]), bits(h.parent_error_m[i])};
       const auto [it, added] = seen.emplace(key, static_cast<std::uint32_t>(rec_source_.size()));
       if (added) rec_source_.push_back(2 * (first_cluster + i) + static_cast<std::uint64_t>(which));
       (which == 0 ? self_rec_ : parent_rec_).push_back(it->second);
@@ -181,8 +187,7 @@ void ClusterStore::index_records(const ClusterHierarchy& h) {
 
 std::uint32_t ClusterStore::add_mesh(const ClusterHierarchy& local, const InstanceTransform& pose,
                                      const glm::dvec3& velocity_m_s, std::size_t index_buffer_size) {
-  if (std::string e = validate_cluster_hierarchy(local, index_buffer_size); !e.empty())
-    throw std::invalid_argument(e);
+  if (std::string e = validate_cluster_hierarchy(local, index_buffer_size); !e.empty()) throw std::invalid_argument(e);
   if (std::string e = validate_instance_transform(pose); !e.empty()) throw std::invalid_argument(e);
   if (!finite3(velocity_m_s)) throw std::invalid_argument("velocity is not finite");
   if (size() + local.size() > std::numeric_limits<std::uint32_t>::max() ||
@@ -194,8 +199,8 @@ std::uint32_t ClusterStore::add_mesh(const ClusterHierarchy& local, const Instan
     throw std::invalid_argument("in world space: " + e);
 
   const std::size_t f = size();
-  for (auto* v : {&self_x_, &self_y_, &self_z_, &self_radius_, &self_error_, &parent_x_,
-                  &parent_y_, &parent_z_, &parent_radius_, &parent_error_})
+  for (auto* v : {&self_x_, &self_y_, &self_z_, &self_radius_, &self_error_, &parent_x_, &parent_y_, &parent_z_,
+                  &parent_radius_, &parent_error_})
     v->resize(f + local.size());
   const auto id = static_cast<std::uint32_t>(count_.size());
   first_.push_back(static_cast<std::uint32_t>(f));
@@ -207,13 +212,12 @@ std::uint32_t ClusterStore::add_mesh(const ClusterHierarchy& local, const Instan
   return id;
 }
 
-void ClusterStore::set_pose(std::uint32_t mesh, const ClusterHierarchy& local,
-                            const InstanceTransform& pose, const glm::dvec3& velocity_m_s) {
+void ClusterStore::set_pose(std::uint32_t mesh, const ClusterHierarchy& local, const InstanceTransform& pose,
+                            const glm::dvec3& velocity_m_s) {
   if (mesh >= count_.size()) throw std::out_of_range("mesh id out of range");
   if (local.size() != count_[mesh])
-    throw std::invalid_argument("the hierarchy has " + std::to_string(local.size()) +
-                                " clusters, mesh " + std::to_string(mesh) + " was registered with " +
-                                std::to_string(count_[mesh]));
+    throw std::invalid_argument("the hierarchy has " + std::to_string(local.size()) + " clusters, mesh " +
+                                std::to_string(mesh) + " was registered with " + std::to_string(count_[mesh]));
   if (std::string e = validate_instance_transform(pose); !e.empty()) throw std::invalid_argument(e);
   if (!finite3(velocity_m_s)) throw std::invalid_argument("velocity is not finite");
   write_records(mesh, local, pose);
@@ -224,8 +228,8 @@ void ClusterStore::set_pose(std::uint32_t mesh, const ClusterHierarchy& local,
 }
 
 void ClusterStore::reserve(std::size_t meshes, std::size_t clusters) {
-  for (auto* v : {&self_x_, &self_y_, &self_z_, &self_radius_, &self_error_, &parent_x_,
-                  &parent_y_, &parent_z_, &parent_radius_, &parent_error_})
+  for (auto* v : {&self_x_, &self_y_, &self_z_, &self_radius_, &self_error_, &parent_x_, &parent_y_, &parent_z_,
+                  &parent_radius_, &parent_error_})
     v->reserve(clusters);
   first_.reserve(meshes), count_.reserve(meshes);
   for (auto* v : {&vel_x_, &vel_y_, &vel_z_, &finest_}) v->reserve(meshes);
@@ -234,11 +238,10 @@ void ClusterStore::reserve(std::size_t meshes, std::size_t clusters) {
 }
 
 ClusterSet ClusterStore::view() const {
-  return ClusterSet{self_x_,   self_y_,   self_z_,   self_radius_,   self_error_,
-                    parent_x_, parent_y_, parent_z_, parent_radius_, parent_error_,
-                    first_,    count_,    vel_x_,    vel_y_,         vel_z_,
-                    finest_,   rec_x_,    rec_y_,    rec_z_,         rec_radius_,
-                    rec_error_, self_rec_, parent_rec_, rec_first_,  rec_count_};
+  return ClusterSet{self_x_,   self_y_,        self_z_,       self_radius_, self_error_, parent_x_,   parent_y_,
+                    parent_z_, parent_radius_, parent_error_, first_,       count_,      vel_x_,      vel_y_,
+                    vel_z_,    finest_,        rec_x_,        rec_y_,       rec_z_,      rec_radius_, rec_error_,
+                    self_rec_, parent_rec_,    rec_first_,    rec_count_};
 }
 
 }  // namespace gazelod::lod

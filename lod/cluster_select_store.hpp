@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Cluster hierarchies into world space for select_clusters (lod/cluster_select.hpp): the
 // instance transform (rotation, translation, uniform scale) applied to a hierarchy once, and
 // ClusterStore, an owning builder of a ClusterSet over many meshes, validated at
@@ -36,14 +37,12 @@ std::string validate_instance_transform(const InstanceTransform& xf);
 // "" when one mesh's hierarchy (its own space) is consistent: validate_clusters on its records
 // as one static mesh, and first_index, index_count, depth one per cluster with each cluster's
 // triangles (index_count a multiple of 3) inside an index buffer of index_buffer_size.
-std::string validate_cluster_hierarchy(const ClusterHierarchy& hierarchy,
-                                       std::size_t index_buffer_size);
+std::string validate_cluster_hierarchy(const ClusterHierarchy& hierarchy, std::size_t index_buffer_size);
 
 // Applies xf to local's records into world (resized to local's size: no allocation once it
 // has that size; triangle ranges and depth copied). "" or why not (an invalid transform;
 // world untouched).
-std::string transform_hierarchy(const ClusterHierarchy& local, const InstanceTransform& xf,
-                                ClusterHierarchy& world);
+std::string transform_hierarchy(const ClusterHierarchy& local, const InstanceTransform& xf, ClusterHierarchy& world);
 
 // Owns the arrays behind a ClusterSet: meshes' clusters back to back in registration order,
 // with the set's distinct records (ClusterSet::record_*: records equal bit for bit in a mesh's
@@ -52,8 +51,8 @@ class ClusterStore {
  public:
   // Validates local (validate_cluster_hierarchy), then its records in world space, and appends
   // it; returns the mesh id. Throws std::invalid_argument with the reason (store unchanged).
-  std::uint32_t add_mesh(const ClusterHierarchy& local, const InstanceTransform& pose,
-                         const glm::dvec3& velocity_m_s, std::size_t index_buffer_size);
+  std::uint32_t add_mesh(const ClusterHierarchy& local, const InstanceTransform& pose, const glm::dvec3& velocity_m_s,
+                         std::size_t index_buffer_size);
   // A mesh moved: local must be the hierarchy it was registered with. Throws
   // std::invalid_argument (bad pose or velocity, cluster count differs) or std::out_of_range.
   void set_pose(std::uint32_t mesh, const ClusterHierarchy& local, const InstanceTransform& pose,
@@ -73,8 +72,8 @@ class ClusterStore {
   std::vector<std::uint32_t> first_, count_;
   std::vector<double> vel_x_, vel_y_, vel_z_, finest_;
   std::vector<float> rec_x_, rec_y_, rec_z_, rec_radius_, rec_error_;  // distinct records
-  std::vector<std::uint32_t> self_rec_, parent_rec_;   // per cluster
-  std::vector<std::uint32_t> rec_first_, rec_count_;   // per mesh
+  std::vector<std::uint32_t> self_rec_, parent_rec_;                   // per cluster
+  std::vector<std::uint32_t> rec_first_, rec_count_;                   // per mesh
   std::vector<std::uint64_t> rec_source_;  // per record: 2 x cluster (+1 for its parent record)
 };
 

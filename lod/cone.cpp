@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Foveal cone construction (see cone.hpp).
 #include "lod/cone.hpp"
 

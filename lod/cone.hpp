@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The volumetric foveal cone of Reddy 1995 (sections 5-5.3): a cone from the eye along the
 // gaze ray inside which the eye resolves its finest detail, widened by the gaze estimate's
 // angular uncertainty. The plugin builds it every frame (its diagnostics carry it; `gazelod

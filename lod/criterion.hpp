@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Why an object got its level: the criterion of Reddy's rule (1998) that allows it. The
 // selection writes one value per object (Decisions::limited_by), the plugin hands it on
 // (FrameDecisions::limited_by), reports count it.
@@ -23,8 +24,7 @@ const char* to_string(Criterion c);
 // selection kernel (Count = float, 16 objects a vector) and the scalar path (Count =
 // unsigned) share it.
 template <class Count>
-[[gnu::always_inline]] inline Count limiting_criterion(Count chosen, Count size_only,
-                                                       Count eccentricity_only,
+[[gnu::always_inline]] inline Count limiting_criterion(Count chosen, Count size_only, Count eccentricity_only,
                                                        Count velocity_only) {
   Count why = chosen == velocity_only ? Count(Criterion::velocity) : Count(Criterion::combined);
   why = chosen == eccentricity_only ? Count(Criterion::eccentricity) : why;

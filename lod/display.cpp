@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // xi per view and per display (Reddy 1998 equation 4) and display validation.
 #include "lod/angles.hpp"
 #include "lod/display.hpp"
@@ -9,7 +10,6 @@
 
 namespace gazelod::lod {
 namespace {
-
 
 // pixels / (2 fov): one pixel is half a contrast cycle. 0 for an invalid axis, never NaN/inf.
 double half_cycles_per_deg(int pixels, double fov_deg) {
@@ -39,9 +39,15 @@ FovRad symmetric_fov(double h_deg, double v_deg) {
   return FovRad{-h, h, v, -v};
 }
 
-double xi_h_cpd(const ViewSpec& view) { return half_cycles_per_deg(view.width_px, fov_h_deg(view)); }
-double xi_v_cpd(const ViewSpec& view) { return half_cycles_per_deg(view.height_px, fov_v_deg(view)); }
-double xi_cpd(const ViewSpec& view) { return std::max(xi_h_cpd(view), xi_v_cpd(view)); }
+double xi_h_cpd(const ViewSpec& view) {
+  return half_cycles_per_deg(view.width_px, fov_h_deg(view));
+}
+double xi_v_cpd(const ViewSpec& view) {
+  return half_cycles_per_deg(view.height_px, fov_v_deg(view));
+}
+double xi_cpd(const ViewSpec& view) {
+  return std::max(xi_h_cpd(view), xi_v_cpd(view));
+}
 
 // The best view: xi is the highest frequency the display can show anywhere.
 double xi_cpd(const DisplaySpec& display) {
@@ -62,10 +68,9 @@ std::string validate_view(const ViewSpec& view) {
     m << "pixels must be > 0 on both axes, got " << view.width_px << "x" << view.height_px;
     return m.str();
   }
-  for (auto [name, rad] : {std::pair{"angleLeft", view.fov.angle_left_rad},
-                           std::pair{"angleRight", view.fov.angle_right_rad},
-                           std::pair{"angleUp", view.fov.angle_up_rad},
-                           std::pair{"angleDown", view.fov.angle_down_rad}}) {
+  for (auto [name, rad] :
+       {std::pair{"angleLeft", view.fov.angle_left_rad}, std::pair{"angleRight", view.fov.angle_right_rad},
+        std::pair{"angleUp", view.fov.angle_up_rad}, std::pair{"angleDown", view.fov.angle_down_rad}}) {
     std::string e = check_angle(name, rad);
     if (!e.empty()) return e;
   }

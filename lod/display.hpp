@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Displays as the acuity model sees them: per-view pixels and asymmetric field of view, as
 // OpenXR reports them (XrFovf angleLeft/Right/Up/Down, radians, left and down negative),
 // the highest spatial frequency a view can show (xi, Reddy 1998 section 3.4), and named presets.
@@ -26,14 +27,14 @@ struct ViewSpec {
 };
 
 struct DisplaySpec {
-  std::string name;          // preset key ("quest3") or "custom"
-  std::string label;         // "Meta Quest 3"
-  ViewSpec views[2];         // per-eye; view_count 1 for a desktop
+  std::string name;   // preset key ("quest3") or "custom"
+  std::string label;  // "Meta Quest 3"
+  ViewSpec views[2];  // per-eye; view_count 1 for a desktop
   int view_count = 2;
   double refresh_hz = 90.0;
-  double eye_tracking_hz = 0.0;             // 0: no eye tracker
-  double eye_tracking_accuracy_deg = 0.0;   // typical angular error of its tracker, 0 if none
-  std::string source;        // where the figures come from
+  double eye_tracking_hz = 0.0;            // 0: no eye tracker
+  double eye_tracking_accuracy_deg = 0.0;  // typical angular error of its tracker, 0 if none
+  std::string source;                      // where the figures come from
   // Extension (gazelod, not Reddy 1998): pixels per degree at the lens centre where the maker
   // states it (lenses concentrate pixels there), 0 if unknown. xi_cpd() stays Reddy's
   // whole-view average; xi_center_cpd() gives the centre figure.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Named display presets. Per-eye pixels, FOV, refresh and eye tracking as published; where a
 // maker gives only a total/diagonal FOV it is applied per eye and symmetric, which the
 // source string says. Figures marked "assumed" are not published; they are placeholders the
@@ -12,9 +13,8 @@
 namespace gazelod::lod {
 namespace {
 
-DisplaySpec make(const char* name, const char* label, int w, int h, double fov_h, double fov_v,
-                 int views, double hz, double et_hz, double et_acc_deg, double center_ppd,
-                 const char* source) {
+DisplaySpec make(const char* name, const char* label, int w, int h, double fov_h, double fov_v, int views, double hz,
+                 double et_hz, double et_acc_deg, double center_ppd, const char* source) {
   DisplaySpec d;
   d.name = name;
   d.label = label;
@@ -35,11 +35,11 @@ double desktop_fov_deg(double size_cm) {
 
 const std::array<DisplaySpec, 10>& presets() {
   static const std::array<DisplaySpec, 10> all = {
-      make("desktop", "Desktop monitor 40x30 cm at 40 cm (Reddy 1998)", 1280, 1024,
-           desktop_fov_deg(40.0), desktop_fov_deg(30.0), 1, 60.0, 0.0, 0.0, 0.0,
+      make("desktop", "Desktop monitor 40x30 cm at 40 cm (Reddy 1998)", 1280, 1024, desktop_fov_deg(40.0),
+           desktop_fov_deg(30.0), 1, 60.0, 0.0, 0.0, 0.0,
            "Reddy 1998 section 4.1: 1280x1024, 53.1x41.1 deg; 60 Hz assumed"),
-      make("iglasses", "Virtual i-O i-glasses! (Reddy 1998)", 263, 230, 30.0, 24.0, 2, 60.0, 0.0,
-           0.0, 0.0, "Reddy 1998 section 4.2: 263x230, 30x24 deg; 60 Hz assumed"),
+      make("iglasses", "Virtual i-O i-glasses! (Reddy 1998)", 263, 230, 30.0, 24.0, 2, 60.0, 0.0, 0.0, 0.0,
+           "Reddy 1998 section 4.2: 263x230, 30x24 deg; 60 Hz assumed"),
       make("quest3", "Meta Quest 3", 2064, 2208, 110.0, 96.0, 2, 120.0, 0.0, 0.0, 25.0,
            "Meta Quest 3 tech specs (meta.com, 2023): 2064x2208 per eye, 110 H x 96 V deg "
            "(total, applied per eye), 72/90/120 Hz, 25 PPD centre; no eye tracking"),
@@ -79,6 +79,8 @@ const DisplaySpec* find_display_preset(std::string_view name) {
   return nullptr;
 }
 
-std::span<const DisplaySpec> display_presets() { return presets(); }
+std::span<const DisplaySpec> display_presets() {
+  return presets();
+}
 
 }  // namespace gazelod::lod

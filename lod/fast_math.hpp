@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Branch-free atan2 and log10 for the per-object selection kernel (lod/select_kernel.cpp),
 // where libm calls would cost more than the whole 10 ns/object budget. Written with
 // ternaries only (no early return, no data-dependent branch) so that GCC vectorises the loops
@@ -58,8 +59,7 @@ namespace gazelod::lod::fast {
 [[gnu::always_inline]] inline double log10_normal(double x) {
   const std::uint64_t bits = std::bit_cast<std::uint64_t>(x);
   // bit pattern of 2^52 + biased exponent, as a double, minus 2^52 + 1023.
-  const double e_raw =
-      std::bit_cast<double>((bits >> 52) | 0x4330000000000000ULL) - (4503599627370496.0 + 1023.0);
+  const double e_raw = std::bit_cast<double>((bits >> 52) | 0x4330000000000000ULL) - (4503599627370496.0 + 1023.0);
   const double m_raw = std::bit_cast<double>((bits & 0x000fffffffffffffULL) | 0x3ff0000000000000ULL);
   // x = 2^(e + 1/2) (m_raw / sqrt2): m in [sqrt(1/2), sqrt(2)) without a comparison (a
   // fold by a blend makes GCC run the series twice, once per side).

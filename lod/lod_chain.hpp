@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // An object's chain of levels of detail, as the selection and the budget see it.
 // Level 0 is full detail; each coarser level says how much detail it removes (Reddy 1998, 3.2).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "lod/lod_map.hpp"
 
 #include <algorithm>
@@ -25,15 +26,13 @@ double lod_map_motion_score(double speed_deg_s, const LodMapParams& p) {
   return std::clamp(fall, 0.0, 1.0);
 }
 
-double lod_map_detail(const LodMapInput& in, bool use_colour, bool colour_salient,
-                      const LodMapParams& p) {
+double lod_map_detail(const LodMapInput& in, bool use_colour, bool colour_salient, const LodMapParams& p) {
   const LodMapWeights& w = p.weights;
   const double wc = use_colour ? std::max(0.0, w.colour) : 0.0;
   const double ws = std::max(0.0, w.size), we = std::max(0.0, w.eccentricity), wm = std::max(0.0, w.motion);
   const double total = ws + wc + we + wm;
   if (!(total > 0.0) || !std::isfinite(total)) return 1.0;  // no usable weights: keep detail
-  const double sum = ws * lod_map_size_score(in.angular_radius_deg, p) +
-                     wc * (colour_salient ? 1.0 : 0.0) +
+  const double sum = ws * lod_map_size_score(in.angular_radius_deg, p) + wc * (colour_salient ? 1.0 : 0.0) +
                      we * lod_map_eccentricity_score(in.eccentricity_deg) +
                      wm * lod_map_motion_score(in.speed_deg_s, p);
   return std::clamp(sum / total, 0.0, 1.0);
@@ -46,13 +45,11 @@ std::uint8_t lod_map_level(double detail, std::uint8_t levels) {
   return static_cast<std::uint8_t>(std::clamp(level, 0.0, static_cast<double>(levels - 1)));
 }
 
-std::string lod_map_select(std::span<const LodMapInput> objects,
-                           std::span<const std::uint8_t> level_counts, const LodMapParams& p,
-                           std::span<std::uint8_t> out_levels) {
+std::string lod_map_select(std::span<const LodMapInput> objects, std::span<const std::uint8_t> level_counts,
+                           const LodMapParams& p, std::span<std::uint8_t> out_levels) {
   if (level_counts.size() != objects.size() || out_levels.size() != objects.size())
-    return "lod_map_select: " + std::to_string(objects.size()) + " objects but " +
-           std::to_string(level_counts.size()) + " level counts and " +
-           std::to_string(out_levels.size()) + " outputs";
+    return "lod_map_select: " + std::to_string(objects.size()) + " objects but " + std::to_string(level_counts.size()) +
+           " level counts and " + std::to_string(out_levels.size()) + " outputs";
   if (!(p.colour_salient_fraction >= 0.0 && p.colour_salient_fraction <= 1.0))
     return "lod_map_select: colour_salient_fraction must be in [0, 1]";
   std::map<int, std::size_t> group_size;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The LOD-map thesis's policy (an acuity map plus a saliency map), an alternative to
 // Reddy's thresholds (lod/select.hpp). Each object gets a detail value in [0, 1] from a weighted
 // sum of criterion scores, each score in [0, 1] (1 = wants full detail):
@@ -29,8 +30,8 @@ struct LodMapWeights {
 
 struct LodMapParams {
   LodMapWeights weights;
-  double size_full_deg = 5.0;           // angular radius that scores 1 (our choice: the thesis
-                                        // leaves the pixel-size normalisation open)
+  double size_full_deg = 5.0;  // angular radius that scores 1 (our choice: the thesis
+                               // leaves the pixel-size normalisation open)
   double motion_peak_deg_s = 20.0;
   double motion_max_deg_s = 80.0;
   double colour_salient_fraction = 0.20;
@@ -50,16 +51,14 @@ double lod_map_eccentricity_score(double eccentricity_deg);
 double lod_map_motion_score(double speed_deg_s, const LodMapParams& p);
 
 // Detail in [0, 1] of one object; `colour_salient` is ignored when `use_colour` is false.
-double lod_map_detail(const LodMapInput& in, bool use_colour, bool colour_salient,
-                      const LodMapParams& p);
+double lod_map_detail(const LodMapInput& in, bool use_colour, bool colour_salient, const LodMapParams& p);
 
 // Level in [0, levels - 1] for a detail value (levels >= 1; NaN gives level 0).
 std::uint8_t lod_map_level(double detail, std::uint8_t levels);
 
 // The whole map: colour salience from the groups (used only if some object has a group),
 // then one level per object. Returns "" or a message on mismatched span sizes / params.
-std::string lod_map_select(std::span<const LodMapInput> objects,
-                           std::span<const std::uint8_t> level_counts, const LodMapParams& p,
-                           std::span<std::uint8_t> out_levels);
+std::string lod_map_select(std::span<const LodMapInput> objects, std::span<const std::uint8_t> level_counts,
+                           const LodMapParams& p, std::span<std::uint8_t> out_levels);
 
 }  // namespace gazelod::lod

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Validation and the owning builder for ObjectSet (see object_set.hpp).
 #include "lod/object_set.hpp"
 
@@ -9,8 +10,7 @@ namespace gazelod::lod {
 
 double level_weight(const LodLevel& level) {
   if (!(level.detail > 0.0)) return 0.0;
-  return level.detail_kind == DetailKind::removed_cycles_per_diameter ? level.detail
-                                                                      : 1.0 / level.detail;
+  return level.detail_kind == DetailKind::removed_cycles_per_diameter ? level.detail : 1.0 / level.detail;
 }
 
 float level_weight_f(const LodLevel& level) {
@@ -43,8 +43,8 @@ std::optional<ChainProblem> find_chain_problem(std::span<const LodLevel> levels)
     // A coarser level that costs more is a mislabelled chain (reports would show it as more
     // than full detail, and the frame budget would coarsen into it to save time).
     if (l.triangles > levels[k - 1].triangles) {
-      m << "has more triangles (" << l.triangles << ") than level " << k - 1 << " ("
-        << levels[k - 1].triangles << "): triangle counts must not increase along the chain";
+      m << "has more triangles (" << l.triangles << ") than level " << k - 1 << " (" << levels[k - 1].triangles
+        << "): triangle counts must not increase along the chain";
       return ChainProblem{k, m.str()};
     }
     if (k >= 2 && level_weight(l) > level_weight(levels[k - 1])) {
@@ -69,15 +69,14 @@ std::string validate_objects(const ObjectSet& o) {
   std::ostringstream m;
   const std::size_t n = o.size();
   const bool moving = !o.vel_x_m_s.empty() || !o.vel_y_m_s.empty() || !o.vel_z_m_s.empty();
-  if (o.center_x_m.size() != n || o.center_y_m.size() != n || o.center_z_m.size() != n ||
-      o.detail_kind.size() != n || o.lod_first.size() != n || o.lod_count.size() != n ||
+  if (o.center_x_m.size() != n || o.center_y_m.size() != n || o.center_z_m.size() != n || o.detail_kind.size() != n ||
+      o.lod_first.size() != n || o.lod_count.size() != n ||
       (moving && (o.vel_x_m_s.size() != n || o.vel_y_m_s.size() != n || o.vel_z_m_s.size() != n))) {
     m << "object arrays differ in length (radius_m has " << n << ")";
     return m.str();
   }
   for (std::size_t i = 0; i < n; ++i) {
-    if (!std::isfinite(o.center_x_m[i]) || !std::isfinite(o.center_y_m[i]) ||
-        !std::isfinite(o.center_z_m[i])) {
+    if (!std::isfinite(o.center_x_m[i]) || !std::isfinite(o.center_y_m[i]) || !std::isfinite(o.center_z_m[i])) {
       m << "object " << i << ": centre is not finite";
       return m.str();
     }
@@ -85,15 +84,15 @@ std::string validate_objects(const ObjectSet& o) {
       m << "object " << i << ": radius_m must be finite and >= 0, got " << o.radius_m[i];
       return m.str();
     }
-    if (moving && (!std::isfinite(o.vel_x_m_s[i]) || !std::isfinite(o.vel_y_m_s[i]) ||
-                   !std::isfinite(o.vel_z_m_s[i]))) {
+    if (moving &&
+        (!std::isfinite(o.vel_x_m_s[i]) || !std::isfinite(o.vel_y_m_s[i]) || !std::isfinite(o.vel_z_m_s[i]))) {
       m << "object " << i << ": velocity is not finite";
       return m.str();
     }
     const std::size_t first = o.lod_first[i], count = o.lod_count[i];
     if (count == 0 || first + count > o.level_weight.size()) {
-      m << "object " << i << ": levels [" << first << ", " << first + count
-        << ") out of range of level_weight (" << o.level_weight.size() << ")";
+      m << "object " << i << ": levels [" << first << ", " << first + count << ") out of range of level_weight ("
+        << o.level_weight.size() << ")";
       return m.str();
     }
     for (std::size_t k = 1; k < count; ++k) {
@@ -113,8 +112,7 @@ std::uint32_t ObjectStore::add(const glm::dvec3& c, double radius_m, const glm::
   if (std::string e = validate_chain(levels); !e.empty()) throw std::invalid_argument(e);
   if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z))
     throw std::invalid_argument("centre is not finite");
-  if (!std::isfinite(radius_m) || radius_m < 0.0)
-    throw std::invalid_argument("radius_m must be finite and >= 0");
+  if (!std::isfinite(radius_m) || radius_m < 0.0) throw std::invalid_argument("radius_m must be finite and >= 0");
   if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
     throw std::invalid_argument("velocity is not finite");
   const auto id = static_cast<std::uint32_t>(radius_.size());

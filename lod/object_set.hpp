@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Per-object data for the selection in structure-of-arrays form (one span per field), and
 // ObjectStore, an owning builder that validates LOD chains once at registration so the
 // per-frame loop does not have to. Chains are flattened: object i's levels are
@@ -22,7 +23,7 @@ struct ObjectSet {
   std::span<const double> radius_m;                            // bounding-sphere radius, >= 0
   // World velocity; all three empty means every object is static.
   std::span<const double> vel_x_m_s, vel_y_m_s, vel_z_m_s;
-  std::span<const DetailKind> detail_kind;  // per object (one kind per chain)
+  std::span<const DetailKind> detail_kind;   // per object (one kind per chain)
   std::span<const std::uint32_t> lod_first;  // per object, index into level_weight
   std::span<const std::uint8_t> lod_count;   // per object, levels in the chain (1..255)
   // Per level: removed cycles per object diameter, or 1 / geometric error (1/m); level 0's

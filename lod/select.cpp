@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Per-object LOD selection over structure-of-arrays data (see select.hpp), in blocks of
 // detail::kSelectBlock objects (lod/select_kernel.hpp): phase 1 computes E, v, alpha and the
 // acuity terms of every object, the chains' weights are gathered into rows, phase 2 counts
@@ -19,7 +20,6 @@
 
 namespace gazelod::lod {
 namespace {
-
 
 bool finite3(const glm::dvec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
@@ -43,8 +43,7 @@ detail::KernelFrame kernel_frame(const FrameConstants& f) {
   return kf;
 }
 
-void write_diagnostics(const detail::KernelBlock& b, std::size_t m, std::size_t base,
-                       const Decisions& out) {
+void write_diagnostics(const detail::KernelBlock& b, std::size_t m, std::size_t base, const Decisions& out) {
   const std::size_t n = base + m;
   if (out.ecc_deg.size() >= n)
     for (std::size_t j = 0; j < m; ++j) out.ecc_deg[base + j] = static_cast<float>(b.ecc_deg[j]);
@@ -52,8 +51,7 @@ void write_diagnostics(const detail::KernelBlock& b, std::size_t m, std::size_t 
     for (std::size_t j = 0; j < m; ++j)
       out.vel_dps[base + j] = static_cast<float>(std::min(std::sqrt(b.vel2_dps2[j]), 3.0e38));
   if (out.angular_radius_deg.size() >= n)
-    for (std::size_t j = 0; j < m; ++j)
-      out.angular_radius_deg[base + j] = static_cast<float>(b.alpha_deg[j]);
+    for (std::size_t j = 0; j < m; ++j) out.angular_radius_deg[base + j] = static_cast<float>(b.alpha_deg[j]);
 }
 
 // The same counts as select_kernel_levels, scalar, for a chain longer than the rows hold,
@@ -86,23 +84,32 @@ void decide_long_chain(const detail::KernelFrame& f, const detail::KernelBlock& 
 
 const char* to_string(Criterion c) {
   switch (c) {
-    case Criterion::none: return "none";
-    case Criterion::size: return "size";
-    case Criterion::eccentricity: return "eccentricity";
-    case Criterion::velocity: return "velocity";
-    case Criterion::combined: return "combined";
-    case Criterion::invalid_input: return "invalid_input";
+    case Criterion::none:
+      return "none";
+    case Criterion::size:
+      return "size";
+    case Criterion::eccentricity:
+      return "eccentricity";
+    case Criterion::velocity:
+      return "velocity";
+    case Criterion::combined:
+      return "combined";
+    case Criterion::invalid_input:
+      return "invalid_input";
   }
   return "unknown";
 }
 
 std::string validate_viewer(const Viewer& v) {
   std::ostringstream m;
-  if (!finite3(v.eye_position_m)) m << "eye_position_m is not finite";
-  else if (!finite3(v.eye_velocity_m_s)) m << "eye_velocity_m_s is not finite";
+  if (!finite3(v.eye_position_m))
+    m << "eye_position_m is not finite";
+  else if (!finite3(v.eye_velocity_m_s))
+    m << "eye_velocity_m_s is not finite";
   else if (!finite3(v.gaze_direction) || !(glm::length(v.gaze_direction) > 0.0))
     m << "gaze_direction must be finite and non-zero";
-  else if (!finite3(v.head_angular_velocity_rad_s)) m << "head_angular_velocity_rad_s is not finite";
+  else if (!finite3(v.head_angular_velocity_rad_s))
+    m << "head_angular_velocity_rad_s is not finite";
   else if (!finite3(v.gaze_angular_velocity_in_head_rad_s))
     m << "gaze_angular_velocity_in_head_rad_s is not finite";
   else if (!std::isfinite(v.xi_cpd) || !(v.xi_cpd > 0.0))
@@ -134,8 +141,8 @@ std::string select_lods(const Viewer& viewer, const ObjectSet& o, const Decision
   if (std::string e = validate_viewer(viewer); !e.empty()) return "viewer: " + e;
   const std::size_t n = o.size();
   const bool moving = !o.vel_x_m_s.empty();
-  if (o.center_x_m.size() != n || o.center_y_m.size() != n || o.center_z_m.size() != n ||
-      o.lod_first.size() != n || o.lod_count.size() != n || o.detail_kind.size() != n ||
+  if (o.center_x_m.size() != n || o.center_y_m.size() != n || o.center_z_m.size() != n || o.lod_first.size() != n ||
+      o.lod_count.size() != n || o.detail_kind.size() != n ||
       (moving && (o.vel_x_m_s.size() != n || o.vel_y_m_s.size() != n || o.vel_z_m_s.size() != n)) ||
       (!moving && (!o.vel_y_m_s.empty() || !o.vel_z_m_s.empty())))
     return "objects: arrays differ in length";
@@ -148,14 +155,16 @@ std::string select_lods(const Viewer& viewer, const ObjectSet& o, const Decision
   const FrameConstants f = prepare_frame(viewer);
   detail::KernelFrame kf = kernel_frame(f);
   kf.diagnostics = diag_e || diag_v || diag_a;
-  const detail::KernelInput in{o.center_x_m.data(), o.center_y_m.data(), o.center_z_m.data(),
-                               o.radius_m.data(),   moving ? o.vel_x_m_s.data() : nullptr,
+  const detail::KernelInput in{o.center_x_m.data(),
+                               o.center_y_m.data(),
+                               o.center_z_m.data(),
+                               o.radius_m.data(),
+                               moving ? o.vel_x_m_s.data() : nullptr,
                                moving ? o.vel_y_m_s.data() : nullptr,
                                moving ? o.vel_z_m_s.data() : nullptr};
   const std::size_t n_weights = o.level_weight.size();
   const float* w_all = o.level_weight.data();
-  const detail::ChainInput chains{o.lod_first.data(), o.lod_count.data(), o.detail_kind.data(),
-                                  w_all, n_weights};
+  const detail::ChainInput chains{o.lod_first.data(), o.lod_count.data(), o.detail_kind.data(), w_all, n_weights};
   detail::KernelBlock blk;  // about 13 KiB, reused per block
   std::uint32_t first_b[detail::kSelectBlock];
   std::uint16_t count_b[detail::kSelectBlock];  // levels in the fast path (1 = none coarser)
@@ -189,8 +198,10 @@ std::string select_lods(const Viewer& viewer, const ObjectSet& o, const Decision
       const std::size_t first = o.lod_first[i], count = o.lod_count[i];
       const bool ok = count > 0 && first + count <= n_weights;  // bad geometry: phase 2
       const bool fits = count <= detail::kRowLevels + 1;
-      if (!ok) [[unlikely]] bad[n_bad++] = static_cast<std::uint16_t>(j);
-      else if (!fits) [[unlikely]] slow[n_slow++] = static_cast<std::uint16_t>(j);
+      if (!ok) [[unlikely]]
+        bad[n_bad++] = static_cast<std::uint16_t>(j);
+      else if (!fits) [[unlikely]]
+        slow[n_slow++] = static_cast<std::uint16_t>(j);
       first_b[j] = static_cast<std::uint32_t>(first);
       count_b[j] = static_cast<std::uint16_t>(!ok ? 1 : fits ? count : detail::kRowLevels + 1);
       rows = std::max<std::size_t>(rows, count_b[j] - 1u);
@@ -205,10 +216,8 @@ std::string select_lods(const Viewer& viewer, const ObjectSet& o, const Decision
     }
     detail::select_kernel_geometry(kf, in, base, m, blk);
     detail::select_kernel_levels(kf, m, rows, blk,
-                                 {out.lod.data() + base, out.limited_by.data() + base,
-                                  out.lod_size_only.data() + base,
-                                  out.lod_eccentricity_only.data() + base,
-                                  out.lod_velocity_only.data() + base});
+                                 {out.lod.data() + base, out.limited_by.data() + base, out.lod_size_only.data() + base,
+                                  out.lod_eccentricity_only.data() + base, out.lod_velocity_only.data() + base});
     if (diag_e || diag_v || diag_a) write_diagnostics(blk, m, base, out);
     for (std::size_t t = 0; t < n_slow; ++t) {
       const std::size_t j = slow[t], i = base + j;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Per-object LOD selection with Reddy's acuity model (Reddy 1998 sections 3.2, 3.4, 6): for each
 // object, the least detailed level whose removed detail lies above the acuity limit.
 //
@@ -46,11 +47,10 @@
 
 namespace gazelod::lod {
 
-
 struct Viewer {
   glm::dvec3 eye_position_m{0.0};
-  glm::dvec3 eye_velocity_m_s{0.0};        // head translation
-  glm::dvec3 gaze_direction{0.0, 0.0, -1.0};  // world, non-zero (normalised here)
+  glm::dvec3 eye_velocity_m_s{0.0};             // head translation
+  glm::dvec3 gaze_direction{0.0, 0.0, -1.0};    // world, non-zero (normalised here)
   glm::dvec3 head_angular_velocity_rad_s{0.0};  // world axes
   // Eye-in-head rotation from the tracker (world axes); 0 without one (gaze fixed in head).
   glm::dvec3 gaze_angular_velocity_in_head_rad_s{0.0};

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Phase 1 of the selection (see select_kernel.hpp): straight-line, branch-free arithmetic per
 // object so that GCC vectorises the loop (check with -fopt-info-vec). Conventions:
 //   - every "if" is a ternary (a blend), every helper is inlined (fast_math.hpp);
@@ -26,15 +27,13 @@ namespace {
 constexpr double kMaxFinite = std::numeric_limits<double>::max();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-
 }  // namespace
 
 // The loop, twice: with the diagnostics (E, v^2, alpha) stored, and without (fewer blends
 // and stores, for callers that ask only for decisions).
 template <bool kDiagnostics, bool kUseSize>
-[[gnu::always_inline]] inline void geometry_loop(const KernelFrame& f, const KernelInput& in,
-                                                 std::size_t begin, std::size_t count,
-                                                 KernelBlock& out) {
+[[gnu::always_inline]] inline void geometry_loop(const KernelFrame& f, const KernelInput& in, std::size_t begin,
+                                                 std::size_t count, KernelBlock& out) {
   const double* __restrict cx = in.center_x_m + begin;
   const double* __restrict cy = in.center_y_m + begin;
   const double* __restrict cz = in.center_z_m + begin;
@@ -60,8 +59,8 @@ template <bool kDiagnostics, bool kUseSize>
   const double floor_per_w = kSizeOffMargin / a0;  // a0 > 0 for a valid Viewer
   const double floor2_per_w2 = floor_per_w * floor_per_w;
 
-GAZELOD_IVDEP  // no overlap (select_kernel.hpp)
-  for (std::size_t i = 0; i < count; ++i) {
+  GAZELOD_IVDEP  // no overlap (select_kernel.hpp)
+      for (std::size_t i = 0; i < count; ++i) {
     const double c_x = cx[i] - ex, c_y = cy[i] - ey, c_z = cz[i] - ez;
     const double r = rad[i];
     const double ovx = vx[i], ovy = vy[i], ovz = vz[i];
@@ -119,7 +118,7 @@ GAZELOD_IVDEP  // no overlap (select_kernel.hpp)
 
   // Second loop: the acuity terms and thresholds (split so that neither loop runs out of
   // vector registers).
-GAZELOD_IVDEP
+  GAZELOD_IVDEP
   for (std::size_t i = 0; i < count; ++i) {
     const double ecc_deg = out.ecc_deg[i], vel2 = out.vel2_dps2[i], alpha_deg = out.alpha_deg[i];
     const double near_ratio_sq = out.near_ratio_sq[i];
@@ -175,11 +174,15 @@ __attribute__((target_clones("default", "arch=x86-64-v3", "arch=x86-64-v4")))
 void select_kernel_geometry(const KernelFrame& f, const KernelInput& in, std::size_t begin,
                             std::size_t count, KernelBlock& out) {
   if (f.diagnostics) {
-    if (f.use_size) geometry_loop<true, true>(f, in, begin, count, out);
-    else geometry_loop<true, false>(f, in, begin, count, out);
+    if (f.use_size)
+      geometry_loop<true, true>(f, in, begin, count, out);
+    else
+      geometry_loop<true, false>(f, in, begin, count, out);
   } else {
-    if (f.use_size) geometry_loop<false, true>(f, in, begin, count, out);
-    else geometry_loop<false, false>(f, in, begin, count, out);
+    if (f.use_size)
+      geometry_loop<false, true>(f, in, begin, count, out);
+    else
+      geometry_loop<false, false>(f, in, begin, count, out);
   }
 }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The vectorised parts of select_lods (lod/select.cpp), per block of objects, on
 // block-local arrays:
 //   rows,    select_kernel_rows_regular (or select.cpp, object by object, for other
@@ -20,10 +21,10 @@
 // unit weight, seen from the bounding sphere's nearest point at d_near = max(d - r,
 // kNearestPointFloorM) (lod/lod_chain.hpp): p = 360 r / (pi d_near) (removed cycles per
 // diameter: half a cycle is r / c metres) or 360 / (pi d_near) (geometric error). Both sides
-// are >= 0, so the comparison is done squared, w_k^2 > A^2 p^2: no division is left per level. Phase 2 compares in float: w_k^2 and A^2 p^2 are each rounded
-// to float once, and rounding is monotone, so float(a) > float(b) implies a > b; where the
-// two lie within float rounding (6e-8 relative) the float comparison may keep a finer level
-// than the exact rule, never a coarser one.
+// are >= 0, so the comparison is done squared, w_k^2 > A^2 p^2: no division is left per level. Phase 2 compares in
+// float: w_k^2 and A^2 p^2 are each rounded to float once, and rounding is monotone, so float(a) > float(b) implies a >
+// b; where the two lie within float rounding (6e-8 relative) the float comparison may keep a finer level than the exact
+// rule, never a coarser one.
 #pragma once
 
 #include "lod/lod_chain.hpp"
@@ -100,8 +101,8 @@ struct KernelBlock {
 
 // Phase 1 for objects [begin, begin + count) into out[0, count); count <= kSelectBlock.
 // The rows (kind_error, w1_sq) must be filled first.
-void select_kernel_geometry(const KernelFrame& frame, const KernelInput& in, std::size_t begin,
-                            std::size_t count, KernelBlock& out);
+void select_kernel_geometry(const KernelFrame& frame, const KernelInput& in, std::size_t begin, std::size_t count,
+                            KernelBlock& out);
 
 // Each object's chain (lod/object_set.hpp), for filling the rows.
 struct ChainInput {
@@ -116,8 +117,7 @@ struct ChainInput {
 // lie back to back with one length of 1 .. kRowLevels + 1 levels (ObjectStore's layout for
 // uniform chains) and returns the row count; returns 0, filling nothing, otherwise (then
 // select.cpp fills them object by object).
-std::size_t select_kernel_rows_regular(const ChainInput& in, std::size_t begin, std::size_t count,
-                                       KernelBlock& blk);
+std::size_t select_kernel_rows_regular(const ChainInput& in, std::size_t begin, std::size_t count, KernelBlock& blk);
 
 // Where phase 2 writes the block's decisions (select.hpp's Decisions, offset to the block).
 struct LevelOutput {
@@ -125,7 +125,7 @@ struct LevelOutput {
 };
 
 // Phase 2 over blk[0, count), rows 0 .. rows - 1 of weight (1 <= rows <= kRowLevels).
-void select_kernel_levels(const KernelFrame& frame, std::size_t count, std::size_t rows,
-                          const KernelBlock& blk, const LevelOutput& out);
+void select_kernel_levels(const KernelFrame& frame, std::size_t count, std::size_t rows, const KernelBlock& blk,
+                          const LevelOutput& out);
 
 }  // namespace gazelod::lod::detail

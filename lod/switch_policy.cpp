@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The switch policy (see switch_policy.hpp): one pass over the objects, each decided from its
 // own state entry and this frame's perceptual level.
 #include "lod/switch_policy.hpp"
@@ -8,10 +9,9 @@
 namespace gazelod::lod {
 namespace {
 
-std::string length_error(const char* function, const char* name, std::size_t got,
-                         std::size_t want) {
-  return std::string(function) + ": " + name + " has " + std::to_string(got) +
-         " entries, expected " + std::to_string(want);
+std::string length_error(const char* function, const char* name, std::size_t got, std::size_t want) {
+  return std::string(function) + ": " + name + " has " + std::to_string(got) + " entries, expected " +
+         std::to_string(want);
 }
 
 // "" when every span of state has n entries.
@@ -28,10 +28,14 @@ std::string check_state(const char* function, const SwitchState& state, std::siz
 
 const char* to_string(HoldReason r) {
   switch (r) {
-    case HoldReason::none: return "none";
-    case HoldReason::hold_time: return "hold_time";
-    case HoldReason::awaiting_suppression: return "awaiting_suppression";
-    case HoldReason::no_time: return "no_time";
+    case HoldReason::none:
+      return "none";
+    case HoldReason::hold_time:
+      return "hold_time";
+    case HoldReason::awaiting_suppression:
+      return "awaiting_suppression";
+    case HoldReason::no_time:
+      return "no_time";
   }
   return "unknown";
 }
@@ -49,17 +53,16 @@ std::string validate_switch_config(const SwitchPolicyConfig& config) {
 std::string apply_switch_policy(const SwitchPolicyConfig& config, double t_s, bool suppressed,
                                 std::span<const std::uint8_t> perceptual, const SwitchState& state,
                                 std::span<std::uint8_t> held) {
-  if (std::string err = validate_switch_config(config); !err.empty())
-    return "apply_switch_policy: " + err;
+  if (std::string err = validate_switch_config(config); !err.empty()) return "apply_switch_policy: " + err;
   const std::size_t n = perceptual.size();
   if (std::string err = check_state("apply_switch_policy", state, n); !err.empty()) return err;
-  if (!held.empty() && held.size() != n)
-    return length_error("apply_switch_policy", "held", held.size(), n);
+  if (!held.empty() && held.size() != n) return length_error("apply_switch_policy", "held", held.size(), n);
 
   const bool timed = std::isfinite(t_s);
   // Inside suppression a change goes unseen, so a shorter hold suffices there.
-  const double hold = suppressed && config.prefer_suppression ? std::min(config.coarsen_hold_s, config.suppressed_hold_s)
-                                 : config.coarsen_hold_s;
+  const double hold = suppressed && config.prefer_suppression
+                          ? std::min(config.coarsen_hold_s, config.suppressed_hold_s)
+                          : config.coarsen_hold_s;
   const double deadline = config.coarsen_hold_s + config.max_deferral_s;  // finite or +inf
   const bool release_without_deadline = !config.prefer_suppression || suppressed;
 
@@ -109,8 +112,7 @@ std::string apply_switch_policy(const SwitchPolicyConfig& config, double t_s, bo
 }
 
 std::string reset_switch_state(const SwitchState& state, std::uint8_t level) {
-  if (std::string err = check_state("reset_switch_state", state, state.drawn.size()); !err.empty())
-    return err;
+  if (std::string err = check_state("reset_switch_state", state, state.drawn.size()); !err.empty()) return err;
   std::fill(state.drawn.begin(), state.drawn.end(), level);
   std::fill(state.finest_allowed.begin(), state.finest_allowed.end(), level);
   std::fill(state.window_start_s.begin(), state.window_start_s.end(), kNoSwitchWindow);

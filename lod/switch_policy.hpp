@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The switch policy between the perceptual choice and what is drawn. select_lods (lod/select.hpp)
 // picks each frame the coarsest level whose removed detail is invisible; drawing that level
 // directly makes a noisy gaze flip an object between two levels every frame. The policy, per

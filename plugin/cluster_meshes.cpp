@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The plugin's cluster meshes (see cluster_meshes.hpp).
 #include "plugin/cluster_meshes.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The plugin's cluster meshes (LodPlugin::add_cluster_mesh): their hierarchies in the base
 // space (lod::ClusterStore), each frame's perceptual cut (lod::select_clusters) and the cut
 // drawn after the switch policy (lod::apply_cluster_switch_policy), in arrays the plugin hands

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What the plugin returns each frame: the levels to draw (FrameDecisions) and, for reports
 // and debugging, how it got there (FrameDiagnostics). Spans are indexed by object id and stay
 // valid until the next begin_frame.
@@ -48,9 +49,10 @@ struct FrameDecisions {
 };
 
 struct FrameDiagnostics {
-  std::span<const std::uint8_t> lod_perceptual;  // this frame's perceptual choice (before the switch policy and the budget)
+  std::span<const std::uint8_t>
+      lod_perceptual;  // this frame's perceptual choice (before the switch policy and the budget)
   std::span<const std::uint8_t> cluster_drawn_perceptual;  // the same for clusters: this frame's cut before the policy
-  std::span<const std::uint8_t> lod_size_only;   // what each criterion (with size) allows
+  std::span<const std::uint8_t> lod_size_only;             // what each criterion (with size) allows
   std::span<const std::uint8_t> lod_eccentricity_only;
   std::span<const std::uint8_t> lod_velocity_only;
   std::span<const std::uint8_t> lod_size_eccentricity;  // empty unless compute_breakdown
@@ -58,8 +60,8 @@ struct FrameDiagnostics {
   glm::dvec3 gaze_direction_world{0.0, 0.0, -1.0};
   glm::dvec3 gaze_direction_head{0.0, 0.0, -1.0};  // as the source gave it (head space)
   glm::dvec3 eye_position_world{0.0};
-  glm::dvec3 head_angular_velocity_rad_s{0.0};  // base space
-  glm::dvec3 head_linear_velocity_m_s{0.0};     // base space
+  glm::dvec3 head_angular_velocity_rad_s{0.0};          // base space
+  glm::dvec3 head_linear_velocity_m_s{0.0};             // base space
   glm::dvec3 gaze_angular_velocity_in_head_rad_s{0.0};  // the eye's rotation in the head (base axes)
   bool head_valid = false;
   // The conditioned gaze: how the eye moves (loss without a usable source) and whether vision

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "plugin/gaze_arbiter.hpp"
 
 #include <cmath>
@@ -15,7 +16,9 @@ std::optional<gaze::GazeSample> usable(std::optional<gaze::GazeSample> s) {
   return s;
 }
 
-std::string seconds(std::int64_t ns) { return std::to_string(static_cast<double>(ns) * 1e-9).substr(0, 5) + " s"; }
+std::string seconds(std::int64_t ns) {
+  return std::to_string(static_cast<double>(ns) * 1e-9).substr(0, 5) + " s";
+}
 
 }  // namespace
 
@@ -54,8 +57,7 @@ ArbiterResult GazeArbiter::update(std::int64_t t_ns) {
       last_usable_t_ns_ = t_ns;
       result.source = config_.primary_kind;
       result.sample = *s;
-      if (must_report(result.source))
-        switch_to(config_.primary_kind, primary_->name() + " eye gaze delivered", false);
+      if (must_report(result.source)) switch_to(config_.primary_kind, primary_->name() + " eye gaze delivered", false);
       return result;
     }
     // A blink: bridged with the invalid samples themselves (ArbiterConfig::blink_bridge_ns).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Chooses the gaze source each frame: the runtime's eye gaze, else an external tracker or
 // trace, else head-fixed gaze with a widened cone. Reports each change once, with why.
 // A runtime that advertises gaze but never delivers it loses trust after a timeout.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Where the plugin's gaze comes from this frame, in the order it tries them.
 #pragma once
 

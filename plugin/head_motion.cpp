@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "plugin/head_motion.hpp"
 
 #include <glm/geometric.hpp>
@@ -10,7 +11,7 @@ namespace gazelod::plugin {
 glm::dvec3 angular_velocity_from_poses(const glm::dquat& q0, const glm::dquat& q1, double dt_s) {
   if (!(dt_s > 0.0) || !std::isfinite(dt_s)) return glm::dvec3(0.0);
   glm::dquat d = q1 * glm::conjugate(q0);  // rotation from q0 to q1, in the outer frame
-  if (d.w < 0.0) d = -d;                    // q and -q are the same rotation: take the short way
+  if (d.w < 0.0) d = -d;                   // q and -q are the same rotation: take the short way
   const glm::dvec3 axis_sin(d.x, d.y, d.z);
   const double s = glm::length(axis_sin);
   if (!std::isfinite(s) || !std::isfinite(d.w)) return glm::dvec3(0.0);
@@ -43,7 +44,8 @@ HeadMotion HeadTracker::locate(XrTime time) {
   m.position_m = {loc.pose.position.x, loc.pose.position.y, loc.pose.position.z};
   const bool angular = (velocity.velocityFlags & XR_SPACE_VELOCITY_ANGULAR_VALID_BIT) != 0;
   const bool linear = (velocity.velocityFlags & XR_SPACE_VELOCITY_LINEAR_VALID_BIT) != 0;
-  if (angular) m.angular_velocity_rad_s = {velocity.angularVelocity.x, velocity.angularVelocity.y, velocity.angularVelocity.z};
+  if (angular)
+    m.angular_velocity_rad_s = {velocity.angularVelocity.x, velocity.angularVelocity.y, velocity.angularVelocity.z};
   if (linear) m.linear_velocity_m_s = {velocity.linearVelocity.x, velocity.linearVelocity.y, velocity.linearVelocity.z};
   return finish(static_cast<std::int64_t>(time), m, angular, linear);
 }

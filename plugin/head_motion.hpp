@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Head pose and angular velocity at a time from the runtime: XrSpaceVelocity when the
 // runtime gives it, else differences of successive poses (robust to the q/-q sign flip and
 // to tiny rotations: the angle comes from atan2, never acos).
@@ -18,7 +19,7 @@ struct HeadMotion {
   bool valid = false;
   glm::dquat orientation{1.0, 0.0, 0.0, 0.0};  // head (VIEW) to base space
   glm::dvec3 position_m{0.0};
-  glm::dvec3 angular_velocity_rad_s{0.0};       // base-space axes
+  glm::dvec3 angular_velocity_rad_s{0.0};  // base-space axes
   glm::dvec3 linear_velocity_m_s{0.0};
 };
 

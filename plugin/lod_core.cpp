@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The plugin's engine without OpenXR (plugin/lod_core.hpp): gaze conditioning, the viewer, the
 // selection, the switch policy, the budget and the cluster cut, from one frame's inputs.
 #include "plugin/lod_core.hpp"
@@ -79,8 +80,12 @@ void LodCore::set_object_enabled(std::uint32_t id, bool enabled) {
   enabled_[id] = enabled ? 1 : 0;
 }
 
-void LodCore::set_object_motion(std::uint32_t id, const glm::dvec3& c, const glm::dvec3& v) { store_.set_motion(id, c, v); }
-std::size_t LodCore::object_count() const { return store_.size(); }
+void LodCore::set_object_motion(std::uint32_t id, const glm::dvec3& c, const glm::dvec3& v) {
+  store_.set_motion(id, c, v);
+}
+std::size_t LodCore::object_count() const {
+  return store_.size();
+}
 
 std::uint32_t LodCore::add_cluster_mesh(const ClusterMeshDesc& d) {
   const std::uint32_t id = clusters_.add(d);
@@ -90,9 +95,13 @@ std::uint32_t LodCore::add_cluster_mesh(const ClusterMeshDesc& d) {
 void LodCore::set_cluster_mesh_motion(std::uint32_t id, const lod::InstanceTransform& pose, const glm::dvec3& v) {
   clusters_.set_motion(id, pose, v);
 }
-std::size_t LodCore::cluster_mesh_count() const { return clusters_.mesh_count(); }
+std::size_t LodCore::cluster_mesh_count() const {
+  return clusters_.mesh_count();
+}
 
-void LodCore::session_state(bool focused, std::int64_t t_ns) { arbiter_->session_state(focused, t_ns); }
+void LodCore::session_state(bool focused, std::int64_t t_ns) {
+  arbiter_->session_state(focused, t_ns);
+}
 
 void LodCore::end_frame(double measured_frame_ms) {
   if (budget_) budget_->observe(measured_frame_ms);
@@ -197,7 +206,8 @@ const FrameDecisions& LodCore::decide(const FrameInput& in) {
   apply_switch_policy(in.t_ns, diag_.gaze_suppressed);
   apply_budget();
   // Cluster meshes: the same viewer, per cluster; the same hysteresis on their records.
-  clusters_.update(v, config_.switch_policy ? &config_.switching : nullptr, frame_seconds(in.t_ns), diag_.gaze_suppressed);
+  clusters_.update(v, config_.switch_policy ? &config_.switching : nullptr, frame_seconds(in.t_ns),
+                   diag_.gaze_suppressed);
   publish_clusters();
 
   diag_.gaze_bad_samples = primary_conditioner_.bad_samples() + external_conditioner_.bad_samples();
@@ -207,8 +217,8 @@ const FrameDecisions& LodCore::decide(const FrameInput& in) {
   diag_.head_linear_velocity_m_s = v.eye_velocity_m_s;
   diag_.gaze_angular_velocity_in_head_rad_s = v.gaze_angular_velocity_in_head_rad_s;
   // Reddy 1995's foveal cone: out to where M(E) leaves 1 (the fovea), widened by the error.
-  diag_.foveal_cone = lod::make_foveal_cone(v.eye_position_m, v.gaze_direction, lod::kEccentricitySeamDeg,
-                                            diag_.gaze_error_deg);
+  diag_.foveal_cone =
+      lod::make_foveal_cone(v.eye_position_m, v.gaze_direction, lod::kEccentricitySeamDeg, diag_.gaze_error_deg);
   diag_.xi_cpd = xi_cpd_;
   diag_.head_valid = head.valid;
   return frame_;
@@ -299,7 +309,8 @@ void LodCore::update_display(const FrameInput& in) {
 
 void LodCore::resize_outputs() {
   const std::size_t n = store_.size();
-  for (auto* v : {&lod_, &limited_, &size_only_, &ecc_only_, &vel_only_, &se_, &sv_, &scratch_a_, &scratch_b_, &scratch_c_, &scratch_d_})
+  for (auto* v : {&lod_, &limited_, &size_only_, &ecc_only_, &vel_only_, &se_, &sv_, &scratch_a_, &scratch_b_,
+                  &scratch_c_, &scratch_d_})
     v->resize(n);
   angular_radius_deg_.resize(n);
   // New objects start at full detail with no coarsening window open, enabled.
@@ -312,8 +323,9 @@ void LodCore::resize_outputs() {
   budget_lod_.resize(n);
   budget_view_.resize(n);
   const bool budget = config_.budget_ms > 0.0;
-  decisions_out_ = {lod_, limited_, size_only_, ecc_only_, vel_only_, {}, {},
-                    budget ? std::span<float>(angular_radius_deg_) : std::span<float>()};
+  decisions_out_ = {
+      lod_,      limited_, size_only_, ecc_only_,
+      vel_only_, {},       {},         budget ? std::span<float>(angular_radius_deg_) : std::span<float>()};
   breakdown_se_out_ = {se_, scratch_a_, scratch_b_, scratch_c_, scratch_d_, {}, {}, {}};
   breakdown_sv_out_ = {sv_, scratch_a_, scratch_b_, scratch_c_, scratch_d_, {}, {}, {}};
   frame_.lod = budget ? std::span<const std::uint8_t>(budget_lod_) : policy_lod();

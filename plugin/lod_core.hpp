@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The plugin's engine without OpenXR: given a frame's head motion, views and gaze input, it
 // conditions the gaze, builds the foveal cone and picks every object's (and cluster's) level.
 // Both fronts feed it: the OpenXR front (plugin/lod_plugin.cpp) reads these inputs from the
@@ -41,8 +42,8 @@ struct ViewInput {
 };
 
 struct FrameInput {
-  std::int64_t t_ns = 0;       // display time
-  HeadMotion head;             // the head in the base space
+  std::int64_t t_ns = 0;         // display time
+  HeadMotion head;               // the head in the base space
   std::uint32_t view_count = 0;  // 0: the previous frame's views
   std::array<ViewInput, kMaxViews> views{};
 };
@@ -50,7 +51,7 @@ struct FrameInput {
 // What the frame read from its primary gaze input, in data mode's terms (gzl_frame_record).
 struct GazeRead {
   bool present = false;
-  gaze::GazeSample sample;  // head space
+  gaze::GazeSample sample;                          // head space
   glm::dquat head_orientation{1.0, 0.0, 0.0, 0.0};  // the head at the sample's time
 };
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The plugin's OpenXR front (plugin/lod_plugin.hpp): reads head, views and eye gaze through the
 // application's function pointers and hands them to the engine (plugin/lod_core.hpp).
 #include "plugin/lod_plugin.hpp"
@@ -15,17 +16,23 @@ namespace gazelod {
 
 const char* to_string(GazeSourceKind kind) {
   switch (kind) {
-    case GazeSourceKind::openxr: return "openxr";
-    case GazeSourceKind::external: return "external";
-    case GazeSourceKind::head_fixed: return "head-fixed";
-    case GazeSourceKind::pushed: return "pushed";
+    case GazeSourceKind::openxr:
+      return "openxr";
+    case GazeSourceKind::external:
+      return "external";
+    case GazeSourceKind::head_fixed:
+      return "head-fixed";
+    case GazeSourceKind::pushed:
+      return "pushed";
   }
   return "?";
 }
 
 namespace {
 
-void check(XrResult r, const char* call) { xr_check(r, call, "gazelod: "); }
+void check(XrResult r, const char* call) {
+  xr_check(r, call, "gazelod: ");
+}
 
 // The old configuration's meaning: the runtime's eye gaze, with our set attached by us unless
 // the application attaches sets itself.
@@ -39,7 +46,12 @@ class LodPluginImpl final : public LodPlugin {
  public:
   LodPluginImpl(plugin::XrDispatch xr, XrInstance instance, XrSystemId system, XrSession session, XrSpace base,
                 PluginConfig config, OpenXrOptions options)
-      : xr_(xr), instance_(instance), system_(system), session_(session), base_(base), options_(options),
+      : xr_(xr),
+        instance_(instance),
+        system_(system),
+        session_(session),
+        base_(base),
+        options_(options),
         core_(config),
         pushed_(heads_, static_cast<std::int64_t>(config.max_pushed_sample_age_s * 1e9)) {
     XrReferenceSpaceCreateInfo view_info{XR_TYPE_REFERENCE_SPACE_CREATE_INFO};
@@ -149,7 +161,9 @@ class LodPluginImpl final : public LodPlugin {
     std::string why_none;
     switch (input) {
       case OpenXrGazeInput::from_config:
-      case OpenXrGazeInput::none: why_none = "eye gaze not asked for (GZL_GAZE_INPUT_NONE)"; break;
+      case OpenXrGazeInput::none:
+        why_none = "eye gaze not asked for (GZL_GAZE_INPUT_NONE)";
+        break;
       case OpenXrGazeInput::pushed:
         core_.set_primary(&pushed_, GazeSourceKind::pushed, "");
         core_.set_orientation_at([this](std::int64_t t_ns) {
@@ -159,20 +173,21 @@ class LodPluginImpl final : public LodPlugin {
         return;
       case OpenXrGazeInput::app_space:
         // A null space is given later (gzl_set_gaze_space); until then the source has nothing.
-        xr_gaze_ = std::make_unique<plugin::OpenXrGazeSource>(xr_, instance_, session_, plugin::GazeInputMode::app_space,
-                                                              options_.gaze_space, options_.gaze_action);
+        xr_gaze_ = std::make_unique<plugin::OpenXrGazeSource>(
+            xr_, instance_, session_, plugin::GazeInputMode::app_space, options_.gaze_space, options_.gaze_action);
         break;
       case OpenXrGazeInput::merge_binding:
       case OpenXrGazeInput::plugin_actions:
         if (!plugin::system_supports_eye_gaze(xr_, instance_, system_)) {
-          why_none = "the system reports no eye-gaze interaction: enable XR_EXT_eye_gaze_interaction on the instance "
-                     "(xrCreateInstance) on a runtime that has it, or push samples (GZL_GAZE_INPUT_PUSHED)";
+          why_none =
+              "the system reports no eye-gaze interaction: enable XR_EXT_eye_gaze_interaction on the instance "
+              "(xrCreateInstance) on a runtime that has it, or push samples (GZL_GAZE_INPUT_PUSHED)";
           break;
         }
-        xr_gaze_ = std::make_unique<plugin::OpenXrGazeSource>(
-            xr_, instance_, session_,
-            input == OpenXrGazeInput::merge_binding ? plugin::GazeInputMode::merge_binding
-                                                    : plugin::GazeInputMode::plugin_actions);
+        xr_gaze_ = std::make_unique<plugin::OpenXrGazeSource>(xr_, instance_, session_,
+                                                              input == OpenXrGazeInput::merge_binding
+                                                                  ? plugin::GazeInputMode::merge_binding
+                                                                  : plugin::GazeInputMode::plugin_actions);
         if (input == OpenXrGazeInput::plugin_actions) xr_gaze_->attach_and_own_sync();
         break;
     }
@@ -198,7 +213,8 @@ class LodPluginImpl final : public LodPlugin {
           "xrEnumerateViewConfigurationViews");
     view_pixels_.clear();
     for (const auto& c : cv)
-      view_pixels_.push_back({static_cast<int>(c.recommendedImageRectWidth), static_cast<int>(c.recommendedImageRectHeight)});
+      view_pixels_.push_back(
+          {static_cast<int>(c.recommendedImageRectWidth), static_cast<int>(c.recommendedImageRectHeight)});
     views_.assign(n, {XR_TYPE_VIEW});
   }
 
@@ -217,7 +233,8 @@ class LodPluginImpl final : public LodPlugin {
       plugin::ViewInput& v = in.views[i];
       const XrView& x = views_[i];
       v.fov = {x.fov.angleLeft, x.fov.angleRight, x.fov.angleUp, x.fov.angleDown};
-      v.orientation_in_head = glm::dquat(x.pose.orientation.w, x.pose.orientation.x, x.pose.orientation.y, x.pose.orientation.z);
+      v.orientation_in_head =
+          glm::dquat(x.pose.orientation.w, x.pose.orientation.x, x.pose.orientation.y, x.pose.orientation.z);
       v.position_in_head_m = {x.pose.position.x, x.pose.position.y, x.pose.position.z};
       v.width_px = view_pixels_[i].first;
       v.height_px = view_pixels_[i].second;

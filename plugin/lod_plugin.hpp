@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The plugin's C++ front for OpenXR applications (internal: applications outside this
 // repository use the C ABI, <gazelod/gazelod.h>). Created from the application's
 // xrGetInstanceProcAddr, XrInstance, XrSession and base XrSpace; each frame at the predicted
@@ -71,8 +72,7 @@ class LodPlugin {
   // Registration (not per frame). Returns the object's id (0, 1, 2, ...).
   virtual std::uint32_t add_object(const ObjectDesc& desc) = 0;
   // Per-frame updates of moving objects; no allocation.
-  virtual void set_object_motion(std::uint32_t id, const glm::dvec3& center_m,
-                                 const glm::dvec3& velocity_m_s) = 0;
+  virtual void set_object_motion(std::uint32_t id, const glm::dvec3& center_m, const glm::dvec3& velocity_m_s) = 0;
   virtual std::size_t object_count() const = 0;
   // Registration of a cluster mesh; returns its id (0, 1, 2, ...). Its clusters are
   // FrameDecisions::cluster_drawn[cluster_first[id] ...]. Throws std::invalid_argument with

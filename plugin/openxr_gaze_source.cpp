@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Eye gaze from XR_EXT_eye_gaze_interaction (plugin/openxr_gaze_source.hpp).
 #include "plugin/openxr_gaze_source.hpp"
 
@@ -12,7 +13,9 @@
 namespace gazelod::plugin {
 namespace {
 
-void check(XrResult r, const char* call) { xr_check(r, call, "gazelod: eye gaze: "); }
+void check(XrResult r, const char* call) {
+  xr_check(r, call, "gazelod: eye gaze: ");
+}
 
 XrPath path(const XrDispatch& xr, XrInstance instance, const char* s) {
   XrPath p = XR_NULL_PATH;
@@ -61,14 +64,17 @@ OpenXrGazeSource::OpenXrGazeSource(const XrDispatch& xr, XrInstance instance, Xr
   suggested.suggestedBindings = &binding;
   const XrResult r = xr_.suggest_interaction_profile_bindings(instance_, &suggested);
   if (r == XR_ERROR_ACTIONSETS_ALREADY_ATTACHED)
-    throw XrCallError("gazelod: eye gaze: the application attached its action sets already, so gazelod cannot add "
-                      "its own; create gazelod before xrAttachSessionActionSets (GZL_GAZE_INPUT_MERGE_BINDING) or "
-                      "pass your gaze action space (GZL_GAZE_INPUT_APP_SPACE)",
-                      r);
+    throw XrCallError(
+        "gazelod: eye gaze: the application attached its action sets already, so gazelod cannot add "
+        "its own; create gazelod before xrAttachSessionActionSets (GZL_GAZE_INPUT_MERGE_BINDING) or "
+        "pass your gaze action space (GZL_GAZE_INPUT_APP_SPACE)",
+        r);
   check(r, "xrSuggestInteractionProfileBindings");
 }
 
-OpenXrGazeSource::~OpenXrGazeSource() { release(); }
+OpenXrGazeSource::~OpenXrGazeSource() {
+  release();
+}
 
 void OpenXrGazeSource::release() {
   if (mode_ != GazeInputMode::app_space && gaze_space_ != XR_NULL_HANDLE) xr_.destroy_space(gaze_space_);
@@ -86,7 +92,8 @@ void OpenXrGazeSource::set_app_space(XrSpace gaze_space, XrAction gaze_action) {
   gaze_space_ = gaze_space;
   gaze_action_ = gaze_action;
   ever_delivered_ = false;
-  status_ = gaze_space == XR_NULL_HANDLE ? "no gaze space given yet (gzl_set_gaze_space)" : "waiting for the first gaze pose";
+  status_ =
+      gaze_space == XR_NULL_HANDLE ? "no gaze space given yet (gzl_set_gaze_space)" : "waiting for the first gaze pose";
 }
 
 void OpenXrGazeSource::create_space() {
@@ -108,10 +115,11 @@ void OpenXrGazeSource::attach_and_own_sync() {
   attach.actionSets = &action_set_;
   const XrResult r = xr_.attach_session_action_sets(session_, &attach);
   if (r == XR_ERROR_ACTIONSETS_ALREADY_ATTACHED)
-    throw XrCallError("gazelod: eye gaze: the session's action sets are attached already (a session takes one "
-                      "xrAttachSessionActionSets); pass your gaze action space (GZL_GAZE_INPUT_APP_SPACE) or create "
-                      "gazelod before attaching and merge its binding (GZL_GAZE_INPUT_MERGE_BINDING)",
-                      r);
+    throw XrCallError(
+        "gazelod: eye gaze: the session's action sets are attached already (a session takes one "
+        "xrAttachSessionActionSets); pass your gaze action space (GZL_GAZE_INPUT_APP_SPACE) or create "
+        "gazelod before attaching and merge its binding (GZL_GAZE_INPUT_MERGE_BINDING)",
+        r);
   check(r, "xrAttachSessionActionSets");
   own_sync_ = true;
   create_space();
@@ -127,7 +135,8 @@ void OpenXrGazeSource::check_binding() {
   if (XR_FAILED(xr_.string_to_path(instance_, "/user/eyes_ext", &eyes))) return;
   if (XR_FAILED(xr_.get_current_interaction_profile(session_, eyes, &profile))) return;
   XrPath eye_profile = XR_NULL_PATH;
-  if (XR_FAILED(xr_.string_to_path(instance_, kEyeGazeProfile, &eye_profile)) || profile.interactionProfile != eye_profile)
+  if (XR_FAILED(xr_.string_to_path(instance_, kEyeGazeProfile, &eye_profile)) ||
+      profile.interactionProfile != eye_profile)
     return;
   XrBoundSourcesForActionEnumerateInfo info{XR_TYPE_BOUND_SOURCES_FOR_ACTION_ENUMERATE_INFO};
   info.action = gaze_action_;
@@ -135,7 +144,8 @@ void OpenXrGazeSource::check_binding() {
   if (XR_FAILED(xr_.enumerate_bound_sources_for_action(session_, &info, 0, &n, nullptr)) || n != 0) return;
   binding_lost_ = true;
   status_ = std::string("gazelod's eye-gaze binding was replaced by the application's own suggestion for ") +
-            kEyeGazeProfile + "; merge gazelod's binding into that suggestion (GZL_GAZE_INPUT_MERGE_BINDING) or pass "
+            kEyeGazeProfile +
+            "; merge gazelod's binding into that suggestion (GZL_GAZE_INPUT_MERGE_BINDING) or pass "
             "your gaze action space (GZL_GAZE_INPUT_APP_SPACE)";
 }
 
@@ -170,8 +180,7 @@ std::optional<gaze::GazeSample> OpenXrGazeSource::sample_at(std::int64_t t_ns) {
     status_ = "xrLocateSpace(gaze) failed";
     return std::nullopt;
   }
-  const XrSpaceLocationFlags need =
-      XR_SPACE_LOCATION_ORIENTATION_VALID_BIT | XR_SPACE_LOCATION_ORIENTATION_TRACKED_BIT;
+  const XrSpaceLocationFlags need = XR_SPACE_LOCATION_ORIENTATION_VALID_BIT | XR_SPACE_LOCATION_ORIENTATION_TRACKED_BIT;
   if ((loc.locationFlags & need) != need) {
     status_ = ever_delivered_ ? "gaze not tracked (blink or lost)" : "runtime has not delivered gaze";
     if (!ever_delivered_) return std::nullopt;

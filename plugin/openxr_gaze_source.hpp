@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Eye gaze from the OpenXR runtime through XR_EXT_eye_gaze_interaction, as a GazeSource.
 // The application owns actions (a session attaches action sets once; a second suggestion for a
 // profile replaces the first), so the source works in the mode the application chooses:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What an application configures when it creates the plugin (gazelod.hpp). Plain data.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Pushed gaze samples and the frames' head orientations (plugin/pushed_gaze.hpp).
 #include "plugin/pushed_gaze.hpp"
 
@@ -8,7 +9,9 @@
 namespace gazelod::plugin {
 namespace {
 
-bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool finite(const glm::dvec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 std::optional<glm::dquat> unit(const glm::dquat& q) {
   const double n = std::sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
@@ -53,21 +56,25 @@ PushResult PushedGazeSource::push(const PushedSample& in, std::string& why) {
   if (s.sample.valid) {
     const double len = glm::length(s.sample.direction);
     if (!finite(s.sample.direction) || !std::isfinite(len) || len < 1e-9) {
-      why = "gazelod: gaze sample direction must be finite and non-zero (push the sample with GZL_GAZE_SAMPLE_VALID "
-            "cleared for a blink or lost tracking)";
+      why =
+          "gazelod: gaze sample direction must be finite and non-zero (push the sample with GZL_GAZE_SAMPLE_VALID "
+          "cleared for a blink or lost tracking)";
       return PushResult::invalid;
     }
     if (std::abs(len - 1.0) > 1e-9) s.sample.direction /= len;  // a unit one is kept bit for bit
   }
   if (!finite(s.sample.origin_m) || glm::length(s.sample.origin_m) > 1.0) {
-    why = "gazelod: gaze sample origin_m must be finite and within 1 m of the head's origin (it is the eye, in head space)";
+    why =
+        "gazelod: gaze sample origin_m must be finite and within 1 m of the head's origin (it is the eye, in head "
+        "space)";
     return PushResult::invalid;
   }
   if (s.has_head_orientation) {
     const auto q = unit(s.head_orientation);
     if (!q) {
-      why = "gazelod: gaze sample head_orientation must be a finite, non-zero quaternion (or clear "
-            "GZL_GAZE_SAMPLE_HEAD_ORIENTATION)";
+      why =
+          "gazelod: gaze sample head_orientation must be a finite, non-zero quaternion (or clear "
+          "GZL_GAZE_SAMPLE_HEAD_ORIENTATION)";
       return PushResult::invalid;
     }
     s.head_orientation = *q;
@@ -79,8 +86,8 @@ PushResult PushedGazeSource::push(const PushedSample& in, std::string& why) {
   }
   if (have_frame_ && s.sample.t_ns > frame_t_ns_ + lead_ns_) {
     why = "gazelod: gaze sample at " + std::to_string(s.sample.t_ns) + " ns is more than " +
-          std::to_string(lead_ns_ / 1'000'000) + " ms after the last frame's display time (" + std::to_string(frame_t_ns_) +
-          " ns); stamp samples on the frame loop's clock (XrTime in OpenXR mode)";
+          std::to_string(lead_ns_ / 1'000'000) + " ms after the last frame's display time (" +
+          std::to_string(frame_t_ns_) + " ns); stamp samples on the frame loop's clock (XrTime in OpenXR mode)";
     return PushResult::in_future;
   }
   ring_[next_] = s;
@@ -97,8 +104,8 @@ std::optional<gaze::GazeSample> PushedGazeSource::sample_at(std::int64_t t_ns) {
     const PushedSample& p = ring_[(next_ + kSamples - 1 - k) % kSamples];
     if (p.sample.t_ns > t_ns) continue;
     if (t_ns - p.sample.t_ns > max_age_ns_) break;
-    const std::optional<glm::dquat> head = p.has_head_orientation ? std::optional<glm::dquat>(p.head_orientation)
-                                                                   : heads_.at(p.sample.t_ns);
+    const std::optional<glm::dquat> head =
+        p.has_head_orientation ? std::optional<glm::dquat>(p.head_orientation) : heads_.at(p.sample.t_ns);
     if (!p.sample.valid) {
       // A blink: handed on as invalid, so the plugin holds its estimate through it as it does
       // for the runtime's gaze (gaze_arbiter.hpp, blink_bridge_ns).
@@ -117,7 +124,8 @@ std::optional<gaze::GazeSample> PushedGazeSource::sample_at(std::int64_t t_ns) {
     status_ = "ok";
     return s;
   }
-  status_ = count_ == 0 ? "no sample pushed yet" : "no sample pushed in the last " + std::to_string(max_age_ns_ / 1'000'000) + " ms";
+  status_ = count_ == 0 ? "no sample pushed yet"
+                        : "no sample pushed in the last " + std::to_string(max_age_ns_ / 1'000'000) + " ms";
   return std::nullopt;
 }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Gaze samples the application pushes (data mode, or OpenXR mode with GZL_GAZE_INPUT_PUSHED),
 // as a GazeSource, and the head orientations given with the frames, to turn a sample into
 // head space and to know the head at the sample's time.

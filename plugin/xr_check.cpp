@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "plugin/xr_check.hpp"
 
 #include <openxr/openxr_reflection.h>
@@ -7,10 +8,11 @@ namespace gazelod {
 std::string xr_result_name(XrResult result) {
   switch (result) {
 #define GAZELOD_XR_RESULT_CASE(name, value) \
-  case name: return #name;
+  case name:                                \
+    return #name;
     XR_LIST_ENUM_XrResult(GAZELOD_XR_RESULT_CASE)
 #undef GAZELOD_XR_RESULT_CASE
-    default: break;
+        default : break;
   }
   return "XrResult " + std::to_string(static_cast<int>(result));
 }

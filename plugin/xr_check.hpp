@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The one check for OpenXR results in gazelod: a failed call throws XrCallError naming the
 // call and the result's registry name (XR_ERROR_RUNTIME_FAILURE), which needs no instance.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Looks the plugin's OpenXR functions up through the application's xrGetInstanceProcAddr.
 #include "plugin/xr_dispatch.hpp"
 
@@ -14,7 +15,8 @@ void load(PFN_xrGetInstanceProcAddr gipa, XrInstance instance, const char* name,
   const XrResult r = gipa(instance, name, &f);
   if (XR_FAILED(r) || f == nullptr)
     throw XrCallError(std::string("gazelod: xrGetInstanceProcAddr(\"") + name + "\") gave no function (" +
-                          xr_result_name(r) + "); pass the application's own xrGetInstanceProcAddr and a live XrInstance",
+                          xr_result_name(r) +
+                          "); pass the application's own xrGetInstanceProcAddr and a live XrInstance",
                       XR_FAILED(r) ? r : XR_ERROR_FUNCTION_UNSUPPORTED);
   out = reinterpret_cast<Pfn>(f);
 }

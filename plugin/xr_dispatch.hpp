@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The OpenXR functions the plugin calls, looked up once through the application's
 // xrGetInstanceProcAddr. Engines (Unity, Unreal, Godot) load or bundle their own loader,
 // sometimes privately, and may hook functions: the plugin links no loader and calls only the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "render/camera.hpp"
 
 #include "render/render_error.hpp"
@@ -21,9 +22,9 @@ glm::dmat4 projection_matrix(const Fov& fov, double near_m, double far_m) {
   auto inside = [limit](double a) { return std::isfinite(a) && std::abs(a) < limit; };
   if (!inside(fov.angle_left) || !inside(fov.angle_right) || !inside(fov.angle_up) || !inside(fov.angle_down) ||
       fov.angle_left >= fov.angle_right || fov.angle_down >= fov.angle_up)
-    throw RenderError("projection: degenerate field of view (left " + std::to_string(fov.angle_left) +
-                      ", right " + std::to_string(fov.angle_right) + ", up " + std::to_string(fov.angle_up) +
-                      ", down " + std::to_string(fov.angle_down) + " rad)");
+    throw RenderError("projection: degenerate field of view (left " + std::to_string(fov.angle_left) + ", right " +
+                      std::to_string(fov.angle_right) + ", up " + std::to_string(fov.angle_up) + ", down " +
+                      std::to_string(fov.angle_down) + " rad)");
   if (!(near_m > 0.0) || !(far_m > near_m) || !std::isfinite(far_m))
     throw RenderError("projection: need 0 < near < far (near " + std::to_string(near_m) + " m, far " +
                       std::to_string(far_m) + " m)");
@@ -47,10 +48,9 @@ glm::dmat4 projection_matrix(const Fov& fov, double near_m, double far_m) {
   return m;
 }
 
-bool project_to_pixel(const EyeView& view, const glm::dvec3& point_world_m, int width, int height,
-                      glm::dvec2& pixel) {
-  const glm::dvec4 clip = projection_matrix(view.fov, view.near_m, view.far_m) * view_matrix(view.pose) *
-                          glm::dvec4(point_world_m, 1.0);
+bool project_to_pixel(const EyeView& view, const glm::dvec3& point_world_m, int width, int height, glm::dvec2& pixel) {
+  const glm::dvec4 clip =
+      projection_matrix(view.fov, view.near_m, view.far_m) * view_matrix(view.pose) * glm::dvec4(point_world_m, 1.0);
   if (!(clip.w > 0.0)) return false;
   const double x_ndc = clip.x / clip.w;
   const double y_ndc = clip.y / clip.w;
@@ -73,8 +73,9 @@ bool ViewCuller::visible(const glm::dvec3& center_world_m, double radius_m) cons
   const glm::dvec3 c = glm::dvec3(world_to_eye_ * glm::dvec4(center_world_m, 1.0));
   const double depth = -c.z;  // the eye looks down -z
   if (depth < near_m_ - radius_m || depth > far_m_ + radius_m) return false;
-  return glm::dot(left_, glm::dvec2(c.x, depth)) >= -radius_m && glm::dot(right_, glm::dvec2(c.x, depth)) >= -radius_m &&
-         glm::dot(up_, glm::dvec2(c.y, depth)) >= -radius_m && glm::dot(down_, glm::dvec2(c.y, depth)) >= -radius_m;
+  return glm::dot(left_, glm::dvec2(c.x, depth)) >= -radius_m &&
+         glm::dot(right_, glm::dvec2(c.x, depth)) >= -radius_m && glm::dot(up_, glm::dvec2(c.y, depth)) >= -radius_m &&
+         glm::dot(down_, glm::dvec2(c.y, depth)) >= -radius_m;
 }
 
 }  // namespace gazelod::render

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Camera for one eye: view matrix from an XrPosef-like pose and an asymmetric projection from
 // four XrFovf angles, in Vulkan clip space (y down, depth 0..1). Follows the OpenXR SDK's
 // xr_linear.h XrMatrix4x4f_CreateProjectionFov for GRAPHICS_VULKAN.
@@ -39,8 +40,7 @@ glm::dmat4 projection_matrix(const Fov& fov, double near_m, double far_m);
 
 // Where a world point lands on a width x height image, in pixels from the top-left corner
 // (pixel centres at +0.5). Returns false for points behind the eye.
-bool project_to_pixel(const EyeView& view, const glm::dvec3& point_world_m, int width, int height,
-                      glm::dvec2& pixel);
+bool project_to_pixel(const EyeView& view, const glm::dvec3& point_world_m, int width, int height, glm::dvec2& pixel);
 
 // Conservative sphere-against-view-frustum test (the four FOV planes, near and far), so
 // objects entirely outside an eye's view are not submitted. May keep a sphere near a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "render/device_context.hpp"
 
 #include "render/render_error.hpp"
@@ -45,8 +46,8 @@ OffscreenDevice::OffscreenDevice(bool want_validation) {
   VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
   app.pApplicationName = "gazelod offscreen renderer";
   app.apiVersion = VK_API_VERSION_1_1;
-  const bool validate = want_validation && has_layer(kValidationLayer) &&
-                        has_instance_extension(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+  const bool validate =
+      want_validation && has_layer(kValidationLayer) && has_instance_extension(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
   const char* layers[] = {kValidationLayer};
   const char* extensions[] = {VK_EXT_DEBUG_UTILS_EXTENSION_NAME};
   VkInstanceCreateInfo ici{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
@@ -123,7 +124,9 @@ OffscreenDevice::OffscreenDevice(bool want_validation) {
   }
 }
 
-OffscreenDevice::~OffscreenDevice() { destroy(); }
+OffscreenDevice::~OffscreenDevice() {
+  destroy();
+}
 
 void OffscreenDevice::destroy() {
   if (ctx_.device != VK_NULL_HANDLE) {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The Vulkan objects the renderer draws with: borrowed from the OpenXR runtime
 // (XR_KHR_vulkan_enable2 gives instance, physical device, device and queue) or owned by an
 // OffscreenDevice, which makes its own instance and device on Mesa's lavapipe for tests,
@@ -49,8 +50,7 @@ class OffscreenDevice {
   };
   static VKAPI_ATTR VkBool32 VKAPI_CALL on_message(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
                                                    VkDebugUtilsMessageTypeFlagsEXT types,
-                                                   const VkDebugUtilsMessengerCallbackDataEXT* data,
-                                                   void* user);
+                                                   const VkDebugUtilsMessengerCallbackDataEXT* data, void* user);
   void destroy();
 
   DeviceContext ctx_;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "render/foveal_marker.hpp"
 #include "lod/angles.hpp"
 
@@ -9,8 +10,8 @@
 
 namespace gazelod::render {
 
-std::size_t foveal_circle(const glm::dvec3& eye_m, const glm::dvec3& gaze_dir, double radius_deg,
-                          std::uint32_t mesh, std::span<DrawItem> out, double distance_m, double dot_deg) {
+std::size_t foveal_circle(const glm::dvec3& eye_m, const glm::dvec3& gaze_dir, double radius_deg, std::uint32_t mesh,
+                          std::span<DrawItem> out, double distance_m, double dot_deg) {
   const double len = glm::length(gaze_dir);
   if (!std::isfinite(len) || len <= 0.0 || !std::isfinite(radius_deg) || out.empty()) return 0;
   const glm::dvec3 g = gaze_dir / len;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "render/frame_renderer.hpp"
 
 #include "render/lod_palette.hpp"
@@ -38,10 +39,17 @@ VkImageMemoryBarrier colour_barrier(VkImage image, VkImageLayout from, VkImageLa
 FrameRenderer::FrameRenderer(const DeviceContext& ctx, const MeshLibrary& meshes, RenderTarget target)
     : ctx_(ctx), meshes_(meshes), target_(std::move(target)) {
   switch (target_.format) {
-    case VK_FORMAT_R8G8B8A8_UNORM: break;
-    case VK_FORMAT_R8G8B8A8_SRGB: srgb_ = true; break;
-    case VK_FORMAT_B8G8R8A8_UNORM: bgra_ = true; break;
-    case VK_FORMAT_B8G8R8A8_SRGB: srgb_ = bgra_ = true; break;
+    case VK_FORMAT_R8G8B8A8_UNORM:
+      break;
+    case VK_FORMAT_R8G8B8A8_SRGB:
+      srgb_ = true;
+      break;
+    case VK_FORMAT_B8G8R8A8_UNORM:
+      bgra_ = true;
+      break;
+    case VK_FORMAT_B8G8R8A8_SRGB:
+      srgb_ = bgra_ = true;
+      break;
     default:
       throw RenderError("renderer: unsupported target format " + std::to_string(target_.format) +
                         " (need R8G8B8A8 or B8G8R8A8, UNORM or SRGB)");
@@ -53,8 +61,8 @@ FrameRenderer::FrameRenderer(const DeviceContext& ctx, const MeshLibrary& meshes
   try {
     const VkFormat depth_format = pick_depth_format(ctx_.physical);
     pipeline_ = create_pipeline(ctx_.device, target_.format, depth_format, target_.width, target_.height);
-    depth_ = DeviceImage(ctx_, target_.width, target_.height, depth_format,
-                         VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, VK_IMAGE_ASPECT_DEPTH_BIT);
+    depth_ = DeviceImage(ctx_, target_.width, target_.height, depth_format, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
+                         VK_IMAGE_ASPECT_DEPTH_BIT);
     for (VkImage image : target_.images) {
       views_.push_back(create_image_view(ctx_.device, image, target_.format, VK_IMAGE_ASPECT_COLOR_BIT));
       const std::array<VkImageView, 2> attachments{views_.back(), depth_.view()};
@@ -90,7 +98,9 @@ FrameRenderer::FrameRenderer(const DeviceContext& ctx, const MeshLibrary& meshes
   }
 }
 
-FrameRenderer::~FrameRenderer() { destroy(); }
+FrameRenderer::~FrameRenderer() {
+  destroy();
+}
 
 void FrameRenderer::destroy() {
   if (fence_) vkDestroyFence(ctx_.device, fence_, nullptr);
@@ -122,8 +132,7 @@ void FrameRenderer::draw(std::uint32_t image_index, const EyeView& view, std::sp
     if (item.mesh >= meshes_.size())
       throw RenderError("renderer: mesh id " + std::to_string(item.mesh) + " out of range (" +
                         std::to_string(meshes_.size()) + " meshes)");
-  const glm::mat4 view_proj =
-      glm::mat4(projection_matrix(view.fov, view.near_m, view.far_m) * view_matrix(view.pose));
+  const glm::mat4 view_proj = glm::mat4(projection_matrix(view.fov, view.near_m, view.far_m) * view_matrix(view.pose));
   const glm::vec4 eye(glm::vec3(view.pose.position_m), 1.0f);
 
   vk_check(vkResetCommandBuffer(cmd_, 0), "vkResetCommandBuffer");
@@ -250,9 +259,9 @@ RgbaImage FrameRenderer::read_back(std::uint32_t image_index) {
   VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   vk_check(vkBeginCommandBuffer(cmd_, &bi), "vkBeginCommandBuffer");
-  const auto to_src = colour_barrier(image, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                                     VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
-                                     VK_ACCESS_TRANSFER_READ_BIT);
+  const auto to_src =
+      colour_barrier(image, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                     VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT);
   vkCmdPipelineBarrier(cmd_, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0,
                        nullptr, 0, nullptr, 1, &to_src);
   VkBufferImageCopy region{};
@@ -260,8 +269,7 @@ RgbaImage FrameRenderer::read_back(std::uint32_t image_index) {
   region.imageExtent = {target_.width, target_.height, 1};
   vkCmdCopyImageToBuffer(cmd_, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback_.buffer(), 1, &region);
   const auto back = colour_barrier(image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                                   VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, 0,
-                                   VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+                                   VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, 0, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
   VkBufferMemoryBarrier host{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER};
   host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
   host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;

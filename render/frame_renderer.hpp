@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Draws one eye's frame into one of a set of target images (an OpenXR swapchain's VkImages,
 // or an OffscreenTarget): each object as its LOD level's mesh, tinted by level, with depth.
 // Each call records, submits and waits, so a swapchain image can be released right after.

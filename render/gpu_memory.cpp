@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "render/gpu_memory.hpp"
 
 #include "render/render_error.hpp"
@@ -37,11 +38,15 @@ HostBuffer::HostBuffer(const DeviceContext& ctx, VkDeviceSize size_bytes, VkBuff
   }
 }
 
-HostBuffer::~HostBuffer() { reset(); }
+HostBuffer::~HostBuffer() {
+  reset();
+}
 
 HostBuffer::HostBuffer(HostBuffer&& o) noexcept
-    : device_(std::exchange(o.device_, VK_NULL_HANDLE)), buffer_(std::exchange(o.buffer_, VK_NULL_HANDLE)),
-      memory_(std::exchange(o.memory_, VK_NULL_HANDLE)), mapped_(std::exchange(o.mapped_, nullptr)),
+    : device_(std::exchange(o.device_, VK_NULL_HANDLE)),
+      buffer_(std::exchange(o.buffer_, VK_NULL_HANDLE)),
+      memory_(std::exchange(o.memory_, VK_NULL_HANDLE)),
+      mapped_(std::exchange(o.mapped_, nullptr)),
       size_(std::exchange(o.size_, 0)) {}
 
 HostBuffer& HostBuffer::operator=(HostBuffer&& o) noexcept {
@@ -108,11 +113,15 @@ DeviceImage::DeviceImage(const DeviceContext& ctx, std::uint32_t width, std::uin
   }
 }
 
-DeviceImage::~DeviceImage() { reset(); }
+DeviceImage::~DeviceImage() {
+  reset();
+}
 
 DeviceImage::DeviceImage(DeviceImage&& o) noexcept
-    : device_(std::exchange(o.device_, VK_NULL_HANDLE)), image_(std::exchange(o.image_, VK_NULL_HANDLE)),
-      memory_(std::exchange(o.memory_, VK_NULL_HANDLE)), view_(std::exchange(o.view_, VK_NULL_HANDLE)) {}
+    : device_(std::exchange(o.device_, VK_NULL_HANDLE)),
+      image_(std::exchange(o.image_, VK_NULL_HANDLE)),
+      memory_(std::exchange(o.memory_, VK_NULL_HANDLE)),
+      view_(std::exchange(o.view_, VK_NULL_HANDLE)) {}
 
 DeviceImage& DeviceImage::operator=(DeviceImage&& o) noexcept {
   if (this != &o) {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Owning wrappers for the few Vulkan allocations the renderer makes: a persistently mapped
 // host-visible buffer (meshes, readback) and a device image with its view (depth, offscreen
 // colour). Move-only; destroyed with the device they were made on.

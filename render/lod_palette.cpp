@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "render/lod_palette.hpp"
 
 #include <glm/geometric.hpp>
@@ -27,7 +28,9 @@ glm::vec3 lod_colour(std::uint32_t level) {
   return kPalette[std::min<std::size_t>(level, kPalette.size() - 1)];
 }
 
-glm::vec3 background_colour() { return {0.08f, 0.08f, 0.12f}; }
+glm::vec3 background_colour() {
+  return {0.08f, 0.08f, 0.12f};
+}
 
 int nearest_lod(const glm::vec3& srgb) {
   int best = -1;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The debug tint per LOD level, so a screenshot shows which level each object got:
 // level 0 (full detail) red, then orange, yellow, green, cyan, blue, violet, grey; deeper
 // levels reuse the last colour. Colours are sRGB display values in 0..1.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "render/mesh_library.hpp"
 
 #include "render/render_error.hpp"
@@ -74,15 +75,14 @@ std::pair<std::int32_t, std::uint32_t> MeshLibrary::append_block(const char* wha
     throw RenderError(name + ": too many vertices for one library");
   if (indices_cpu_.size() + indices.size() > static_cast<std::size_t>(UINT32_MAX))
     throw RenderError(name + ": too many indices for one library");
-  const auto block = std::make_pair(static_cast<std::int32_t>(positions_.size()),
-                                    static_cast<std::uint32_t>(indices_cpu_.size()));
+  const auto block =
+      std::make_pair(static_cast<std::int32_t>(positions_.size()), static_cast<std::uint32_t>(indices_cpu_.size()));
   positions_.insert(positions_.end(), positions_unit.begin(), positions_unit.end());
   indices_cpu_.insert(indices_cpu_.end(), indices.begin(), indices.end());
   return block;
 }
 
-std::uint32_t MeshLibrary::add_mesh(std::span<const glm::vec3> positions_unit,
-                                    std::span<const std::uint32_t> indices) {
+std::uint32_t MeshLibrary::add_mesh(std::span<const glm::vec3> positions_unit, std::span<const std::uint32_t> indices) {
   if (uploaded()) throw RenderError("MeshLibrary::add_mesh after upload()");
   if (indices.size() % 3 != 0)
     throw RenderError("MeshLibrary::add_mesh: index count " + std::to_string(indices.size()) +

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // All meshes a renderer can draw, in one vertex and one index buffer: a stand-in sphere per
 // distinct LOD triangle count (see sphere_mesh.hpp), an arbitrary triangle mesh (add_mesh,
 // e.g. baked LOD levels for the perceptual profile) or a cluster hierarchy's clusters
@@ -41,8 +42,7 @@ class MeshLibrary {
   // shading is radial (a headlight on the bounding sphere's direction); silhouettes and depth
   // are exact. Throws RenderError after upload(), for an index count not a multiple of 3, an
   // index out of range, or a non-finite position. Every call adds a new mesh (no sharing).
-  std::uint32_t add_mesh(std::span<const glm::vec3> positions_unit,
-                         std::span<const std::uint32_t> indices);
+  std::uint32_t add_mesh(std::span<const glm::vec3> positions_unit, std::span<const std::uint32_t> indices);
 
   // A cluster hierarchy's clusters (gazelod bake --clusters): one vertex block and one index
   // buffer holding every cluster of every level, cluster c being the triangle list
@@ -53,8 +53,7 @@ class MeshLibrary {
   // Each cluster's range gets the sphere around its box (MeshRange::bound_center_unit).
   // Throws RenderError after upload(), for no clusters, spans of different lengths, a range
   // outside `indices` or not of whole triangles, an index out of range or a non-finite position.
-  std::uint32_t add_cluster_mesh(std::span<const glm::vec3> positions_unit,
-                                 std::span<const std::uint32_t> indices,
+  std::uint32_t add_cluster_mesh(std::span<const glm::vec3> positions_unit, std::span<const std::uint32_t> indices,
                                  std::span<const std::uint32_t> first_index,
                                  std::span<const std::uint32_t> index_count);
 
@@ -76,8 +75,7 @@ class MeshLibrary {
 
   // Checks and appends one vertex block and its indices; returns the block's vertex offset
   // and first index. `what` names the caller in errors.
-  std::pair<std::int32_t, std::uint32_t> append_block(const char* what,
-                                                      std::span<const glm::vec3> positions_unit,
+  std::pair<std::int32_t, std::uint32_t> append_block(const char* what, std::span<const glm::vec3> positions_unit,
                                                       std::span<const std::uint32_t> indices);
 };
 

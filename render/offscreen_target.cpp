@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "render/offscreen_target.hpp"
 
 #include "render/render_error.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "render/pipeline.hpp"
 
 #include "render/render_error.hpp"
@@ -74,8 +75,8 @@ VkShaderModule create_module(VkDevice device, const std::uint32_t* code, std::si
   return module;
 }
 
-VkPipeline create_graphics_pipeline(VkDevice device, VkRenderPass pass, VkPipelineLayout layout,
-                                    std::uint32_t width, std::uint32_t height) {
+VkPipeline create_graphics_pipeline(VkDevice device, VkRenderPass pass, VkPipelineLayout layout, std::uint32_t width,
+                                    std::uint32_t height) {
   VkShaderModule vert = create_module(device, lod_mesh_vert_spv, sizeof lod_mesh_vert_spv);
   VkShaderModule frag = VK_NULL_HANDLE;
   try {

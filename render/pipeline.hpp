@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The one graphics pipeline of the renderer: clear colour + depth, draw LOD meshes with the
 // lod_mesh shaders, leave the colour image in COLOR_ATTACHMENT_OPTIMAL (what OpenXR expects
 // of a released swapchain image).

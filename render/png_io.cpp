@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "render/png_io.hpp"
 
 #include "render/render_error.hpp"
@@ -15,9 +16,8 @@ namespace {
 void check_image(const std::string& what, const RgbaImage& image) {
   if (image.width == 0 || image.height == 0 ||
       image.pixels.size() != static_cast<std::size_t>(image.width) * image.height * 4u)
-    throw RenderError(what + ": cannot write an empty or inconsistent image (" +
-                      std::to_string(image.width) + "x" + std::to_string(image.height) + ", " +
-                      std::to_string(image.pixels.size()) + " bytes)");
+    throw RenderError(what + ": cannot write an empty or inconsistent image (" + std::to_string(image.width) + "x" +
+                      std::to_string(image.height) + ", " + std::to_string(image.pixels.size()) + " bytes)");
 }
 
 }  // namespace

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // PNG files of rendered frames (libpng's simplified API): screenshots from `gazelod run`
 // and the tests' round trips.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Errors of the Vulkan renderer: every failing Vulkan call is reported by name and VkResult,
 // and "there is no usable Vulkan device" is its own type so callers (tests) can tell it apart.
 #pragma once
@@ -20,8 +21,7 @@ struct NoVulkanDevice : RenderError {
 
 // Throws RenderError("<call> failed (VkResult N)") unless `result` is VK_SUCCESS.
 inline void vk_check(VkResult result, const char* call) {
-  if (result != VK_SUCCESS)
-    throw RenderError(std::string(call) + " failed (VkResult " + std::to_string(result) + ")");
+  if (result != VK_SUCCESS) throw RenderError(std::string(call) + " failed (VkResult " + std::to_string(result) + ")");
 }
 
 }  // namespace gazelod::render

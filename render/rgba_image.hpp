@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A frame read back from the GPU: 8-bit RGBA, rows top to bottom, no padding.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Procedural stand-in meshes for LOD levels: a latitude/longitude unit sphere whose triangle
 // count approximates a level's `triangles` (lod::LodLevel), until `gazelod bake` provides real
 // meshes. Vertices are unit positions, which are also the normals.
@@ -11,8 +12,8 @@
 namespace gazelod::render {
 
 struct MeshData {
-  std::vector<glm::vec3> positions;     // on the unit sphere
-  std::vector<std::uint32_t> indices;   // triangle list, counter-clockwise seen from outside
+  std::vector<glm::vec3> positions;    // on the unit sphere
+  std::vector<std::uint32_t> indices;  // triangle list, counter-clockwise seen from outside
   std::size_t triangle_count() const { return indices.size() / 3; }
 };
 

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The C ABI against its checked-in baseline (abi/libgazelod.so.1.abi), with libabigail's abidiff
 # (Debian abigail-tools). Fails on an incompatible change (a removed function, a changed struct
 # or signature) unless the library's major version (its SONAME) changed too; additions pass.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Khronos's OpenXR Conformance Test Suite (CTS 1.1.41.0) on the simulated runtime: the
 # non-interactive suites with Vulkan and headless, the scripted-input action tests
 # (XR_EXT_conformance_automation) and the eye-gaze tests. Needs ../shared beside the checkout

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Coefficients of lod/fast_math.hpp's polynomials, and their worst error.
 
 Each polynomial interpolates its function at the Chebyshev nodes of the reduced range, which

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Fuzz campaigns (docs/hardening.md): builds the libFuzzer targets with clang
 # (-DGAZELOD_FUZZ=ON, ASan+UBSan) in build-fuzz/ and runs each for FUZZ_SECONDS (default 120).
 #

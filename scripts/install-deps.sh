@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Installs the Debian 12 packages gazelod needs to build, test and run. Idempotent; run as
 # root (or with sudo available). Every dependency is a Debian package: nothing is downloaded
 # from anywhere else.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Installs Khronos's glTF-Validator (npm package gltf-validator, pinned) for the bake
 # --clusters integration test (tests/bake/cluster_validator_test.cpp), which looks for it in
 # BUILD_DIR/gltf-validator/node_modules (or $GAZELOD_GLTF_VALIDATOR_PATH):

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Soak run (docs/hardening.md): one simulated hour at 90 Hz (324,000 frames),
 # unpaced and headless, through the plugin's frame loop against the simulated runtime, with
 # resident memory sampled as it goes (tests/soak/soak_main.cpp fails on growth), then the same

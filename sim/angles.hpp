@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Eye and head angles used by the effects. One convention throughout sim/: yaw is a rotation
 // about +Y (positive turns left), pitch about +X (positive looks up), applied as
 // R = Ry(yaw) * Rx(pitch) to the forward direction (0, 0, -1) (OpenXR axes).

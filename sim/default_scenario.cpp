@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The embedded default scenario (what `gazelod run` and the simulated runtime use when no file
 // is given): Meta Quest Pro (eye-tracked), 20 s at 90 Hz, Reddy 1998's random field of 200
 // objects with four LODs walked through at 1.4 m/s, head sweeps and a fast turn, saccades with

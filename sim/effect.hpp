@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The one interface every simulated effect implements (one effect per file in sim/effects/).
 // An effect reads and validates its parameters when it is made, then takes part in the stages
 // it names: head motion, true gaze, tracker timing, tracker samples, object motion. The

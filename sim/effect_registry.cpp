@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Effect names to makers. An explicit table rather than self-registering statics, which a
 // static library would drop at link time.
 #include "sim/effect.hpp"
@@ -40,9 +41,13 @@ constexpr std::array<std::string_view, kEffects.size()> kNames = [] {
 
 }  // namespace
 
-std::span<const std::string_view> effect_names() { return kNames; }
+std::span<const std::string_view> effect_names() {
+  return kNames;
+}
 
-std::int64_t to_ns(double seconds) { return static_cast<std::int64_t>(std::llround(seconds * 1e9)); }
+std::int64_t to_ns(double seconds) {
+  return static_cast<std::int64_t>(std::llround(seconds * 1e9));
+}
 
 TimeWindow read_window(JsonFields& params) {
   TimeWindow w;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "sim/json_fields.hpp"
 
 #include "sim/simulator.hpp"
@@ -25,9 +26,13 @@ JsonFields::JsonFields(const nlohmann::json& object, std::string path, std::stri
   if (!obj_.is_object()) throw_at(source_, path_, "expected an object, got " + json_type_name(obj_));
 }
 
-std::string JsonFields::key_path(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+std::string JsonFields::key_path(const std::string& key) const {
+  return path_.empty() ? key : path_ + "." + key;
+}
 
-bool JsonFields::has(const std::string& key) const { return obj_.contains(key); }
+bool JsonFields::has(const std::string& key) const {
+  return obj_.contains(key);
+}
 
 void JsonFields::fail(const std::string& key, const std::string& message) const {
   throw_at(source_, key.empty() ? path_ : key_path(key), message);
@@ -40,7 +45,9 @@ const nlohmann::json* JsonFields::find(const std::string& key) {
   return &*it;
 }
 
-const nlohmann::json* JsonFields::child(const std::string& key) { return find(key); }
+const nlohmann::json* JsonFields::child(const std::string& key) {
+  return find(key);
+}
 
 std::string format_number(double x) {
   std::ostringstream s;
@@ -67,8 +74,12 @@ std::string range_text(const std::string& lo, const std::string& hi) {
   s.append(lo).append(", ").append(hi).append("]");
   return s;
 }
-std::string range_text(double lo, double hi) { return range_text(format_number(lo), format_number(hi)); }
-std::string range_text(std::int64_t lo, std::int64_t hi) { return range_text(std::to_string(lo), std::to_string(hi)); }
+std::string range_text(double lo, double hi) {
+  return range_text(format_number(lo), format_number(hi));
+}
+std::string range_text(std::int64_t lo, std::int64_t hi) {
+  return range_text(std::to_string(lo), std::to_string(hi));
+}
 }  // namespace
 
 double JsonFields::number(const std::string& key, double fallback, double lo, double hi) {
@@ -90,12 +101,12 @@ double JsonFields::required_number(const std::string& key, double lo, double hi)
 std::int64_t JsonFields::integer(const std::string& key, std::int64_t fallback, std::int64_t lo, std::int64_t hi) {
   const nlohmann::json* v = find(key);
   if (!v) return fallback;
-  if (!v->is_number_integer()) fail(key, "expected an integer, got " + (v->is_number() ? v->dump() : json_type_name(*v)));
+  if (!v->is_number_integer())
+    fail(key, "expected an integer, got " + (v->is_number() ? v->dump() : json_type_name(*v)));
   if (v->is_number_unsigned() && v->get<std::uint64_t>() > static_cast<std::uint64_t>(hi))
     fail(key, "must be in " + range_text(lo, hi) + ", got " + v->dump());
   const std::int64_t x = v->get<std::int64_t>();
-  if (x < lo || x > hi)
-    fail(key, "must be in " + range_text(lo, hi) + ", got " + v->dump());
+  if (x < lo || x > hi) fail(key, "must be in " + range_text(lo, hi) + ", got " + v->dump());
   return x;
 }
 

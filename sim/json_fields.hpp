@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reading one JSON object of a scenario with errors that name the source and the JSON path
 // ("scenario.json: effects[2].amplitude_deg: must be in [0, 90], got 120"). Every key must be
 // read or the object is refused by finish() (unknown keys are errors, not silently ignored).

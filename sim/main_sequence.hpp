@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The saccadic main sequence (Bahill, Clark & Stark 1975; Carpenter 1988): duration grows
 // linearly with amplitude, D = 2.2 ms/deg * A + 21 ms, and peak velocity saturates (~500 deg/s).
 // Peak velocity here: Vp = Vsat tanh(1.875 (A / D) / Vsat), i.e. a minimum-jerk-like peak for
@@ -31,14 +32,17 @@ inline double saccade_progress(double tau, double ratio) {
   tau = std::clamp(tau, 0.0, 1.0);
   const double a = std::clamp(1.0 - ratio, 0.0, 0.5);
   const double r = 1.0 - a;
-  if (a < 1e-9) return tau;  // constant velocity
+  if (a < 1e-9) return tau;    // constant velocity
   auto ramp = [a](double x) {  // integral of (1 - cos(pi x / a)) / 2 from 0 to x <= a
     return x / 2.0 - a / (2.0 * std::numbers::pi) * std::sin(std::numbers::pi * x / a);
   };
   double covered;
-  if (tau < a) covered = ramp(tau);
-  else if (tau <= 1.0 - a) covered = a / 2.0 + (tau - a);
-  else covered = r - ramp(1.0 - tau);
+  if (tau < a)
+    covered = ramp(tau);
+  else if (tau <= 1.0 - a)
+    covered = a / 2.0 + (tau - a);
+  else
+    covered = r - ramp(1.0 - tau);
   return std::clamp(covered / r, 0.0, 1.0);
 }
 

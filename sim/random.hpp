@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Counter-based randomness for the simulator: every random number is a pure function of
 // (seed, effect index, counter), so a stream does not depend on the order of queries
 // (splitmix64 finaliser, Steele et al. 2014; Box-Muller for Gaussians).
@@ -23,16 +24,16 @@ constexpr std::uint64_t hash3(std::uint64_t seed, std::uint64_t stream, std::uin
 }
 
 // Uniform in [0, 1): the top 53 bits.
-constexpr double to_unit(std::uint64_t bits) { return static_cast<double>(bits >> 11) * 0x1.0p-53; }
+constexpr double to_unit(std::uint64_t bits) {
+  return static_cast<double>(bits >> 11) * 0x1.0p-53;
+}
 
 struct CounterRng {
   std::uint64_t seed = 0;
   std::uint64_t stream = 0;
 
   double uniform(std::uint64_t counter) const { return to_unit(hash3(seed, stream, counter)); }
-  double uniform(std::uint64_t counter, double lo, double hi) const {
-    return lo + (hi - lo) * uniform(counter);
-  }
+  double uniform(std::uint64_t counter, double lo, double hi) const { return lo + (hi - lo) * uniform(counter); }
   // Two independent standard normals from counters 2c and 2c+1 (Box-Muller); u1 in (0, 1].
   void normal2(std::uint64_t counter, double& a, double& b) const {
     const double u1 = 1.0 - uniform(2 * counter);

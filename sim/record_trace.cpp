@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "sim/record_trace.hpp"
 
 #include "gaze/atomic_file.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Writing what a scenario simulated as a gazelod gaze trace (gaze/trace_writer.hpp), so a
 // simulated session can be replayed: one row per distinct tracker sample (at its sample time),
 // with the head pose at that time.
@@ -12,9 +13,9 @@
 namespace gazelod::sim {
 
 struct RecordOptions {
-  double step_hz = 0.0;       // how often the tracker is asked; 0: the scenario's frame rate
-  bool true_gaze = false;     // the eye itself (no tracker effects) instead of the tracker
-  double duration_s = 0.0;    // 0: the scenario's duration
+  double step_hz = 0.0;     // how often the tracker is asked; 0: the scenario's frame rate
+  bool true_gaze = false;   // the eye itself (no tracker effects) instead of the tracker
+  double duration_s = 0.0;  // 0: the scenario's duration
 };
 
 struct RecordStats {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "sim/scenario_family.hpp"
 
 #include "sim/random.hpp"
@@ -15,19 +16,52 @@ namespace {
 // One draw per named quantity (its own counter), so adding a quantity later leaves the
 // others' values for a seed unchanged.
 enum Draw : std::uint64_t {
-  kDisplay, kHead, kSweepYaw, kSweepPeriod, kSweepPitch, kTurnRate, kTurnTime, kTurnSign, kWalk, kVor,
-  kFixMin, kFixMax, kAmpMax, kRange, kPursuit, kPursuitSpeed, kPursuitDist, kPursuitStart, kPursuitLen,
-  kPursuitSide, kTrackerRate, kLatency, kNoise, kBlinkRate, kBlinkLen, kDropouts, kDropFraction,
-  kField, kCount, kLevels, kTriangles, kRatio, kTargetRadius, kTurn2Time,
+  kDisplay,
+  kHead,
+  kSweepYaw,
+  kSweepPeriod,
+  kSweepPitch,
+  kTurnRate,
+  kTurnTime,
+  kTurnSign,
+  kWalk,
+  kVor,
+  kFixMin,
+  kFixMax,
+  kAmpMax,
+  kRange,
+  kPursuit,
+  kPursuitSpeed,
+  kPursuitDist,
+  kPursuitStart,
+  kPursuitLen,
+  kPursuitSide,
+  kTrackerRate,
+  kLatency,
+  kNoise,
+  kBlinkRate,
+  kBlinkLen,
+  kDropouts,
+  kDropFraction,
+  kField,
+  kCount,
+  kLevels,
+  kTriangles,
+  kRatio,
+  kTargetRadius,
+  kTurn2Time,
 };
 constexpr std::uint64_t kFamilyStream = 0x66616d696c79;  // "family"
 
 // The presets with an eye tracker (gazelod hmds): the family's displays.
-constexpr std::array<const char*, 6> kDisplays{"questpro", "viveproeye", "varjoxr4", "visionpro", "psvr2", "pimaxcrystal"};
+constexpr std::array<const char*, 6> kDisplays{"questpro",  "viveproeye", "varjoxr4",
+                                               "visionpro", "psvr2",      "pimaxcrystal"};
 constexpr std::array<const char*, 4> kHeadProfiles{"still", "sweeps", "sweeps+turns", "walk"};
 constexpr std::array<const char*, 3> kFields{"near clutter", "open field", "deep field"};
 
-std::size_t pick(double u, std::size_t n) { return std::min(n - 1, static_cast<std::size_t>(u * static_cast<double>(n))); }
+std::size_t pick(double u, std::size_t n) {
+  return std::min(n - 1, static_cast<std::size_t>(u * static_cast<double>(n)));
+}
 
 // Level k: triangles / ratio^k; detail sqrt(triangles_k) / 2 cycles per diameter (the
 // random_field convention, sim/scenarios/README.md).
@@ -35,8 +69,8 @@ nlohmann::json lod_chain(double triangles, int levels, double ratio) {
   nlohmann::json chain = nlohmann::json::array();
   for (int k = 0; k < levels; ++k) {
     const auto t = static_cast<std::int64_t>(std::max(4.0, std::round(triangles / std::pow(ratio, k))));
-    chain.push_back({{"triangles", t}, {"vertices", t / 2 + 2},
-                     {"detail", k == 0 ? 0.0 : std::sqrt(static_cast<double>(t)) / 2}});
+    chain.push_back(
+        {{"triangles", t}, {"vertices", t / 2 + 2}, {"detail", k == 0 ? 0.0 : std::sqrt(static_cast<double>(t)) / 2}});
   }
   return chain;
 }
@@ -74,7 +108,8 @@ FamilyScenario family_scenario(std::uint64_t seed, double duration_s) {
     const double t1 = std::round(u(kTurnTime, 0.15, 0.45) * T * 10.0) / 10.0;
     const double t2 = std::round((t1 + u(kTurn2Time, 2.0, 5.0)) * 10.0) / 10.0;
     effects.push_back({{"type", "head_turn"}, {"rate_deg_s", rate}, {"duration_s", 0.4}, {"start_s", t1}});
-    if (t2 + 0.4 < T) effects.push_back({{"type", "head_turn"}, {"rate_deg_s", -rate}, {"duration_s", 0.4}, {"start_s", t2}});
+    if (t2 + 0.4 < T)
+      effects.push_back({{"type", "head_turn"}, {"rate_deg_s", -rate}, {"duration_s", 0.4}, {"start_s", t2}});
   }
   if (walk > 0.0) {
     std::snprintf(text, sizeof text, " %.1f m/s", walk);
@@ -112,7 +147,8 @@ FamilyScenario family_scenario(std::uint64_t seed, double duration_s) {
   effects.push_back({{"type", "tracker_rate"}, {"rate_hz", tracker_hz}});
   effects.push_back({{"type", "tracker_latency"}, {"latency_ms", latency_ms}});
   effects.push_back({{"type", "tracker_noise"}, {"std_deg", noise_deg}});
-  effects.push_back({{"type", "blinks"}, {"rate_per_min", std::round(u(kBlinkRate, 6.0, 20.0))},
+  effects.push_back({{"type", "blinks"},
+                     {"rate_per_min", std::round(u(kBlinkRate, 6.0, 20.0))},
                      {"duration_ms", std::round(u(kBlinkLen, 100.0, 250.0))}});
   if (r.uniform(kDropouts) < 0.3)
     effects.push_back({{"type", "dropouts"}, {"fraction", std::round(u(kDropFraction, 0.01, 0.05) * 1000.0) / 1000.0}});
@@ -120,9 +156,12 @@ FamilyScenario family_scenario(std::uint64_t seed, double duration_s) {
   // The field: its depth and size structure, stretched ahead by the walk's distance.
   const std::size_t field = pick(r.uniform(kField), kFields.size());
   const double ahead = walk * T;
-  struct Shape { double half_width, half_height, z_near, z_far, r_min, r_max; int count_lo, count_hi; };
-  constexpr Shape kShapes[] = {{10, 2, 2, 40, 0.1, 0.6, 150, 300}, {25, 4, 5, 150, 0.3, 2.0, 100, 250},
-                               {60, 8, 10, 400, 1.0, 6.0, 100, 200}};
+  struct Shape {
+    double half_width, half_height, z_near, z_far, r_min, r_max;
+    int count_lo, count_hi;
+  };
+  constexpr Shape kShapes[] = {
+      {10, 2, 2, 40, 0.1, 0.6, 150, 300}, {25, 4, 5, 150, 0.3, 2.0, 100, 250}, {60, 8, 10, 400, 1.0, 6.0, 100, 200}};
   const Shape& s = kShapes[field];
   const int levels = static_cast<int>(std::floor(u(kLevels, 3.0, 5.999)));
   nlohmann::json generator = {{"type", "random_field"},

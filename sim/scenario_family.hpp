@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A family of random but plausible scenarios, one per seed, for tuning and evaluating on
 // scenes nobody hand-picked ("a policy fitted to three files fails on the fourth"). Each seed
 // draws, independently:

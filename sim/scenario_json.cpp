@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Loading a scenario (format: version 1; see sim/scenarios/*.json and the README section
 // "Scenario files"). Every error names the source and the JSON path.
 #include "auxiliary/json_strict.hpp"
@@ -65,8 +66,10 @@ lod::DisplaySpec read_display(const nlohmann::json& j, JsonFields& top) {
   JsonFields f(j, top.key_path("display"), top.source());
   lod::DisplaySpec d;
   const bool preset = f.has("preset");
-  if (preset) d = preset_or_fail(f.string("preset", ""), f, "preset");
-  else d.name = "custom", d.label = "custom display", d.source = "scenario";
+  if (preset)
+    d = preset_or_fail(f.string("preset", ""), f, "preset");
+  else
+    d.name = "custom", d.label = "custom display", d.source = "scenario";
   d.name = f.string("name", d.name);
   d.label = f.string("label", d.label);
   d.view_count = static_cast<int>(f.integer("views", d.view_count, 1, 2));
@@ -79,15 +82,21 @@ lod::DisplaySpec read_display(const nlohmann::json& j, JsonFields& top) {
   v.width_px = static_cast<int>(f.integer("width_px", v.width_px, 1, 65536));
   v.height_px = static_cast<int>(f.integer("height_px", v.height_px, 1, 65536));
   const int fov_keys = f.has("fov_deg") + f.has("fov_rad") + (f.has("fov_h_deg") || f.has("fov_v_deg"));
-  const std::string fov_key = f.has("fov_deg") ? "fov_deg" : f.has("fov_rad") ? "fov_rad"
-                              : f.has("fov_h_deg") ? "fov_h_deg" : f.has("fov_v_deg") ? "fov_v_deg" : "";
+  const std::string fov_key = f.has("fov_deg")     ? "fov_deg"
+                              : f.has("fov_rad")   ? "fov_rad"
+                              : f.has("fov_h_deg") ? "fov_h_deg"
+                              : f.has("fov_v_deg") ? "fov_v_deg"
+                                                   : "";
   if (fov_keys > 1) f.fail("", "give one of fov_deg, fov_rad or fov_h_deg + fov_v_deg");
-  if (f.has("fov_deg")) v.fov = read_fov(f, "fov_deg", kRadPerDeg);
-  else if (f.has("fov_rad")) v.fov = read_fov(f, "fov_rad", 1.0);
+  if (f.has("fov_deg"))
+    v.fov = read_fov(f, "fov_deg", kRadPerDeg);
+  else if (f.has("fov_rad"))
+    v.fov = read_fov(f, "fov_rad", 1.0);
   else if (f.has("fov_h_deg") || f.has("fov_v_deg"))
     v.fov = lod::symmetric_fov(f.required_number("fov_h_deg", lod::kMinFovDeg, lod::kMaxFovDeg),
                                f.required_number("fov_v_deg", lod::kMinFovDeg, lod::kMaxFovDeg));
-  else if (!preset) f.fail("fov_deg", "missing (fov_deg {left, right, up, down}, fov_rad, or fov_h_deg + fov_v_deg)");
+  else if (!preset)
+    f.fail("fov_deg", "missing (fov_deg {left, right, up, down}, fov_rad, or fov_h_deg + fov_v_deg)");
   d.views[0] = d.views[1] = v;
   d.refresh_hz = f.number("refresh_hz", d.refresh_hz, 1.0, 1000.0);
   d.eye_tracking_hz = f.number("eye_tracking_hz", d.eye_tracking_hz, 0.0, 10000.0);
@@ -107,13 +116,17 @@ RuntimeOptions read_runtime(const nlohmann::json& j, JsonFields& top) {
   RuntimeOptions r;
   r.eye_gaze_supported = f.boolean("eye_gaze_supported", r.eye_gaze_supported);
   const std::string g = f.string("gaze_delivery", "normal");
-  if (g == "normal") r.gaze_delivery = GazeDelivery::normal;
-  else if (g == "never_delivers") r.gaze_delivery = GazeDelivery::never_delivers;
-  else if (g == "sample_time_zero") r.gaze_delivery = GazeDelivery::sample_time_zero;
-  else if (g == "sample_time_is_request_time") r.gaze_delivery = GazeDelivery::sample_time_is_request_time;
+  if (g == "normal")
+    r.gaze_delivery = GazeDelivery::normal;
+  else if (g == "never_delivers")
+    r.gaze_delivery = GazeDelivery::never_delivers;
+  else if (g == "sample_time_zero")
+    r.gaze_delivery = GazeDelivery::sample_time_zero;
+  else if (g == "sample_time_is_request_time")
+    r.gaze_delivery = GazeDelivery::sample_time_is_request_time;
   else
-    f.fail("gaze_delivery", "unknown \"" + g +
-                                "\" (known: normal, never_delivers, sample_time_zero, sample_time_is_request_time)");
+    f.fail("gaze_delivery",
+           "unknown \"" + g + "\" (known: normal, never_delivers, sample_time_zero, sample_time_is_request_time)");
   r.paced = f.boolean("paced", r.paced);
   f.finish();
   return r;
@@ -123,8 +136,10 @@ RuntimeOptions read_runtime(const nlohmann::json& j, JsonFields& top) {
 std::string line_column(std::string_view text, std::size_t byte) {
   std::size_t line = 1, col = 1;
   for (std::size_t i = 0; i < byte && i < text.size(); ++i) {
-    if (text[i] == '\n') ++line, col = 1;
-    else ++col;
+    if (text[i] == '\n')
+      ++line, col = 1;
+    else
+      ++col;
   }
   return std::to_string(line) + ":" + std::to_string(col);
 }
@@ -161,8 +176,8 @@ std::size_t head_track_bytes(const nlohmann::json& e, const std::string& source)
 Scenario load_scenario_json(std::string_view json_text, std::string_view source_name) {
   const std::string source(source_name);
   if (json_text.size() > kMaxScenarioBytes)
-    throw_at(source, "", "must be at most " + bytes_text(kMaxScenarioBytes) + " of JSON, got " +
-                             bytes_text(json_text.size()));
+    throw_at(source, "",
+             "must be at most " + bytes_text(kMaxScenarioBytes) + " of JSON, got " + bytes_text(json_text.size()));
   // Nesting is limited while parsing (a deeply nested value would cost stack in every later
   // pass over it without ever being a valid scenario), and a key given twice is refused.
   nlohmann::json j;
@@ -180,7 +195,8 @@ Scenario load_scenario_json(std::string_view json_text, std::string_view source_
   Scenario sc;
   if (!f.has("version")) f.fail("version", "missing (this reader reads version 1)");
   sc.version = static_cast<int>(f.integer("version", 1, 0, 1'000'000));
-  if (sc.version != 1) f.fail("version", "unsupported version " + std::to_string(sc.version) + " (this reader reads 1)");
+  if (sc.version != 1)
+    f.fail("version", "unsupported version " + std::to_string(sc.version) + " (this reader reads 1)");
   sc.name = f.string("name", source);
   const nlohmann::json* display = f.child("display");
   if (!display) f.fail("display", "missing (a preset name such as \"questpro\", or an object)");
@@ -200,8 +216,8 @@ Scenario load_scenario_json(std::string_view json_text, std::string_view source_
   if (const nlohmann::json* effects = f.child("effects")) {
     if (!effects->is_array()) f.fail("effects", "expected an array, got " + json_type_name(*effects));
     if (effects->size() > kMaxEffects)
-      f.fail("effects", "must have at most " + std::to_string(kMaxEffects) + " effects, got " +
-                            std::to_string(effects->size()));
+      f.fail("effects",
+             "must have at most " + std::to_string(kMaxEffects) + " effects, got " + std::to_string(effects->size()));
     for (std::size_t i = 0; i < effects->size(); ++i) {
       const nlohmann::json& e = (*effects)[i];
       EffectSpec spec;
@@ -245,8 +261,9 @@ std::string read_scenario_text(const std::string& path) {
   if (!S_ISREG(st.st_mode) && !S_ISFIFO(st.st_mode))
     throw ScenarioError(path + ": is not a regular file (a device or socket), not a scenario file");
   if (S_ISREG(st.st_mode) && static_cast<std::uint64_t>(st.st_size) > kMaxScenarioBytes)
-    throw_at(path, "", "must be at most " + bytes_text(kMaxScenarioBytes) + " of JSON, got " +
-                           bytes_text(static_cast<std::size_t>(st.st_size)));
+    throw_at(path, "",
+             "must be at most " + bytes_text(kMaxScenarioBytes) + " of JSON, got " +
+                 bytes_text(static_cast<std::size_t>(st.st_size)));
   std::ifstream in(path, std::ios::binary);
   if (!in) throw ScenarioError(path + ": cannot open the scenario file: " + std::strerror(errno));
   // Bounded also for a pipe (or a file that grows): at most one chunk past the limit is read.
@@ -263,6 +280,8 @@ std::string read_scenario_text(const std::string& path) {
   return text;
 }
 
-Scenario load_scenario_file(const std::string& path) { return load_scenario_json(read_scenario_text(path), path); }
+Scenario load_scenario_file(const std::string& path) {
+  return load_scenario_json(read_scenario_text(path), path);
+}
 
 }  // namespace gazelod::sim

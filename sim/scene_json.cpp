@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "sim/scene_json.hpp"
 
 #include "lod/object_set.hpp"
@@ -12,7 +13,9 @@ namespace {
 
 constexpr std::uint64_t kGeneratorStream = 0x5CE7E0000ULL;  // away from effect streams (1, 2, ...)
 
-std::string count_text(std::size_t n) { return std::to_string(n); }
+std::string count_text(std::size_t n) {
+  return std::to_string(n);
+}
 
 lod::LodLevel read_level(const nlohmann::json& j, const std::string& path, const std::string& source) {
   JsonFields f(j, path, source);
@@ -20,9 +23,12 @@ lod::LodLevel read_level(const nlohmann::json& j, const std::string& path, const
   l.triangles = static_cast<std::uint32_t>(f.integer("triangles", 0, 0, 4'000'000'000LL));
   l.vertices = static_cast<std::uint32_t>(f.integer("vertices", 0, 0, 4'000'000'000LL));
   const std::string kind = f.string("detail_kind", "removed_cycles_per_diameter");
-  if (kind == "removed_cycles_per_diameter") l.detail_kind = lod::DetailKind::removed_cycles_per_diameter;
-  else if (kind == "geometric_error_m") l.detail_kind = lod::DetailKind::geometric_error_m;
-  else f.fail("detail_kind", "expected \"removed_cycles_per_diameter\" or \"geometric_error_m\", got \"" + kind + "\"");
+  if (kind == "removed_cycles_per_diameter")
+    l.detail_kind = lod::DetailKind::removed_cycles_per_diameter;
+  else if (kind == "geometric_error_m")
+    l.detail_kind = lod::DetailKind::geometric_error_m;
+  else
+    f.fail("detail_kind", "expected \"removed_cycles_per_diameter\" or \"geometric_error_m\", got \"" + kind + "\"");
   l.detail = f.number("detail", 0.0, 0.0, 1e9);
   f.finish();
   return l;
@@ -68,8 +74,8 @@ void count_object(const nlohmann::json& j, const std::string& path, const std::s
   if (n > lod::kMaxChainLevels)
     f.fail("lods", "a chain needs 1 to " + count_text(lod::kMaxChainLevels) + " levels, got " + count_text(n));
   const auto name = j.find("name");
-  const std::size_t name_length = name != j.end() && name->is_string() ? name->get_ref<const std::string&>().size()
-                                                                       : 6 + count_text(index).size();
+  const std::size_t name_length =
+      name != j.end() && name->is_string() ? name->get_ref<const std::string&>().size() : 6 + count_text(index).size();
   count_objects(tally, 1, n, name_length, f, "", "objects");
 }
 
@@ -125,8 +131,7 @@ RandomField read_random_field(const nlohmann::json& j, const std::string& path, 
   g.prefix = f.string("name_prefix", "field");
   f.finish();
   const std::size_t digits = g.count > 1 ? count_text(g.count - 1).size() : 1;
-  count_objects(tally, g.count, static_cast<std::size_t>(g.levels), g.prefix.size() + digits, f, "count",
-                "objects");
+  count_objects(tally, g.count, static_cast<std::size_t>(g.levels), g.prefix.size() + digits, f, "count", "objects");
   check_chain(make_lod_chain(g.triangles, g.levels, g.ratio), path, source);
   return g;
 }
@@ -200,8 +205,10 @@ void read_scene(const nlohmann::json& scene, const std::string& path, const std:
       const nlohmann::json& g = (*gens)[i];
       JsonFields gf(g, gp, source);
       const std::string type = gf.required_string("type");
-      if (type == "random_field") fields.push_back(read_random_field(g, gp, source, tally));
-      else gf.fail("type", "unknown generator \"" + type + "\" (known: random_field)");
+      if (type == "random_field")
+        fields.push_back(read_random_field(g, gp, source, tally));
+      else
+        gf.fail("type", "unknown generator \"" + type + "\" (known: random_field)");
     }
   }
   if (const nlohmann::json* hp = f.child("head_path")) {
@@ -215,13 +222,13 @@ void read_scene(const nlohmann::json& scene, const std::string& path, const std:
   sc.objects.reserve(sc.objects.size() + tally.objects);  // exact: one allocation
   if (objs)
     for (std::size_t i = 0; i < objs->size(); ++i)
-      sc.objects.push_back(read_object((*objs)[i], f.key_path("objects") + "[" + std::to_string(i) + "]", source,
-                                       sc.objects.size()));
+      sc.objects.push_back(
+          read_object((*objs)[i], f.key_path("objects") + "[" + std::to_string(i) + "]", source, sc.objects.size()));
   // A generator's forward speed sets the head path unless scene.head_path gives a velocity
   // (as before: the generator wrote it, then head_path read it with that as its default).
   const glm::dvec3 head_velocity = sc.head_path.velocity_m_s;
-  const bool velocity_given = scene.contains("head_path") && scene["head_path"].is_object() &&
-                              scene["head_path"].contains("velocity_m_s");
+  const bool velocity_given =
+      scene.contains("head_path") && scene["head_path"].is_object() && scene["head_path"].contains("velocity_m_s");
   for (const RandomField& g : fields) make_random_field(g, sc);
   if (velocity_given) sc.head_path.velocity_m_s = head_velocity;
   std::unordered_set<std::string_view> names;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The simulator: builds the listed effects once, sorts them into per-stage lists and evaluates
 // every query as a pure function of time (no state carried between queries).
 #include "sim/simulator.hpp"
@@ -98,19 +99,33 @@ Simulator::~Simulator() = default;
 Simulator::Simulator(Simulator&&) noexcept = default;
 Simulator& Simulator::operator=(Simulator&&) noexcept = default;
 
-const Scenario& Simulator::scenario() const { return impl_->scenario; }
-HeadState Simulator::head_at(std::int64_t t_ns) { return impl_->head_at(t_ns); }
-gaze::GazeSample Simulator::tracker_at(std::int64_t t_ns) { return impl_->tracker_at(t_ns); }
-gaze::GazeSample Simulator::true_gaze_at(std::int64_t t_ns) { return impl_->true_gaze_at(t_ns); }
+const Scenario& Simulator::scenario() const {
+  return impl_->scenario;
+}
+HeadState Simulator::head_at(std::int64_t t_ns) {
+  return impl_->head_at(t_ns);
+}
+gaze::GazeSample Simulator::tracker_at(std::int64_t t_ns) {
+  return impl_->tracker_at(t_ns);
+}
+gaze::GazeSample Simulator::true_gaze_at(std::int64_t t_ns) {
+  return impl_->true_gaze_at(t_ns);
+}
 
 std::span<const ObjectState> Simulator::objects_at(std::int64_t t_ns) {
   for (std::size_t i = 0; i < impl_->objects_buf.size(); ++i) impl_->objects_buf[i] = impl_->object_at(i, t_ns);
   return impl_->objects_buf;
 }
 
-EyeTruth Simulator::eye_truth_at(std::int64_t t_ns) { return impl_->eye_truth_at(t_ns); }
+EyeTruth Simulator::eye_truth_at(std::int64_t t_ns) {
+  return impl_->eye_truth_at(t_ns);
+}
 
-std::int64_t Simulator::duration_ns() const { return to_ns(impl_->scenario.duration_s); }
-std::int64_t Simulator::first_tracker_sample_ns() const { return impl_->timing.latency_ns; }
+std::int64_t Simulator::duration_ns() const {
+  return to_ns(impl_->scenario.duration_s);
+}
+std::int64_t Simulator::first_tracker_sample_ns() const {
+  return impl_->timing.latency_ns;
+}
 
 }  // namespace gazelod::sim

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The scripted simulator: a scenario (display, scene, head and eye effects) stepped into
 // head poses, eye-tracker samples and object positions at any time. The simulated OpenXR
 // runtime (sim/runtime/) and `gazelod run` read it; only the effects a scenario lists run.
@@ -36,25 +37,25 @@ enum class GazeDelivery : std::uint8_t {
 };
 
 struct RuntimeOptions {
-  bool eye_gaze_supported = true;     // XrSystemEyeGazeInteractionPropertiesEXT
+  bool eye_gaze_supported = true;  // XrSystemEyeGazeInteractionPropertiesEXT
   GazeDelivery gaze_delivery = GazeDelivery::normal;
-  bool paced = true;                  // xrWaitFrame sleeps to the display rate
+  bool paced = true;  // xrWaitFrame sleeps to the display rate
 };
 
 struct SceneObject {
   std::string name;
-  glm::dvec3 position_m{0.0};         // world (OpenXR LOCAL space) at t = 0
-  glm::dvec3 velocity_m_s{0.0};       // constant, unless an effect moves it
-  double radius_m = 0.5;              // bounding sphere
-  std::vector<lod::LodLevel> lods;    // level 0 = full detail
+  glm::dvec3 position_m{0.0};       // world (OpenXR LOCAL space) at t = 0
+  glm::dvec3 velocity_m_s{0.0};     // constant, unless an effect moves it
+  double radius_m = 0.5;            // bounding sphere
+  std::vector<lod::LodLevel> lods;  // level 0 = full detail
   double importance = 1.0;
 };
 
 // One effect as written in the scenario; parsed and validated by its own file in sim/.
 struct EffectSpec {
-  std::string type;                   // "head_sweep", "saccades", "tracker_noise", ...
-  std::string params_json;            // the effect's JSON object, verbatim
-  std::string json_path;              // "effects[2]", for error messages
+  std::string type;         // "head_sweep", "saccades", "tracker_noise", ...
+  std::string params_json;  // the effect's JSON object, verbatim
+  std::string json_path;    // "effects[2]", for error messages
 };
 
 // The observer's path before head effects: position_m(t) = start_m + velocity_m_s * t
@@ -80,7 +81,7 @@ struct Scenario {
   std::vector<SceneObject> objects;
   std::vector<EffectSpec> effects;
   RuntimeOptions runtime;
-  HeadPath head_path;                 // scene.head_path, or the generator's forward_speed_m_s
+  HeadPath head_path;  // scene.head_path, or the generator's forward_speed_m_s
 };
 
 Scenario load_scenario_json(std::string_view json_text, std::string_view source_name);

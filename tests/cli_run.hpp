@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Runs the gazelod program in-process (gazelod::cli::run) for the command-line tests.
 #pragma once
 

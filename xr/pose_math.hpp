@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Rigid poses in double precision (glm) and their conversion to and from XrPosef, and the gaze
 // orientation of a direction: yaw then pitch, so the pose's +X stays level (no roll), as
 // XR_EXT_eye_gaze_interaction poses are (+Y up, -Z forward). Shared by the simulated runtime
@@ -36,8 +37,7 @@ inline XrPosef to_xr(const Pose& p) {
   XrPosef out{};
   out.orientation = {static_cast<float>(p.orientation.x), static_cast<float>(p.orientation.y),
                      static_cast<float>(p.orientation.z), static_cast<float>(p.orientation.w)};
-  out.position = {static_cast<float>(p.position.x), static_cast<float>(p.position.y),
-                  static_cast<float>(p.position.z)};
+  out.position = {static_cast<float>(p.position.x), static_cast<float>(p.position.y), static_cast<float>(p.position.z)};
   return out;
 }
 inline XrVector3f to_xr(const glm::dvec3& v) {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // gazelod bake IN.gltf|IN.glb -o OUT.glb [--levels N | --ratios r1,r2,...] [--target-error E]
 // [--lock-borders] [--profile 6|18]:
 // an MSFT_lod chain per mesh node (bake/bake.hpp). Progress on stderr, the summary on stdout.
@@ -30,7 +31,7 @@ struct Options {
   std::string input, output, output_argument, ratios, target_error;
   int levels = -1;  // unset
   int profile = 0;
-  int threads = -1;  // unset
+  int threads = -1;       // unset
   int fold_retries = -1;  // unset
   bool lock_borders = false;
   bool keep_seams = false;
@@ -41,20 +42,21 @@ struct Options {
 // -o OUT or the second argument, not two different ones.
 std::string output_path(const Options& o) {
   if (!o.output.empty() && !o.output_argument.empty() && o.output != o.output_argument)
-    throw UsageError("--output: give the output once (-o OUT or a second argument), got '" +
-                     o.output + "' and '" + o.output_argument + "'");
+    throw UsageError("--output: give the output once (-o OUT or a second argument), got '" + o.output + "' and '" +
+                     o.output_argument + "'");
   const std::string out = o.output.empty() ? o.output_argument : o.output;
   if (out.empty()) throw UsageError("--output: missing: give -o OUT.glb (or OUT.glb after the input)");
   // The same file by another name (./a.glb, a link) too: the bake would replace its own input.
   std::error_code ec;
-  if (std::filesystem::equivalent(o.input, out, ec) || std::filesystem::path(o.input).lexically_normal() ==
-                                                           std::filesystem::path(out).lexically_normal())
+  if (std::filesystem::equivalent(o.input, out, ec) ||
+      std::filesystem::path(o.input).lexically_normal() == std::filesystem::path(out).lexically_normal())
     throw UsageError("--output: '" + out + "' is the input file; write the bake to another file");
   return out;
 }
 
 int run_clusters(const Options& o, const std::string& out, Io io) {
-  for (const auto& [set, name] : {std::pair{o.levels != -1, "--levels"}, {!o.ratios.empty(), "--ratios"},
+  for (const auto& [set, name] : {std::pair{o.levels != -1, "--levels"},
+                                  {!o.ratios.empty(), "--ratios"},
                                   {!o.target_error.empty(), "--target-error"},
                                   {o.profile != 0, "--profile"}})
     if (set) throw UsageError(std::string("--clusters: cannot be combined with ") + name);
@@ -93,8 +95,8 @@ void print_profile(const bake::BakeReport& report, std::ostream& out) {
   char line[160];
   for (const bake::MeshReport& m : report.meshes) {
     for (std::size_t k = 1; k < m.levels.size(); ++k) {
-      std::snprintf(line, sizeof line, "  %4d %5zu %12.3f %10.3f\n", m.mesh, k,
-                    m.levels[k].detail_cycles_per_diameter, m.levels[k].rendered_cycles_per_diameter);
+      std::snprintf(line, sizeof line, "  %4d %5zu %12.3f %10.3f\n", m.mesh, k, m.levels[k].detail_cycles_per_diameter,
+                    m.levels[k].rendered_cycles_per_diameter);
       out << line;
     }
     std::snprintf(line, sizeof line, "  mesh %d profile: %.3f s\n", m.mesh, m.profile_seconds);
@@ -107,17 +109,20 @@ int run_bake(const Options& o, Io io) {
   if (o.clusters) return run_clusters(o, out, io);
   if (o.threads >= 0) throw UsageError("--threads: only with --clusters (a chain is baked on one thread)");
   if (o.keep_seams)
-    throw UsageError("--keep-seams: only with --clusters (a chain's levels always keep attribute seams; "
-                     "its sloppy fallback ignores them)");
+    throw UsageError(
+        "--keep-seams: only with --clusters (a chain's levels always keep attribute seams; "
+        "its sloppy fallback ignores them)");
   if (o.fold_retries >= 0)
-    throw UsageError("--fold-retries: only with --clusters (a chain's levels are simplified from the source, "
-                     "where retrying with the folds' surroundings locked did not help)");
+    throw UsageError(
+        "--fold-retries: only with --clusters (a chain's levels are simplified from the source, "
+        "where retrying with the folds' surroundings locked did not help)");
   if (o.profile != 0 && o.profile != 6 && o.profile != 18)
     throw UsageError("--profile: must be 6 or 18 viewpoints, got " + std::to_string(o.profile));
   if (o.levels != -1 && !o.ratios.empty()) throw UsageError("--levels: give either --levels or --ratios, not both");
   bake::BakeOptions opts;
   if (o.levels != -1) {
-    if (o.levels < 2 || o.levels > 16) throw UsageError("--levels: must be in [2, 16], got " + std::to_string(o.levels));
+    if (o.levels < 2 || o.levels > 16)
+      throw UsageError("--levels: must be in [2, 16], got " + std::to_string(o.levels));
     opts.chain.ratios = bake::ratios_for_levels(o.levels);
   } else if (!o.ratios.empty()) {
     opts.chain.ratios = parse_ratios(o.ratios);
@@ -136,7 +141,7 @@ int run_bake(const Options& o, Io io) {
   } catch (const bake::OutputError& e) {
     throw UsageError(e.what(), 1);  // the input was fine: "other failure"
   } catch (const bake::BakeError& e) {
-    throw UsageError(e.what(), 2);  // bad input file
+    throw UsageError(e.what(), 2);          // bad input file
   } catch (const render::RenderError& e) {  // --profile without Vulkan (NoVulkanDevice) or a render failure
     throw UsageError(std::string("--profile: ") + e.what(), 1);
   }

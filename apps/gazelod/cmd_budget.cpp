@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // gazelod budget: solves one frame-budget knapsack instance with a named solver
 // (docs/budget.md). Exit 0 with a feasible answer; 2 malformed input; 3 the instance is
 // infeasible (its cheapest level of detail exceeds the capacity); 4 the solver's answer is
@@ -27,8 +28,8 @@ struct Options {
   std::string instance;
   std::string solver;
   bool json = false;
-  std::string max_moves;      // parsed when given
-  std::string time_limit_ms;  // parsed when given
+  std::string max_moves;                       // parsed when given
+  std::string time_limit_ms;                   // parsed when given
   const CLI::Option* max_moves_opt = nullptr;  // given: count() > 0
   const CLI::Option* time_limit_opt = nullptr;
 };
@@ -65,12 +66,12 @@ int solve_and_print(const Options& o, Io io) {
   if ((max_moves_given || time_limit_given) && !incremental)
     throw UsageError(std::string(max_moves_given ? "--max-moves" : "--time-limit-ms") +
                      ": applies to the incremental solvers only (funkhouser-incremental, "
-                     "mason-incremental), not " + o.solver);
+                     "mason-incremental), not " +
+                     o.solver);
   if (max_moves_given) limits.max_moves = parse_moves(o.max_moves);
   if (time_limit_given) {  // explicit only: the answer then depends on timing
     const double ms = parse_number("--time-limit-ms", o.time_limit_ms);
-    if (!(ms >= 0.0 && ms <= 1e9))
-      throw UsageError("--time-limit-ms: must be in [0, 1e9] ms, got " + o.time_limit_ms);
+    if (!(ms >= 0.0 && ms <= 1e9)) throw UsageError("--time-limit-ms: must be in [0, 1e9] ms, got " + o.time_limit_ms);
     limits.wall_clock_limit = std::chrono::nanoseconds(static_cast<std::int64_t>(ms * 1e6));
   }
   budget::MckpSolution sol;
@@ -88,12 +89,11 @@ int solve_and_print(const Options& o, Io io) {
     // for the hierarchical solvers the cheapest representation of the hierarchy.
     budget::MckpInstance flat_inst = inst;
     flat_inst.groups.clear();
-    const double lowest = flat || inst.groups.empty() ? budget::lowest_cost(flat_inst)
-                                                      : budget::solve_mason_hierarchical(inst).cost;
+    const double lowest =
+        flat || inst.groups.empty() ? budget::lowest_cost(flat_inst) : budget::solve_mason_hierarchical(inst).cost;
     if (lowest > inst.capacity) {
       std::ostringstream msg;
-      msg << "infeasible instance: the cheapest level of detail costs " << lowest
-          << " > capacity " << inst.capacity;
+      msg << "infeasible instance: the cheapest level of detail costs " << lowest << " > capacity " << inst.capacity;
       throw UsageError(msg.str(), 3);
     }
   }
@@ -105,11 +105,13 @@ int solve_and_print(const Options& o, Io io) {
     j["capacity"] = inst.capacity;
     j["feasible"] = sol.feasible;
     nlohmann::json sel = nlohmann::json::array();
-    for (std::uint32_t c : sol.choice) sel.push_back(c == budget::kNoItem ? nlohmann::json(nullptr) : nlohmann::json(c));
+    for (std::uint32_t c : sol.choice)
+      sel.push_back(c == budget::kNoItem ? nlohmann::json(nullptr) : nlohmann::json(c));
     j["selection"] = sel;
     if (!inst.groups.empty()) {
       nlohmann::json g = nlohmann::json::array();
-      for (std::uint32_t c : sol.group_choice) g.push_back(c == budget::kNoItem ? nlohmann::json(nullptr) : nlohmann::json(c));
+      for (std::uint32_t c : sol.group_choice)
+        g.push_back(c == budget::kNoItem ? nlohmann::json(nullptr) : nlohmann::json(c));
       j["groups"] = g;
     }
     if (*kind == budget::SolverKind::exact) j["optimal"] = sol.proven_optimal;
@@ -121,25 +123,28 @@ int solve_and_print(const Options& o, Io io) {
     io.out << j.dump() << "\n";
   } else {
     io.out << "solver:    " << o.solver << "\nprofit:    " << sol.profit << "\ncost:      " << sol.cost
-           << " of capacity " << inst.capacity << "\nfeasible:  " << (sol.feasible ? "yes" : "NO")
-           << "\nselection:";
+           << " of capacity " << inst.capacity << "\nfeasible:  " << (sol.feasible ? "yes" : "NO") << "\nselection:";
     for (std::uint32_t c : sol.choice) {
-      if (c == budget::kNoItem) io.out << " -";
-      else io.out << " " << c;
+      if (c == budget::kNoItem)
+        io.out << " -";
+      else
+        io.out << " " << c;
     }
     io.out << "\n";
     if (!inst.groups.empty()) {
       io.out << "groups:   ";
       for (std::uint32_t c : sol.group_choice) {
-        if (c == budget::kNoItem) io.out << " -";
-        else io.out << " " << c;
+        if (c == budget::kNoItem)
+          io.out << " -";
+        else
+          io.out << " " << c;
       }
       io.out << "\n";
     }
-    if (*kind == budget::SolverKind::exact) io.out << "optimal:   " << (sol.proven_optimal ? "proven" : "NOT proven (node limit)") << "\n";
+    if (*kind == budget::SolverKind::exact)
+      io.out << "optimal:   " << (sol.proven_optimal ? "proven" : "NOT proven (node limit)") << "\n";
     if (incremental)
-      io.out << "moves:     " << sol.iterations
-             << (sol.truncated ? " (truncated: stopped at its limit)" : "") << "\n";
+      io.out << "moves:     " << sol.iterations << (sol.truncated ? " (truncated: stopped at its limit)" : "") << "\n";
   }
   if (!sol.feasible) {
     std::size_t empty = 0;
@@ -180,13 +185,13 @@ const Registrar registrar{
       sub.add_option("--instance", o->instance, "instance JSON file (see docs/budget.md)")->required();
       sub.add_option("--solver", o->solver, "solver: " + names_list())->required();
       sub.add_flag("--json", o->json, "print the answer as JSON");
-      o->max_moves_opt = sub.add_option(
-          "--max-moves", o->max_moves,
-          "incremental solvers: stop after N moves (increments + decrements; deterministic). "
-          "Default: run to convergence");
+      o->max_moves_opt =
+          sub.add_option("--max-moves", o->max_moves,
+                         "incremental solvers: stop after N moves (increments + decrements; deterministic). "
+                         "Default: run to convergence");
       o->time_limit_opt = sub.add_option("--time-limit-ms", o->time_limit_ms,
-                     "incremental solvers: also stop after this much wall time (off by default; "
-                     "makes the answer depend on timing)");
+                                         "incremental solvers: also stop after this much wall time (off by default; "
+                                         "makes the answer depend on timing)");
       return [o](Io io) { return run_budget(*o, io); };
     }};
 

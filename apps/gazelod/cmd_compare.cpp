@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // gazelod compare: what each perceptual criterion buys on each display. For every --hmd, one
 // headless run of the scenario (rendering only with --render) reports the five criteria sets
 // (none, size, size+eccentricity, size+velocity, all three) and the LOD-map thesis's policy:
@@ -42,26 +43,27 @@ int run_compare(const CompareOptions& o, bool json, Io io) {
   return 0;
 }
 
-const Registrar reg("compare", "Compare the criteria sets (and the LOD-map thesis's policy) across display presets",
-                    [](CLI::App& app) -> Action {
-  auto opt = std::make_shared<CompareOptions>();
-  auto json = std::make_shared<bool>(false);
-  auto out = std::make_shared<std::string>("gazelod-compare");
-  app.add_option("--hmd", opt->hmds, "Display preset (repeat for several; see gazelod hmds)")->required();
-  app.add_option("--scenario", opt->scenario_path, "Scenario JSON (default: the embedded scenario)");
-  app.add_option("--frames", opt->frames, "Frames per run (default: the scenario's duration)")
-      ->check(CLI::Range(std::int64_t{1}, std::int64_t{10'000'000}));
-  app.add_option("--out", *out, "Folder for compare.json, compare.svg and each run's report");
-  app.add_flag("--json", *json, "Print the JSON document instead of the table");
-  app.add_flag("--render", opt->render, "Render with Vulkan (default: selection only)");
-  app.add_flag("--breakdown", opt->breakdown,
-               "Print where each audit's figures come from (true gaze state, object class, oracle criterion)");
-  return [=](Io io) {
-    CompareOptions o = *opt;
-    o.out_dir = *out;
-    return run_compare(o, *json, io);
-  };
-});
+const Registrar reg(
+    "compare", "Compare the criteria sets (and the LOD-map thesis's policy) across display presets",
+    [](CLI::App& app) -> Action {
+      auto opt = std::make_shared<CompareOptions>();
+      auto json = std::make_shared<bool>(false);
+      auto out = std::make_shared<std::string>("gazelod-compare");
+      app.add_option("--hmd", opt->hmds, "Display preset (repeat for several; see gazelod hmds)")->required();
+      app.add_option("--scenario", opt->scenario_path, "Scenario JSON (default: the embedded scenario)");
+      app.add_option("--frames", opt->frames, "Frames per run (default: the scenario's duration)")
+          ->check(CLI::Range(std::int64_t{1}, std::int64_t{10'000'000}));
+      app.add_option("--out", *out, "Folder for compare.json, compare.svg and each run's report");
+      app.add_flag("--json", *json, "Print the JSON document instead of the table");
+      app.add_flag("--render", opt->render, "Render with Vulkan (default: selection only)");
+      app.add_flag("--breakdown", opt->breakdown,
+                   "Print where each audit's figures come from (true gaze state, object class, oracle criterion)");
+      return [=](Io io) {
+        CompareOptions o = *opt;
+        o.out_dir = *out;
+        return run_compare(o, *json, io);
+      };
+    });
 
 }  // namespace
 }  // namespace gazelod::cli

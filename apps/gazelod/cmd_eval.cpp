@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // gazelod eval: Reddy 1998's experiments reproduced with gazelod's renderer and simulator, plus
 // the head-turn case the paper predicts and the LOD-map thesis's policy beside Reddy's criteria.
 // Writes eval_tables.md and figure5.svg / figure6.svg / head_turns.svg into --out; each run's
@@ -58,13 +59,13 @@ int run_eval(const EvalFlags& flags, Io io) {
   md << "<!-- written by: gazelod eval" << (flags.full ? " --full" : "") << ", " << o.layouts
      << " layouts per point, radius scale " << o.radius_scale << " -->\n\n";
   if (!f5.empty()) {
-    md << "### Figure 5: frame rate without and with perceptual LOD (rendered, "
-       << o.render_rate_hz * 5.0 << " frames per 5 s path)\n\n";
+    md << "### Figure 5: frame rate without and with perceptual LOD (rendered, " << o.render_rate_hz * 5.0
+       << " frames per 5 s path)\n\n";
     figure5_table(f5, md);
     md << "\n";
   }
-  md << "### Figure 6: average LOD with and without size (selection only, still head, "
-     << o.headless_rate_hz * 5.0 << " frames per path)\n\n";
+  md << "### Figure 6: average LOD with and without size (selection only, still head, " << o.headless_rate_hz * 5.0
+     << " frames per path)\n\n";
   figure6_table(f6, md);
   md << "\n### Head turns (" << o.head_turn_objects << " objects around the observer, selection only)\n\n";
   head_turn_table(turns, md);
@@ -79,29 +80,30 @@ int run_eval(const EvalFlags& flags, Io io) {
   return 0;
 }
 
-const Registrar reg("eval", "Reproduce Reddy 1998's experiments (frame rate, average LOD, head turns) with the LOD-map thesis's policy",
-                    [](CLI::App& app) -> Action {
-  auto flags = std::make_shared<EvalFlags>();
-  app.add_option("--out", flags->out, "Folder for eval_tables.md and the SVG plots");
-  app.add_option("--work", flags->work, "Folder for each run's report (default: OUT/runs)");
-  app.add_flag("--full", flags->full, "The paper's protocol: 20 layouts, 72 Hz frames (slow)");
-  app.add_option("--layouts", flags->layouts, "Random layouts per point (default 2, --full 20)")
-      ->check(CLI::Range(1, 1000));
-  app.add_option("--counts", flags->counts, "Object counts (default 10 20 50 100 200 500 1000)")
-      ->check(CLI::Range(1, 100000));
-  app.add_option("--radius-scale", flags->radius_scale, "Scale the objects' radii (default 1: 0.3 to 1.5 m)")
-      ->check(CLI::Range(0.01, 100.0));
-  app.add_flag("--no-render", flags->no_render, "Skip the rendered frame-rate runs (Figure 5)");
-  const EvalSubcommand clusters = add_eval_clusters(app);  // gazelod eval clusters (eval_clusters.hpp)
-  const EvalSubcommand gltfpack = add_eval_gltfpack(app);  // gazelod eval gltfpack (eval_gltfpack.hpp)
-  const EvalSubcommand family = add_eval_family(app);      // gazelod eval family (eval_family.hpp)
-  return [=](Io io) {
-    if (family.app->parsed()) return family.action(io);
-    if (clusters.app->parsed()) return clusters.action(io);
-    if (gltfpack.app->parsed()) return gltfpack.action(io);
-    return run_eval(*flags, io);
-  };
-});
+const Registrar reg(
+    "eval", "Reproduce Reddy 1998's experiments (frame rate, average LOD, head turns) with the LOD-map thesis's policy",
+    [](CLI::App& app) -> Action {
+      auto flags = std::make_shared<EvalFlags>();
+      app.add_option("--out", flags->out, "Folder for eval_tables.md and the SVG plots");
+      app.add_option("--work", flags->work, "Folder for each run's report (default: OUT/runs)");
+      app.add_flag("--full", flags->full, "The paper's protocol: 20 layouts, 72 Hz frames (slow)");
+      app.add_option("--layouts", flags->layouts, "Random layouts per point (default 2, --full 20)")
+          ->check(CLI::Range(1, 1000));
+      app.add_option("--counts", flags->counts, "Object counts (default 10 20 50 100 200 500 1000)")
+          ->check(CLI::Range(1, 100000));
+      app.add_option("--radius-scale", flags->radius_scale, "Scale the objects' radii (default 1: 0.3 to 1.5 m)")
+          ->check(CLI::Range(0.01, 100.0));
+      app.add_flag("--no-render", flags->no_render, "Skip the rendered frame-rate runs (Figure 5)");
+      const EvalSubcommand clusters = add_eval_clusters(app);  // gazelod eval clusters (eval_clusters.hpp)
+      const EvalSubcommand gltfpack = add_eval_gltfpack(app);  // gazelod eval gltfpack (eval_gltfpack.hpp)
+      const EvalSubcommand family = add_eval_family(app);      // gazelod eval family (eval_family.hpp)
+      return [=](Io io) {
+        if (family.app->parsed()) return family.action(io);
+        if (clusters.app->parsed()) return clusters.action(io);
+        if (gltfpack.app->parsed()) return gltfpack.action(io);
+        return run_eval(*flags, io);
+      };
+    });
 
 }  // namespace
 }  // namespace gazelod::cli

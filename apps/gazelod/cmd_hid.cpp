@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // gazelod hid list | record: HID eye trackers (usage page 0x12, HUTRR74) through hidapi.
 //   list             the usage-page-0x12 devices hidapi sees (--json for one array)
 //   record           read gaze for --seconds into a gazelod trace CSV (--out)
@@ -59,9 +60,9 @@ int run_list(const Options& o, Io io) {
     return 0;
   }
   for (const auto& t : found)
-    io.out << t.path << "  " << hex4(t.vendor_id) << ":" << hex4(t.product_id) << "  usage "
-           << hex4(t.usage_page) << ":" << hex4(t.usage) << "  " << t.manufacturer << " "
-           << t.product << (t.serial.empty() ? "" : " (serial " + t.serial + ")") << "\n";
+    io.out << t.path << "  " << hex4(t.vendor_id) << ":" << hex4(t.product_id) << "  usage " << hex4(t.usage_page)
+           << ":" << hex4(t.usage) << "  " << t.manufacturer << " " << t.product
+           << (t.serial.empty() ? "" : " (serial " + t.serial + ")") << "\n";
   return 0;
 }
 
@@ -70,8 +71,8 @@ double parse_positive(const std::string& option, const std::string& text, double
   const char* end = text.data() + text.size();
   auto [p, ec] = std::from_chars(text.data(), end, v);
   if (text.empty() || ec != std::errc{} || p != end || !std::isfinite(v) || !(v > 0.0) || v > max)
-    throw UsageError(option + ": expected a number in (0, " +
-                     std::to_string(static_cast<long>(max)) + "], got '" + text + "'");
+    throw UsageError(option + ": expected a number in (0, " + std::to_string(static_cast<long>(max)) + "], got '" +
+                     text + "'");
   return v;
 }
 
@@ -89,8 +90,7 @@ int run_record(const Options& o, Io io) {
     throw UsageError("--layout: 'packed' or 'dmf', got '" + o.layout + "'");
   if (!o.screen_mm.empty()) {
     const auto x = o.screen_mm.find_first_of("xX");
-    if (x == std::string::npos)
-      throw UsageError("--screen-mm: expected WxH in mm, got '" + o.screen_mm + "'");
+    if (x == std::string::npos) throw UsageError("--screen-mm: expected WxH in mm, got '" + o.screen_mm + "'");
     config.screen.width_m = parse_positive("--screen-mm", o.screen_mm.substr(0, x), 10000) * 1e-3;
     config.screen.height_m = parse_positive("--screen-mm", o.screen_mm.substr(x + 1), 10000) * 1e-3;
   }
@@ -130,10 +130,9 @@ int run_record(const Options& o, Io io) {
   flush();
   file.flush();
   const hid::HidCounters c = tracker.counters();
-  io.err << "gazelod hid record: " << written << " samples (" << c.invalid_samples
-         << " invalid) to " << o.out << "; skipped " << c.malformed << " malformed and "
-         << c.unknown << " unknown reports; " << c.dropped << " dropped; " << c.disconnects
-         << " disconnects\n";
+  io.err << "gazelod hid record: " << written << " samples (" << c.invalid_samples << " invalid) to " << o.out
+         << "; skipped " << c.malformed << " malformed and " << c.unknown << " unknown reports; " << c.dropped
+         << " dropped; " << c.disconnects << " disconnects\n";
   if (c.opens == 0)
     throw UsageError("no HID eye tracker could be opened (" + tracker.status() + "); nothing written", 1);
   try {
@@ -154,10 +153,8 @@ Registrar reg("hid", "HID eye trackers (usage page 0x12): list them, record gaze
                 CLI::App* rec = sub.add_subcommand("record", "record gaze samples to a trace CSV");
                 rec->add_option("--out", o->out, "trace CSV to write")->required();
                 rec->add_option("--seconds", *seconds, "how long to record")->required();
-                rec->add_option("--device", o->device,
-                                "hidapi path (default: first tracker found)");
-                rec->add_option("--screen-mm", o->screen_mm,
-                                "screen size WxH in mm (default: from the device)");
+                rec->add_option("--device", o->device, "hidapi path (default: first tracker found)");
+                rec->add_option("--screen-mm", o->screen_mm, "screen size WxH in mm (default: from the device)");
                 rec->add_option("--layout", o->layout, "report layout: packed (default) or dmf");
                 return [o, seconds, list](Io io) {
                   if (list->parsed()) return run_list(*o, io);

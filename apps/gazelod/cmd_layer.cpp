@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // gazelod layer check: what the OpenXR API layer XR_APILAYER_GAZELOD_eye_gaze (layer/,
 // docs/layer.md) would do in this environment: whether the loader finds it, the runtime the
 // loader finds and whether it offers XR_EXT_eye_gaze_interaction, the configuration
@@ -28,12 +29,16 @@ class ScopedEnv {
  public:
   ScopedEnv(const char* name, const std::optional<std::string>& value) : name_(name) {
     if (const char* old = std::getenv(name)) old_ = old;
-    if (value) ::setenv(name, value->c_str(), 1);
-    else ::unsetenv(name);
+    if (value)
+      ::setenv(name, value->c_str(), 1);
+    else
+      ::unsetenv(name);
   }
   ~ScopedEnv() {
-    if (old_) ::setenv(name_, old_->c_str(), 1);
-    else ::unsetenv(name_);
+    if (old_)
+      ::setenv(name_, old_->c_str(), 1);
+    else
+      ::unsetenv(name_);
   }
   ScopedEnv(const ScopedEnv&) = delete;
   ScopedEnv& operator=(const ScopedEnv&) = delete;
@@ -45,14 +50,22 @@ class ScopedEnv {
 
 std::string result_name(XrResult r) {
   switch (r) {
-    case XR_ERROR_RUNTIME_UNAVAILABLE: return "XR_ERROR_RUNTIME_UNAVAILABLE";
-    case XR_ERROR_RUNTIME_FAILURE: return "XR_ERROR_RUNTIME_FAILURE";
-    case XR_ERROR_INITIALIZATION_FAILED: return "XR_ERROR_INITIALIZATION_FAILED";
-    case XR_ERROR_API_LAYER_NOT_PRESENT: return "XR_ERROR_API_LAYER_NOT_PRESENT";
-    case XR_ERROR_EXTENSION_NOT_PRESENT: return "XR_ERROR_EXTENSION_NOT_PRESENT";
-    case XR_ERROR_FILE_ACCESS_ERROR: return "XR_ERROR_FILE_ACCESS_ERROR";
-    case XR_ERROR_FILE_CONTENTS_INVALID: return "XR_ERROR_FILE_CONTENTS_INVALID";
-    default: return "XrResult " + std::to_string(static_cast<int>(r));
+    case XR_ERROR_RUNTIME_UNAVAILABLE:
+      return "XR_ERROR_RUNTIME_UNAVAILABLE";
+    case XR_ERROR_RUNTIME_FAILURE:
+      return "XR_ERROR_RUNTIME_FAILURE";
+    case XR_ERROR_INITIALIZATION_FAILED:
+      return "XR_ERROR_INITIALIZATION_FAILED";
+    case XR_ERROR_API_LAYER_NOT_PRESENT:
+      return "XR_ERROR_API_LAYER_NOT_PRESENT";
+    case XR_ERROR_EXTENSION_NOT_PRESENT:
+      return "XR_ERROR_EXTENSION_NOT_PRESENT";
+    case XR_ERROR_FILE_ACCESS_ERROR:
+      return "XR_ERROR_FILE_ACCESS_ERROR";
+    case XR_ERROR_FILE_CONTENTS_INVALID:
+      return "XR_ERROR_FILE_CONTENTS_INVALID";
+    default:
+      return "XrResult " + std::to_string(static_cast<int>(r));
   }
 }
 
@@ -157,8 +170,10 @@ int run_check(Io io) {
   in.runtime_has_extension = rt.eye_gaze;
   in.config_error = cr.error;
   in.override_runtime = cr.error.empty() && cr.config.override_runtime;
-  if (!cr.error.empty()) io.out << "config     error: " << cr.error << "\n";
-  else if (cr.config.config_path.empty()) io.out << "config     " << layer::kConfigEnv << " unset: defaults\n";
+  if (!cr.error.empty())
+    io.out << "config     error: " << cr.error << "\n";
+  else if (cr.config.config_path.empty())
+    io.out << "config     " << layer::kConfigEnv << " unset: defaults\n";
   else
     io.out << "config     " << cr.config.config_path << ": ok (override " << (cr.config.override_runtime ? "on" : "off")
            << ", freshness " << cr.config.effective_freshness_ns() / 1'000'000 << " ms)\n";
@@ -181,7 +196,9 @@ int run_check(Io io) {
   } else {
     in.source = "HID eye tracker (usage page 0x12)";
     const std::string found = layer::describe_hid_trackers(c);
-    io.out << "source     HID: " << (found.empty() ? "no eye tracker (usage page 0x12) found now; gaze inactive until one is plugged in" : found)
+    io.out << "source     HID: "
+           << (found.empty() ? "no eye tracker (usage page 0x12) found now; gaze inactive until one is plugged in"
+                             : found)
            << "\n";
   }
   const layer::Decision d = layer::decide(in);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // gazelod scenario: check a scenario file, print a scenario (the embedded default, or a file
 // with its generated objects written out), and record what a scenario simulates as a gazelod
 // gaze trace.
@@ -100,8 +101,7 @@ void add_source(CLI::App* app, Options& o) {
 }
 
 const Registrar registrar{
-    "scenario", "Check, print or record a simulator scenario (JSON, version 1)",
-    [](CLI::App& sub) -> Action {
+    "scenario", "Check, print or record a simulator scenario (JSON, version 1)", [](CLI::App& sub) -> Action {
       auto o = std::make_shared<Options>();
       sub.require_subcommand(1);
       CLI::App* validate = sub.add_subcommand("validate", "Load a scenario and report it or its first error");
@@ -117,7 +117,8 @@ const Registrar registrar{
       record->add_option("--duration", o->duration_s, "seconds to record (default: the scenario's)")
           ->check(CLI::Range(0.001, 1e6));
       CLI::App* family = sub.add_subcommand(
-          "family", "Print (or write) one scenario of the seeded family used to tune and evaluate (gazelod eval family)");
+          "family",
+          "Print (or write) one scenario of the seeded family used to tune and evaluate (gazelod eval family)");
       family->add_option("--seed", o->seed, "which member (any non-negative integer)")->required();
       family->add_option("--out", o->out, "scenario JSON to write (default: print it)");
       family->add_option("--duration", o->duration_s, "seconds (default 20)")->check(CLI::Range(1.0, 3600.0));

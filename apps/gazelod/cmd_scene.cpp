@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // gazelod scene generate terrain|city OUT.glb [--triangles N] [--seed S] [--tiles N]: large
 // test scenes as glTF (bake/terrain_mesh.hpp, bake/city_mesh.hpp, bake/generated_scene.hpp),
 // written atomically, for `gazelod bake` (--clusters) and `gazelod eval clusters`.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // gazelod thresholds: a display's xi and the eccentricity / velocity beyond which LOD may drop
 // (Reddy 1998 sections 4.1-4.2, Figures 2 and 3), for a preset HMD or pixels + FOV.
 #include "lod/acuity.hpp"
@@ -34,8 +35,7 @@ lod::ViewSpec custom_view(const Options& o) {
   const double w = parse_number("--pixels", ws), h = parse_number("--pixels", hs);
   for (double p : {w, h})
     if (!(p >= 1.0) || p > 1.0e6 || p != std::floor(p))
-      throw UsageError("--pixels: each side must be a whole number in [1, 1000000], got '" +
-                       o.pixels + "'");
+      throw UsageError("--pixels: each side must be a whole number in [1, 1000000], got '" + o.pixels + "'");
   auto [fhs, fvs] = split_x("--fov", o.fov);
   const double fh = parse_number("--fov", fhs), fv = parse_number("--fov", fvs);
   // The rule scenario files follow too: each axis in [lod::kMinFovDeg, lod::kMaxFovDeg].
@@ -99,29 +99,28 @@ int run_thresholds(const Options& o, Io io) {
          << "field of view (deg)             " << lod::fov_h_deg(view) << " x " << lod::fov_v_deg(view) << "\n"
          << "xi horizontal x vertical (c/deg) " << lod::xi_h_cpd(view) << " x " << lod::xi_v_cpd(view) << "\n"
          << "xi (c/deg)                      " << xi << "\n";
-  if (display.center_ppd > 0.0)
-    io.out << "xi at lens centre (c/deg)       " << lod::xi_center_cpd(display) << "\n";
+  if (display.center_ppd > 0.0) io.out << "xi at lens centre (c/deg)       " << lod::xi_center_cpd(display) << "\n";
   io.out << "eccentricity threshold (v = 0)  " << ecc_thr << " deg\n"
          << "velocity threshold (E = 0)      " << vel_thr << " deg/s\n";
   if (at_ecc)
-    io.out << "velocity threshold at E = " << *at_ecc << " deg: "
-           << lod::velocity_threshold_dps(xi, *at_ecc) << " deg/s\n";
+    io.out << "velocity threshold at E = " << *at_ecc << " deg: " << lod::velocity_threshold_dps(xi, *at_ecc)
+           << " deg/s\n";
   return 0;
 }
 
-const Registrar registrar{
-    "thresholds",
-    "Highest displayable frequency xi and the eccentricity / velocity where LOD may drop "
-    "(Reddy 1998)",
-    [](CLI::App& sub) -> Action {
-      auto o = std::make_shared<Options>();
-      sub.add_option("--hmd", o->hmd, "display preset (gazelod hmds lists them)");
-      sub.add_option("--pixels", o->pixels, "pixels per view, WxH (with --fov)");
-      sub.add_option("--fov", o->fov, "field of view in degrees, HxV (with --pixels)");
-      sub.add_option("--at-eccentricity", o->at_ecc, "also the velocity threshold at this eccentricity (deg)");
-      sub.add_flag("--json", o->json, "print one JSON object");
-      return [o](Io io) { return run_thresholds(*o, io); };
-    }};
+const Registrar registrar{"thresholds",
+                          "Highest displayable frequency xi and the eccentricity / velocity where LOD may drop "
+                          "(Reddy 1998)",
+                          [](CLI::App& sub) -> Action {
+                            auto o = std::make_shared<Options>();
+                            sub.add_option("--hmd", o->hmd, "display preset (gazelod hmds lists them)");
+                            sub.add_option("--pixels", o->pixels, "pixels per view, WxH (with --fov)");
+                            sub.add_option("--fov", o->fov, "field of view in degrees, HxV (with --pixels)");
+                            sub.add_option("--at-eccentricity", o->at_ecc,
+                                           "also the velocity threshold at this eccentricity (deg)");
+                            sub.add_flag("--json", o->json, "print one JSON object");
+                            return [o](Io io) { return run_thresholds(*o, io); };
+                          }};
 
 }  // namespace
 }  // namespace gazelod::cli

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // gazelod trace stats FILE / gazelod trace convert IN OUT: gaze traces in gazelod's format or
 // an imported layout (GazeBaseVR, Pupil Core, Pupil Cloud), detected from the header unless
 // --format says. Malformed files exit non-zero naming file:line:column; --lenient skips bad
@@ -28,7 +29,9 @@ struct Options {
 
 gaze::TraceFormat format_of(const Options& o) {
   const auto f = gaze::parse_trace_format(o.format);
-  if (!f) throw UsageError("--format: expected auto, gazelod, gazebasevr, pupil, pupil_cloud or sranipal, got '" + o.format + "'");
+  if (!f)
+    throw UsageError("--format: expected auto, gazelod, gazebasevr, pupil, pupil_cloud or sranipal, got '" + o.format +
+                     "'");
   return *f;
 }
 
@@ -60,8 +63,8 @@ constexpr const char* kIvdtName = "I-VDT (gaze_conditioner, the plugin's; pursui
 
 nlohmann::json agreement_json(const gaze::ReferenceAgreement& a) {
   auto classifier = [](const gaze::ClassifierAgreement& c, const char* name) {
-    return nlohmann::json{{"classifier", name}, {"fixation", agreement_json(c.fixation)},
-                          {"blink", agreement_json(c.blink)}};
+    return nlohmann::json{
+        {"classifier", name}, {"fixation", agreement_json(c.fixation)}, {"blink", agreement_json(c.blink)}};
   };
   return {{"reference", "pupil_cloud fixation id / blink id, per sample"},
           {"blinks_file", a.blinks_file.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.blinks_file)},
@@ -78,12 +81,15 @@ void print_category(std::ostream& out, std::string_view what, const std::optiona
     return;
   }
   out << label << "agreement " << a->agreement * 100.0 << " %, kappa ";
-  if (a->kappa) out << *a->kappa; else out << "n/a";
-  out << " (samples: both " << a->samples.both << ", ours only " << a->samples.ours_only
-      << ", Pupil only " << a->samples.reference_only << ", neither " << a->samples.neither << ")\n"
-      << std::string(label.size(), ' ') << "events: ours " << a->ours_events << ", Pupil "
-      << a->reference_events << ", Pupil's overlapped by ours " << a->reference_overlapped
-      << ", ours overlapped by Pupil's " << a->ours_overlapped << "\n";
+  if (a->kappa)
+    out << *a->kappa;
+  else
+    out << "n/a";
+  out << " (samples: both " << a->samples.both << ", ours only " << a->samples.ours_only << ", Pupil only "
+      << a->samples.reference_only << ", neither " << a->samples.neither << ")\n"
+      << std::string(label.size(), ' ') << "events: ours " << a->ours_events << ", Pupil " << a->reference_events
+      << ", Pupil's overlapped by ours " << a->reference_overlapped << ", ours overlapped by Pupil's "
+      << a->ours_overlapped << "\n";
 }
 
 void print_agreement(std::ostream& out, const gaze::ReferenceAgreement& a) {
@@ -91,8 +97,8 @@ void print_agreement(std::ostream& out, const gaze::ReferenceAgreement& a) {
   if (a.blinks_file.empty())
     out << "  blinks file: none beside the trace, only worn = 0 makes samples invalid\n";
   else
-    out << "  blinks file: " << a.blinks_file << ", " << a.blinks_in_file << " blinks, "
-        << a.samples_in_blinks << " samples made invalid (so blink agreement checks that import)\n";
+    out << "  blinks file: " << a.blinks_file << ", " << a.blinks_in_file << " blinks, " << a.samples_in_blinks
+        << " samples made invalid (so blink agreement checks that import)\n";
   for (const auto& [c, name] : {std::pair{&a.ivt, kIvtName}, std::pair{&a.ivdt, kIvdtName}}) {
     out << "  " << name << "\n";
     print_category(out, "fixation", c->fixation);
@@ -135,15 +141,14 @@ int run_stats(const Options& o, Io io) {
     io.out << j.dump(2) << "\n";
     return 0;
   }
-  io.out << std::fixed << std::setprecision(3) << "file              " << o.file << " (" << format
-         << ")\n"
+  io.out << std::fixed << std::setprecision(3) << "file              " << o.file << " (" << format << ")\n"
          << "samples           " << st.samples << "\n"
          << "duration          " << st.duration_s << " s\n"
          << "rate              " << st.rate_hz << " Hz\n"
          << "invalid           " << st.invalid_fraction * 100.0 << " %\n"
-         << "saccades          " << st.saccades << " (mean amplitude "
-         << st.mean_saccade_amplitude_deg << " deg; classified "
-         << (!st.classified_in_world          ? "in the head: no head poses"
+         << "saccades          " << st.saccades << " (mean amplitude " << st.mean_saccade_amplitude_deg
+         << " deg; classified "
+         << (!st.classified_in_world     ? "in the head: no head poses"
              : st.classified_in_head > 0 ? "in the head, then in the world from the first head pose"
                                          : "in the world: the trace has head poses")
          << ")\n"
@@ -185,8 +190,7 @@ int run_convert(const Options& o, Io io) {
 }
 
 const Registrar registrar{
-    "trace", "Gaze traces: statistics and conversion to gazelod's format (docs/gaze.md)",
-    [](CLI::App& sub) -> Action {
+    "trace", "Gaze traces: statistics and conversion to gazelod's format (docs/gaze.md)", [](CLI::App& sub) -> Action {
       auto o = std::make_shared<Options>();
       sub.require_subcommand(1);
       const std::string fmt_help =

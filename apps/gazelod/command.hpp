@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The gazelod command line: a registry of sub-commands.
 // Each sub-command lives in one cmd_NAME.cpp that defines a static Registrar; run() builds a
 // CLI11 app from every registered command, so tests can call it with their own streams.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "apps/gazelod/compare_report.hpp"
 
 #include "apps/gazelod/compare_svg.hpp"
@@ -33,10 +34,11 @@ nlohmann::json compare_json(const std::vector<HmdComparison>& results) {
                     {"frames", c.frames},
                     {"runs", runs},
                     {"lod_map", set_json(c.lod_map, c.frames)},
-                    {"shares", {{"size", c.share_size},
-                                {"eccentricity", c.share_eccentricity},
-                                {"velocity", c.share_velocity},
-                                {"interaction", c.share_interaction}}},
+                    {"shares",
+                     {{"size", c.share_size},
+                      {"eccentricity", c.share_eccentricity},
+                      {"velocity", c.share_velocity},
+                      {"interaction", c.share_interaction}}},
                     {"audit", audit_json(c.audit)}});
   }
   return {{"hmds", hmds}};
@@ -45,18 +47,19 @@ nlohmann::json compare_json(const std::vector<HmdComparison>& results) {
 void print_compare_table(const std::vector<HmdComparison>& results, std::ostream& out, bool breakdown) {
   char line[256];
   for (const HmdComparison& c : results) {
-    std::snprintf(line, sizeof line,
-                  "\n== %s: xi %.2f c/deg, eccentricity threshold %.1f deg, velocity threshold %.1f deg/s, %lld frames ==\n",
-                  c.hmd.c_str(), c.xi_cpd, c.eccentricity_threshold_deg, c.velocity_threshold_dps,
-                  static_cast<long long>(c.frames));
+    std::snprintf(
+        line, sizeof line,
+        "\n== %s: xi %.2f c/deg, eccentricity threshold %.1f deg, velocity threshold %.1f deg/s, %lld frames ==\n",
+        c.hmd.c_str(), c.xi_cpd, c.eccentricity_threshold_deg, c.velocity_threshold_dps,
+        static_cast<long long>(c.frames));
     out << line;
     std::snprintf(line, sizeof line, "%-28s %14s %9s %11s\n", "criteria", "triangles/frame", "of none", "average LOD");
     out << line;
     const double none = per_frame(c.sets[0], c.frames);
     const auto row = [&](const char* name, const SetResult& s) {
       const double t = per_frame(s, c.frames);
-      std::snprintf(line, sizeof line, "%-28s %14.0f %8.1f%% %11.3f\n", name, t,
-                    none > 0.0 ? 100.0 * t / none : 0.0, s.average_lod);
+      std::snprintf(line, sizeof line, "%-28s %14.0f %8.1f%% %11.3f\n", name, t, none > 0.0 ? 100.0 * t / none : 0.0,
+                    s.average_lod);
       out << line;
     };
     for (std::size_t i = 0; i < kCriteriaSets.size(); ++i) row(kCriteriaSets[i], c.sets[i]);

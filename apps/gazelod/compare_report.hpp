@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `gazelod compare`'s output: a terminal table, the JSON document (a contract other checks
 // rely on: {"hmds": [{"hmd", "xi_cpd", "runs": {SET: {"triangles", "average_lod"}}, "audit"}]},
 // "audit" as in each run's summary.json, run_audit.hpp) and

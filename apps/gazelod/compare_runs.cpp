@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "apps/gazelod/compare_runs.hpp"
 
 #include "lod/acuity.hpp"
@@ -18,8 +19,7 @@ const nlohmann::json& at(const nlohmann::json& j, const std::string& key, const 
   return j.at(key);
 }
 
-double number(const nlohmann::json& j, const std::string& key, const std::string& path,
-              const std::string& source) {
+double number(const nlohmann::json& j, const std::string& key, const std::string& path, const std::string& source) {
   const nlohmann::json& v = at(j, key, path, source);
   if (!v.is_number()) throw UsageError(source + ": " + path + key + ": must be a number", 1);
   return v.get<double>();
@@ -34,9 +34,12 @@ SetResult set_from(const nlohmann::json& j, const std::string& path, const std::
   return r;
 }
 
-double ratio(double num, double den) { return den > 0.0 ? num / den : 0.0; }
+double ratio(double num, double den) {
+  return den > 0.0 ? num / den : 0.0;
+}
 
-std::int64_t count(const nlohmann::json& j, const std::string& key, const std::string& path, const std::string& source) {
+std::int64_t count(const nlohmann::json& j, const std::string& key, const std::string& path,
+                   const std::string& source) {
   const double v = number(j, key, path, source);
   if (v < 0.0) throw UsageError(source + ": " + path + key + ": negative", 1);
   return static_cast<std::int64_t>(v);
@@ -87,19 +90,19 @@ AuditSummary audit_from(const nlohmann::json& summary, const std::string& source
   const nlohmann::json& sw = at(j, "switches", "audit.", source);
   a.switches_fixation = rate_from(at(sw, "outside_suppression", "audit.switches.", source),
                                   "audit.switches.outside_suppression.", source);
-  a.switches_suppressed = rate_from(at(sw, "inside_suppression", "audit.switches.", source),
-                                    "audit.switches.inside_suppression.", source);
+  a.switches_suppressed =
+      rate_from(at(sw, "inside_suppression", "audit.switches.", source), "audit.switches.inside_suppression.", source);
   const nlohmann::json& p = at(j, "pursuit", "audit.", source);
   a.pursuit_frames = count(p, "frames", "audit.pursuit.", source);
   a.pursuit_degraded = count(p, "degraded", "audit.pursuit.", source);
   a.pursuit_degraded_share = number(p, "share", "audit.pursuit.", source);
   // Summaries from before the visible / oracle switch counts and the breakdown have none.
   if (sw.contains("visible_outside_suppression"))
-    a.visible_switches_fixation = rate_from(sw.at("visible_outside_suppression"),
-                                            "audit.switches.visible_outside_suppression.", source);
+    a.visible_switches_fixation =
+        rate_from(sw.at("visible_outside_suppression"), "audit.switches.visible_outside_suppression.", source);
   if (sw.contains("oracle_outside_suppression"))
-    a.oracle_switches_fixation = rate_from(sw.at("oracle_outside_suppression"),
-                                           "audit.switches.oracle_outside_suppression.", source);
+    a.oracle_switches_fixation =
+        rate_from(sw.at("oracle_outside_suppression"), "audit.switches.oracle_outside_suppression.", source);
   if (j.contains("breakdown")) {
     try {
       a.breakdown = breakdown_from_json(j.at("breakdown"));

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `gazelod compare`'s data: for one HMD, one headless `gazelod run` with every criterion on
 // (the plugin's breakdown also selects with size only, size+eccentricity and size+velocity
 // each frame), read back from its summary.json into the five criteria sets, the LOD-map
@@ -18,8 +19,8 @@
 namespace gazelod::cli {
 
 // The criteria sets, in report order; each later set adds criteria to an earlier one.
-inline constexpr std::array<const char*, 5> kCriteriaSets{
-    "none", "size", "size+eccentricity", "size+velocity", "size+eccentricity+velocity"};
+inline constexpr std::array<const char*, 5> kCriteriaSets{"none", "size", "size+eccentricity", "size+velocity",
+                                                          "size+eccentricity+velocity"};
 
 struct SetResult {
   std::uint64_t triangles = 0;  // summed over the run's frames, per eye
@@ -43,11 +44,11 @@ struct HmdComparison {
 
 struct CompareOptions {
   std::vector<std::string> hmds;
-  std::string scenario_path;   // "" = the embedded default scenario
-  std::int64_t frames = 0;     // 0 = the scenario's duration
+  std::string scenario_path;  // "" = the embedded default scenario
+  std::int64_t frames = 0;    // 0 = the scenario's duration
   std::filesystem::path out_dir = "gazelod-compare";
   bool render = false;
-  bool breakdown = false;      // print each audit's breakdown (run_audit_breakdown.hpp)
+  bool breakdown = false;  // print each audit's breakdown (run_audit_breakdown.hpp)
 };
 
 // Throws UsageError when `hmd` is not a display preset.
@@ -56,8 +57,7 @@ void check_hmd(const std::string& hmd);
 // Fills the figures of `hmd` (a preset), the sets and the audit from a run's summary.json.
 // Throws UsageError naming `source` and the JSON path of a missing or mistyped field (a
 // missing "audit" object only marks the audit unavailable).
-HmdComparison comparison_from_summary(const std::string& hmd, const nlohmann::json& summary,
-                                      const std::string& source);
+HmdComparison comparison_from_summary(const std::string& hmd, const nlohmann::json& summary, const std::string& source);
 
 // Runs `gazelod run` in this process for `hmd`, its report in out_dir / hmd. Throws
 // UsageError with the run's own message when it fails.

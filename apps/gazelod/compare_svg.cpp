@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "apps/gazelod/compare_svg.hpp"
 
 #include "apps/gazelod/plot_axis.hpp"
@@ -12,11 +13,20 @@ std::string svg_escape(const std::string& text) {
   std::string s;
   for (char c : text) {
     switch (c) {
-      case '&': s += "&amp;"; break;
-      case '<': s += "&lt;"; break;
-      case '>': s += "&gt;"; break;
-      case '"': s += "&quot;"; break;
-      default: s += c;
+      case '&':
+        s += "&amp;";
+        break;
+      case '<':
+        s += "&lt;";
+        break;
+      case '>':
+        s += "&gt;";
+        break;
+      case '"':
+        s += "&quot;";
+        break;
+      default:
+        s += c;
     }
   }
   return s;
@@ -68,8 +78,8 @@ void write_bar_chart(const BarChart& c, std::ostream& out) {
   out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << c.width_px << "\" height=\"" << height
       << "\" font-family=\"sans-serif\" font-size=\"" << kFontPx << "\">\n"
       << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
-      << "<text x=\"" << c.width_px / 2 << "\" y=\"24\" text-anchor=\"middle\" font-size=\"15\">"
-      << svg_escape(c.title) << "</text>\n";
+      << "<text x=\"" << c.width_px / 2 << "\" y=\"24\" text-anchor=\"middle\" font-size=\"15\">" << svg_escape(c.title)
+      << "</text>\n";
   for (double t : ya.ticks) {
     out << "<line x1=\"" << left << "\" x2=\"" << left + w << "\" y1=\"" << sy(t) << "\" y2=\"" << sy(t)
         << "\" stroke=\"#ddd\"/><text class=\"tick\" x=\"" << left - 6 << "\" y=\"" << sy(t) + 4
@@ -84,17 +94,16 @@ void write_bar_chart(const BarChart& c, std::ostream& out) {
       const double v = c.series[s].values[g];
       if (!std::isfinite(v) || v < 0.0) continue;
       const double bh = top + h - sy(std::min(v, ya.hi));
-      out << "<rect x=\"" << gx + gw * 0.1 + bw * static_cast<double>(s) << "\" y=\"" << top + h - bh
-          << "\" width=\"" << bw * 0.92 << "\" height=\"" << bh << "\" fill=\"" << svg_escape(c.series[s].colour)
-          << "\"><title>" << svg_escape(c.groups[g] + ", " + c.series[s].label + ": " + num(v))
-          << "</title></rect>\n";
+      out << "<rect x=\"" << gx + gw * 0.1 + bw * static_cast<double>(s) << "\" y=\"" << top + h - bh << "\" width=\""
+          << bw * 0.92 << "\" height=\"" << bh << "\" fill=\"" << svg_escape(c.series[s].colour) << "\"><title>"
+          << svg_escape(c.groups[g] + ", " + c.series[s].label + ": " + num(v)) << "</title></rect>\n";
     }
     if (slanted)
       out << "<text class=\"group\" transform=\"translate(" << gx + gw / 2 << "," << top + h + 14
           << ") rotate(35)\" text-anchor=\"start\">" << svg_escape(c.groups[g]) << "</text>\n";
     else
-      out << "<text class=\"group\" x=\"" << gx + gw / 2 << "\" y=\"" << top + h + 16
-          << "\" text-anchor=\"middle\">" << svg_escape(c.groups[g]) << "</text>\n";
+      out << "<text class=\"group\" x=\"" << gx + gw / 2 << "\" y=\"" << top + h + 16 << "\" text-anchor=\"middle\">"
+          << svg_escape(c.groups[g]) << "</text>\n";
   }
   out << "<line x1=\"" << left << "\" x2=\"" << left + w << "\" y1=\"" << top + h << "\" y2=\"" << top + h
       << "\" stroke=\"black\"/>\n";

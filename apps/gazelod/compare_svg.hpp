@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A grouped bar chart as a standalone SVG (for `gazelod compare` and `gazelod eval`): one
 // group per label on the x axis, one bar per series in each group, a legend. No dependencies.
 #pragma once

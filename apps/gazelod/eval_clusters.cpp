@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "apps/gazelod/eval_clusters.hpp"
 
 #include "apps/gazelod/eval_clusters_baseline.hpp"
@@ -30,9 +31,9 @@ struct ClusterEvalFlags {
   std::uint64_t triangles = 1'000'000;
   std::uint64_t seed = 1;
   int tiles = 1;
-  std::int64_t frames = 0;   // 0: the scenario's duration
-  int render_frames = 60;    // 0: no rendered runs
-  int render_rounds = 3;     // rendered runs per column, the columns taking turns
+  std::int64_t frames = 0;  // 0: the scenario's duration
+  int render_frames = 60;   // 0: no rendered runs
+  int render_rounds = 3;    // rendered runs per column, the columns taking turns
 };
 
 std::string join(const std::vector<std::string>& args) {
@@ -101,8 +102,14 @@ int run_eval_clusters(const ClusterEvalFlags& flags, const CLI::App& app, Io io)
   // The three bakes: per-object LOD as `gazelod bake` makes it (the baseline), the same chains
   // under the cluster rule (eval_clusters_baseline.hpp), and the cluster hierarchy.
   report.columns = {{"per_object", "per-object LOD (bake: MSFT_lod chain, object rule)", false, {}, "", {}, 0.0, 0.0},
-                    {"per_object_cluster_rule", "per-object LOD under the cluster rule (the same chain, one cluster per level)",
-                     true, {}, "", {}, 0.0, 0.0},
+                    {"per_object_cluster_rule",
+                     "per-object LOD under the cluster rule (the same chain, one cluster per level)",
+                     true,
+                     {},
+                     "",
+                     {},
+                     0.0,
+                     0.0},
                     {"clusters", "cluster LOD (bake --clusters)", true, {}, "", {}, 0.0, 0.0}};
   const std::string glbs[3] = {(w / "per-object.glb").string(), (w / "per-object-cluster-rule.glb").string(),
                                (w / "clusters.glb").string()};
@@ -113,11 +120,13 @@ int run_eval_clusters(const ClusterEvalFlags& flags, const CLI::App& app, Io io)
   step({"bake", "--clusters", source, "-o", glbs[2]});
 
   auto run_args = [&](const std::string& glb, const fs::path& dir, bool render) {
-    std::vector<std::string> a{"run", "--scene", glb, "--scene-placement", "file", "--scenario", flags.scenario,
-                               "--out", dir.string(), "--quiet"};
+    std::vector<std::string> a{"run",        "--scene",      glb,     "--scene-placement", "file",
+                               "--scenario", flags.scenario, "--out", dir.string(),        "--quiet"};
     if (!flags.hmd.empty()) a.insert(a.end(), {"--hmd", flags.hmd});
-    if (render) a.insert(a.end(), {"--frames", std::to_string(flags.render_frames)});
-    else if (flags.frames > 0) a.insert(a.end(), {"--frames", std::to_string(flags.frames)});
+    if (render)
+      a.insert(a.end(), {"--frames", std::to_string(flags.render_frames)});
+    else if (flags.frames > 0)
+      a.insert(a.end(), {"--frames", std::to_string(flags.frames)});
     if (!render) a.push_back("--no-render");
     return a;
   };
@@ -126,8 +135,9 @@ int run_eval_clusters(const ClusterEvalFlags& flags, const CLI::App& app, Io io)
     step(run_args(glbs[i], w / dirs[i], false));
     try {
       c.side = read_cluster_eval_side(w / dirs[i], c.clusters);
-      progress(c.title + fmt(": %.0f triangles per frame (%.2f%% of full detail)", c.side->triangles_per_frame,
-                             100.0 * c.side->triangles_per_frame / std::max(1.0, c.side->full_triangles_per_frame)) +
+      progress(c.title +
+               fmt(": %.0f triangles per frame (%.2f%% of full detail)", c.side->triangles_per_frame,
+                   100.0 * c.side->triangles_per_frame / std::max(1.0, c.side->full_triangles_per_frame)) +
                fmt(", visible degradations %.3f%%", 100.0 * c.side->degraded_share));
     } catch (const UsageError& e) {
       if (!c.clusters) throw;  // the baseline must be there
@@ -173,7 +183,8 @@ EvalSubcommand add_eval_clusters(CLI::App& eval) {
   CLI::App* app = eval.add_subcommand(
       "clusters", "Cluster LOD (bake --clusters) against per-object LOD (MSFT_lod chains) on a large terrain");
   app->add_option("--out", flags->out, "Folder for clusters.md, clusters.json, clusters.svg");
-  app->add_option("--work", flags->work, "Folder for the scenes, bakes and run reports (default: a temporary one, removed)");
+  app->add_option("--work", flags->work,
+                  "Folder for the scenes, bakes and run reports (default: a temporary one, removed)");
   app->add_option("--scene-source", flags->scene_source, "A glTF to bake and walk instead of the generated terrain");
   app->add_option("--scenario", flags->scenario, "The walk (default sim/scenarios/terrain-walk.json)");
   app->add_option("--hmd", flags->hmd, "Display preset replacing the scenario's (see gazelod hmds)");

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // gazelod eval clusters: cluster LOD against per-object LOD on one large mesh. Generates the
 // terrain (`gazelod scene generate terrain`, or takes --scene-source F), bakes it three times
 // in a work folder: `gazelod bake` (an MSFT_lod chain per mesh node, the baseline), the same

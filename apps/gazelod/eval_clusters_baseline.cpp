@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "apps/gazelod/eval_clusters_baseline.hpp"
 
 #include "apps/gazelod/command.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The same-rule baseline of `gazelod eval clusters`: per-object LOD judged by the rule the
 // clusters are judged by. The plugin's object rule (lod/select.hpp) and its cluster rule
 // (lod/cluster_select.hpp) differ on a large mesh: an object's level is one removed frequency

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "apps/gazelod/eval_clusters_report.hpp"
 
 #include "apps/gazelod/command.hpp"
@@ -16,7 +17,9 @@
 namespace gazelod::cli {
 namespace {
 
-double ratio(double a, double b) { return b > 0.0 && std::isfinite(a) ? a / b : 0.0; }
+double ratio(double a, double b) {
+  return b > 0.0 && std::isfinite(a) ? a / b : 0.0;
+}
 
 std::string fmt(const char* format, double v) {
   char s[96];
@@ -67,8 +70,9 @@ void read_frames_csv(const std::filesystem::path& path, const std::string& colum
       char* end = nullptr;
       const double v = std::strtod(cell.c_str(), &end);
       if (cell.empty() || end != cell.c_str() + cell.size() || !std::isfinite(v))
-        throw UsageError(path.string() + ":" + std::to_string(number) + ": column " + std::to_string(col + 1) +
-                             ": '" + cell + "' is not a number", 1);
+        throw UsageError(path.string() + ":" + std::to_string(number) + ": column " + std::to_string(col + 1) + ": '" +
+                             cell + "' is not a number",
+                         1);
       (col == t_col ? t : tri) = v;
     }
     if (!std::isfinite(t) || !std::isfinite(tri))
@@ -121,8 +125,10 @@ ClusterEvalSide read_cluster_eval_side(const std::filesystem::path& dir, bool cl
   if (s.frames <= 0) throw UsageError(src + ": /frames: no frames", 1);
   const double frames = static_cast<double>(s.frames);
   if (clusters && !(j.contains("clusters") && j["clusters"].is_object()))
-    throw UsageError(src + ": no cluster figures (no \"clusters\" object): this gazelod run did not draw cluster "
-                     "cuts (it needs `gazelod run --scene F --scene-placement file` with cluster meshes)", 1);
+    throw UsageError(src +
+                         ": no cluster figures (no \"clusters\" object): this gazelod run did not draw cluster "
+                         "cuts (it needs `gazelod run --scene F --scene-placement file` with cluster meshes)",
+                     1);
   const std::string root = clusters ? "/clusters" : "";
   s.triangles_per_frame = number_at(j, root + "/triangles_drawn", src) / frames;
   s.full_triangles_per_frame = number_at(j, root + "/triangles_full", src) / frames;
@@ -134,7 +140,8 @@ ClusterEvalSide read_cluster_eval_side(const std::filesystem::path& dir, bool cl
   s.drawn_over_oracle = number_at(j, audit + "/triangles_in_view/drawn_over_oracle", src);
   s.in_view_triangles_per_frame = number_at(j, audit + "/triangles_in_view/drawn", src) / frames;
   const std::string unit = clusters ? "leaf" : "object";
-  s.audit_unit_frames = static_cast<std::int64_t>(number_at(j, audit + "/visible_degradations/" + unit + "_frames", src));
+  s.audit_unit_frames =
+      static_cast<std::int64_t>(number_at(j, audit + "/visible_degradations/" + unit + "_frames", src));
   s.degraded_share = number_at(j, audit + "/visible_degradations/share", src);
   s.switches_per_unit_s = number_at(j, audit + "/switches/outside_suppression/per_" + unit + "_second", src);
   if (clusters) {
@@ -188,7 +195,8 @@ std::string cluster_eval_markdown(const ClusterEvalReport& r) {
   md << " |\n|---";
   for (std::size_t i = 0; i < r.columns.size(); ++i) md << "|---:";
   md << "|\n";
-  row("triangles drawn per frame (mean, per eye)", [](const auto& c) { return fmt("%.0f", c.side->triangles_per_frame); });
+  row("triangles drawn per frame (mean, per eye)",
+      [](const auto& c) { return fmt("%.0f", c.side->triangles_per_frame); });
   row("vs full detail", [](const auto& c) {
     return fmt("%.2f%%", 100 * ratio(c.side->triangles_per_frame, c.side->full_triangles_per_frame)) + " of " +
            fmt("%.0f", c.side->full_triangles_per_frame);
@@ -204,15 +212,17 @@ std::string cluster_eval_markdown(const ClusterEvalReport& r) {
     return k.side ? fmt("%.3f", ratio(k.side->in_view_triangles_per_frame, c.side->in_view_triangles_per_frame))
                   : std::string("n/a");
   });
-  row("in view: drawn / what the true gaze needs (its oracle)", [](const auto& c) { return fmt("%.3f", c.side->drawn_over_oracle); });
+  row("in view: drawn / what the true gaze needs (its oracle)",
+      [](const auto& c) { return fmt("%.3f", c.side->drawn_over_oracle); });
   row("visible degradations outside suppression", [](const auto& c) {
     return fmt("%.3f%%", 100 * c.side->degraded_share) + " of " + std::to_string(c.side->audit_unit_frames) +
            (c.clusters ? " leaf-frames" : " object-frames");
   });
-  row("switches per object-s / leaf-s outside suppression", [](const auto& c) { return fmt("%.3f", c.side->switches_per_unit_s); });
+  row("switches per object-s / leaf-s outside suppression",
+      [](const auto& c) { return fmt("%.3f", c.side->switches_per_unit_s); });
   if (r.rendered_frames > 0) {
-    row("rendered (" + std::to_string(r.rendered_rounds) + " interleaved rounds of " + std::to_string(r.rendered_frames) +
-            " frames): median of the rounds' mean frame time (range)",
+    row("rendered (" + std::to_string(r.rendered_rounds) + " interleaved rounds of " +
+            std::to_string(r.rendered_frames) + " frames): median of the rounds' mean frame time (range)",
         [](const auto& c) {
           if (!(c.frame_ms > 0.0)) return std::string("n/a");
           const auto [lo, hi] = std::minmax_element(c.frame_ms_rounds.begin(), c.frame_ms_rounds.end());
@@ -220,9 +230,8 @@ std::string cluster_eval_markdown(const ClusterEvalReport& r) {
           if (c.frame_ms_rounds.size() > 1) cell += fmt(" (%.1f", *lo) + fmt("-%.1f)", *hi);
           return cell;
         });
-    row("rendered: triangles per frame (mean, per eye)", [](const auto& c) {
-      return c.frame_ms > 0.0 ? fmt("%.0f", c.rendered_triangles) : std::string("n/a");
-    });
+    row("rendered: triangles per frame (mean, per eye)",
+        [](const auto& c) { return c.frame_ms > 0.0 ? fmt("%.0f", c.rendered_triangles) : std::string("n/a"); });
   }
   md << "\n";
   for (const ClusterEvalColumn& c : r.columns)
@@ -232,8 +241,9 @@ std::string cluster_eval_markdown(const ClusterEvalReport& r) {
   if (!k.side || !r.columns[kPerObjectColumn].side)
     md << "not measured\n";
   else
-    md << (r.target_met() ? "met" : "MISSED") << " (ratio " << fmt("%.3f", r.triangle_ratio(kClustersColumn, kPerObjectColumn))
-       << ", degradations " << fmt("%.3f%%", 100 * k.side->degraded_share) << "; in the first eye's view "
+    md << (r.target_met() ? "met" : "MISSED") << " (ratio "
+       << fmt("%.3f", r.triangle_ratio(kClustersColumn, kPerObjectColumn)) << ", degradations "
+       << fmt("%.3f%%", 100 * k.side->degraded_share) << "; in the first eye's view "
        << fmt("%.3f", r.triangle_ratio(kClustersColumn, kPerObjectColumn, true)) << ")\n";
   if (k.side)
     md << "\nThe cluster oracle (the cut at the true gaze) in the first eye's view, triangles per frame: "

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `gazelod eval clusters`' figures and output (the experiment: eval_clusters.hpp): one side
 // (per-object LOD or cluster LOD) read back from its `gazelod run` reports, and the side-by-side
 // table (markdown), clusters.json and clusters.svg (triangles per frame of both).
@@ -28,15 +29,15 @@ struct ClusterEvalSide {
   // Drawn in the first eye's view (objects, or clusters, whose sphere is in it: what a renderer
   // culling by sphere submits), mean per frame; the rest is chosen by eccentricity and culled.
   double in_view_triangles_per_frame = 0.0;
-  std::int64_t audit_unit_frames = 0;     // object-frames or leaf-cluster-frames outside suppression
-  double degraded_share = 0.0;            // of those, drawn coarser than the oracle allows
-  double switches_per_unit_s = 0.0;       // outside suppression
+  std::int64_t audit_unit_frames = 0;  // object-frames or leaf-cluster-frames outside suppression
+  double degraded_share = 0.0;         // of those, drawn coarser than the oracle allows
+  double switches_per_unit_s = 0.0;    // outside suppression
   // Cluster runs only (0 otherwise): the oracle's cut in view under size / eccentricity /
   // velocity alone, and under all of them, triangles per frame (what each criterion buys at the
   // true gaze, on the run's display).
-  double oracle_in_view_per_frame = 0.0, oracle_size_only_per_frame = 0.0,
-         oracle_eccentricity_only_per_frame = 0.0, oracle_velocity_only_per_frame = 0.0;
-  std::vector<double> t_s, triangles;     // per frame (frames.csv)
+  double oracle_in_view_per_frame = 0.0, oracle_size_only_per_frame = 0.0, oracle_eccentricity_only_per_frame = 0.0,
+         oracle_velocity_only_per_frame = 0.0;
+  std::vector<double> t_s, triangles;  // per frame (frames.csv)
 };
 
 // Reads DIR/summary.json and DIR/frames.csv of `gazelod run`. clusters: the figures of the run's
@@ -53,26 +54,26 @@ double median_of(std::vector<double> values);
 
 // One column of the comparison: a bake of the scene and its runs.
 struct ClusterEvalColumn {
-  std::string key;    // "per_object", "per_object_cluster_rule", "clusters" (clusters.json)
-  std::string title;  // the table's column heading
-  bool clusters = false;             // read the run's cluster figures (units: leaves)
+  std::string key;        // "per_object", "per_object_cluster_rule", "clusters" (clusters.json)
+  std::string title;      // the table's column heading
+  bool clusters = false;  // read the run's cluster figures (units: leaves)
   std::optional<ClusterEvalSide> side;
-  std::string missing;               // why `side` is empty
+  std::string missing;                  // why `side` is empty
   std::vector<double> frame_ms_rounds;  // rendered runs: each round's mean frame time
-  double frame_ms = 0.0;             // their median (0: not measured)
-  double rendered_triangles = 0.0;   // rendered run: triangles per frame
+  double frame_ms = 0.0;                // their median (0: not measured)
+  double rendered_triangles = 0.0;      // rendered run: triangles per frame
 };
 
 // Column indices of ClusterEvalReport::columns.
 inline constexpr std::size_t kPerObjectColumn = 0, kSameRuleColumn = 1, kClustersColumn = 2;
 
 struct ClusterEvalReport {
-  std::string scene;          // what was measured ("generated terrain, ...")
-  std::string scenario;       // the scenario file
-  std::string machine;        // CPU model
+  std::string scene;                       // what was measured ("generated terrain, ...")
+  std::string scenario;                    // the scenario file
+  std::string machine;                     // CPU model
   std::vector<ClusterEvalColumn> columns;  // per-object, per-object under the cluster rule, clusters
-  int rendered_frames = 0;    // 0: no rendered runs
-  int rendered_rounds = 1;    // rendered runs per column (ClusterEvalColumn::frame_ms_rounds)
+  int rendered_frames = 0;                 // 0: no rendered runs
+  int rendered_rounds = 1;                 // rendered runs per column (ClusterEvalColumn::frame_ms_rounds)
 
   // Column a's triangles per frame over column b's (0 when either is missing); in_view: of
   // those drawn in the first eye's view.

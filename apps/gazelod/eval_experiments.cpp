@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "apps/gazelod/eval_experiments.hpp"
 
 #include <cstdio>
@@ -13,19 +14,22 @@ std::string fmt(const char* f, double a, double b = 0.0) {
 
 // The point's layouts, each in its own folder; layout seeds 1..n are shared by all criteria
 // so the with/without comparison is paired.
-std::vector<EvalRun> layouts(const EvalOptions& o, ReddyScenario sc, const std::string& criteria,
-                             bool render, const std::string& label, const Progress& progress) {
+std::vector<EvalRun> layouts(const EvalOptions& o, ReddyScenario sc, const std::string& criteria, bool render,
+                             const std::string& label, const Progress& progress) {
   std::vector<EvalRun> runs;
   for (int l = 1; l <= o.layouts; ++l) {
     sc.layout_seed = static_cast<std::uint64_t>(l);
     std::string name = label + "_" + criteria + "_layout" + std::to_string(l);
     for (char& c : name)
-      if (c == ',') c = '+';
-      else if (c == ' ' || c == '/') c = '_';
+      if (c == ',')
+        c = '+';
+      else if (c == ' ' || c == '/')
+        c = '_';
     runs.push_back(eval_run(sc, criteria, render, o.work_dir / name));
     progress(label + ", " + criteria + ", layout " + std::to_string(l) + "/" + std::to_string(o.layouts) +
-             (render ? fmt(": %.1f Hz, %.0f triangles/frame", runs.back().frame_rate_hz, runs.back().triangles_per_frame)
-                     : fmt(": average LOD %.3f (1..4)", runs.back().lod_drawn)));
+             (render
+                  ? fmt(": %.1f Hz, %.0f triangles/frame", runs.back().frame_rate_hz, runs.back().triangles_per_frame)
+                  : fmt(": average LOD %.3f (1..4)", runs.back().lod_drawn)));
   }
   return runs;
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "apps/gazelod/eval_family.hpp"
 
 #include "apps/gazelod/eval_work.hpp"
@@ -21,9 +22,9 @@ namespace {
 struct Setting {
   const char* name;
   double lo, hi;
-  std::function<double&(FamilySettings&)> real;             // a double field, or
-  std::function<std::int64_t&(FamilySettings&)> ms_as_ns;   // an ns field set in ms, or
-  std::function<bool&(FamilySettings&)> flag;               // a bool (0 or 1)
+  std::function<double&(FamilySettings&)> real;            // a double field, or
+  std::function<std::int64_t&(FamilySettings&)> ms_as_ns;  // an ns field set in ms, or
+  std::function<bool&(FamilySettings&)> flag;              // a bool (0 or 1)
 };
 
 const std::vector<Setting>& settings_table() {
@@ -33,29 +34,79 @@ const std::vector<Setting>& settings_table() {
       {"switch.max_deferral_s", 0, 10, [](S& s) -> double& { return s.switching.max_deferral_s; }, {}, {}},
       {"switch.suppressed_hold_s", 0, 10, [](S& s) -> double& { return s.switching.suppressed_hold_s; }, {}, {}},
       {"switch.prefer_suppression", 0, 1, {}, {}, [](S& s) -> bool& { return s.switching.prefer_suppression; }},
-      {"conditioner.saccade_threshold_deg_s", 10, 1000,
-       [](S& s) -> double& { return s.conditioning.saccade_threshold_deg_s; }, {}, {}},
-      {"conditioner.dispersion_threshold_deg", 0.01, 20,
-       [](S& s) -> double& { return s.conditioning.dispersion_threshold_deg; }, {}, {}},
-      {"conditioner.pursuit_significance", 0, 100,
-       [](S& s) -> double& { return s.conditioning.pursuit_significance; }, {}, {}},
-      {"conditioner.saccade_significance", 0, 100,
-       [](S& s) -> double& { return s.conditioning.saccade_significance; }, {}, {}},
+      {"conditioner.saccade_threshold_deg_s",
+       10,
+       1000,
+       [](S& s) -> double& { return s.conditioning.saccade_threshold_deg_s; },
+       {},
+       {}},
+      {"conditioner.dispersion_threshold_deg",
+       0.01,
+       20,
+       [](S& s) -> double& { return s.conditioning.dispersion_threshold_deg; },
+       {},
+       {}},
+      {"conditioner.pursuit_significance",
+       0,
+       100,
+       [](S& s) -> double& { return s.conditioning.pursuit_significance; },
+       {},
+       {}},
+      {"conditioner.saccade_significance",
+       0,
+       100,
+       [](S& s) -> double& { return s.conditioning.saccade_significance; },
+       {},
+       {}},
       {"conditioner.carried_evidence", 0, 1e6, [](S& s) -> double& { return s.conditioning.carried_evidence; }, {}, {}},
-      {"conditioner.saccade_follow_newest", 0, 1, {}, {}, [](S& s) -> bool& { return s.conditioning.saccade_follow_newest; }},
-      {"conditioner.age_growth_deg_s", 0, 1000, [](S& s) -> double& { return s.conditioning.age_growth_deg_s; }, {}, {}},
-      {"conditioner.velocity_error_fraction", 0, 10,
-       [](S& s) -> double& { return s.conditioning.velocity_error_fraction; }, {}, {}},
-      {"conditioner.velocity_window_ms", 1, 1000, {},
-       [](S& s) -> std::int64_t& { return s.conditioning.velocity_window_ns; }, {}},
-      {"conditioner.dispersion_window_ms", 1, 5000, {},
-       [](S& s) -> std::int64_t& { return s.conditioning.dispersion_window_ns; }, {}},
-      {"conditioner.fixation_smoothing_tau_ms", 1, 10000, {},
-       [](S& s) -> std::int64_t& { return s.conditioning.fixation_smoothing_tau_ns; }, {}},
-      {"conditioner.prediction_horizon_max_ms", 0, 1000, {},
-       [](S& s) -> std::int64_t& { return s.conditioning.prediction_horizon_max_ns; }, {}},
-      {"conditioner.post_saccade_suppression_ms", 0, 1000, {},
-       [](S& s) -> std::int64_t& { return s.conditioning.post_saccade_suppression_ns; }, {}},
+      {"conditioner.saccade_follow_newest",
+       0,
+       1,
+       {},
+       {},
+       [](S& s) -> bool& { return s.conditioning.saccade_follow_newest; }},
+      {"conditioner.age_growth_deg_s",
+       0,
+       1000,
+       [](S& s) -> double& { return s.conditioning.age_growth_deg_s; },
+       {},
+       {}},
+      {"conditioner.velocity_error_fraction",
+       0,
+       10,
+       [](S& s) -> double& { return s.conditioning.velocity_error_fraction; },
+       {},
+       {}},
+      {"conditioner.velocity_window_ms",
+       1,
+       1000,
+       {},
+       [](S& s) -> std::int64_t& { return s.conditioning.velocity_window_ns; },
+       {}},
+      {"conditioner.dispersion_window_ms",
+       1,
+       5000,
+       {},
+       [](S& s) -> std::int64_t& { return s.conditioning.dispersion_window_ns; },
+       {}},
+      {"conditioner.fixation_smoothing_tau_ms",
+       1,
+       10000,
+       {},
+       [](S& s) -> std::int64_t& { return s.conditioning.fixation_smoothing_tau_ns; },
+       {}},
+      {"conditioner.prediction_horizon_max_ms",
+       0,
+       1000,
+       {},
+       [](S& s) -> std::int64_t& { return s.conditioning.prediction_horizon_max_ns; },
+       {}},
+      {"conditioner.post_saccade_suppression_ms",
+       0,
+       1000,
+       {},
+       [](S& s) -> std::int64_t& { return s.conditioning.post_saccade_suppression_ns; },
+       {}},
   };
   return table;
 }
@@ -66,11 +117,21 @@ double current(const Setting& t, FamilySettings& s) {
   return t.flag(s) ? 1.0 : 0.0;
 }
 
-double degraded(const AuditSummary& a) { return a.degraded_share; }
-double tri_ratio(const AuditSummary& a) { return a.triangle_ratio; }
-double switches(const AuditSummary& a) { return a.switches_fixation.per_object_s; }
-double visible(const AuditSummary& a) { return a.visible_switches_fixation.per_object_s; }
-double oracle_own(const AuditSummary& a) { return a.oracle_switches_fixation.per_object_s; }
+double degraded(const AuditSummary& a) {
+  return a.degraded_share;
+}
+double tri_ratio(const AuditSummary& a) {
+  return a.triangle_ratio;
+}
+double switches(const AuditSummary& a) {
+  return a.switches_fixation.per_object_s;
+}
+double visible(const AuditSummary& a) {
+  return a.visible_switches_fixation.per_object_s;
+}
+double oracle_own(const AuditSummary& a) {
+  return a.oracle_switches_fixation.per_object_s;
+}
 
 struct Metric {
   const char* name;
@@ -113,11 +174,16 @@ void apply_setting(const std::string& assignment, FamilySettings& settings) {
   if (used == 0 || used != text.size() || !std::isfinite(v))
     throw UsageError("--set " + name + ": '" + text + "' is not a number");
   if (v < it->lo || v > it->hi)
-    throw UsageError("--set " + name + ": must be in [" + fmt("%g", it->lo) + ", " + fmt("%g", it->hi) + "], got " + text);
-  if (it->real) it->real(settings) = v;
-  else if (it->ms_as_ns) it->ms_as_ns(settings) = static_cast<std::int64_t>(std::llround(v * 1e6));
-  else if (v != 0.0 && v != 1.0) throw UsageError("--set " + name + ": must be 0 or 1, got " + text);
-  else it->flag(settings) = v == 1.0;
+    throw UsageError("--set " + name + ": must be in [" + fmt("%g", it->lo) + ", " + fmt("%g", it->hi) + "], got " +
+                     text);
+  if (it->real)
+    it->real(settings) = v;
+  else if (it->ms_as_ns)
+    it->ms_as_ns(settings) = static_cast<std::int64_t>(std::llround(v * 1e6));
+  else if (v != 0.0 && v != 1.0)
+    throw UsageError("--set " + name + ": must be 0 or 1, got " + text);
+  else
+    it->flag(settings) = v == 1.0;
   settings.changed.push_back(assignment);
 }
 
@@ -130,7 +196,8 @@ std::string settings_list(const FamilySettings& settings) {
 }
 
 std::vector<FamilyMember> run_family(std::uint64_t first, int count, double duration_s, const FamilySettings& settings,
-                                     const std::string& work_dir, const std::function<void(const std::string&)>& progress) {
+                                     const std::string& work_dir,
+                                     const std::function<void(const std::string&)>& progress) {
   const std::string why = lod::validate_switch_config(settings.switching);
   if (!why.empty()) throw UsageError("--set: " + why);
   WorkDir work(work_dir, "gazelod-eval-family");
@@ -202,7 +269,8 @@ std::string family_markdown(const std::vector<FamilyMember>& members, const Fami
     md << "; settings changed:";
     for (const std::string& c : settings.changed) md << " `" << c << "`";
   }
-  md << ".\n\n| figure | median | 90th percentile | worst (seed) | target | within target |\n|---|---:|---:|---:|---:|---:|\n";
+  md << ".\n\n| figure | median | 90th percentile | worst (seed) | target | within target "
+        "|\n|---|---:|---:|---:|---:|---:|\n";
   for (const Metric& m : kMetrics) {
     const Spread s = spread(members, m.value, m.target > 0 ? m.target : 1e300);
     md << "| " << m.name << " | " << fmt("%.3f", s.median * m.scale) << m.unit << " | " << fmt("%.3f", s.p90 * m.scale)
@@ -213,7 +281,8 @@ std::string family_markdown(const std::vector<FamilyMember>& members, const Fami
       md << " | ";
     md << " |\n";
   }
-  md << "\n| seed | scenario | degraded | triangles / oracle | switches (visible; oracle's own) |\n|---:|---|---:|---:|---:|\n";
+  md << "\n| seed | scenario | degraded | triangles / oracle | switches (visible; oracle's own) "
+        "|\n|---:|---|---:|---:|---:|\n";
   for (const FamilyMember& m : members) {
     const AuditSummary& a = m.audit;
     md << "| " << m.seed << " | " << m.summary << " | " << fmt("%.2f%%", 100.0 * a.degraded_share) << " | "
@@ -300,7 +369,8 @@ EvalSubcommand add_eval_family(CLI::App& eval) {
   auto flags = std::make_shared<FamilyFlags>();
   CLI::App* app = eval.add_subcommand(
       "family", "The visibility audit's distribution over a seeded family of random, plausible scenarios");
-  app->add_option("--seeds", flags->seeds, "Seed range A-B (default 2000-2099, the held-out seeds; tuning used 1000-1039)");
+  app->add_option("--seeds", flags->seeds,
+                  "Seed range A-B (default 2000-2099, the held-out seeds; tuning used 1000-1039)");
   app->add_option("--duration", flags->duration_s, "Seconds per scenario (default 20)")->check(CLI::Range(1.0, 600.0));
   app->add_option("--set", flags->set, "NAME=VALUE: a switch-policy or conditioner setting (repeatable)");
   app->add_flag("--list-settings", flags->list, "Print the settings --set understands, with their values");

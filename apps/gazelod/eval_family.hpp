@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // gazelod eval family: the visibility audit over a seeded family of scenarios
 // (sim/scenario_family.hpp) instead of a few hand-made files. Each seed's scenario is run
 // headless in this process (run_session as a function, no report files) and its audit kept;
@@ -46,7 +47,8 @@ std::string settings_list(const FamilySettings& settings);
 
 // Runs seeds [first, first + count) with `settings`; progress gets one line per seed.
 std::vector<FamilyMember> run_family(std::uint64_t first, int count, double duration_s, const FamilySettings& settings,
-                                     const std::string& work_dir, const std::function<void(const std::string&)>& progress);
+                                     const std::string& work_dir,
+                                     const std::function<void(const std::string&)>& progress);
 
 struct Spread {
   double median = 0.0, p90 = 0.0, worst = 0.0;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // gazelod eval gltfpack (see eval_gltfpack.hpp).
 #include "apps/gazelod/eval_gltfpack.hpp"
 
@@ -45,7 +46,9 @@ struct Row {
   std::string note;
 };
 
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+double seconds_since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
 
 // Runs argv (PATH searched) with stdout and stderr into `log`; the exit status, or -1 when it
 // could not start (errno kept).
@@ -84,7 +87,8 @@ std::string num(double x, const char* format = "%.4g") {
 
 nlohmann::json deviation_json(const bake::SurfaceDeviation& d) {
   const auto finite = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
-  return {{"max_m", finite(d.max_m)}, {"p99_m", finite(d.p99_m)}, {"mean_m", finite(d.mean_m)}, {"vertices", d.vertices}};
+  return {
+      {"max_m", finite(d.max_m)}, {"p99_m", finite(d.p99_m)}, {"mean_m", finite(d.mean_m)}, {"vertices", d.vertices}};
 }
 
 int run_eval_gltfpack(const GltfpackFlags& flags, Io io) {
@@ -107,7 +111,8 @@ int run_eval_gltfpack(const GltfpackFlags& flags, Io io) {
   const std::string version_log = (w / "gltfpack-version.txt").string();
   if (spawn({flags.gltfpack, "-v"}, version_log) < 0)
     throw UsageError("--gltfpack: cannot run '" + flags.gltfpack +
-                         "' (Debian package gltfpack; bash scripts/install-deps.sh installs it)", 1);
+                         "' (Debian package gltfpack; bash scripts/install-deps.sh installs it)",
+                     1);
   const std::string version = tail_of(version_log);
 
   const bake::TriangleSoup source = bake::world_triangles(bake::load_gltf(flags.model).model);
@@ -145,8 +150,9 @@ int run_eval_gltfpack(const GltfpackFlags& flags, Io io) {
           const bake::BakedLevelMesh& m = o.level_meshes[std::min(k, o.level_meshes.size() - 1)];
           bake::append_placed(level, m.positions_xyz, m.indices, o.world);
         }
-      measure({tool, ratios[k - 1], 0, {}, {}, bake_s, k == 1 && ratios.size() > 1 ? "time: all levels in one run" : ""},
-              level);
+      measure(
+          {tool, ratios[k - 1], 0, {}, {}, bake_s, k == 1 && ratios.size() > 1 ? "time: all levels in one run" : ""},
+          level);
     }
   };
   bake_chain("gazelod bake", flags.ratios, (w / "chains.glb").string());
@@ -161,7 +167,8 @@ int run_eval_gltfpack(const GltfpackFlags& flags, Io io) {
       const int rc = spawn(argv, file + ".log");
       const double s = seconds_since(t);
       if (rc != 0)
-        throw UsageError(name + " -si " + num(r) + " failed (exit " + std::to_string(rc) + "): " + tail_of(file + ".log"), 1);
+        throw UsageError(
+            name + " -si " + num(r) + " failed (exit " + std::to_string(rc) + "): " + tail_of(file + ".log"), 1);
       try {
         measure({name, r, 0, {}, {}, s, ""}, bake::world_triangles(bake::load_gltf(file).model));
       } catch (const bake::BakeError& e) {
@@ -187,8 +194,8 @@ int run_eval_gltfpack(const GltfpackFlags& flags, Io io) {
 
   std::ostringstream md;
   md << "<!-- written by: gazelod eval gltfpack " << flags.model << " -->\n\n"
-     << "Source: `" << flags.model << "`, " << source.triangles() << " triangles, extent " << num(extent)
-     << " m; " << version << "; machine: " << cpu_model() << ". Distances: from every source vertex to the result's "
+     << "Source: `" << flags.model << "`, " << source.triangles() << " triangles, extent " << num(extent) << " m; "
+     << version << "; machine: " << cpu_model() << ". Distances: from every source vertex to the result's "
      << "surface (and back), in % of the extent.\n\n"
      << "| tool | ratio | triangles | x source | largest | 99th pct | mean | back: largest | seconds |\n"
      << "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
@@ -198,12 +205,16 @@ int run_eval_gltfpack(const GltfpackFlags& flags, Io io) {
        << num(double(r.triangles) / double(source.triangles()), "%.4f") << " | " << pct(r.to_result.max_m) << " | "
        << pct(r.to_result.p99_m) << " | " << pct(r.to_result.mean_m) << " | " << pct(r.from_result.max_m) << " | "
        << num(r.seconds, "%.3f") << (r.note.empty() ? "" : " (" + r.note + ")") << " |\n";
-  nlohmann::json j{{"model", flags.model}, {"source_triangles", source.triangles()}, {"extent_m", extent},
-                   {"gltfpack", version}, {"machine", cpu_model()}, {"rows", nlohmann::json::array()}};
+  nlohmann::json j{{"model", flags.model},   {"source_triangles", source.triangles()},
+                   {"extent_m", extent},     {"gltfpack", version},
+                   {"machine", cpu_model()}, {"rows", nlohmann::json::array()}};
   for (const Row& r : rows)
-    j["rows"].push_back({{"tool", r.tool}, {"ratio", r.ratio}, {"triangles", r.triangles},
+    j["rows"].push_back({{"tool", r.tool},
+                         {"ratio", r.ratio},
+                         {"triangles", r.triangles},
                          {"source_to_result", deviation_json(r.to_result)},
-                         {"result_to_source", deviation_json(r.from_result)}, {"seconds", r.seconds}});
+                         {"result_to_source", deviation_json(r.from_result)},
+                         {"seconds", r.seconds}});
   write_report(out, {{"gltfpack.md", md.str()}, {"gltfpack.json", j.dump(2) + "\n"}});
   io.out << md.str() << "\nfiles: gltfpack.md, gltfpack.json in " << out.string() << "\n";
   return 0;

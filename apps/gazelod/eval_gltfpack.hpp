@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // gazelod eval gltfpack MODEL: gazelod bake's LOD chain beside meshoptimizer's own gltfpack
 // (Debian package gltfpack, the same meshopt 0.18) on one model, measured the same way. For
 // each triangle ratio R of the chain: the chain's level (one `gazelod bake` run makes them all)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The thesis's LOD map (lod/lod_map.hpp) evaluated beside the plugin in `gazelod run`: per frame,
 // the same objects, eye, gaze and head motion the plugin used, run through the map policy
 // offline (nothing it picks is drawn), so reports can compare its triangles and average LOD
@@ -23,8 +24,8 @@
 namespace gazelod::cli {
 
 struct LodMapFrame {
-  std::uint64_t triangles = 0;  // per eye
-  std::uint64_t lod_sum = 0;    // sum of the chosen levels (average = lod_sum / objects)
+  std::uint64_t triangles = 0;       // per eye
+  std::uint64_t lod_sum = 0;         // sum of the chosen levels (average = lod_sum / objects)
   std::vector<std::uint8_t> levels;  // per object
 };
 
@@ -43,14 +44,14 @@ struct InViewFrame {
 // Whether a sphere (world) overlaps the frustum of `fov` seen from `eye` with orientation
 // `head` (world from head; OpenXR axes: -Z forward, +X right, +Y up). A sphere around the eye
 // is in view. Angles via atan2.
-bool sphere_in_view(const glm::dvec3& center_m, double radius_m, const glm::dvec3& eye_m,
-                    const glm::dquat& head, const lod::FovRad& fov);
+bool sphere_in_view(const glm::dvec3& center_m, double radius_m, const glm::dvec3& eye_m, const glm::dquat& head,
+                    const lod::FovRad& fov);
 
 InViewFrame in_view_frame(const std::vector<std::vector<lod::LodLevel>>& chains,
                           std::span<const sim::ObjectState> objects, std::span<const double> radii,
                           const FrameDecisions& decisions, const FrameDiagnostics& d,
-                          std::span<const std::uint8_t> lod_map_levels,
-                          const glm::dvec3& eye_m, const glm::dquat& head, const lod::FovRad& fov);
+                          std::span<const std::uint8_t> lod_map_levels, const glm::dvec3& eye_m, const glm::dquat& head,
+                          const lod::FovRad& fov);
 
 // Sum of the levels in `lods` (0 for an empty span).
 std::uint64_t lod_sum(std::span<const std::uint8_t> lods);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "apps/gazelod/eval_runs.hpp"
 
 #include "apps/gazelod/command.hpp"
@@ -34,8 +35,8 @@ EvalRun eval_run(const ReddyScenario& scenario, const std::string& criteria, boo
     f << reddy_scenario_json(scenario);
     if (!f) throw UsageError("cannot write " + scenario_path.string(), 1);
   }
-  std::vector<std::string> args{"run", "--scenario", scenario_path.string(), "--criteria", criteria,
-                                "--out", dir.string(), "--quiet"};
+  std::vector<std::string> args{"run",    "--scenario", scenario_path.string(), "--criteria",
+                                criteria, "--out",      dir.string(),           "--quiet"};
   if (!render) args.push_back("--no-render");
   std::ostringstream out, err;
   const int rc = run(args, out, err);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "apps/gazelod/eval_scenario.hpp"
 
 #include <nlohmann/json.hpp>
@@ -53,9 +54,16 @@ std::string reddy_scenario_json(const ReddyScenario& s) {
   }
   nlohmann::json j = {
       {"version", 1},
-      {"name", std::string("reddy_n").append(std::to_string(s.objects)).append("_layout").append(std::to_string(s.layout_seed))},
-      {"display", {{"name", "reddy-sgi"}, {"width_px", s.width_px}, {"height_px", s.height_px},
-                   {"fov_h_deg", 43.6}, {"fov_v_deg", 33.4}}},
+      {"name", std::string("reddy_n")
+                   .append(std::to_string(s.objects))
+                   .append("_layout")
+                   .append(std::to_string(s.layout_seed))},
+      {"display",
+       {{"name", "reddy-sgi"},
+        {"width_px", s.width_px},
+        {"height_px", s.height_px},
+        {"fov_h_deg", 43.6},
+        {"fov_v_deg", 33.4}}},
       {"duration_s", s.duration_s},
       {"frame_rate_hz", s.frame_rate_hz},
       {"seed", s.layout_seed},
@@ -63,8 +71,8 @@ std::string reddy_scenario_json(const ReddyScenario& s) {
       {"effects", nlohmann::json::array()},
       {"runtime", {{"paced", false}}}};
   if (s.head_turn_deg_s != 0.0)
-    j["effects"].push_back({{"type", "head_turn"}, {"rate_deg_s", s.head_turn_deg_s},
-                            {"start_s", 0.0}, {"duration_s", s.duration_s}});
+    j["effects"].push_back(
+        {{"type", "head_turn"}, {"rate_deg_s", s.head_turn_deg_s}, {"start_s", 0.0}, {"duration_s", s.duration_s}});
   return j.dump(1);
 }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "apps/gazelod/eval_tables.hpp"
 
 #include "apps/gazelod/compare_svg.hpp"
@@ -16,11 +17,15 @@ std::string f(const char* format, double v) {
   return s;
 }
 
-double ratio(double a, double b) { return b > 0.0 ? a / b : 0.0; }
+double ratio(double a, double b) {
+  return b > 0.0 ? a / b : 0.0;
+}
 
 // Reddy 1998's Figure 6 measure: the share of the average-LOD reduction (above level 1) that
 // eccentricity + velocity alone achieve; the rest is owed to size.
-double ecc_vel_share_of_lod(const Figure6Row& r) { return ratio(r.no_size.lod_drawn - 1.0, r.all.lod_drawn - 1.0); }
+double ecc_vel_share_of_lod(const Figure6Row& r) {
+  return ratio(r.no_size.lod_drawn - 1.0, r.all.lod_drawn - 1.0);
+}
 
 template <class Write>
 void write_file(const std::filesystem::path& path, Write write) {
@@ -42,20 +47,22 @@ void figure5_table(const std::vector<Figure5Row>& rows, std::ostream& md) {
        << " | " << f("%.2fx", ratio(r.all.frame_rate_hz, r.none.frame_rate_hz)) << " | "
        << f("%.0f", r.none.triangles_per_frame) << " | " << f("%.0f", r.all.triangles_per_frame) << " | "
        << f("%.2fx", ratio(r.all.full_triangles_per_frame, r.all.triangles_per_frame)) << " | "
-       << f("%.0f", r.all.triangles_map) << " | " << f("%.2fx", ratio(r.all.full_triangles_per_frame, r.all.triangles_map))
-       << " |\n";
+       << f("%.0f", r.all.triangles_map) << " | "
+       << f("%.2fx", ratio(r.all.full_triangles_per_frame, r.all.triangles_map)) << " |\n";
 }
 
 void figure6_table(const std::vector<Figure6Row>& rows, std::ostream& md) {
-  md << "| objects | in view (mean) | average LOD, all criteria | average LOD, eccentricity + velocity only | average LOD, size only | "
+  md << "| objects | in view (mean) | average LOD, all criteria | average LOD, eccentricity + velocity only | average "
+        "LOD, size only | "
         "ecc + vel share of the LOD reduction | size share (triangles) | eccentricity share | velocity share | "
         "LOD map (thesis) average LOD |\n"
         "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const Figure6Row& r : rows)
-    md << "| " << r.objects << " | " << f("%.1f", r.all.objects_in_view) << " | " << f("%.3f", r.all.lod_drawn) << " | " << f("%.3f", r.no_size.lod_drawn) << " | "
-       << f("%.3f", r.all.lod_size) << " | " << f("%.1f%%", 100 * ecc_vel_share_of_lod(r)) << " | "
-       << f("%.1f%%", 100 * r.all.share_size) << " | " << f("%.1f%%", 100 * r.all.share_eccentricity) << " | "
-       << f("%.1f%%", 100 * r.all.share_velocity) << " | " << f("%.3f", r.all.lod_map) << " |\n";
+    md << "| " << r.objects << " | " << f("%.1f", r.all.objects_in_view) << " | " << f("%.3f", r.all.lod_drawn) << " | "
+       << f("%.3f", r.no_size.lod_drawn) << " | " << f("%.3f", r.all.lod_size) << " | "
+       << f("%.1f%%", 100 * ecc_vel_share_of_lod(r)) << " | " << f("%.1f%%", 100 * r.all.share_size) << " | "
+       << f("%.1f%%", 100 * r.all.share_eccentricity) << " | " << f("%.1f%%", 100 * r.all.share_velocity) << " | "
+       << f("%.3f", r.all.lod_map) << " |\n";
 }
 
 void head_turn_table(const std::vector<HeadTurnRow>& rows, std::ostream& md) {
@@ -66,9 +73,9 @@ void head_turn_table(const std::vector<HeadTurnRow>& rows, std::ostream& md) {
   for (const HeadTurnRow& r : rows) {
     const EvalRun& a = r.all;
     const double interaction = 1.0 - a.share_size - a.share_eccentricity - a.share_velocity;
-    md << "| " << f("%.0f", r.rate_deg_s) << " | " << f("%.1f", a.objects_in_view) << " | " << f("%.3f", a.lod_drawn) << " | " << f("%.3f", a.lod_size)
-       << " | " << f("%.3f", a.lod_size_ecc) << " | " << f("%.3f", a.lod_size_vel) << " | "
-       << f("%.1f%%", 100 * ratio(a.triangles_per_frame, a.full_triangles_per_frame)) << " | "
+    md << "| " << f("%.0f", r.rate_deg_s) << " | " << f("%.1f", a.objects_in_view) << " | " << f("%.3f", a.lod_drawn)
+       << " | " << f("%.3f", a.lod_size) << " | " << f("%.3f", a.lod_size_ecc) << " | " << f("%.3f", a.lod_size_vel)
+       << " | " << f("%.1f%%", 100 * ratio(a.triangles_per_frame, a.full_triangles_per_frame)) << " | "
        << f("%.1f%%", 100 * a.share_size) << " | " << f("%.1f%%", 100 * a.share_eccentricity) << " | "
        << f("%.1f%%", 100 * a.share_velocity) << " | " << f("%.1f%%", 100 * interaction) << " | "
        << f("%.3f", a.lod_map) << " | " << f("%.1f%%", 100 * ratio(a.triangles_map, a.full_triangles_per_frame))
@@ -99,8 +106,10 @@ void write_eval_plots(const std::vector<Figure5Row>& f5, const std::vector<Figur
     BarChart c;
     c.title = "Reddy 1998 Figure 6: average LOD (1..4, higher = coarser), still head";
     c.y_label = "average LOD";
-    c.series = {{"all criteria", "#d62728", {}}, {"eccentricity + velocity", "#1f77b4", {}},
-                {"size only", "#2ca02c", {}}, {"LOD map (thesis)", "#9467bd", {}}};
+    c.series = {{"all criteria", "#d62728", {}},
+                {"eccentricity + velocity", "#1f77b4", {}},
+                {"size only", "#2ca02c", {}},
+                {"LOD map (thesis)", "#9467bd", {}}};
     for (const Figure6Row& r : f6) {
       c.groups.push_back(std::to_string(r.objects) + " objects");
       c.series[0].values.push_back(r.all.lod_drawn);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `gazelod eval`'s output: markdown tables and SVG plots of the experiments
 // (apps/gazelod/eval_experiments.hpp), written into one folder.
 #pragma once

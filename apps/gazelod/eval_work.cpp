@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The eval work folder, machine name and report writing (see eval_work.hpp).
 #include "apps/gazelod/eval_work.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What the eval subcommands share: the work folder (a given one, or a temporary one removed on
 // the way out) and the machine's name for the reports.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // gazelod: the command-line program. Every sub-command is a cmd_*.cpp in this folder.
 #include "apps/gazelod/command.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "apps/gazelod/plot_axis.hpp"
 
 #include <algorithm>
@@ -64,7 +65,9 @@ Axis log_axis(double lo, double hi) {
   return a;
 }
 
-bool wants_log_axis(double lo, double hi) { return lo > 0.0 && std::isfinite(hi) && hi / lo >= 100.0; }
+bool wants_log_axis(double lo, double hi) {
+  return lo > 0.0 && std::isfinite(hi) && hi / lo >= 100.0;
+}
 
 std::string tick_label(double v) {
   if (!std::isfinite(v)) return "";
@@ -72,9 +75,12 @@ std::string tick_label(double v) {
   const double a = std::fabs(v);
   const char* suffix = "";
   double shown = v;
-  if (a >= 1e9) shown = v / 1e9, suffix = "G";
-  else if (a >= 1e6) shown = v / 1e6, suffix = "M";
-  else if (a >= 1e3) shown = v / 1e3, suffix = "k";
+  if (a >= 1e9)
+    shown = v / 1e9, suffix = "G";
+  else if (a >= 1e6)
+    shown = v / 1e6, suffix = "M";
+  else if (a >= 1e3)
+    shown = v / 1e3, suffix = "k";
   char buf[32];
   // Three significant digits, trailing zeros dropped ("%g"), never an exponent for what the
   // plots show (1e-4 and up; smaller values keep %g's own form).
@@ -87,6 +93,8 @@ std::string tick_label(double v) {
   return s + suffix;
 }
 
-double text_width_px(const std::string& text, double font_px) { return 0.6 * font_px * static_cast<double>(text.size()); }
+double text_width_px(const std::string& text, double font_px) {
+  return 0.6 * font_px * static_cast<double>(text.size());
+}
 
 }  // namespace gazelod::cli

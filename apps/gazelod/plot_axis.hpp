@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Axes a reader trusts at a glance, for every plot gazelod writes (svg_plot.hpp, compare_svg.hpp):
 // ticks at round values (1, 2 or 5 x 10^n; powers of ten on a log axis), labels of at most three
 // significant digits with k / M / G for thousands, millions, billions (never "3.069e+06"), and an

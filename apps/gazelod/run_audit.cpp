@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "apps/gazelod/run_audit.hpp"
 
 #include "apps/gazelod/eval_lod_map.hpp"
@@ -14,7 +15,9 @@
 namespace gazelod::cli {
 namespace {
 
-double ratio(double num, double den) { return den > 0.0 ? num / den : 0.0; }
+double ratio(double num, double den) {
+  return den > 0.0 ? num / den : 0.0;
+}
 
 std::uint64_t triangles_at(const std::vector<lod::LodLevel>& chain, std::uint8_t level) {
   if (chain.empty()) return 0;
@@ -103,8 +106,8 @@ AuditSummary summarize_audit(std::span<const AuditFrame> frames, double after_sa
   s.degraded_share = ratio(static_cast<double>(s.degraded), static_cast<double>(s.object_frames));
   s.excess_mean = ratio(static_cast<double>(excess_sum), static_cast<double>(s.degraded));
   s.triangle_ratio = ratio(static_cast<double>(s.drawn_triangles), static_cast<double>(s.oracle_triangles));
-  for (SwitchRate* r : {&s.switches_fixation, &s.switches_suppressed, &s.visible_switches_fixation,
-                        &s.oracle_switches_fixation})
+  for (SwitchRate* r :
+       {&s.switches_fixation, &s.switches_suppressed, &s.visible_switches_fixation, &s.oracle_switches_fixation})
     r->per_object_s = ratio(static_cast<double>(r->switches), r->object_s);
   s.pursuit_degraded_share = ratio(static_cast<double>(s.pursuit_degraded), static_cast<double>(s.pursuit_frames));
   return s;
@@ -114,8 +117,9 @@ nlohmann::json audit_json(const AuditSummary& s) {
   if (!s.available) return {{"available", false}, {"reason", s.reason}};
   return {
       {"available", true},
-      {"oracle", "lod::select_lods at the simulator's true gaze, head and objects; tracker error 0; "
-                 "the run's xi and criteria"},
+      {"oracle",
+       "lod::select_lods at the simulator's true gaze, head and objects; tracker error 0; "
+       "the run's xi and criteria"},
       {"frames", s.frames},
       {"suppression_window",
        {{"saccades", true},
@@ -150,7 +154,8 @@ void print_audit(const AuditSummary& s, std::ostream& out, bool breakdown) {
   }
   char line[320];
   std::snprintf(line, sizeof line,
-                "audit           oracle at the true gaze; suppression = saccades, blinks, %.0f ms after a saccade (%.1f%% of frames)\n",
+                "audit           oracle at the true gaze; suppression = saccades, blinks, %.0f ms after a saccade "
+                "(%.1f%% of frames)\n",
                 s.after_saccade_ms,
                 100.0 * ratio(static_cast<double>(s.suppressed_frames), static_cast<double>(s.frames)));
   out << line;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The visibility audit of `gazelod run` ("a saving counts only where it is invisible, and that
 // is measured"): the plugin sees a late, noisy tracker; the simulator knows the true gaze. Per
 // frame the oracle (AuditOracle) selects with lod::select_lods at the TRUE eye state (true head
@@ -36,33 +37,33 @@ bool in_suppression(const sim::EyeTruth& truth, std::int64_t t_ns, std::int64_t 
 
 // One frame's audit (a FrameRecord carries it; all zero when `available` is false).
 struct AuditFrame {
-  bool available = false;           // ground truth was computed for this frame
-  bool suppressed = false;          // the frame lies in a suppression window
-  bool pursuit = false;             // the truth says a pursuit is active
-  std::int64_t in_view = 0;         // objects in view
-  std::int64_t degraded = 0;        // in-view objects drawn coarser than the oracle's level
-  std::uint64_t excess_levels = 0;  // sum over those of (drawn - oracle)
-  std::uint32_t excess_max = 0;     // the largest (drawn - oracle) among them
+  bool available = false;              // ground truth was computed for this frame
+  bool suppressed = false;             // the frame lies in a suppression window
+  bool pursuit = false;                // the truth says a pursuit is active
+  std::int64_t in_view = 0;            // objects in view
+  std::int64_t degraded = 0;           // in-view objects drawn coarser than the oracle's level
+  std::uint64_t excess_levels = 0;     // sum over those of (drawn - oracle)
+  std::uint32_t excess_max = 0;        // the largest (drawn - oracle) among them
   std::uint64_t drawn_triangles = 0;   // in view, per eye
   std::uint64_t oracle_triangles = 0;  // in view, per eye, every object at the oracle's level
-  std::int64_t switches = 0;        // in-view objects whose drawn level differs from the previous frame's
-  std::int64_t visible_switches = 0;  // of those, switches whose coarser level the oracle does not allow
-  std::int64_t oracle_switches = 0;   // in-view objects whose oracle level differs from the previous frame's
-  double object_s = 0.0;            // in-view objects x the time since the previous frame (0 on the first)
-  int pursued = -1;                 // -1: no pursuit or its object not in view; 1: drawn coarser than
-                                    // the oracle's level; 0: not coarser
+  std::int64_t switches = 0;           // in-view objects whose drawn level differs from the previous frame's
+  std::int64_t visible_switches = 0;   // of those, switches whose coarser level the oracle does not allow
+  std::int64_t oracle_switches = 0;    // in-view objects whose oracle level differs from the previous frame's
+  double object_s = 0.0;               // in-view objects x the time since the previous frame (0 on the first)
+  int pursued = -1;                    // -1: no pursuit or its object not in view; 1: drawn coarser than
+                                       // the oracle's level; 0: not coarser
 };
 
 struct AuditFrameInput {
   const std::vector<std::vector<lod::LodLevel>>* chains = nullptr;  // indexed like the spans
-  std::span<const std::uint8_t> drawn;     // FrameDecisions::lod
-  std::span<const std::uint8_t> previous;  // the previous frame's drawn levels; empty on the first frame
-  std::span<const std::uint8_t> oracle;    // the oracle's levels
+  std::span<const std::uint8_t> drawn;                              // FrameDecisions::lod
+  std::span<const std::uint8_t> previous;         // the previous frame's drawn levels; empty on the first frame
+  std::span<const std::uint8_t> oracle;           // the oracle's levels
   std::span<const std::uint8_t> previous_oracle;  // the previous frame's; empty on the first frame
-  std::span<const std::uint8_t> in_view;   // 1: the object is in view
+  std::span<const std::uint8_t> in_view;          // 1: the object is in view
   bool suppressed = false;
-  int pursuit_object = -1;                 // sim::EyeTruth::pursuit_object
-  double frame_s = 0.0;                    // time since the previous frame (0 on the first)
+  int pursuit_object = -1;  // sim::EyeTruth::pursuit_object
+  double frame_s = 0.0;     // time since the previous frame (0 on the first)
 };
 
 // Counts one frame; objects beyond the shortest span are ignored. No allocation.
@@ -85,15 +86,15 @@ struct AuditSummary {
   std::int64_t object_frames = 0;
   std::int64_t degraded = 0;
   double degraded_share = 0.0;
-  double excess_mean = 0.0;            // mean (drawn - oracle) over the degraded object-frames
+  double excess_mean = 0.0;  // mean (drawn - oracle) over the degraded object-frames
   std::uint32_t excess_max = 0;
   std::int64_t degraded_suppressed = 0;  // the same inside suppression windows (invisible)
   std::int64_t object_frames_suppressed = 0;
   // Triangles in view over every frame, and drawn / oracle.
   std::uint64_t drawn_triangles = 0, oracle_triangles = 0;
   double triangle_ratio = 0.0;
-  SwitchRate switches_fixation;        // outside suppression (fixation, pursuit)
-  SwitchRate switches_suppressed;      // inside suppression windows
+  SwitchRate switches_fixation;    // outside suppression (fixation, pursuit)
+  SwitchRate switches_suppressed;  // inside suppression windows
   // Outside suppression: the switches whose change is itself above threshold (the coarser of
   // the two levels is coarser than the oracle allows), and the oracle's own switches (the rate
   // the true gaze itself requires). The targets use the raw count, switches_fixation.
@@ -123,8 +124,7 @@ class AuditOracle {
   // `objects`: the scenario objects audited, in the order of levels() and in_view() (those the
   // plugin got as objects; cluster meshes have their own audit, run_cluster_audit.hpp); empty:
   // every object, in scenario order. Indices past the scenario's objects are ignored.
-  AuditOracle(const sim::Scenario& scenario, const EnabledCriteria& criteria,
-              std::vector<std::size_t> objects = {},
+  AuditOracle(const sim::Scenario& scenario, const EnabledCriteria& criteria, std::vector<std::size_t> objects = {},
               std::int64_t after_saccade_ns = static_cast<std::int64_t>(kSuppressionAfterSaccadeMs * 1e6));
 
   // The truth at scenario time t (ns): levels(), in_view(), truth() and suppressed() hold it
@@ -134,8 +134,8 @@ class AuditOracle {
 
   std::span<const std::uint8_t> levels() const { return lod_; }
   std::span<const std::uint8_t> limited_by() const { return limited_; }  // lod::Criterion
-  std::span<const float> eccentricity_deg() const { return ecc_deg_; }  // nearest point, true gaze
-  std::span<const float> distance_m() const { return distance_m_; }     // eye to the sphere's surface
+  std::span<const float> eccentricity_deg() const { return ecc_deg_; }   // nearest point, true gaze
+  std::span<const float> distance_m() const { return distance_m_; }      // eye to the sphere's surface
   TrueGaze true_gaze() const { return true_gaze_; }
   std::span<const std::uint8_t> in_view() const { return in_view_; }
   const sim::EyeTruth& truth() const { return truth_; }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "apps/gazelod/run_audit_breakdown.hpp"
 
 #include "gaze/gaze_conditioner.hpp"
@@ -22,7 +23,9 @@ std::uint64_t triangles_at(const std::vector<lod::LodLevel>& chain, std::uint8_t
   return chain[std::min<std::size_t>(level, chain.size() - 1)].triangles;
 }
 
-double ratio(double num, double den) { return den > 0.0 ? num / den : 0.0; }
+double ratio(double num, double den) {
+  return den > 0.0 ? num / den : 0.0;
+}
 
 nlohmann::json cell_json(const BreakdownCell& c) {
   return {{"object_frames", c.object_frames},
@@ -79,8 +82,12 @@ void group_from(const nlohmann::json& j, const char* key, std::array<BreakdownCe
   }
 }
 
-const char* criterion_name(std::size_t i) { return lod::to_string(static_cast<lod::Criterion>(i)); }
-const char* estimate_name(std::size_t i) { return gaze::to_string(static_cast<gaze::EyeMotion>(i)); }
+const char* criterion_name(std::size_t i) {
+  return lod::to_string(static_cast<lod::Criterion>(i));
+}
+const char* estimate_name(std::size_t i) {
+  return gaze::to_string(static_cast<gaze::EyeMotion>(i));
+}
 
 }  // namespace
 
@@ -105,9 +112,9 @@ TrueGaze classify_true_gaze(const sim::EyeTruth& truth, bool suppressed, double 
 
 void add_breakdown_frame(const BreakdownFrameInput& in, AuditBreakdown& b) {
   if (in.chains == nullptr) return;
-  const std::size_t n = std::min({in.drawn.size(), in.perceptual.size(), in.oracle.size(),
-                                  in.oracle_limited_by.size(), in.in_view.size(), in.eccentricity_deg.size(),
-                                  in.distance_m.size(), in.chains->size()});
+  const std::size_t n =
+      std::min({in.drawn.size(), in.perceptual.size(), in.oracle.size(), in.oracle_limited_by.size(), in.in_view.size(),
+                in.eccentricity_deg.size(), in.distance_m.size(), in.chains->size()});
   BreakdownCell& by_gaze = b.gaze[static_cast<std::size_t>(in.gaze) % kTrueGazeCount];
   const double dt = std::max(0.0, in.frame_s);
   for (std::size_t i = 0; i < n; ++i) {
@@ -182,16 +189,16 @@ void print_breakdown(const AuditBreakdown& b, std::ostream& out) {
   const auto row = [&](const char* group, const char* name, const BreakdownCell& c) {
     if (c.object_frames == 0) return;
     char line[256];
-    std::snprintf(line, sizeof line,
-                  "  %-9s %-13s %5.1f%%  %6.3f  excess %4.1f%% + %4.1f%%  degraded %5.2f%%  switches %5.2f (%4.2f; %4.2f)\n",
-                  group, name, 100.0 * ratio(static_cast<double>(c.object_frames), static_cast<double>(frames)),
-                  ratio(static_cast<double>(c.drawn_triangles), static_cast<double>(c.oracle_triangles)),
-                  100.0 * ratio(static_cast<double>(c.excess_held), static_cast<double>(excess)),
-                  100.0 * ratio(static_cast<double>(c.excess_selected), static_cast<double>(excess)),
-                  100.0 * ratio(static_cast<double>(c.degraded), static_cast<double>(c.object_frames)),
-                  ratio(static_cast<double>(c.switches), c.object_s),
-                  ratio(static_cast<double>(c.visible_switches), c.object_s),
-                  ratio(static_cast<double>(c.oracle_switches), c.object_s));
+    std::snprintf(
+        line, sizeof line,
+        "  %-9s %-13s %5.1f%%  %6.3f  excess %4.1f%% + %4.1f%%  degraded %5.2f%%  switches %5.2f (%4.2f; %4.2f)\n",
+        group, name, 100.0 * ratio(static_cast<double>(c.object_frames), static_cast<double>(frames)),
+        ratio(static_cast<double>(c.drawn_triangles), static_cast<double>(c.oracle_triangles)),
+        100.0 * ratio(static_cast<double>(c.excess_held), static_cast<double>(excess)),
+        100.0 * ratio(static_cast<double>(c.excess_selected), static_cast<double>(excess)),
+        100.0 * ratio(static_cast<double>(c.degraded), static_cast<double>(c.object_frames)),
+        ratio(static_cast<double>(c.switches), c.object_s), ratio(static_cast<double>(c.visible_switches), c.object_s),
+        ratio(static_cast<double>(c.oracle_switches), c.object_s));
     out << line;
   };
   for (std::size_t i = 0; i < kTrueGazeCount; ++i) row("gaze", kGazeNames[i], b.gaze[i]);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Where the audit's figures come from: the object-frames of a run split three ways, so that a
 // triangle ratio above 1 or a switch rate above the oracle's can be traced to a cause.
 //   - the true gaze state (from the simulator, never the plugin's estimate): a fixation with a
@@ -50,11 +51,11 @@ inline constexpr std::size_t kObjectClassCount = 4;
 const char* to_string(ObjectClass c);
 
 struct BreakdownCell {
-  std::int64_t object_frames = 0;      // in view
-  std::int64_t degraded = 0;           // drawn coarser than the oracle
+  std::int64_t object_frames = 0;  // in view
+  std::int64_t degraded = 0;       // drawn coarser than the oracle
   std::uint64_t drawn_triangles = 0, oracle_triangles = 0;
-  std::uint64_t excess_held = 0;       // drawn finer than perceptual (the switch policy's hold)
-  std::uint64_t excess_selected = 0;   // perceptual finer than the oracle (the selection's margin)
+  std::uint64_t excess_held = 0;      // drawn finer than perceptual (the switch policy's hold)
+  std::uint64_t excess_selected = 0;  // perceptual finer than the oracle (the selection's margin)
   std::int64_t switches = 0, visible_switches = 0, oracle_switches = 0;
   double object_s = 0.0;
 };
@@ -68,13 +69,13 @@ struct AuditBreakdown {
 
 struct BreakdownFrameInput {
   const std::vector<std::vector<lod::LodLevel>>* chains = nullptr;
-  std::span<const std::uint8_t> drawn, previous;            // previous empty on the first frame
-  std::span<const std::uint8_t> perceptual;                 // the plugin's level before switching
-  std::span<const std::uint8_t> oracle, previous_oracle;    // previous_oracle empty on the first frame
-  std::span<const std::uint8_t> oracle_limited_by;          // lod::Criterion
+  std::span<const std::uint8_t> drawn, previous;          // previous empty on the first frame
+  std::span<const std::uint8_t> perceptual;               // the plugin's level before switching
+  std::span<const std::uint8_t> oracle, previous_oracle;  // previous_oracle empty on the first frame
+  std::span<const std::uint8_t> oracle_limited_by;        // lod::Criterion
   std::span<const std::uint8_t> in_view;
-  std::span<const float> eccentricity_deg;                  // the oracle's, to the nearest point
-  std::span<const float> distance_m;                        // eye to the sphere's surface
+  std::span<const float> eccentricity_deg;  // the oracle's, to the nearest point
+  std::span<const float> distance_m;        // eye to the sphere's surface
   TrueGaze gaze = TrueGaze::fixation;
   std::uint8_t estimate = 0;  // gaze::EyeMotion, FrameDiagnostics::eye_motion
   double frame_s = 0.0;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "apps/gazelod/run_cluster_audit.hpp"
 
 #include "auxiliary/text.hpp"
@@ -14,15 +15,15 @@
 namespace gazelod::cli {
 namespace {
 
-double ratio(double num, double den) { return den > 0.0 ? num / den : 0.0; }
+double ratio(double num, double den) {
+  return den > 0.0 ? num / den : 0.0;
+}
 
 }  // namespace
 
 void count_cluster_leaves(const ClusterLeafInput& in, ClusterAuditFrame& f) {
   const std::size_t n = std::min({in.drawn.size(), in.oracle.size(), in.in_view.size()});
-  const auto depth = [&](std::uint32_t c) -> std::int64_t {
-    return c < in.depth_of.size() ? in.depth_of[c] : 0;
-  };
+  const auto depth = [&](std::uint32_t c) -> std::int64_t { return c < in.depth_of.size() ? in.depth_of[c] : 0; };
   for (std::size_t k = 0; k < n; ++k) {
     if (!in.in_view[k]) continue;
     ++f.leaves_in_view;
@@ -71,7 +72,8 @@ ClusterAuditOracle::ClusterAuditOracle(const ClusterScene& scene) {
   record_flags_.assign(store_.record_count(), 0);
 }
 
-void ClusterAuditOracle::set_pose(std::size_t mesh, const lod::InstanceTransform& pose, const glm::dvec3& velocity_m_s) {
+void ClusterAuditOracle::set_pose(std::size_t mesh, const lod::InstanceTransform& pose,
+                                  const glm::dvec3& velocity_m_s) {
   if (mesh >= local_.size()) throw std::out_of_range("cluster audit: mesh " + std::to_string(mesh) + " out of range");
   store_.set_pose(static_cast<std::uint32_t>(mesh), *local_[mesh], pose, velocity_m_s);
 }
@@ -81,8 +83,9 @@ ClusterAuditFrame ClusterAuditOracle::audit(const lod::Viewer& truth, const glm:
                                             bool suppressed, double frame_s, std::string* error) {
   ClusterAuditFrame f;
   if (drawn.size() != store_.size()) {
-    if (error) *error = "the drawn cut has " + std::to_string(drawn.size()) + " clusters, the oracle " +
-                        std::to_string(store_.size());
+    if (error)
+      *error = "the drawn cut has " + std::to_string(drawn.size()) + " clusters, the oracle " +
+               std::to_string(store_.size());
     return f;
   }
   const lod::ClusterSet set = store_.view();
@@ -174,29 +177,31 @@ nlohmann::json cluster_audit_json(const ClusterAuditSummary& s) {
   const auto rate = [](std::int64_t n, double leaf_s, double per) {
     return nlohmann::json{{"switches", n}, {"leaf_seconds", leaf_s}, {"per_leaf_second", per}};
   };
-  return {{"available", true},
-          {"oracle", "lod::select_clusters at the simulator's true gaze and head, tracker error 0, the run's xi "
-                     "and criteria, no switch policy"},
-          {"frames", s.frames},
-          {"visible_degradations",
-           {{"leaf_frames", s.leaf_frames},
-            {"degraded", s.degraded},
-            {"share", s.degraded_share},
-            {"excess_depth_mean", s.excess_depth_mean},
-            {"excess_depth_max", s.excess_depth_max}}},
-          {"suppressed_degradations", {{"leaf_frames", s.leaf_frames_suppressed}, {"degraded", s.degraded_suppressed}}},
-          {"triangles_in_view",
-           {{"drawn", s.drawn_triangles},
-            {"oracle", s.oracle_triangles},
-            {"drawn_over_oracle", s.triangle_ratio},
-            {"oracle_by_criterion_alone",
-             {{"size", s.oracle_size_only_triangles},
-              {"eccentricity", s.oracle_eccentricity_only_triangles},
-              {"velocity", s.oracle_velocity_only_triangles}}}}},
-          {"switches",
-           {{"outside_suppression", rate(s.switches_fixation, s.leaf_s_fixation, s.switches_per_leaf_s_fixation)},
-            {"inside_suppression", rate(s.switches_suppressed, s.leaf_s_suppressed, s.switches_per_leaf_s_suppressed)}}},
-          {"miscovered_leaf_frames", s.miscovered}};
+  return {
+      {"available", true},
+      {"oracle",
+       "lod::select_clusters at the simulator's true gaze and head, tracker error 0, the run's xi "
+       "and criteria, no switch policy"},
+      {"frames", s.frames},
+      {"visible_degradations",
+       {{"leaf_frames", s.leaf_frames},
+        {"degraded", s.degraded},
+        {"share", s.degraded_share},
+        {"excess_depth_mean", s.excess_depth_mean},
+        {"excess_depth_max", s.excess_depth_max}}},
+      {"suppressed_degradations", {{"leaf_frames", s.leaf_frames_suppressed}, {"degraded", s.degraded_suppressed}}},
+      {"triangles_in_view",
+       {{"drawn", s.drawn_triangles},
+        {"oracle", s.oracle_triangles},
+        {"drawn_over_oracle", s.triangle_ratio},
+        {"oracle_by_criterion_alone",
+         {{"size", s.oracle_size_only_triangles},
+          {"eccentricity", s.oracle_eccentricity_only_triangles},
+          {"velocity", s.oracle_velocity_only_triangles}}}}},
+      {"switches",
+       {{"outside_suppression", rate(s.switches_fixation, s.leaf_s_fixation, s.switches_per_leaf_s_fixation)},
+        {"inside_suppression", rate(s.switches_suppressed, s.leaf_s_suppressed, s.switches_per_leaf_s_suppressed)}}},
+      {"miscovered_leaf_frames", s.miscovered}};
 }
 
 void print_cluster_audit(const ClusterAuditSummary& s, std::ostream& out) {
@@ -267,8 +272,8 @@ void print_cluster_run(const ClusterRunSummary& s, std::int64_t frames, std::ost
   std::snprintf(line, sizeof line,
                 "clusters        %s, %zu clusters (%zu leaves): %.0f triangles drawn per frame of %.0f at "
                 "full detail (%.1f%%, per eye; %.0f before the switch policy)\n",
-                aux::counted(s.meshes, "mesh", "meshes").c_str(), s.clusters, s.leaves, static_cast<double>(s.triangles_drawn) / n,
-                static_cast<double>(s.triangles_full) / n,
+                aux::counted(s.meshes, "mesh", "meshes").c_str(), s.clusters, s.leaves,
+                static_cast<double>(s.triangles_drawn) / n, static_cast<double>(s.triangles_full) / n,
                 100.0 * ratio(static_cast<double>(s.triangles_drawn), static_cast<double>(s.triangles_full)),
                 static_cast<double>(s.triangles_perceptual) / n);
   out << line;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The visibility audit of `gazelod run` for cluster meshes (run_audit.hpp is the one for
 // objects; the same suppression windows and the same truth). Per frame an oracle cut is
 // selected with lod::select_clusters at the TRUE eye state (the per-object oracle's viewer:
@@ -37,17 +38,17 @@ struct ClusterAuditFrame {
   bool available = false;
   bool suppressed = false;
   std::int64_t leaves_in_view = 0;
-  std::int64_t degraded = 0;           // in-view leaves drawn coarser than the oracle's cut
-  std::uint64_t excess_depth = 0;      // over those: depth of the drawn cluster over the leaf minus the oracle's (>= 0)
+  std::int64_t degraded = 0;       // in-view leaves drawn coarser than the oracle's cut
+  std::uint64_t excess_depth = 0;  // over those: depth of the drawn cluster over the leaf minus the oracle's (>= 0)
   std::uint32_t excess_depth_max = 0;
-  std::uint64_t drawn_triangles = 0;   // in view (self sphere), per eye
+  std::uint64_t drawn_triangles = 0;  // in view (self sphere), per eye
   std::uint64_t oracle_triangles = 0;
   // The oracle's cut under size / eccentricity / velocity alone, in view, per eye.
   std::uint64_t oracle_size_only_triangles = 0, oracle_eccentricity_only_triangles = 0,
                 oracle_velocity_only_triangles = 0;
-  std::int64_t switches = 0;           // in-view leaves whose cluster changed since the previous frame
-  double leaf_s = 0.0;                 // in-view leaves x the time since the previous frame
-  std::int64_t miscovered = 0;         // leaves (in view or not) not covered exactly once by the drawn cut
+  std::int64_t switches = 0;    // in-view leaves whose cluster changed since the previous frame
+  double leaf_s = 0.0;          // in-view leaves x the time since the previous frame
+  std::int64_t miscovered = 0;  // leaves (in view or not) not covered exactly once by the drawn cut
 };
 
 // Per leaf, both cuts' covers (run_cluster_cover.hpp) and what the counting needs.
@@ -74,8 +75,8 @@ class ClusterAuditOracle {
   // (0 on the first). The frame is not available (and "why" is said in `error`) when the
   // oracle's selection refuses its input or drawn has the wrong length.
   ClusterAuditFrame audit(const lod::Viewer& truth, const glm::dvec3& eye_m, const glm::dquat& head,
-                          const lod::FovRad& fov, std::span<const std::uint8_t> drawn, bool suppressed,
-                          double frame_s, std::string* error = nullptr);
+                          const lod::FovRad& fov, std::span<const std::uint8_t> drawn, bool suppressed, double frame_s,
+                          std::string* error = nullptr);
 
   std::span<const std::uint8_t> oracle_drawn() const { return oracle_drawn_; }
 
@@ -86,14 +87,14 @@ class ClusterAuditOracle {
  private:
   lod::ClusterStore store_;
   std::vector<const lod::ClusterHierarchy*> local_;  // per mesh: its own space (the scene's)
-  std::vector<ClusterCover> covers_;            // per mesh
-  std::vector<std::uint32_t> first_, count_;    // per mesh: clusters
-  std::vector<std::uint32_t> leaf_first_;       // per mesh: into the per-leaf arrays
-  std::vector<std::uint32_t> triangles_;        // per cluster
-  std::vector<std::uint8_t> depth_;             // per cluster
+  std::vector<ClusterCover> covers_;                 // per mesh
+  std::vector<std::uint32_t> first_, count_;         // per mesh: clusters
+  std::vector<std::uint32_t> leaf_first_;            // per mesh: into the per-leaf arrays
+  std::vector<std::uint32_t> triangles_;             // per cluster
+  std::vector<std::uint8_t> depth_;                  // per cluster
   std::vector<std::uint8_t> oracle_drawn_, limited_, in_view_, leaf_in_view_;
   std::vector<std::uint8_t> size_only_, eccentricity_only_, velocity_only_;  // per cluster
-  std::vector<std::uint32_t> record_flags_;  // per distinct record: the selection's scratch
+  std::vector<std::uint32_t> record_flags_;            // per distinct record: the selection's scratch
   std::vector<LeafCover> drawn_cover_, oracle_cover_;  // per leaf
   std::vector<std::uint32_t> previous_cover_;          // per leaf
   bool first_frame_ = true;
@@ -106,17 +107,17 @@ struct ClusterAuditSummary {
   std::int64_t leaf_frames = 0;
   std::int64_t degraded = 0;
   double degraded_share = 0.0;
-  double excess_depth_mean = 0.0;      // over the degraded leaf-frames
+  double excess_depth_mean = 0.0;  // over the degraded leaf-frames
   std::uint32_t excess_depth_max = 0;
   std::int64_t leaf_frames_suppressed = 0, degraded_suppressed = 0;
   std::uint64_t drawn_triangles = 0, oracle_triangles = 0;
   std::uint64_t oracle_size_only_triangles = 0, oracle_eccentricity_only_triangles = 0,
                 oracle_velocity_only_triangles = 0;
-  double triangle_ratio = 0.0;         // drawn / oracle (0 when the oracle drew none)
+  double triangle_ratio = 0.0;  // drawn / oracle (0 when the oracle drew none)
   std::int64_t switches_fixation = 0, switches_suppressed = 0;
   double leaf_s_fixation = 0.0, leaf_s_suppressed = 0.0;
   double switches_per_leaf_s_fixation = 0.0, switches_per_leaf_s_suppressed = 0.0;
-  std::int64_t miscovered = 0;         // leaf-frames, all frames
+  std::int64_t miscovered = 0;  // leaf-frames, all frames
 };
 
 ClusterAuditSummary summarize_cluster_audit(std::span<const ClusterAuditFrame> frames);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "apps/gazelod/run_cluster_cover.hpp"
 
 #include <algorithm>
@@ -30,12 +31,13 @@ LeafCover coarser(const LeafCover& a, const LeafCover& b) {
 
 ClusterCover::ClusterCover(const lod::ClusterHierarchy& h) {
   const std::size_t n = h.size();
-  for (const auto* v : {&h.self_center_x_m, &h.self_center_y_m, &h.self_center_z_m, &h.self_radius_m,
-                        &h.parent_center_x_m, &h.parent_center_y_m, &h.parent_center_z_m, &h.parent_radius_m,
-                        &h.parent_error_m})
+  for (const auto* v :
+       {&h.self_center_x_m, &h.self_center_y_m, &h.self_center_z_m, &h.self_radius_m, &h.parent_center_x_m,
+        &h.parent_center_y_m, &h.parent_center_z_m, &h.parent_radius_m, &h.parent_error_m})
     if (v->size() != n) throw std::invalid_argument("cluster cover: the hierarchy's record arrays differ in length");
-  if (h.depth.size() != n) throw std::invalid_argument("cluster cover: depth has " + std::to_string(h.depth.size()) +
-                                                       " entries for " + std::to_string(n) + " clusters");
+  if (h.depth.size() != n)
+    throw std::invalid_argument("cluster cover: depth has " + std::to_string(h.depth.size()) + " entries for " +
+                                std::to_string(n) + " clusters");
   if (n > static_cast<std::size_t>(INT32_MAX)) throw std::invalid_argument("cluster cover: too many clusters");
   self_error_ = h.self_error_m;
   parent_group_.assign(n, -1);
@@ -52,8 +54,8 @@ ClusterCover::ClusterCover(const lod::ClusterHierarchy& h) {
     if (h.depth[c] == 0) {
       leaves_.push_back(c);
     } else {
-      const RecordKey self = key(h.self_center_x_m[c], h.self_center_y_m[c], h.self_center_z_m[c],
-                                 h.self_radius_m[c], h.self_error_m[c]);
+      const RecordKey self =
+          key(h.self_center_x_m[c], h.self_center_y_m[c], h.self_center_z_m[c], h.self_radius_m[c], h.self_error_m[c]);
       if (has_parent && self == parent) continue;  // passed through unchanged: never drawn, left out
       produced.emplace_back(group_of(self), c);
     }
@@ -70,7 +72,7 @@ ClusterCover::ClusterCover(const lod::ClusterHierarchy& h) {
   // Parents first: an iterative depth-first search that emits a group once every group above
   // it (a parent group of one of its outputs) has been emitted; a group met again while still
   // on the stack closes a cycle.
-  std::vector<std::uint8_t> state(g_count, 0);  // 0 new, 1 on the stack, 2 emitted
+  std::vector<std::uint8_t> state(g_count, 0);                 // 0 new, 1 on the stack, 2 emitted
   std::vector<std::pair<std::uint32_t, std::uint32_t>> stack;  // (group, next output)
   order_.reserve(g_count);
   for (std::uint32_t root = 0; root < g_count; ++root) {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Which cluster of a cut lies over each leaf (source cluster) of one cluster hierarchy
 // (lod/cluster_hierarchy.hpp): what the per-cluster audit (run_cluster_audit.hpp) compares
 // between the drawn cut and the oracle's, and the check that a cut covers every leaf exactly
@@ -69,12 +70,12 @@ class ClusterCover {
   Up above(std::uint32_t cluster, std::span<const std::uint8_t> drawn) const;
 
   std::vector<float> self_error_;
-  std::vector<std::int32_t> parent_group_;           // per cluster; -1: no parent (or left out)
-  std::vector<std::uint32_t> group_first_output_;    // CSR over outputs_, group_count() + 1
+  std::vector<std::int32_t> parent_group_;         // per cluster; -1: no parent (or left out)
+  std::vector<std::uint32_t> group_first_output_;  // CSR over outputs_, group_count() + 1
   std::vector<std::uint32_t> outputs_;
-  std::vector<std::uint32_t> order_;                 // groups, every parent group before its children's
+  std::vector<std::uint32_t> order_;  // groups, every parent group before its children's
   std::vector<std::uint32_t> leaves_;
-  std::vector<Up> group_up_;                         // per frame, per group
+  std::vector<Up> group_up_;  // per frame, per group
 };
 
 }  // namespace gazelod::cli

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "apps/gazelod/run_cluster_decisions.hpp"
 
 #include "apps/gazelod/run_report.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `gazelod run --cluster-decisions FILE`: the cut drawn in every frame, one row per drawn
 // cluster, so that a researcher can see where the detail went on a large mesh (the
 // per-object levels are --decisions' wide table; a cut has too many clusters for columns).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "apps/gazelod/run_cluster_scene.hpp"
 
 #include "apps/gazelod/command.hpp"
@@ -55,7 +56,8 @@ std::uint64_t ClusterScene::triangles_of(std::span<const std::uint8_t> drawn) co
   return n;
 }
 
-ClusterScene make_cluster_scene(const bake::BakedScene& baked, const glm::dvec3& shift_m, const sim::Scenario& scenario) {
+ClusterScene make_cluster_scene(const bake::BakedScene& baked, const glm::dvec3& shift_m,
+                                const sim::Scenario& scenario) {
   ClusterScene scene;
   scene.drawn_as_clusters.assign(scenario.objects.size(), 0);
   const std::size_t n = std::min(scenario.objects.size(), baked.objects.size());
@@ -94,7 +96,8 @@ ClusterMotion::ClusterMotion(const ClusterScene& scene)
   changed_.reserve(scene.meshes.size());
 }
 
-std::span<const std::size_t> ClusterMotion::update(const sim::Scenario& scenario, std::span<const sim::ObjectState> now) {
+std::span<const std::size_t> ClusterMotion::update(const sim::Scenario& scenario,
+                                                   std::span<const sim::ObjectState> now) {
   changed_.clear();
   for (std::size_t k = 0; k < scene_.meshes.size(); ++k) {
     const ClusterMesh& m = scene_.meshes[k];
@@ -119,8 +122,8 @@ void register_cluster_meshes(const ClusterScene& scene, LodPlugin& plugin) {
     try {
       const std::uint32_t id = plugin.add_cluster_mesh(d);
       if (id != k)
-        throw UsageError("--scene: cluster mesh '" + m.label + "' got plugin id " + std::to_string(id) +
-                             ", expected " + std::to_string(k),
+        throw UsageError("--scene: cluster mesh '" + m.label + "' got plugin id " + std::to_string(id) + ", expected " +
+                             std::to_string(k),
                          1);
     } catch (const std::invalid_argument& e) {
       throw UsageError("--scene: cluster mesh '" + m.label + "': " + e.what());

@@ -1,12 +1,13 @@
+// SPDX-License-Identifier: Apache-2.0
 // `gazelod run --scene F` where F has cluster hierarchies (gazelod bake --clusters): which of
 // the scene's objects are drawn as cluster cuts, their poses in LOCAL space, their
 // registration with the plugin (LodPlugin::add_cluster_mesh) and their triangle counts.
 //
 // Every node whose mesh has GAZELOD_cluster_lod becomes one cluster mesh per such primitive,
 // posed by the node's world transform followed by the --scene-placement shift, and moved
-// with its scenario object (an object_motion effect moves positions only: ClusterMotion). The plugin's pose is rotation, translation and a uniform scale; a node whose world
-// transform has a non-uniform scale, a shear, a mirror or a projective row cannot be posed so
-// and stays a plain object (its one-level chain), with a note saying why.
+// with its scenario object (an object_motion effect moves positions only: ClusterMotion). The plugin's pose is
+// rotation, translation and a uniform scale; a node whose world transform has a non-uniform scale, a shear, a mirror or
+// a projective row cannot be posed so and stays a plain object (its one-level chain), with a note saying why.
 #pragma once
 
 #include "bake/baked_scene.hpp"
@@ -30,24 +31,23 @@ inline constexpr double kUniformScaleTolerance = 1e-5;
 // world (glTF column-major, mesh space -> glTF world) followed by a translation shift_m as an
 // InstanceTransform. Returns "" or why it has none (non-finite, projective, sheared,
 // non-uniformly scaled, mirrored or degenerate), leaving `out` untouched.
-std::string instance_transform_of(const glm::dmat4& world, const glm::dvec3& shift_m,
-                                  lod::InstanceTransform& out);
+std::string instance_transform_of(const glm::dmat4& world, const glm::dvec3& shift_m, lod::InstanceTransform& out);
 
 struct ClusterMesh {
-  std::size_t object = 0;                                 // scenario (= baked) object index
-  std::string label;                                      // "Terrain primitive 0"
+  std::size_t object = 0;                                  // scenario (= baked) object index
+  std::string label;                                       // "Terrain primitive 0"
   const bake::BakedClusterPrimitive* primitive = nullptr;  // owned by the BakedScene
-  lod::InstanceTransform pose;                            // mesh space -> LOCAL
-  std::uint64_t full_triangles = 0;                       // its leaves' (source) triangles
+  lod::InstanceTransform pose;                             // mesh space -> LOCAL
+  std::uint64_t full_triangles = 0;                        // its leaves' (source) triangles
 };
 
 struct ClusterScene {
-  std::vector<ClusterMesh> meshes;              // plugin cluster-mesh id = index
-  std::vector<std::uint8_t> drawn_as_clusters;  // per scenario object: 1 when its meshes are here
-  std::vector<std::uint32_t> first_cluster;     // per mesh, into the back-to-back cluster arrays
-  std::vector<std::uint32_t> cluster_triangles; // per cluster, meshes back to back
-  std::uint64_t full_triangles = 0;             // every mesh at full detail (its leaves)
-  std::vector<std::string> notes;               // objects left plain, and why
+  std::vector<ClusterMesh> meshes;               // plugin cluster-mesh id = index
+  std::vector<std::uint8_t> drawn_as_clusters;   // per scenario object: 1 when its meshes are here
+  std::vector<std::uint32_t> first_cluster;      // per mesh, into the back-to-back cluster arrays
+  std::vector<std::uint32_t> cluster_triangles;  // per cluster, meshes back to back
+  std::uint64_t full_triangles = 0;              // every mesh at full detail (its leaves)
+  std::vector<std::string> notes;                // objects left plain, and why
 
   std::size_t cluster_count() const { return cluster_triangles.size(); }
   bool empty() const { return meshes.empty(); }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "apps/gazelod/run_render.hpp"
 
 #include "gaze/atomic_file.hpp"
@@ -37,7 +38,8 @@ void unit_positions(const ClusterMesh& m, std::vector<glm::vec3>& unit, glm::dve
   const glm::dquat rotation = glm::normalize(m.pose.rotation);
   glm::dvec3 lo(0.0), hi(0.0);
   for (std::size_t v = 0; v < world.size(); ++v) {
-    world[v] = m.pose.translation_m + m.pose.scale * (rotation * glm::dvec3(xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]));
+    world[v] =
+        m.pose.translation_m + m.pose.scale * (rotation * glm::dvec3(xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]));
     lo = v == 0 ? world[v] : glm::min(lo, world[v]);
     hi = v == 0 ? world[v] : glm::max(hi, world[v]);
   }
@@ -75,8 +77,8 @@ RunRenderer::RunRenderer(xr_host::XrApp& app, const std::vector<std::vector<lod:
   std::vector<std::uint32_t> indices;
   for (std::size_t i = 0; i < chains.size(); ++i) {
     const bake::BakedObject* o = i < baked.size() ? baked[i] : nullptr;
-    const bool own = o != nullptr && o->level_meshes.size() == chains[i].size() && o->radius_m > 0.0 &&
-                     std::isfinite(o->radius_m);
+    const bool own =
+        o != nullptr && o->level_meshes.size() == chains[i].size() && o->radius_m > 0.0 && std::isfinite(o->radius_m);
     std::vector<std::uint32_t> ids;
     for (std::size_t l = 0; l < chains[i].size(); ++l) {
       if (!own) {
@@ -146,8 +148,8 @@ void RunRenderer::render_eye(std::size_t eye, std::uint32_t image_index, const X
     const auto& ids = mesh_ids_[i];
     if (ids.empty()) continue;  // an object without levels has nothing to draw
     const std::size_t level = std::min<std::size_t>(decisions.lod[i], ids.size() - 1);
-    items_.push_back({glm::vec3(positions_m[i]), static_cast<float>(radii_m[i]), ids[level],
-                      static_cast<std::uint32_t>(level)});
+    items_.push_back(
+        {glm::vec3(positions_m[i]), static_cast<float>(radii_m[i]), ids[level], static_cast<std::uint32_t>(level)});
   }
   for (std::size_t k = 0; k < clusters_.size(); ++k) {
     const ClusterDraw& m = clusters_[k];
@@ -164,10 +166,9 @@ void RunRenderer::render_eye(std::size_t eye, std::uint32_t image_index, const X
     // Around this eye's own position, so the circle sits on the gaze in each eye's image.
     const std::size_t first = items_.size();
     items_.resize(first + render::kFovealMarkerDots);
-    const std::size_t written = render::foveal_circle(
-        eye_view.pose.position_m, diagnostics.foveal_cone.axis,
-        diagnostics.foveal_cone.half_angle_rad * lod::kDegPerRad, marker_mesh_,
-        std::span(items_).subspan(first));
+    const std::size_t written = render::foveal_circle(eye_view.pose.position_m, diagnostics.foveal_cone.axis,
+                                                      diagnostics.foveal_cone.half_angle_rad * lod::kDegPerRad,
+                                                      marker_mesh_, std::span(items_).subspan(first));
     items_.resize(first + written);
   }
   r.draw(image_index, eye_view, items_);
@@ -179,6 +180,8 @@ void RunRenderer::save_png(std::size_t eye, std::uint32_t image_index, const std
   gaze::write_file_atomic(file.string(), std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
 }
 
-std::uint64_t RunRenderer::triangles_drawn(std::size_t eye) const { return renderer(eye).triangles_last_frame(); }
+std::uint64_t RunRenderer::triangles_drawn(std::size_t eye) const {
+  return renderer(eye).triangles_last_frame();
+}
 
 }  // namespace gazelod::cli

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `gazelod run`'s drawing: each eye's swapchain image gets every object at the LOD the plugin
 // chose, tinted by level (a --scene object with its levels' own triangles; a scenario's
 // generated object, which has no geometry, as a stand-in sphere of the level's triangle
@@ -66,16 +67,16 @@ class RunRenderer {
 
   render::MeshLibrary meshes_;
   std::vector<std::vector<std::uint32_t>> mesh_ids_;  // [object][level] -> MeshLibrary id
-  struct ClusterDraw {                               // one cluster mesh
-    glm::vec3 center_m{0.0f};                        // its positions' frame in LOCAL space
+  struct ClusterDraw {                                // one cluster mesh
+    glm::vec3 center_m{0.0f};                         // its positions' frame in LOCAL space
     float radius_m = 1.0f;
-    std::uint32_t first_mesh = 0;                    // MeshLibrary id of its cluster 0
-    std::uint32_t first_cluster = 0;                 // into FrameDecisions::cluster_drawn
-    std::vector<std::uint8_t> depth;                 // per cluster: the tint
+    std::uint32_t first_mesh = 0;     // MeshLibrary id of its cluster 0
+    std::uint32_t first_cluster = 0;  // into FrameDecisions::cluster_drawn
+    std::vector<std::uint8_t> depth;  // per cluster: the tint
   };
   std::vector<ClusterDraw> clusters_;
   std::vector<std::unique_ptr<render::FrameRenderer>> eyes_;
-  std::vector<render::DrawItem> items_;               // reused each frame: no allocation
+  std::vector<render::DrawItem> items_;  // reused each frame: no allocation
   std::uint32_t marker_mesh_ = 0;
   bool foveal_circle_ = true;
 };

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "apps/gazelod/run_report.hpp"
 
 #include "auxiliary/text.hpp"
@@ -24,7 +25,9 @@
 namespace gazelod::cli {
 namespace {
 
-double safe_ratio(double num, double den) { return den > 0.0 ? num / den : 0.0; }
+double safe_ratio(double num, double den) {
+  return den > 0.0 ? num / den : 0.0;
+}
 
 // Levels 0 to the coarsest that occurred (at least 0-3): what the reports list.
 int reported_levels(const RunSummary& s) {
@@ -33,7 +36,6 @@ int reported_levels(const RunSummary& s) {
     if (s.lod_histogram[i] != 0) n = std::max(n, i + 1);
   return n;
 }
-
 
 }  // namespace
 
@@ -107,8 +109,7 @@ RunSummary summarize(const std::vector<FrameRecord>& frames, double budget_ms) {
   s.shares.size = safe_ratio(r_size, r_all);
   s.shares.eccentricity = safe_ratio(r_all - r_sv, r_all);
   s.shares.velocity = safe_ratio(r_all - r_se, r_all);
-  s.shares.interaction =
-      r_all > 0.0 ? 1.0 - s.shares.size - s.shares.eccentricity - s.shares.velocity : 0.0;
+  s.shares.interaction = r_all > 0.0 ? 1.0 - s.shares.size - s.shares.eccentricity - s.shares.velocity : 0.0;
   std::vector<AuditFrame> audits;
   std::vector<ClusterAuditFrame> cluster_audits;
   audits.reserve(frames.size());
@@ -127,8 +128,8 @@ void print_per_object(const RunSummary& s, std::ostream& out);
 void print_summary(const RunInfo& info, const RunSummary& s, std::ostream& out, bool breakdown) {
   char line[256];
   out << "\n== gazelod run: " << info.scenario << " ==\n";
-  out << "hmd " << info.hmd << ", runtime " << info.runtime << ", device " << info.device
-      << ", criteria " << info.criteria << "\n";
+  out << "hmd " << info.hmd << ", runtime " << info.runtime << ", device " << info.device << ", criteria "
+      << info.criteria << "\n";
   std::snprintf(line, sizeof line, "frames          %lld%s\n", static_cast<long long>(s.frames),
                 s.interrupted.empty() ? "" : (" (interrupted by " + s.interrupted + ")").c_str());
   out << line;
@@ -143,15 +144,16 @@ void print_summary(const RunInfo& info, const RunSummary& s, std::ostream& out, 
   } else {
     print_per_object(s, out);
   }
-  std::snprintf(line, sizeof line, "gaze            valid in %.1f%% of frames, %s",
-                100.0 * safe_ratio(static_cast<double>(s.gaze_valid_frames), static_cast<double>(s.frames)),
-                aux::counted(static_cast<std::uint64_t>(std::max<std::int64_t>(0, s.saccades)), "saccade", "saccades").c_str());
+  std::snprintf(
+      line, sizeof line, "gaze            valid in %.1f%% of frames, %s",
+      100.0 * safe_ratio(static_cast<double>(s.gaze_valid_frames), static_cast<double>(s.frames)),
+      aux::counted(static_cast<std::uint64_t>(std::max<std::int64_t>(0, s.saccades)), "saccade", "saccades").c_str());
   out << line;
   if (s.gaze_bad_samples > 0) out << ", " << s.gaze_bad_samples << " bad samples refused (NaN, zero or backwards)";
   out << "\n";
   if (info.budget_ms > 0.0) {
-    std::snprintf(line, sizeof line, "budget          %.3f ms, exceeded in %lld frames (%.1f%%)\n",
-                  info.budget_ms, static_cast<long long>(s.frames_over_budget),
+    std::snprintf(line, sizeof line, "budget          %.3f ms, exceeded in %lld frames (%.1f%%)\n", info.budget_ms,
+                  static_cast<long long>(s.frames_over_budget),
                   100.0 * safe_ratio(static_cast<double>(s.frames_over_budget), static_cast<double>(s.frames)));
     out << line;
   }
@@ -164,11 +166,11 @@ namespace {
 // The per-object lines: triangles, the cluster meshes beside them, levels, the shares.
 void print_per_object(const RunSummary& s, std::ostream& out) {
   char line[256];
-  const double drawn_pct = 100.0 * safe_ratio(static_cast<double>(s.triangles_drawn),
-                                              static_cast<double>(s.triangles_full));
+  const double drawn_pct =
+      100.0 * safe_ratio(static_cast<double>(s.triangles_drawn), static_cast<double>(s.triangles_full));
   std::snprintf(line, sizeof line, "triangles       %llu drawn of %llu at full detail (%.1f%%, per eye)\n",
-                static_cast<unsigned long long>(s.triangles_drawn),
-                static_cast<unsigned long long>(s.triangles_full), drawn_pct);
+                static_cast<unsigned long long>(s.triangles_drawn), static_cast<unsigned long long>(s.triangles_full),
+                drawn_pct);
   out << line;
   print_cluster_run(s.clusters, s.frames, out);
   std::uint64_t total = 0;
@@ -182,15 +184,14 @@ void print_per_object(const RunSummary& s, std::ostream& out) {
   out << "\n";
   std::snprintf(line, sizeof line,
                 "reduction owed  size %.1f%%, eccentricity %.1f%%, velocity %.1f%%, interaction %.1f%%\n",
-                100 * s.shares.size, 100 * s.shares.eccentricity, 100 * s.shares.velocity,
-                100 * s.shares.interaction);
+                100 * s.shares.size, 100 * s.shares.eccentricity, 100 * s.shares.velocity, 100 * s.shares.interaction);
   out << line;
 }
 
 }  // namespace
 
-void write_report_files(const std::filesystem::path& dir, const RunInfo& info,
-                        const RunSummary& s, const std::vector<FrameRecord>& frames) {
+void write_report_files(const std::filesystem::path& dir, const RunInfo& info, const RunSummary& s,
+                        const std::vector<FrameRecord>& frames) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw std::runtime_error("cannot create output folder " + dir.string() + ": " + ec.message());
@@ -207,7 +208,8 @@ void write_report_files(const std::filesystem::path& dir, const RunInfo& info,
   j["triangles_full"] = s.triangles_full;
   j["frame_time_ms"] = {{"mean", s.mean_frame_ms}, {"p95", s.p95_frame_ms}, {"max", s.max_frame_ms}};
   j["selection_time_ms"] = {{"mean", s.mean_select_ms}};
-  j["lod_histogram"] = std::vector<std::uint64_t>(s.lod_histogram.begin(), s.lod_histogram.begin() + reported_levels(s));
+  j["lod_histogram"] =
+      std::vector<std::uint64_t>(s.lod_histogram.begin(), s.lod_histogram.begin() + reported_levels(s));
   j["shares"] = {{"size", s.shares.size},
                  {"eccentricity", s.shares.eccentricity},
                  {"velocity", s.shares.velocity},
@@ -249,18 +251,18 @@ void write_report_files(const std::filesystem::path& dir, const RunInfo& info,
   write_cluster_csv_header(csv);  // 0 and empty cells without cluster meshes
   csv << "\n";
   for (const FrameRecord& f : frames) {
-    csv << f.index << ',' << f.t_s << ',' << f.frame_ms << ',' << f.select_ms << ',' << f.predicted_ms
-        << ',' << f.triangles_drawn << ',' << f.triangles_full << ',' << f.triangles_size_only << ','
-        << f.triangles_size_eccentricity << ',' << f.triangles_size_velocity << ',' << f.gaze_source
-        << ',' << (f.gaze_valid ? 1 : 0) << ',' << (f.saccade ? 1 : 0) << ',' << f.head_speed_dps << ','
-        << f.eye_motion << ',' << (f.plugin_suppressed ? 1 : 0) << ',' << f.gaze_error_deg;
+    csv << f.index << ',' << f.t_s << ',' << f.frame_ms << ',' << f.select_ms << ',' << f.predicted_ms << ','
+        << f.triangles_drawn << ',' << f.triangles_full << ',' << f.triangles_size_only << ','
+        << f.triangles_size_eccentricity << ',' << f.triangles_size_velocity << ',' << f.gaze_source << ','
+        << (f.gaze_valid ? 1 : 0) << ',' << (f.saccade ? 1 : 0) << ',' << f.head_speed_dps << ',' << f.eye_motion << ','
+        << (f.plugin_suppressed ? 1 : 0) << ',' << f.gaze_error_deg;
     for (int i = 0; i < levels; ++i) csv << ',' << f.lod_histogram[i];
     csv << ',' << f.objects_in_view;
     const AuditFrame& a = f.audit;
     if (a.available)
-      csv << ',' << (a.suppressed ? 1 : 0) << ',' << (a.pursuit ? 1 : 0) << ',' << a.degraded << ','
-          << a.excess_levels << ',' << a.excess_max << ',' << a.drawn_triangles << ',' << a.oracle_triangles
-          << ',' << a.switches << ',' << a.pursued;
+      csv << ',' << (a.suppressed ? 1 : 0) << ',' << (a.pursuit ? 1 : 0) << ',' << a.degraded << ',' << a.excess_levels
+          << ',' << a.excess_max << ',' << a.drawn_triangles << ',' << a.oracle_triangles << ',' << a.switches << ','
+          << a.pursued;
     else
       csv << ",,,,,,,,,";
     write_cluster_csv_cells(csv, f.cluster_triangles_drawn, f.cluster_triangles_perceptual, f.cluster_audit);
@@ -349,9 +351,8 @@ Plot audit_plot(const RunInfo& info, const AuditSummary& s, const std::vector<Fr
     }
   }
   // A scene of cluster meshes only: no empty per-object panels.
-  const bool objects_seen = std::any_of(frames.begin(), frames.end(), [](const FrameRecord& f) {
-    return f.audit.available && f.audit.in_view > 0;
-  });
+  const bool objects_seen = std::any_of(frames.begin(), frames.end(),
+                                        [](const FrameRecord& f) { return f.audit.available && f.audit.in_view > 0; });
   if (objects_seen || !clusters_audited) {
     plot.panels.push_back({"in-view objects", {degraded, excess}});
     plot.panels.push_back({"switches per frame", {switches}});

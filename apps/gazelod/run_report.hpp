@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What `gazelod run` reports: per-frame records in, a terminal summary, summary.json,
 // frames.csv and an SVG plot (triangles and frame time over the run, gaze events marked) out.
 #pragma once
@@ -24,24 +25,24 @@ inline constexpr int kMaxReportedLods = 256;
 
 struct FrameRecord {
   std::int64_t index = 0;
-  double t_s = 0.0;                 // scenario time of the frame's predicted display time
-  double frame_ms = 0.0;            // measured: selection + rendering both eyes + submit
-  double select_ms = 0.0;           // measured: plugin begin_frame (gaze, head, selection)
-  double predicted_ms = 0.0;        // budget's predicted frame time (0 when no budget)
-  std::uint64_t triangles_drawn = 0;     // per eye
-  std::uint64_t triangles_full = 0;      // every object at LOD 0
+  double t_s = 0.0;                        // scenario time of the frame's predicted display time
+  double frame_ms = 0.0;                   // measured: selection + rendering both eyes + submit
+  double select_ms = 0.0;                  // measured: plugin begin_frame (gaze, head, selection)
+  double predicted_ms = 0.0;               // budget's predicted frame time (0 when no budget)
+  std::uint64_t triangles_drawn = 0;       // per eye
+  std::uint64_t triangles_full = 0;        // every object at LOD 0
   std::uint64_t triangles_perceptual = 0;  // all criteria, this frame's perceptual choice
-  std::uint64_t triangles_size_only = 0;           // criteria sets, for the shares
+  std::uint64_t triangles_size_only = 0;   // criteria sets, for the shares
   std::uint64_t triangles_size_eccentricity = 0;
   std::uint64_t triangles_size_velocity = 0;
   std::array<std::uint32_t, kMaxReportedLods> lod_histogram{};
-  std::string gaze_source;          // "openxr", "hid", "trace", "head-fixed"
+  std::string gaze_source;  // "openxr", "hid", "trace", "head-fixed"
   bool gaze_valid = false;
-  bool saccade = false;             // a saccade began at this frame (for the plot)
+  bool saccade = false;  // a saccade began at this frame (for the plot)
   double head_speed_dps = 0.0;
-  std::string eye_motion;            // the conditioner's reading (fixation, carried, saccade, pursuit, loss)
-  bool plugin_suppressed = false;    // the plugin took vision as suppressed (its switch policy's flag)
-  double gaze_error_deg = 0.0;       // the uncertainty that widened the foveal cone
+  std::string eye_motion;          // the conditioner's reading (fixation, carried, saccade, pursuit, loss)
+  bool plugin_suppressed = false;  // the plugin took vision as suppressed (its switch policy's flag)
+  double gaze_error_deg = 0.0;     // the uncertainty that widened the foveal cone
   // For the evaluation (gazelod compare / eval): the object count, the summed levels of each
   // criteria set (average LOD = sum / objects), and the thesis's LOD map evaluated offline on
   // the same frame (apps/gazelod/eval_lod_map.hpp; nothing it picks is drawn).
@@ -73,8 +74,8 @@ struct RunInfo {
   std::string scenario;
   std::string hmd;
   std::string runtime;
-  std::string device;               // Vulkan device name
-  std::string criteria;             // "size,eccentricity,velocity"
+  std::string device;    // Vulkan device name
+  std::string criteria;  // "size,eccentricity,velocity"
   double budget_ms = 0.0;
 };
 
@@ -103,7 +104,7 @@ struct RunSummary {
   double p95_frame_ms = 0.0;
   double max_frame_ms = 0.0;
   double mean_select_ms = 0.0;
-  std::uint64_t triangles_drawn = 0;   // summed over frames, per eye
+  std::uint64_t triangles_drawn = 0;  // summed over frames, per eye
   std::uint64_t triangles_full = 0;
   std::array<std::uint64_t, kMaxReportedLods> lod_histogram{};
   ReductionShares shares;
@@ -130,8 +131,8 @@ RunSummary summarize(const std::vector<FrameRecord>& frames, double budget_ms);
 void print_summary(const RunInfo& info, const RunSummary& s, std::ostream& out, bool breakdown = false);
 // Writes summary.json, frames.csv, frames.svg and (when the audit is available) audit.svg into
 // `dir` (created if missing). Throws std::runtime_error naming the file that could not be written.
-void write_report_files(const std::filesystem::path& dir, const RunInfo& info,
-                        const RunSummary& s, const std::vector<FrameRecord>& frames);
+void write_report_files(const std::filesystem::path& dir, const RunInfo& info, const RunSummary& s,
+                        const std::vector<FrameRecord>& frames);
 
 // audit.svg: in-view objects drawn coarser than the oracle (and the largest excess), LOD
 // switches and triangles in view (drawn, oracle) over time, suppression windows shaded; with a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "apps/gazelod/run_scenario.hpp"
 
 #include "bake/baked_scene.hpp"
@@ -33,7 +34,6 @@ std::string read_file(const std::string& path) {
 void set_env(const char* name, const std::string& value) {
   if (::setenv(name, value.c_str(), 1) != 0) throw UsageError(std::string("cannot set ") + name);
 }
-
 
 // --scene: the baked glTF's objects and LOD chains replace the scenario's scene objects, in the
 // scenario text itself, so the simulated runtime and this process step the same scenario.
@@ -76,9 +76,12 @@ std::string with_baked_scene(const std::string& text, const std::string& label, 
     if (!names.insert(name).second) names.insert(name += "#" + std::to_string(i));
     nlohmann::json lods = nlohmann::json::array();
     for (const auto& l : b.lods)
-      lods.push_back({{"triangles", l.triangles}, {"vertices", l.vertices},
-                      {"detail_kind", l.detail_kind == lod::DetailKind::geometric_error_m ? "geometric_error_m" : "removed_cycles_per_diameter"},
-                      {"detail", l.detail}});
+      lods.push_back(
+          {{"triangles", l.triangles},
+           {"vertices", l.vertices},
+           {"detail_kind",
+            l.detail_kind == lod::DetailKind::geometric_error_m ? "geometric_error_m" : "removed_cycles_per_diameter"},
+           {"detail", l.detail}});
     const glm::dvec3 c = b.center_m + shift;
     objects.push_back({{"name", name}, {"position_m", {c.x, c.y, c.z}}, {"radius_m", b.radius_m}, {"lods", lods}});
   }
@@ -89,8 +92,8 @@ std::string with_baked_scene(const std::string& text, const std::string& label, 
   if (j.contains("effects") && j["effects"].is_array()) {
     nlohmann::json kept = nlohmann::json::array();
     for (const auto& e : j["effects"]) {
-      const bool names_object = e.is_object() && e.contains("object") && e["object"].is_string() &&
-                                e["object"].get<std::string>() != "*";
+      const bool names_object =
+          e.is_object() && e.contains("object") && e["object"].is_string() && e["object"].get<std::string>() != "*";
       if (names_object && !names.count(e["object"].get<std::string>())) {
         std::fprintf(stderr, "gazelod run: --scene: effect %s on object '%s' dropped (not in the baked scene)\n",
                      e.value("type", std::string("?")).c_str(), e["object"].get<std::string>().c_str());
@@ -145,8 +148,8 @@ std::string with_trace_head(const std::string& text, const std::string& trace_pa
 PreparedScenario prepare_scenario(const RunOptions& opt) {
   PreparedScenario p;
   p.label = opt.scenario_path.empty() ? "default" : opt.scenario_path;
-  std::string text = opt.scenario_path.empty() ? std::string(sim::default_scenario_json())
-                                               : read_file(opt.scenario_path);
+  std::string text =
+      opt.scenario_path.empty() ? std::string(sim::default_scenario_json()) : read_file(opt.scenario_path);
   // --hmd replaces the scenario's display, so the runtime reports the same views the plugin
   // is told about. Patched in the JSON text so the runtime reads exactly this scenario.
   if (!opt.hmd.empty()) {
@@ -167,8 +170,8 @@ PreparedScenario prepare_scenario(const RunOptions& opt) {
       throw UsageError("--scene-placement: '" + opt.scene_placement + "' (use in-front or file)");
     try {
       // Drawn with its levels' own triangles (RunRenderer), which only a rendered run needs.
-      p.baked = bake::load_baked(opt.scene_path,
-                                 opt.render ? bake::BakedLoad::with_level_geometry : bake::BakedLoad::chains);
+      p.baked =
+          bake::load_baked(opt.scene_path, opt.render ? bake::BakedLoad::with_level_geometry : bake::BakedLoad::chains);
     } catch (const bake::BakeError& e) {
       throw UsageError(std::string("--scene: ") + e.what());
     }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The scenario of a `gazelod run`: loaded (file or embedded default), adjusted by the
 // command line (--hmd, --frames, --paced), written to the output folder for the simulated
 // runtime, and the environment that points the OpenXR loader at that runtime.
@@ -21,14 +22,14 @@ namespace gazelod::cli {
 
 struct PreparedScenario {
   sim::Scenario scenario;
-  std::string label;                  // "default" or the file name
-  std::filesystem::path file;         // the effective scenario as the runtime reads it
+  std::string label;           // "default" or the file name
+  std::filesystem::path file;  // the effective scenario as the runtime reads it
   double duration_s = 0.0;
   // --scene: the baked file, whose objects are the scenario's objects in the same order, and the
   // translation --scene-placement applied to them (0 for `file`).
   std::optional<bake::BakedScene> baked;
   glm::dvec3 scene_shift_m{0.0};
-  std::vector<std::string> notes;     // what the preparation changed, for the run to print
+  std::vector<std::string> notes;  // what the preparation changed, for the run to print
   // --trace with head poses: the head replays the trace from scenario time 0, and the gaze
   // replay must start there too (TraceFromFirstFrame::start_at).
   bool trace_head = false;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "apps/gazelod/run_session.hpp"
 
 #include "apps/gazelod/run_signals.hpp"
@@ -88,12 +89,14 @@ int run_session(const RunOptions& opt, Io io) {
     for (const std::string& note : prepared.notes) io.err << "gazelod run: " << note << "\n";
   sim::Simulator simulator(prepared.scenario);
   const sim::Scenario& scenario = simulator.scenario();
-  if (opt.runtime == "sim") point_loader_at_simulator(prepared, opt);
-  else if (opt.runtime != "system") throw UsageError("--runtime: must be 'sim' or 'system', got '" + opt.runtime + "'");
+  if (opt.runtime == "sim")
+    point_loader_at_simulator(prepared, opt);
+  else if (opt.runtime != "system")
+    throw UsageError("--runtime: must be 'sim' or 'system', got '" + opt.runtime + "'");
   // --scene with cluster hierarchies: those objects are cluster meshes (run_cluster_scene.hpp);
   // the plugin's objects are the others, plain[k] being plugin object k's scenario index.
-  const ClusterScene clusters = prepared.baked ? make_cluster_scene(*prepared.baked, prepared.scene_shift_m, scenario)
-                                               : ClusterScene{};
+  const ClusterScene clusters =
+      prepared.baked ? make_cluster_scene(*prepared.baked, prepared.scene_shift_m, scenario) : ClusterScene{};
   for (const std::string& note : clusters.notes) io.err << "gazelod run: --scene: " << note << "\n";
   std::vector<std::size_t> plain;
   std::vector<int> plugin_id(scenario.objects.size(), -1);
@@ -109,8 +112,8 @@ int run_session(const RunOptions& opt, Io io) {
     std::error_code e1, e2;
     return std::filesystem::weakly_canonical(a, e1) == std::filesystem::weakly_canonical(b, e2) && !e1 && !e2;
   };
-  for (const auto& [path, option] : {std::pair{opt.decisions_path, "--decisions"},
-                                     std::pair{opt.cluster_decisions_path, "--cluster-decisions"}}) {
+  for (const auto& [path, option] :
+       {std::pair{opt.decisions_path, "--decisions"}, std::pair{opt.cluster_decisions_path, "--cluster-decisions"}}) {
     if (path.empty()) continue;
     for (const char* report : {"summary.json", "frames.csv", "frames.svg", "audit.svg", "frame.png", "scenario.json"})
       if (same_file(path, opt.out_dir / report))
@@ -128,8 +131,9 @@ int run_session(const RunOptions& opt, Io io) {
   std::optional<ClusterDecisionsFile> cluster_decisions;
   if (!opt.cluster_decisions_path.empty()) {
     if (clusters.empty())
-      throw UsageError("--cluster-decisions: the scene has no cluster meshes (--scene with a file from "
-                       "gazelod bake --clusters)");
+      throw UsageError(
+          "--cluster-decisions: the scene has no cluster meshes (--scene with a file from "
+          "gazelod bake --clusters)");
     cluster_decisions.emplace(opt.cluster_decisions_path, clusters);
   }
 
@@ -163,7 +167,8 @@ int run_session(const RunOptions& opt, Io io) {
     // The first HID eye tracker, its samples mapped onto the runtime's clock. No tracker (or
     // one unplugged later): the source says so and the plugin falls back to head-fixed gaze.
     if (app->now() == 0) {
-      io.err << "gazelod run: --gaze hid needs XR_KHR_convert_timespec_time (the runtime's clock), which this runtime does not offer\n";
+      io.err << "gazelod run: --gaze hid needs XR_KHR_convert_timespec_time (the runtime's clock), which this runtime "
+                "does not offer\n";
       return 2;
     }
     gaze::hid::HidTrackerConfig hid;
@@ -174,7 +179,8 @@ int run_session(const RunOptions& opt, Io io) {
     };
     config.external_source = std::make_shared<gaze::hid::HidGazeSource>(std::move(hid));
   }
-  auto plugin = LodPlugin::create(xrGetInstanceProcAddr, app->instance(), app->system(), app->session(), app->local_space(), config);
+  auto plugin = LodPlugin::create(xrGetInstanceProcAddr, app->instance(), app->system(), app->session(),
+                                  app->local_space(), config);
   // Source changes: the first few said as they happen, the rest (every blink is one) counted
   // and summarised at the end; none once the session winds down, when the eye-gaze action goes
   // inactive by design (that was a false alarm at the end of every run).
@@ -220,7 +226,8 @@ int run_session(const RunOptions& opt, Io io) {
   if (opt.render) renderer.emplace(*app, chains, clusters.empty() ? nullptr : &clusters, baked_of_plain);
 
   const double rate = scenario.frame_rate_hz > 0 ? scenario.frame_rate_hz : 90.0;
-  const std::int64_t planned = opt.frames > 0 ? opt.frames : static_cast<std::int64_t>(std::llround(scenario.duration_s * rate));
+  const std::int64_t planned =
+      opt.frames > 0 ? opt.frames : static_cast<std::int64_t>(std::llround(scenario.duration_s * rate));
   const std::int64_t capture = opt.capture_frame >= 0 ? opt.capture_frame : planned / 2;
   // A trace shorter than the run: past its end the gaze falls back to head-fixed (and says so
   // then); say it before, with the way to bound the run.
@@ -259,7 +266,7 @@ int run_session(const RunOptions& opt, Io io) {
   double previous_t_s = 0.0;
   bool exit_requested = false;
   bool png_saved = false;  // --capture-frame past the last frame saves none
-  StopOnSignal stop;  // Ctrl-C / SIGTERM: stop at a frame boundary with a report
+  StopOnSignal stop;       // Ctrl-C / SIGTERM: stop at a frame boundary with a report
   int interrupted_by = 0;
   auto last_progress = Clock::now();
   const auto started = Clock::now();
@@ -315,7 +322,8 @@ int run_session(const RunOptions& opt, Io io) {
       positions[k] = objects[k].position_m;
     }
     for (std::size_t k : cluster_motion.update(scenario, all_objects)) {
-      plugin->set_cluster_mesh_motion(static_cast<std::uint32_t>(k), cluster_motion.pose(k), cluster_motion.velocity_m_s(k));
+      plugin->set_cluster_mesh_motion(static_cast<std::uint32_t>(k), cluster_motion.pose(k),
+                                      cluster_motion.velocity_m_s(k));
       if (cluster_oracle) cluster_oracle->set_pose(k, cluster_motion.pose(k), cluster_motion.velocity_m_s(k));
     }
     const FrameDecisions& d = plugin->begin_frame(fs.predictedDisplayTime);
@@ -370,8 +378,8 @@ int run_session(const RunOptions& opt, Io io) {
     r.lod_sum_size_only = lod_sum(diag.lod_size_only);
     r.lod_sum_size_eccentricity = lod_sum(diag.lod_size_eccentricity);
     r.lod_sum_size_velocity = lod_sum(diag.lod_size_velocity);
-    const LodMapFrame lod_map = lod_map_frame(chains, objects, radii, diag,
-                                              simulator.head_at(fs.predictedDisplayTime - time_base).linear_velocity_m_s);
+    const LodMapFrame lod_map = lod_map_frame(
+        chains, objects, radii, diag, simulator.head_at(fs.predictedDisplayTime - time_base).linear_velocity_m_s);
     r.triangles_lod_map = lod_map.triangles;
     r.lod_sum_lod_map = lod_map.lod_sum;
     const sim::HeadState head = simulator.head_at(fs.predictedDisplayTime - time_base);
@@ -422,9 +430,9 @@ int run_session(const RunOptions& opt, Io io) {
       add_breakdown_frame(b, breakdown);
       std::copy_n(in.oracle.begin(), std::min(in.oracle.size(), previous_oracle.size()), previous_oracle.begin());
       if (cluster_oracle)
-        r.cluster_audit = cluster_oracle->audit(oracle->viewer(), head.position_m, head.orientation,
-                                                scenario.display.views[0].fov, d.cluster_drawn, oracle->suppressed(),
-                                                in.frame_s);
+        r.cluster_audit =
+            cluster_oracle->audit(oracle->viewer(), head.position_m, head.orientation, scenario.display.views[0].fov,
+                                  d.cluster_drawn, oracle->suppressed(), in.frame_s);
     }
     std::copy_n(d.lod.begin(), std::min(d.lod.size(), previous_lod.size()), previous_lod.begin());
     previous_t_s = t_s;
@@ -464,9 +472,9 @@ int run_session(const RunOptions& opt, Io io) {
   if (!oracle) {
     summary.audit = AuditSummary{};
     summary.audit.reason = !opt.trace_path.empty() ? "no ground truth: the gaze is a replayed trace"
-                           : opt.hid_gaze           ? "no ground truth: the gaze is a HID eye tracker"
-                           : !ground_truth          ? "no ground truth: not the simulated runtime"
-                                                    : "switched off with --no-audit";
+                           : opt.hid_gaze          ? "no ground truth: the gaze is a HID eye tracker"
+                           : !ground_truth         ? "no ground truth: not the simulated runtime"
+                                                   : "switched off with --no-audit";
   }
   if (source_changes_unshown > 0)
     io.err << "gazelod run: the gaze source changed " << source_changes_unshown << " more time"

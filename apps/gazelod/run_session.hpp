@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `gazelod run`: one session through the OpenXR loader (the simulated runtime by default),
 // the plugin choosing LODs each frame, every eye rendered with Vulkan, and a report.
 #pragma once
@@ -16,20 +17,21 @@ namespace gazelod::cli {
 struct RunSummary;  // run_report.hpp
 
 struct RunOptions {
-  std::int64_t frames = 0;             // 0: the scenario's whole duration
-  std::string scenario_path;           // "" = the embedded default scenario
-  std::string scene_path;              // a glb from `gazelod bake`: its objects replace the scenario's
-  std::string scene_placement = "in-front";  // "in-front": moved before the viewer's start; "file": the glTF's own placement
-  std::string hmd;                     // preset overriding the scenario's display
+  std::int64_t frames = 0;    // 0: the scenario's whole duration
+  std::string scenario_path;  // "" = the embedded default scenario
+  std::string scene_path;     // a glb from `gazelod bake`: its objects replace the scenario's
+  std::string scene_placement =
+      "in-front";   // "in-front": moved before the viewer's start; "file": the glTF's own placement
+  std::string hmd;  // preset overriding the scenario's display
   EnabledCriteria criteria;
   std::filesystem::path out_dir = "gazelod-out";
-  std::string runtime = "sim";         // "sim" or "system"
-  double budget_ms = 0.0;              // 0: no frame budget
-  double gaze_error_deg = 0.0;         // > 0: the gaze error assumed for every source; 0: the plugin's per-source defaults
-  bool paced = false;                  // sleep to the display rate (default: as fast as possible)
-  bool render = true;                  // false: select only, no Vulkan drawing
-  bool eye_gaze = true;                // false: ignore the runtime's eye gaze (fallback test)
-  std::string trace_path;              // an external gaze source: a gazelod trace to replay
+  std::string runtime = "sim";  // "sim" or "system"
+  double budget_ms = 0.0;       // 0: no frame budget
+  double gaze_error_deg = 0.0;  // > 0: the gaze error assumed for every source; 0: the plugin's per-source defaults
+  bool paced = false;           // sleep to the display rate (default: as fast as possible)
+  bool render = true;           // false: select only, no Vulkan drawing
+  bool eye_gaze = true;         // false: ignore the runtime's eye gaze (fallback test)
+  std::string trace_path;       // an external gaze source: a gazelod trace to replay
   // With a trace that has head poses (and the simulated runtime): the head moves as recorded
   // (relative to its first pose) in place of the scenario's head effects, so the replayed
   // eye-in-head gaze and the head it was recorded with stay together. false: the scenario's head.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Stop-on-signal for `gazelod run` (run_signals.hpp). The handler only stores the signal
 // number (async-signal-safe); the frame loop reads it between frames.
 #include "apps/gazelod/run_signals.hpp"
@@ -36,12 +37,16 @@ StopOnSignal::~StopOnSignal() {
   if (g_stop_signal != 0 && !acted_) std::raise(g_stop_signal);  // to whoever handles it now
 }
 
-int StopOnSignal::requested() const { return g_stop_signal; }
+int StopOnSignal::requested() const {
+  return g_stop_signal;
+}
 
 const char* StopOnSignal::name(int signal) {
   switch (signal) {
-    case SIGINT: return "SIGINT";
-    case SIGTERM: return "SIGTERM";
+    case SIGINT:
+      return "SIGINT";
+    case SIGTERM:
+      return "SIGTERM";
   }
   return "a signal";
 }

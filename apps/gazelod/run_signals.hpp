@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Ctrl-C and SIGTERM during `gazelod run`: the first asks the run to stop at the next frame
 // boundary (end the session, write the report of the frames done, marked interrupted, remove
 // temporaries); a second one ends the process at once with the signal's default action.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "apps/gazelod/svg_plot.hpp"
 
 #include "apps/gazelod/compare_svg.hpp"
@@ -33,8 +34,8 @@ Axis panel_axis(const PlotPanel& panel, int max_ticks) {
   Extent e;
   for (const PlotSeries& s : panel.series)
     for (double v : s.y) e.add(v);
-  const bool log = panel.scale == PlotScale::log ? e.lo > 0.0
-                                                  : panel.scale == PlotScale::automatic && wants_log_axis(e.lo, e.hi);
+  const bool log =
+      panel.scale == PlotScale::log ? e.lo > 0.0 : panel.scale == PlotScale::automatic && wants_log_axis(e.lo, e.hi);
   if (log) return log_axis(e.lo, e.hi);
   if (e.empty()) return linear_axis(0.0, 1.0, max_ticks, true);
   return linear_axis(e.lo, e.hi, max_ticks, e.lo >= 0.0);
@@ -99,7 +100,8 @@ void write_svg(const Plot& plot, std::ostream& out) {
       for (std::size_t e = 0; e < si && same.empty(); ++e)
         if (!panel.series[si].y.empty() && panel.series[e].y == panel.series[si].y) same = panel.series[e].label;
       same_as[p].push_back(same);
-      const std::string entry = same.empty() ? panel.series[si].label : panel.series[si].label + " (same as " + same + ")";
+      const std::string entry =
+          same.empty() ? panel.series[si].label : panel.series[si].label + " (same as " + same + ")";
       legend_w = std::max(legend_w, text_width_px(entry, kFontPx));
     }
   }

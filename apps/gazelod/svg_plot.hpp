@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A small SVG line-plot writer for reports (frames over time, per-HMD comparisons): stacked
 // panels sharing one x axis, optional vertical event markers and shaded bands. Axes from
 // plot_axis.hpp (round ticks, k/M labels, a log scale where a panel spans decades); margins
@@ -15,8 +16,8 @@ namespace gazelod::cli {
 
 struct PlotSeries {
   std::string label;
-  std::string colour;          // CSS colour, e.g. "#d62728"
-  std::vector<double> y;       // one value per x; non-finite values break the line
+  std::string colour;     // CSS colour, e.g. "#d62728"
+  std::vector<double> y;  // one value per x; non-finite values break the line
 };
 
 enum class PlotScale { automatic, linear, log };
@@ -44,10 +45,10 @@ struct Plot {
   std::string x_label;
   std::vector<double> x;
   std::vector<PlotPanel> panels;
-  std::vector<PlotMarker> markers;       // vertical lines across every panel
-  std::string marker_legend;             // what the markers mean
-  std::vector<PlotSpan> spans;           // shaded bands across every panel
-  std::string span_legend;               // what the bands mean
+  std::vector<PlotMarker> markers;  // vertical lines across every panel
+  std::string marker_legend;        // what the markers mean
+  std::vector<PlotSpan> spans;      // shaded bands across every panel
+  std::string span_legend;          // what the bands mean
   int width_px = 960;
   int panel_height_px = 220;
 };

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "apps/xr_host/xr_app.hpp"
 
 #include "plugin/xr_check.hpp"
@@ -11,7 +12,9 @@
 namespace gazelod::xr_host {
 namespace {
 
-void check(XrInstance, XrResult r, const char* call) { xr_check(r, call); }
+void check(XrInstance, XrResult r, const char* call) {
+  xr_check(r, call);
+}
 
 template <typename Fn>
 Fn proc(XrInstance instance, const char* name) {
@@ -48,8 +51,8 @@ void XrApp::create_instance(bool want_eye_gaze) {
   std::uint32_t count = 0;
   const XrResult r = xrEnumerateInstanceExtensionProperties(nullptr, 0, &count, nullptr);
   if (XR_FAILED(r))
-    throw XrAppError("no OpenXR runtime: xrEnumerateInstanceExtensionProperties failed (" +
-                     xr_result_name(r) + "); is XR_RUNTIME_JSON or an active runtime set?");
+    throw XrAppError("no OpenXR runtime: xrEnumerateInstanceExtensionProperties failed (" + xr_result_name(r) +
+                     "); is XR_RUNTIME_JSON or an active runtime set?");
   std::vector<XrExtensionProperties> props(count, {XR_TYPE_EXTENSION_PROPERTIES});
   check(XR_NULL_HANDLE, xrEnumerateInstanceExtensionProperties(nullptr, count, &count, props.data()),
         "xrEnumerateInstanceExtensionProperties");
@@ -88,7 +91,8 @@ void XrApp::create_instance(bool want_eye_gaze) {
 }
 
 void XrApp::create_vulkan() {
-  auto get_requirements = proc<PFN_xrGetVulkanGraphicsRequirements2KHR>(instance_, "xrGetVulkanGraphicsRequirements2KHR");
+  auto get_requirements =
+      proc<PFN_xrGetVulkanGraphicsRequirements2KHR>(instance_, "xrGetVulkanGraphicsRequirements2KHR");
   auto create_instance = proc<PFN_xrCreateVulkanInstanceKHR>(instance_, "xrCreateVulkanInstanceKHR");
   auto get_device = proc<PFN_xrGetVulkanGraphicsDevice2KHR>(instance_, "xrGetVulkanGraphicsDevice2KHR");
   auto create_device = proc<PFN_xrCreateVulkanDeviceKHR>(instance_, "xrCreateVulkanDeviceKHR");
@@ -217,8 +221,8 @@ void XrApp::create_swapchains() {
     std::uint32_t ni = 0;
     check(instance_, xrEnumerateSwapchainImages(sv.handle, 0, &ni, nullptr), "xrEnumerateSwapchainImages");
     std::vector<XrSwapchainImageVulkan2KHR> images(ni, {XR_TYPE_SWAPCHAIN_IMAGE_VULKAN2_KHR});
-    check(instance_, xrEnumerateSwapchainImages(sv.handle, ni, &ni,
-                                                reinterpret_cast<XrSwapchainImageBaseHeader*>(images.data())),
+    check(instance_,
+          xrEnumerateSwapchainImages(sv.handle, ni, &ni, reinterpret_cast<XrSwapchainImageBaseHeader*>(images.data())),
           "xrEnumerateSwapchainImages");
     for (const auto& im : images) sv.images.push_back(im.image);
     swapchains_.push_back(std::move(sv));

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The OpenXR side of `gazelod run`, in hello_xr's shape: create the instance (Vulkan through
 // XR_KHR_vulkan_enable2, eye gaze when offered), the session, spaces and one swapchain per
 // view; then per frame poll events, wait, begin, locate views, acquire/release images, end.

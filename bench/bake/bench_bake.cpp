@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Bake throughput in input triangles per second on generated icospheres (5120 to 81920
 // triangles). Baseline in the same process: the bare meshopt_simplify call for one level at
 // 1/4; then the default 4-level chain (simplify_chain: every level from the original, plus
@@ -20,9 +21,8 @@ void BM_MeshoptSimplifyOneLevel(benchmark::State& state) {
   std::vector<unsigned> dst(m.indices.size());
   for (auto _ : state) {
     float err = 0.0f;
-    benchmark::DoNotOptimize(meshopt_simplify(dst.data(), m.indices.data(), m.indices.size(),
-                                              m.positions.data(), m.positions.size() / 3, 12,
-                                              m.indices.size() / 4, 1.0f, 0, &err));
+    benchmark::DoNotOptimize(meshopt_simplify(dst.data(), m.indices.data(), m.indices.size(), m.positions.data(),
+                                              m.positions.size() / 3, 12, m.indices.size() / 4, 1.0f, 0, &err));
   }
   state.SetItemsProcessed(std::int64_t(state.iterations()) * std::int64_t(m.triangles()));
 }

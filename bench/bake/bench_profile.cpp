@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The rendered perceptual profile (bake --profile, Reddy 1998 section 3.3) against the plain bake:
 // what 6 and 18 viewpoints cost, and what they change. Before the timings, main() bakes a few
 // generated meshes with 6 and 18 viewpoints and prints (1) per level the geometric figure
@@ -61,7 +62,7 @@ std::vector<lod::LodLevel> chain_of(const MeshReport& g, const MeshReport& r6, c
   for (std::size_t k = 0; k < g.levels.size(); ++k) {
     lod::LodLevel l;
     l.triangles = g.levels[k].triangles;
-    l.detail = k == 0 ? 0.0
+    l.detail = k == 0            ? 0.0
                : f == kGeometric ? g.levels[k].detail_cycles_per_diameter
                : f == kRendered6 ? r6.levels[k].rendered_cycles_per_diameter
                                  : r18.levels[k].rendered_cycles_per_diameter;
@@ -95,13 +96,18 @@ int differing(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t
 }
 
 void agreement_tables() {
-  struct Named { const char* name; testing::TestMesh mesh; };
+  struct Named {
+    const char* name;
+    testing::TestMesh mesh;
+  };
   const std::vector<Named> meshes{{"icosphere(4)", testing::icosphere(4, 0.5)},
                                   {"bumpy(4, a=0.05)", bumpy(4, 0.5, 0.05)},
                                   {"bumpy(4, a=0.15)", bumpy(4, 0.5, 0.15)},
                                   {"bumpy(5, a=0.10)", bumpy(5, 0.5, 0.10)},
                                   {"wavy grid 64", testing::grid(64, 1.0, 0.05)}};
-  std::printf("| mesh | level | triangles | geometric D/(2e) | rendered, 18 views | rendered, 6 views | rendered18 / geometric |\n|---|---|---|---|---|---|---|\n");
+  std::printf(
+      "| mesh | level | triangles | geometric D/(2e) | rendered, 18 views | rendered, 6 views | rendered18 / geometric "
+      "|\n|---|---|---|---|---|---|---|\n");
   double sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0;
   int pts = 0, cells = 0, diff_geo = 0, diff_6 = 0;
   for (const Named& m : meshes) {
@@ -122,9 +128,10 @@ void agreement_tables() {
   const double cov = sxy - sx * sy / pts, vx = sxx - sx * sx / pts, vy = syy - sy * sy / pts;
   std::printf("\nPearson r of log10(geometric) vs log10(rendered, 18 views): %.3f over %d levels\n",
               vx > 0 && vy > 0 ? cov / std::sqrt(vx * vy) : NAN, pts);
-  std::printf("LOD choices over %d object placements (15 distances x 12 eccentricities x %zu meshes):\n"
-              "  geometric vs rendered-18 differ: %d (%.1f%%)\n  rendered-6 vs rendered-18 differ: %d (%.1f%%)\n\n",
-              cells, meshes.size(), diff_geo, 100.0 * diff_geo / cells, diff_6, 100.0 * diff_6 / cells);
+  std::printf(
+      "LOD choices over %d object placements (15 distances x 12 eccentricities x %zu meshes):\n"
+      "  geometric vs rendered-18 differ: %d (%.1f%%)\n  rendered-6 vs rendered-18 differ: %d (%.1f%%)\n\n",
+      cells, meshes.size(), diff_geo, 100.0 * diff_geo / cells, diff_6, 100.0 * diff_6 / cells);
 }
 
 }  // namespace

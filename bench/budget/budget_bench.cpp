@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What accuracy costs in time. Two benchmarks over scenes of 100 to 100k objects with
 // 4 and 8 levels each (budget_scene.hpp):
 //  - BM_Solve: every solver from scratch on one frame: time per frame and the gap to the
@@ -75,8 +76,7 @@ void BM_Solve(benchmark::State& state) {
   const auto& [scene, ref] = static_scene(n, m);
   MckpSolution sol;
   for (auto _ : state) {
-    sol = kind == SolverKind::exact ? solve_exact(scene.inst, kExactNodeLimit)
-                                    : solve(kind, scene.inst);
+    sol = kind == SolverKind::exact ? solve_exact(scene.inst, kExactNodeLimit) : solve(kind, scene.inst);
     benchmark::DoNotOptimize(sol.profit);
   }
   state.counters["gap_pct"] = sol.feasible ? gap_pct(ref, sol.profit) : NAN;
@@ -94,7 +94,7 @@ void BM_IncrementalCoherent(benchmark::State& state) {
   IncrementalScheduler sched;
   sched.reset(scene.inst);  // every level kept: profits change per frame
   MckpSolution prev, cur;
-  const SolveLimits converge;  // no limit
+  const SolveLimits converge;                      // no limit
   sched.step(scene.inst, {}, {}, converge, prev);  // converge once
   double moves = 0, frames = 0, truncated = 0, wall_s = 0;
   for (auto _ : state) {
@@ -116,8 +116,7 @@ void BM_IncrementalCoherent(benchmark::State& state) {
   state.counters["gap_pct"] = gap_pct(ref, prev.profit);
   state.counters["ref_exact"] = ref.exact;
   state.counters["feasible"] = prev.feasible;
-  state.counters["vs_greedy_pct"] =
-      gap_pct({solve_mason_greedy(scene.inst, false).profit, false}, prev.profit);
+  state.counters["vs_greedy_pct"] = gap_pct({solve_mason_greedy(scene.inst, false).profit, false}, prev.profit);
   state.counters["moves_per_frame"] = moves / std::max(frames, 1.0);
   state.counters["truncated_frames"] = truncated;
   state.counters["wall_ms"] = 1e3 * wall_s / std::max(frames, 1.0);
@@ -167,10 +166,7 @@ void one_subset_args(benchmark::internal::Benchmark* b) {
 
 BENCHMARK(BM_Solve)->Apply(solve_args)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_OneLargeSubset)->Apply(one_subset_args)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_IncrementalCoherent)
-    ->Apply(coherent_args)
-    ->UseManualTime()
-    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_IncrementalCoherent)->Apply(coherent_args)->UseManualTime()->Unit(benchmark::kMillisecond);
 
 // Console output as usual, plus the runs kept for the table.
 class TableReporter : public benchmark::ConsoleReporter {
@@ -189,8 +185,7 @@ class TableReporter : public benchmark::ConsoleReporter {
       std::vector<long> args;
       for (std::size_t p = name.find('/'); p != std::string::npos; p = name.find('/', p + 1))
         if (std::isdigit(static_cast<unsigned char>(name[p + 1]))) args.push_back(std::stol(name.substr(p + 1)));
-      const bool coherent = name.rfind("BM_IncrementalCoherent", 0) == 0 ||
-                            name.rfind("BM_FrameBudget", 0) == 0;
+      const bool coherent = name.rfind("BM_IncrementalCoherent", 0) == 0 || name.rfind("BM_FrameBudget", 0) == 0;
       const long n = coherent ? args.at(0) : args.at(1), m = coherent ? args.at(1) : args.at(2);
       auto counter = [&](const char* c) {
         const auto it = r.counters.find(c);
@@ -205,35 +200,38 @@ class TableReporter : public benchmark::ConsoleReporter {
       if (counter("feasible") == 0.0) notes += "INFEASIBLE ";
       if (coherent && std::isnan(counter("vs_greedy_pct"))) {  // BM_FrameBudget
         char limit[96];
-        if (args.at(3) > 0) std::snprintf(limit, sizeof limit, "max %ld moves", args.at(3));
-        else std::snprintf(limit, sizeof limit, "no move limit");
+        if (args.at(3) > 0)
+          std::snprintf(limit, sizeof limit, "max %ld moves", args.at(3));
+        else
+          std::snprintf(limit, sizeof limit, "no move limit");
         if (args.at(4) > 0)
-          std::snprintf(limit + std::strlen(limit), sizeof limit - std::strlen(limit),
-                        ", wall-clock limit %.1f ms", 1e-3 * static_cast<double>(args.at(4)));
+          std::snprintf(limit + std::strlen(limit), sizeof limit - std::strlen(limit), ", wall-clock limit %.1f ms",
+                        1e-3 * static_cast<double>(args.at(4)));
         char buf[384];
         std::snprintf(buf, sizeof buf,
                       "choose() + observe(), %.1f %% of objects change perceptual level per frame, "
                       "%s; moves/frame %.1f mean, %.0f p99, %.0f max; of %lld frames: %.0f "
                       "truncated, %.0f infeasible, %.0f measured over budget",
-                      0.1 * static_cast<double>(args.at(2)), limit, counter("moves_per_frame"),
-                      counter("moves_p99"), counter("moves_max"),
-                      static_cast<long long>(r.iterations), counter("truncated_frames"),
+                      0.1 * static_cast<double>(args.at(2)), limit, counter("moves_per_frame"), counter("moves_p99"),
+                      counter("moves_max"), static_cast<long long>(r.iterations), counter("truncated_frames"),
                       counter("infeasible_frames"), counter("over_budget_frames"));
         notes += buf;
       } else if (coherent) {
         char buf[256];
-        std::snprintf(buf, sizeof buf,
-                      "%.1f moves/frame, %.0f of %lld frames truncated; vs greedy %.4f %%",
-                      counter("moves_per_frame"), counter("truncated_frames"),
-                      static_cast<long long>(r.iterations), counter("vs_greedy_pct"));
+        std::snprintf(buf, sizeof buf, "%.1f moves/frame, %.0f of %lld frames truncated; vs greedy %.4f %%",
+                      counter("moves_per_frame"), counter("truncated_frames"), static_cast<long long>(r.iterations),
+                      counter("vs_greedy_pct"));
         notes += buf;
       }
       if (counter("proven") == 0.0) notes += "not proven optimal (node limit)";
       const double ref = counter("ref_exact");
       char gap[32] = "-";
       if (!std::isnan(counter("gap_pct"))) std::snprintf(gap, sizeof gap, "%.4f", counter("gap_pct"));
-      std::printf("| %s | %ld | %ld | %.4f | %.4f | %s | %s | %s |\n", r.report_label.c_str(), n, m,
-                  cpu_ms, wall_ms, gap, std::isnan(ref) ? "-" : ref > 0.5 ? "exact" : "LP bound",
+      std::printf("| %s | %ld | %ld | %.4f | %.4f | %s | %s | %s |\n", r.report_label.c_str(), n, m, cpu_ms, wall_ms,
+                  gap,
+                  std::isnan(ref) ? "-"
+                  : ref > 0.5     ? "exact"
+                                  : "LP bound",
                   notes.c_str());
     }
   }

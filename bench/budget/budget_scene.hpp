@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Synthetic frame-budget scenes for bench_budget: n objects with m levels each, triangles
 // halving per level. Cost per level (ms) is Funkhouser & Sequin's max(C1 tris + C2 verts,
 // C3 pixels); benefit is the FrameBudget form (budget/frame_budget.hpp):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The whole per-frame budget step the plugin runs (budget/frame_budget.hpp): benefits and costs
 // for every level, Mason's incremental solve from the last frame, and the RLS update from the
 // "measured" time (a synthetic renderer: fixed true coefficients 30 % slower than the prior plus
@@ -33,8 +34,7 @@ void BM_FrameBudget(benchmark::State& state) {
   std::vector<BudgetObjectView> view(n), base(n);
   std::vector<std::uint8_t> perceptual(n), out(n);
   FrameBudgetOptions options;
-  options.max_moves = state.range(3) > 0 ? static_cast<std::uint64_t>(state.range(3))
-                                          : SolveLimits::kNoMoveLimit;
+  options.max_moves = state.range(3) > 0 ? static_cast<std::uint64_t>(state.range(3)) : SolveLimits::kNoMoveLimit;
   if (state.range(4) > 0) options.solve_time_limit = std::chrono::microseconds(state.range(4));
   double lo = 0, hi = 0;
   for (std::size_t k = 0; k < n; ++k) {
@@ -45,9 +45,7 @@ void BM_FrameBudget(benchmark::State& state) {
       level.vertices = static_cast<std::uint32_t>(0.6 * level.triangles);
       chains[k].push_back(level);
     }
-    auto ms = [&](const lod::LodLevel& l) {
-      return 1e3 * object_cost_s(options.prior, l.triangles, l.vertices, 0.0);
-    };
+    auto ms = [&](const lod::LodLevel& l) { return 1e3 * object_cost_s(options.prior, l.triangles, l.vertices, 0.0); };
     hi += ms(chains[k].front());
     lo += ms(chains[k].back());
     base[k] = view[k] = {px(rng), 0.3 + 0.7 * u(rng)};
@@ -63,8 +61,7 @@ void BM_FrameBudget(benchmark::State& state) {
     for (std::size_t k = 0; k < n; ++k) {
       drift[k] = 0.98 * drift[k] + z(rng);
       view[k].size_px = base[k].size_px * std::exp(drift[k]);
-      if (u(rng) < change)
-        perceptual[k] = static_cast<std::uint8_t>(std::min<std::size_t>(m - 1, perceptual[k] ^ 1u));
+      if (u(rng) < change) perceptual[k] = static_cast<std::uint8_t>(std::min<std::size_t>(m - 1, perceptual[k] ^ 1u));
     }
     const double c0 = thread_cpu_s();
     const auto t0 = std::chrono::steady_clock::now();
@@ -88,9 +85,10 @@ void BM_FrameBudget(benchmark::State& state) {
   state.counters["moves_per_frame"] = moves / frames;
   std::sort(frame_moves.begin(), frame_moves.end());
   auto quantile = [&](double q) {
-    return frame_moves.empty() ? 0.0
-                               : static_cast<double>(frame_moves[static_cast<std::size_t>(
-                                     q * static_cast<double>(frame_moves.size() - 1))]);
+    return frame_moves.empty()
+               ? 0.0
+               : static_cast<double>(
+                     frame_moves[static_cast<std::size_t>(q * static_cast<double>(frame_moves.size() - 1))]);
   };
   state.counters["moves_p50"] = quantile(0.5);
   state.counters["moves_p99"] = quantile(0.99);
@@ -106,7 +104,7 @@ BENCHMARK(BM_FrameBudget)
     ->Args({10000, 4, 10, kDefaultMaxMoves, 0})
     ->Args({10000, 8, 10, kDefaultMaxMoves, 0})
     ->Args({10000, 4, 50, kDefaultMaxMoves, 0})
-    ->Args({10000, 4, 10, 0, 0})    // no limit: every frame converges (the moves a frame needs)
+    ->Args({10000, 4, 10, 0, 0})  // no limit: every frame converges (the moves a frame needs)
     ->Args({10000, 8, 10, 0, 0})
     ->Args({10000, 4, 50, 0, 0})
     ->Args({10000, 4, 10, 0, 500})  // the former default: 0.5 ms wall clock (not reproducible)

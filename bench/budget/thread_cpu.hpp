@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // This thread's CPU time, for benchmarks on the shared VM: wall time there includes whatever
 // the scheduler gave to other processes (other builds run), so both are reported.
 #pragma once

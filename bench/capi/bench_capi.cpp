@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The C ABI's per-frame cost against the C++ engine's, in one process on the same inputs: 10,000
 // objects (four levels each, spread ahead of the viewer, one in eight moving), data mode, one
 // pushed gaze sample per frame (fixations with a saccade every 300 ms), a turning head.
@@ -51,8 +52,12 @@ void* counted_aligned(std::size_t n, std::align_val_t a) {
 }
 }  // namespace
 
-void* operator new(std::size_t n) { return counted_alloc(n); }
-void* operator new[](std::size_t n) { return counted_alloc(n); }
+void* operator new(std::size_t n) {
+  return counted_alloc(n);
+}
+void* operator new[](std::size_t n) {
+  return counted_alloc(n);
+}
 void* operator new(std::size_t n, const std::nothrow_t&) noexcept {
   try {
     return counted_alloc(n);
@@ -67,16 +72,36 @@ void* operator new[](std::size_t n, const std::nothrow_t&) noexcept {
     return nullptr;
   }
 }
-void* operator new(std::size_t n, std::align_val_t a) { return counted_aligned(n, a); }
-void* operator new[](std::size_t n, std::align_val_t a) { return counted_aligned(n, a); }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
-void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
+void* operator new(std::size_t n, std::align_val_t a) {
+  return counted_aligned(n, a);
+}
+void* operator new[](std::size_t n, std::align_val_t a) {
+  return counted_aligned(n, a);
+}
+void operator delete(void* p) noexcept {
+  std::free(p);
+}
+void operator delete[](void* p) noexcept {
+  std::free(p);
+}
+void operator delete(void* p, std::size_t) noexcept {
+  std::free(p);
+}
+void operator delete[](void* p, std::size_t) noexcept {
+  std::free(p);
+}
+void operator delete(void* p, std::align_val_t) noexcept {
+  std::free(p);
+}
+void operator delete[](void* p, std::align_val_t) noexcept {
+  std::free(p);
+}
+void operator delete(void* p, std::size_t, std::align_val_t) noexcept {
+  std::free(p);
+}
+void operator delete[](void* p, std::size_t, std::align_val_t) noexcept {
+  std::free(p);
+}
 
 namespace gazelod {
 namespace {
@@ -160,7 +185,9 @@ glm::dquat head_orientation(const Motion& m) {
   return glm::angleAxis(m.yaw, glm::dvec3(0.0, 1.0, 0.0)) * glm::angleAxis(m.pitch, glm::dvec3(1.0, 0.0, 0.0));
 }
 
-std::int64_t frame_time(std::uint64_t frame) { return 1'000'000'000 + static_cast<std::int64_t>(frame) * kFrameNs; }
+std::int64_t frame_time(std::uint64_t frame) {
+  return 1'000'000'000 + static_cast<std::int64_t>(frame) * kFrameNs;
+}
 constexpr std::int64_t kSampleLeadNs = 5'000'000;
 
 // ---- the C path -------------------------------------------------------------------------------
@@ -239,7 +266,8 @@ struct CppPath {
       o.radius_m = d.radius_m;
       o.velocity_m_s = {d.velocity_m_s.x, d.velocity_m_s.y, d.velocity_m_s.z};
       for (std::uint32_t k = 0; k < d.level_count; ++k)
-        o.lods.push_back({d.levels[k].triangles, 0, lod::DetailKind::removed_cycles_per_diameter, k == 0 ? 0.0 : d.levels[k].value});
+        o.lods.push_back(
+            {d.levels[k].triangles, 0, lod::DetailKind::removed_cycles_per_diameter, k == 0 ? 0.0 : d.levels[k].value});
       core.add_object(o);
     }
     in.view_count = 2;
@@ -292,14 +320,18 @@ void run(benchmark::State& state, const char* label) {
   const std::uint64_t allocs = g_allocs.load() - allocs0;
   std::size_t reduced = 0;
   for (std::uint8_t l : path.levels) reduced += l > 0;
-  state.counters["allocs_per_frame"] =
-      benchmark::Counter(static_cast<double>(allocs) / static_cast<double>(std::max<benchmark::IterationCount>(state.iterations(), 1)));
+  state.counters["allocs_per_frame"] = benchmark::Counter(
+      static_cast<double>(allocs) / static_cast<double>(std::max<benchmark::IterationCount>(state.iterations(), 1)));
   state.counters["reduced_pct"] = 100.0 * static_cast<double>(reduced) / static_cast<double>(kObjects);
   state.SetLabel(label);
 }
 
-void BM_CapiFrame(benchmark::State& state) { run<CPath>(state, "C ABI: push + begin_frame_data + get_levels"); }
-void BM_CppFrame(benchmark::State& state) { run<CppPath>(state, "C++: LodCore::decide + copy levels"); }
+void BM_CapiFrame(benchmark::State& state) {
+  run<CPath>(state, "C ABI: push + begin_frame_data + get_levels");
+}
+void BM_CppFrame(benchmark::State& state) {
+  run<CppPath>(state, "C++: LodCore::decide + copy levels");
+}
 
 BENCHMARK(BM_CapiFrame)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_CppFrame)->Unit(benchmark::kMicrosecond);
@@ -333,7 +365,8 @@ class RatioReporter : public benchmark::ConsoleReporter {
   void ReportRuns(const std::vector<Run>& runs) override {
     ConsoleReporter::ReportRuns(runs);
     for (const Run& r : runs) {
-      const std::string key = r.run_name.function_name + (r.run_type == Run::RT_Aggregate ? "/" + r.aggregate_name : "");
+      const std::string key =
+          r.run_name.function_name + (r.run_type == Run::RT_Aggregate ? "/" + r.aggregate_name : "");
       if (r.run_type == Run::RT_Iteration) {
         auto& v = single_[r.run_name.function_name];
         v.push_back({r.GetAdjustedRealTime(), r.GetAdjustedCPUTime()});
@@ -356,7 +389,8 @@ class RatioReporter : public benchmark::ConsoleReporter {
     std::printf("C ABI / C++ engine per frame (%zu objects): real %.3f (%.1f / %.1f us), cpu %.3f (%.1f / %.1f us)%s\n",
                 kObjects, c.first / cpp.first, c.first, cpp.first, c.second / cpp.second, c.second, cpp.second,
                 agg_.count("BM_CapiFrame/median") ? " [medians]" : "");
-    for (const auto& [fn, a] : allocs_) std::printf("%s: at most %.3f allocations per frame (timed loop, after warm-up)\n", fn.c_str(), a);
+    for (const auto& [fn, a] : allocs_)
+      std::printf("%s: at most %.3f allocations per frame (timed loop, after warm-up)\n", fn.c_str(), a);
   }
 
  private:

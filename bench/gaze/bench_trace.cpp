@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Trace reading and replay throughput on a generated one-hour 250 Hz trace (900 000 samples,
 // with head pose), against a same-process baseline: counting the file's lines with getline.
 // Peak memory: getrusage(RUSAGE_SELF).ru_maxrss after each benchmark (process high-water
@@ -69,11 +70,9 @@ const std::string& trace_path() {
 }
 
 void finish(benchmark::State& state, std::size_t samples) {
-  state.counters["samples_per_s"] =
-      benchmark::Counter(static_cast<double>(samples), benchmark::Counter::kIsRate);
+  state.counters["samples_per_s"] = benchmark::Counter(static_cast<double>(samples), benchmark::Counter::kIsRate);
   state.counters["peak_rss_MiB"] = maxrss_mib();
-  state.counters["file_MiB"] =
-      static_cast<double>(std::filesystem::file_size(trace_path())) / (1024.0 * 1024.0);
+  state.counters["file_MiB"] = static_cast<double>(std::filesystem::file_size(trace_path())) / (1024.0 * 1024.0);
 }
 
 // Baseline: the cost of just getting the lines off the disk/page cache.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Per-report cost on the HID reader thread. Baseline: copying the 65 report bytes, which any
 // reader does; the others add decoding, device->host time mapping and the screen geometry.
 #include "gaze/hid/clock_map.hpp"
@@ -18,8 +19,7 @@ std::array<std::uint8_t, kTrackingSizeWithHead> make_report(std::uint64_t t_us) 
   std::array<std::uint8_t, kTrackingSizeWithHead> r{};
   r[0] = kReportTrackingData;
   std::memcpy(&r[1], &t_us, 8);  // little-endian host, as on x86-64 and arm64
-  const std::int32_t fields[] = {263520, 148230, -32000, 0,      600000, 32000, 0,
-                                 600000, 0,      0,      680000, 0,      0,     0};
+  const std::int32_t fields[] = {263520, 148230, -32000, 0, 600000, 32000, 0, 600000, 0, 0, 680000, 0, 0, 0};
   std::memcpy(&r[9], fields, sizeof fields);
   return r;
 }

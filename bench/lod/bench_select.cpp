@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ns per object for the full selection (lod/select.hpp) at 1k..1M objects, beside a naive
 // per-object baseline in the same run: array of structs, acos of a dot product, asin, log10
 // and a division per level, as a first implementation of Reddy 1998 would do it.
@@ -137,9 +138,8 @@ void naive_select(const Viewer& vw, const std::vector<NaiveObject>& objs, std::v
     const double a_c = vw.scale * std::min(gv * m, vw.xi_cpd);
     const double alpha_deg = alpha * 180 / M_PI;
     auto freq = [&](const LodLevel& l) {
-      return l.detail_kind == DetailKind::removed_cycles_per_diameter
-                 ? l.detail / (2.0 * alpha_deg)
-                 : 1.0 / (2.0 * (l.detail / d) * 180 / M_PI);
+      return l.detail_kind == DetailKind::removed_cycles_per_diameter ? l.detail / (2.0 * alpha_deg)
+                                                                      : 1.0 / (2.0 * (l.detail / d) * 180 / M_PI);
     };
     const double f1 = o.lods.size() > 1 ? freq(o.lods[1]) : 0.0;
     const double shrink = f1 > a0 ? a0 / f1 * (1.0 - 1e-15) : 1.0;  // size off

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The peer: OpenSceneGraph's osg::LOD in PIXEL_SIZE_ON_SCREEN mode against gazelod's
 // select_lods over the same objects, in the same process. OSG's selection happens in the cull
 // traversal (osgUtil::CullVisitor, as osgViewer runs it each frame); each object is an
@@ -46,7 +47,6 @@ struct CountTriangles : osg::DrawableCullCallback {
   std::uint32_t triangles_;
 };
 
-
 osg::ref_ptr<osg::Group> build_osg(const std::vector<PeerObject>& objects, std::uint64_t* counter) {
   osg::ref_ptr<osg::Group> root = new osg::Group;
   std::vector<osg::ref_ptr<CountTriangles>> callbacks;
@@ -89,8 +89,8 @@ void osg_cull(benchmark::State& state, bool culling) {
   stage->setViewport(viewport.get());
   cv->setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR);
   if (!culling) cv->setCullingMode(osg::CullSettings::NO_CULLING);
-  osg::ref_ptr<osg::RefMatrix> projection = new osg::RefMatrix(
-      osg::Matrix::perspective(kFovVDeg, static_cast<double>(kWidthPx) / kHeightPx, 0.1, 1000.0));
+  osg::ref_ptr<osg::RefMatrix> projection =
+      new osg::RefMatrix(osg::Matrix::perspective(kFovVDeg, static_cast<double>(kWidthPx) / kHeightPx, 0.1, 1000.0));
   osg::ref_ptr<osg::RefMatrix> view = new osg::RefMatrix(osg::Matrix::identity());  // eye at 0, looking -Z
   std::uint64_t triangles = 0;
   const double cpu0 = thread_cpu_s();
@@ -149,10 +149,18 @@ void gazelod_select(benchmark::State& state, bool all) {
   state.counters["triangles"] = static_cast<double>(triangles);
 }
 
-void Osg_NoCulling(benchmark::State& s) { osg_cull(s, false); }
-void Osg_FrustumCull(benchmark::State& s) { osg_cull(s, true); }
-void Gazelod_Size(benchmark::State& s) { gazelod_select(s, false); }
-void Gazelod_All(benchmark::State& s) { gazelod_select(s, true); }
+void Osg_NoCulling(benchmark::State& s) {
+  osg_cull(s, false);
+}
+void Osg_FrustumCull(benchmark::State& s) {
+  osg_cull(s, true);
+}
+void Gazelod_Size(benchmark::State& s) {
+  gazelod_select(s, false);
+}
+void Gazelod_All(benchmark::State& s) {
+  gazelod_select(s, true);
+}
 
 BENCHMARK(Osg_NoCulling)->Arg(100)->Arg(1000)->Arg(10000);
 BENCHMARK(Osg_FrustumCull)->Arg(100)->Arg(1000)->Arg(10000);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The objects both sides of the peer benchmark select LODs for: Reddy 1998's test environment
 // (four LODs of 3928, 834, 254, 76 triangles; removed detail sqrt(triangles) / 2 cycles per
 // diameter), randomly placed ahead of a viewer on a 1280x1024, 43.6 x 33.4 deg display.
@@ -44,12 +45,16 @@ inline std::vector<PeerObject> peer_objects(std::size_t n, std::uint64_t seed = 
 }
 
 // Removed cycles per diameter of level k >= 1.
-inline double removed_cycles(std::size_t level) { return std::sqrt(static_cast<double>(kTriangles[level])) / 2.0; }
+inline double removed_cycles(std::size_t level) {
+  return std::sqrt(static_cast<double>(kTriangles[level])) / 2.0;
+}
 
 // The pixel diameter below which level k >= 1 is invisible for a still, foveal object by
 // Reddy 1998's size criterion (a pixel is half a cycle, so c cycles need 2c pixels): this is
 // what osg::LOD's PIXEL_SIZE_ON_SCREEN ranges are set from, so both sides implement the
 // same rule and differ only in how they evaluate it.
-inline double level_max_pixels(std::size_t level) { return 2.0 * removed_cycles(level); }
+inline double level_max_pixels(std::size_t level) {
+  return 2.0 * removed_cycles(level);
+}
 
 }  // namespace gazelod::peer

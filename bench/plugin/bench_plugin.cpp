@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Plugin per-frame cost for 10k objects (the target: begin_frame at most 0.5 ms on one
 // core), over gazelod's simulated OpenXR runtime, unpaced. The same process also times the
 // bare selection (lod::select_lods) on the same objects, so the ratio shows what the OpenXR

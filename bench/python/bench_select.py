@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The Python binding's call overhead on the selection (docs/python.md, bench/RESULTS.md):
 gazelod.select on 100k objects against the same selection timed inside C++
 (gazelod._gazelod._time_select_cpp) on the same ObjectSet and viewer. The difference is what a

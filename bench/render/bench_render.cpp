@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Renderer throughput on the offscreen device (lavapipe here): the same field of objects
 // drawn at full detail (baseline), LOD-reduced the way the gaze-contingent selection tends to
 // (finest near the gaze, coarser with eccentricity), and with nothing but the clear.
@@ -60,9 +61,9 @@ Scene* scene(std::size_t objects) {
     const double depth = 2.0 + 18.0 * static_cast<double>((i * 7919) % objects) / count_d;
     const glm::dvec3 c(u * depth * std::tan(half) * 0.9, v * depth * std::tan(half) * 0.9, -depth);
     const float radius = static_cast<float>(0.35 * depth * std::tan(half) / side_d);
-    const double ecc_deg =
-        std::atan2(glm::length(glm::cross(glm::normalize(c), glm::dvec3(0, 0, -1))), glm::dot(glm::normalize(c), glm::dvec3(0, 0, -1))) *
-        180.0 / std::numbers::pi;
+    const double ecc_deg = std::atan2(glm::length(glm::cross(glm::normalize(c), glm::dvec3(0, 0, -1))),
+                                      glm::dot(glm::normalize(c), glm::dvec3(0, 0, -1))) *
+                           180.0 / std::numbers::pi;
     const std::uint32_t level = ecc_deg < 5.0 ? 0u : ecc_deg < 15.0 ? 1u : ecc_deg < 30.0 ? 2u : 3u;
     sc->full.push_back({glm::vec3(c), radius, sc->mesh_ids[0], 0});
     sc->reduced.push_back({glm::vec3(c), radius, sc->mesh_ids[level], level});
@@ -87,9 +88,15 @@ void run(benchmark::State& state, bool reduced, bool empty) {
   state.counters["triangles"] = static_cast<double>(s->renderer->triangles_last_frame());
 }
 
-void BM_RenderFullDetail(benchmark::State& state) { run(state, false, false); }
-void BM_RenderLodReduced(benchmark::State& state) { run(state, true, false); }
-void BM_RenderClearOnly(benchmark::State& state) { run(state, false, true); }
+void BM_RenderFullDetail(benchmark::State& state) {
+  run(state, false, false);
+}
+void BM_RenderLodReduced(benchmark::State& state) {
+  run(state, true, false);
+}
+void BM_RenderClearOnly(benchmark::State& state) {
+  run(state, false, true);
+}
 
 }  // namespace
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What a cluster cut's triangles cost on the offscreen device (lavapipe here), against the
 // part of a frame that does not scale with triangles. One process, one scene: the default
 // generated terrain (bake/terrain_mesh.hpp, 1,002,528 triangles), its cluster hierarchy
@@ -79,8 +80,12 @@ std::uint32_t eye_divisor() {
   }();
   return d;
 }
-std::uint32_t eye_width() { return kEyeWidth / eye_divisor(); }
-std::uint32_t eye_height() { return kEyeHeight / eye_divisor(); }
+std::uint32_t eye_width() {
+  return kEyeWidth / eye_divisor();
+}
+std::uint32_t eye_height() {
+  return kEyeHeight / eye_divisor();
+}
 constexpr double kHalfIpdM = 0.032, kEyeHeightM = 1.6, kPitchDownDeg = 15.0;
 
 struct Scene {
@@ -153,8 +158,7 @@ SizeClasses size_classes(const gr::EyeView& view, const std::vector<float>& xyz,
       continue;
     }
     std::array<glm::dvec2, 3> px;
-    for (int k = 0; k < 3; ++k)
-      px[k] = {c[k].x / c[k].w * 0.5 * eye_width(), c[k].y / c[k].w * 0.5 * eye_height()};
+    for (int k = 0; k < 3; ++k) px[k] = {c[k].x / c[k].w * 0.5 * eye_width(), c[k].y / c[k].w * 0.5 * eye_height()};
     const glm::dvec2 u = px[1] - px[0], w = px[2] - px[0];
     (0.5 * std::abs(u.x * w.y - u.y * w.x) < 1.0 ? n.sub_pixel : n.covering) += 1;
   }
@@ -211,8 +215,9 @@ std::unique_ptr<Scene> build_scene() {
   const double radius = std::sqrt(r2);
   std::vector<glm::vec3> unit(nv);
   for (std::size_t v = 0; v < nv; ++v)
-    unit[v] = glm::vec3((glm::dvec3(terrain.positions[3 * v], terrain.positions[3 * v + 1],
-                                    terrain.positions[3 * v + 2]) - center) / radius);
+    unit[v] = glm::vec3(
+        (glm::dvec3(terrain.positions[3 * v], terrain.positions[3 * v + 1], terrain.positions[3 * v + 2]) - center) /
+        radius);
 
   s->device = std::make_unique<gr::OffscreenDevice>(false);
   const std::uint32_t whole_mesh = s->meshes.add_mesh(unit, terrain.indices);
@@ -271,8 +276,10 @@ void run(benchmark::State& state, Case which) {
   }
   const bool readback = state.range(0) != 0;
   const std::vector<gr::DrawItem> none;
-  const std::vector<gr::DrawItem>& items =
-      which == Case::empty ? none : which == Case::coarse ? s->coarse : which == Case::whole ? s->whole : s->cut;
+  const std::vector<gr::DrawItem>& items = which == Case::empty    ? none
+                                           : which == Case::coarse ? s->coarse
+                                           : which == Case::whole  ? s->whole
+                                                                   : s->cut;
   for (auto& eye : s->eyes) {
     eye->set_merge_draws(which != Case::per_cluster);
     eye->set_multi_draw(which == Case::merged_indirect || which == Case::culled);
@@ -309,8 +316,8 @@ void run(benchmark::State& state, Case which) {
   const gr::RgbaImage img = s->eyes[0]->read_back(0);
   std::size_t covered = 0;
   for (std::size_t i = 0; i < img.pixels.size(); i += 4)
-    covered += img.pixels[i] != img.pixels[0] || img.pixels[i + 1] != img.pixels[1] ||
-               img.pixels[i + 2] != img.pixels[2];
+    covered +=
+        img.pixels[i] != img.pixels[0] || img.pixels[i + 1] != img.pixels[1] || img.pixels[i + 2] != img.pixels[2];
   state.counters["covered_px"] = static_cast<double>(covered);
   state.counters["triangles"] = static_cast<double>(triangles);
   state.counters["draws"] = static_cast<double>(draws);
@@ -318,7 +325,9 @@ void run(benchmark::State& state, Case which) {
 }
 
 // Real time: the work happens on lavapipe's threads, not the calling one.
-void BM_Frame(benchmark::State& state, Case which) { run(state, which); }
+void BM_Frame(benchmark::State& state, Case which) {
+  run(state, which);
+}
 
 // The same cases one frame each in turn, the order rotating every round, medians per case:
 // on a machine shared with other work the load drifts over a run of separate cases, and a
@@ -336,10 +345,14 @@ void BM_Interleaved(benchmark::State& state) {
     Case which;
     bool readback;
   };
-  const Entry entries[] = {{"Empty", Case::empty, false},        {"EmptyReadback", Case::empty, true},
-                           {"Coarse", Case::coarse, false},      {"Whole", Case::whole, false},
-                           {"PerCluster", Case::per_cluster, false}, {"Merged", Case::merged, false},
-                           {"MergedIndirect", Case::merged_indirect, false}, {"Culled", Case::culled, false}};
+  const Entry entries[] = {{"Empty", Case::empty, false},
+                           {"EmptyReadback", Case::empty, true},
+                           {"Coarse", Case::coarse, false},
+                           {"Whole", Case::whole, false},
+                           {"PerCluster", Case::per_cluster, false},
+                           {"Merged", Case::merged, false},
+                           {"MergedIndirect", Case::merged_indirect, false},
+                           {"Culled", Case::culled, false}};
   constexpr std::size_t kCases = std::size(entries);
   const auto rounds = static_cast<std::size_t>(state.range(0));
   std::array<std::vector<double>, kCases> ms;
@@ -382,8 +395,8 @@ void BM_Interleaved(benchmark::State& state) {
     const std::array<double, kCases>& t = *stat;
     const double empty = t[0], coarse = t[2], whole = t[3];
     std::printf("\n%zu rounds, %s ms per frame (both eyes):\n", rounds, stat == &median ? "median" : "fastest");
-    std::printf("%-15s %10s %10s %10s %8s %12s %12s\n", "case", "ms", "triangles", "commands", "x_whole",
-                "above_empty", "above_coarse");
+    std::printf("%-15s %10s %10s %10s %8s %12s %12s\n", "case", "ms", "triangles", "commands", "x_whole", "above_empty",
+                "above_coarse");
     for (std::size_t i = 0; i < kCases; ++i)
       std::printf("%-15s %10.1f %10llu %10llu %8.3f %12.3f %12.3f\n", entries[i].name, t[i],
                   static_cast<unsigned long long>(triangles[i]), static_cast<unsigned long long>(commands[i]),
@@ -393,9 +406,8 @@ void BM_Interleaved(benchmark::State& state) {
 
 }  // namespace
 
-#define GAZELOD_FRAME_CASE(name, which)                                                               \
-  BENCHMARK_CAPTURE(BM_Frame, name, which)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime() \
-      ->MinTime(2.0)
+#define GAZELOD_FRAME_CASE(name, which) \
+  BENCHMARK_CAPTURE(BM_Frame, name, which)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0)
 GAZELOD_FRAME_CASE(Empty, Case::empty);
 GAZELOD_FRAME_CASE(Coarse, Case::coarse);
 GAZELOD_FRAME_CASE(Whole, Case::whole);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Frames per second of the unpaced headless simulated runtime, driven through the Khronos
 // loader by a trivial client: the bare frame loop, and the loop with the gaze work a
 // gaze-contingent client does each frame (sync actions, locate gaze and head). Baseline in the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Gazelod.cs: C# bindings for gazelod's C ABI (include/gazelod/gazelod.h, libgazelod.so.1).
 //
 // Two layers, one file (drop it into a Unity project's Assets, or compile it with mcs/csc):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // gazelod._gazelod._cli: the gazelod program's commands called in-process (the same parser and
 // code as the command line), their output captured. The error stream's lines go to a Python
 // callback as they are written (progress), and Ctrl-C raised while a command runs stops it
@@ -99,6 +100,8 @@ py::tuple cli(const std::vector<std::string>& args, py::object on_line) {
 
 }  // namespace
 
-void register_cli(py::module_& m) { m.def("_cli", &cli, py::arg("args"), py::arg("on_line") = py::none()); }
+void register_cli(py::module_& m) {
+  m.def("_cli", &cli, py::arg("args"), py::arg("on_line") = py::none());
+}
 
 }  // namespace gazelod::python

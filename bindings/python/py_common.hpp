@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Shared by the Python binding's files (bindings/python/): pybind11 and the registration
 // functions each file defines.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // gazelod._gazelod: the compiled half of the Python package (bindings/python/gazelod/).
 #include "bindings/python/py_common.hpp"
 

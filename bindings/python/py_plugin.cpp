@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // gazelod._gazelod.Plugin: the C ABI's data mode (include/gazelod/gazelod.h) driven from Python,
 // frame by frame, with numpy arrays in and out. Every call goes through libgazelod's gzl_*
 // functions, as any other language binding's would.
@@ -49,8 +50,9 @@ gzl_level_metric metric_of(const std::string& m) {
   if (m == "removed_cycles_per_diameter") return GZL_LEVEL_REMOVED_CYCLES_PER_DIAMETER;
   if (m == "screen_height_share") return GZL_LEVEL_SCREEN_HEIGHT_SHARE;
   if (m == "pixels_at_full_height") return GZL_LEVEL_PIXELS_AT_FULL_HEIGHT;
-  throw py::value_error("metric must be geometric_error_m, removed_cycles_per_diameter, screen_height_share or "
-                        "pixels_at_full_height");
+  throw py::value_error(
+      "metric must be geometric_error_m, removed_cycles_per_diameter, screen_height_share or "
+      "pixels_at_full_height");
 }
 
 py::dict vec_dict(const gzl_vec3& v) {
@@ -70,22 +72,28 @@ class Plugin {
       const py::dict d = py::cast<py::dict>(h);
       gzl_view g{};
       const Doubles fov = py::cast<Doubles>(d["fov"]);
-      if (fov.ndim() != 1 || fov.shape(0) != 4) throw py::value_error("a view's fov is (left, right, up, down) in radians");
+      if (fov.ndim() != 1 || fov.shape(0) != 4)
+        throw py::value_error("a view's fov is (left, right, up, down) in radians");
       g.fov = {fov.at(0), fov.at(1), fov.at(2), fov.at(3)};
       g.width_px = py::cast<std::uint32_t>(d["width_px"]);
       g.height_px = py::cast<std::uint32_t>(d["height_px"]);
       if (d.contains("position_in_head_m")) g.position_in_head_m = vec(d["position_in_head_m"], "position_in_head_m");
-      if (d.contains("orientation_in_head_xyzw")) g.orientation_in_head = quat(d["orientation_in_head_xyzw"], "orientation_in_head_xyzw");
+      if (d.contains("orientation_in_head_xyzw"))
+        g.orientation_in_head = quat(d["orientation_in_head_xyzw"], "orientation_in_head_xyzw");
       v.push_back(g);
     }
     gzl_config c{};
     c.type = GZL_TYPE_CONFIG;
     c.disable_switch_policy = disable_switch_policy;
     for (const std::string& name : disabled_criteria) {
-      if (name == "size") c.disabled_criteria |= GZL_CRITERION_SIZE;
-      else if (name == "eccentricity") c.disabled_criteria |= GZL_CRITERION_ECCENTRICITY;
-      else if (name == "velocity") c.disabled_criteria |= GZL_CRITERION_VELOCITY;
-      else throw py::value_error("disabled_criteria: '" + name + "' is not size, eccentricity or velocity");
+      if (name == "size")
+        c.disabled_criteria |= GZL_CRITERION_SIZE;
+      else if (name == "eccentricity")
+        c.disabled_criteria |= GZL_CRITERION_ECCENTRICITY;
+      else if (name == "velocity")
+        c.disabled_criteria |= GZL_CRITERION_VELOCITY;
+      else
+        throw py::value_error("disabled_criteria: '" + name + "' is not size, eccentricity or velocity");
     }
     c.gaze_accuracy_deg = gaze_accuracy_deg;
     c.max_gaze_sample_age_s = max_gaze_sample_age_s;
@@ -152,8 +160,8 @@ class Plugin {
   void session_state(int state, std::int64_t t_ns) { check(p_, gzl_on_session_state(p_, state, t_ns)); }
 
   // One sample, or arrays of them (t_ns (N,), direction (N, 3), valid (N,)).
-  void push_gaze(const py::array_t<std::int64_t>& t_ns, const Doubles& direction, std::optional<py::array_t<bool>> valid,
-                 bool in_world) {
+  void push_gaze(const py::array_t<std::int64_t>& t_ns, const Doubles& direction,
+                 std::optional<py::array_t<bool>> valid, bool in_world) {
     const bool one = direction.ndim() == 1;
     const py::ssize_t n = one ? 1 : direction.shape(0);
     if ((one && direction.shape(0) != 3) || (!one && direction.shape(1) != 3) || t_ns.size() != n)
@@ -190,7 +198,8 @@ class Plugin {
     check(p_, gzl_begin_frame_data(p_, &in));
   }
 
-  py::array_t<std::uint8_t> levels(const py::array_t<std::uint64_t, py::array::c_style | py::array::forcecast>& handles) {
+  py::array_t<std::uint8_t> levels(
+      const py::array_t<std::uint64_t, py::array::c_style | py::array::forcecast>& handles) {
     py::array_t<std::uint8_t> out(handles.size());
     check(p_, gzl_get_levels(p_, static_cast<std::uint32_t>(handles.size()), handles.data(), out.mutable_data()));
     return out;
@@ -251,20 +260,22 @@ void register_plugin(py::module_& m) {
     return py::make_tuple(GZL_VERSION_MAJOR(v), GZL_VERSION_MINOR(v), GZL_VERSION_PATCH(v));
   });
   py::class_<Plugin>(m, "Plugin")
-      .def(py::init<const py::list&, bool, double, double, const std::string&, double, const std::vector<std::string>&>(),
+      .def(py::init<const py::list&, bool, double, double, const std::string&, double,
+                    const std::vector<std::string>&>(),
            py::arg("views"), py::arg("disable_switch_policy") = false, py::arg("gaze_accuracy_deg") = 0.0,
            py::arg("max_gaze_sample_age_s") = 0.0, py::arg("hmd_preset") = "", py::arg("frame_budget_ms") = 0.0,
            py::arg("disabled_criteria") = std::vector<std::string>{})
       .def("add_objects", &Plugin::add_objects, py::arg("centers"), py::arg("radii"), py::arg("levels"),
-           py::arg("metric") = "geometric_error_m", py::arg("velocities") = py::none(), py::arg("triangles") = py::none())
+           py::arg("metric") = "geometric_error_m", py::arg("velocities") = py::none(),
+           py::arg("triangles") = py::none())
       .def("remove", &Plugin::remove, py::arg("handles"))
       .def("set_enabled", &Plugin::set_enabled, py::arg("handles"), py::arg("enabled"))
       .def("session_state", &Plugin::session_state, py::arg("state"), py::arg("t_ns"))
       .def("push_gaze", &Plugin::push_gaze, py::arg("t_ns"), py::arg("direction"), py::arg("valid") = py::none(),
            py::arg("in_world") = false)
-      .def("begin_frame", &Plugin::begin_frame, py::arg("t_ns"), py::arg("orientation_xyzw") = py::make_tuple(0, 0, 0, 1),
-           py::arg("position_m") = py::make_tuple(0, 0, 0), py::arg("angular_velocity_rad_s") = py::none(),
-           py::arg("linear_velocity_m_s") = py::none())
+      .def("begin_frame", &Plugin::begin_frame, py::arg("t_ns"),
+           py::arg("orientation_xyzw") = py::make_tuple(0, 0, 0, 1), py::arg("position_m") = py::make_tuple(0, 0, 0),
+           py::arg("angular_velocity_rad_s") = py::none(), py::arg("linear_velocity_m_s") = py::none())
       .def("levels", &Plugin::levels, py::arg("handles"))
       .def("frame_info", &Plugin::frame_info)
       .def("foveal_cone", &Plugin::foveal_cone, py::arg("view") = 0)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // gazelod._gazelod: the perceptual core on numpy arrays. ObjectSet holds the objects in the
 // selection's own layout (built once, in C++); select() runs lod::select_lods on them for one
 // viewer, so a call costs the selection and two output arrays, nothing per object in Python.
@@ -42,9 +43,12 @@ PyObjects make_objects(const Doubles& centers, const Doubles& radii, const Doubl
   if (triangles && (triangles->ndim() != 2 || triangles->shape(0) != n || triangles->shape(1) != levels.shape(1)))
     throw py::value_error("triangles must be an (N, L) array like levels");
   lod::DetailKind k;
-  if (kind == "geometric_error_m") k = lod::DetailKind::geometric_error_m;
-  else if (kind == "removed_cycles_per_diameter") k = lod::DetailKind::removed_cycles_per_diameter;
-  else throw py::value_error("kind must be 'geometric_error_m' or 'removed_cycles_per_diameter'");
+  if (kind == "geometric_error_m")
+    k = lod::DetailKind::geometric_error_m;
+  else if (kind == "removed_cycles_per_diameter")
+    k = lod::DetailKind::removed_cycles_per_diameter;
+  else
+    throw py::value_error("kind must be 'geometric_error_m' or 'removed_cycles_per_diameter'");
   PyObjects o;
   const py::ssize_t width = levels.shape(1);
   o.store.reserve(static_cast<std::size_t>(n), static_cast<std::size_t>(n * width));
@@ -62,7 +66,8 @@ PyObjects make_objects(const Doubles& centers, const Doubles& radii, const Doubl
       if (triangles) level.triangles = triangles->at(i, j);
       chain.push_back(level);
     }
-    const glm::dvec3 v = velocities ? glm::dvec3(velocities->at(i, 0), velocities->at(i, 1), velocities->at(i, 2)) : glm::dvec3(0.0);
+    const glm::dvec3 v =
+        velocities ? glm::dvec3(velocities->at(i, 0), velocities->at(i, 1), velocities->at(i, 2)) : glm::dvec3(0.0);
     try {
       o.store.add({c(i, 0), c(i, 1), c(i, 2)}, r(i), v, chain);
     } catch (const std::invalid_argument& e) {
@@ -78,25 +83,36 @@ lod::Viewer make_viewer(const py::kwargs& kw) {
     const std::string key = py::str(item.first);
     const py::handle val = item.second;
     try {
-    if (key == "gaze_direction") v.gaze_direction = vec3(py::cast<Doubles>(val), "gaze_direction");
-    else if (key == "eye_position_m") v.eye_position_m = vec3(py::cast<Doubles>(val), "eye_position_m");
-    else if (key == "eye_velocity_m_s") v.eye_velocity_m_s = vec3(py::cast<Doubles>(val), "eye_velocity_m_s");
-    else if (key == "head_angular_velocity_rad_s") v.head_angular_velocity_rad_s = vec3(py::cast<Doubles>(val), key.c_str());
-    else if (key == "gaze_angular_velocity_in_head_rad_s") v.gaze_angular_velocity_in_head_rad_s = vec3(py::cast<Doubles>(val), key.c_str());
-    else if (key == "xi_cpd") v.xi_cpd = py::cast<double>(val);
-    else if (key == "tracker_error_deg") v.tracker_error_deg = py::cast<double>(val);
-    else if (key == "scale") v.scale = py::cast<double>(val);
-    else if (key == "use_size") v.use_size = py::cast<bool>(val);
-    else if (key == "use_eccentricity") v.use_eccentricity = py::cast<bool>(val);
-    else if (key == "use_velocity") v.use_velocity = py::cast<bool>(val);
-    else if (key == "hmd") {
-      const std::string name = py::cast<std::string>(val);
-      const lod::DisplaySpec* d = lod::find_display_preset(name);
-      if (!d) throw py::value_error("unknown HMD preset '" + name + "' (gazelod.hmds() lists them)");
-      v.xi_cpd = lod::xi_cpd(*d);
-    } else {
-      throw py::type_error("select() got an unexpected viewer field '" + key + "'");
-    }
+      if (key == "gaze_direction")
+        v.gaze_direction = vec3(py::cast<Doubles>(val), "gaze_direction");
+      else if (key == "eye_position_m")
+        v.eye_position_m = vec3(py::cast<Doubles>(val), "eye_position_m");
+      else if (key == "eye_velocity_m_s")
+        v.eye_velocity_m_s = vec3(py::cast<Doubles>(val), "eye_velocity_m_s");
+      else if (key == "head_angular_velocity_rad_s")
+        v.head_angular_velocity_rad_s = vec3(py::cast<Doubles>(val), key.c_str());
+      else if (key == "gaze_angular_velocity_in_head_rad_s")
+        v.gaze_angular_velocity_in_head_rad_s = vec3(py::cast<Doubles>(val), key.c_str());
+      else if (key == "xi_cpd")
+        v.xi_cpd = py::cast<double>(val);
+      else if (key == "tracker_error_deg")
+        v.tracker_error_deg = py::cast<double>(val);
+      else if (key == "scale")
+        v.scale = py::cast<double>(val);
+      else if (key == "use_size")
+        v.use_size = py::cast<bool>(val);
+      else if (key == "use_eccentricity")
+        v.use_eccentricity = py::cast<bool>(val);
+      else if (key == "use_velocity")
+        v.use_velocity = py::cast<bool>(val);
+      else if (key == "hmd") {
+        const std::string name = py::cast<std::string>(val);
+        const lod::DisplaySpec* d = lod::find_display_preset(name);
+        if (!d) throw py::value_error("unknown HMD preset '" + name + "' (gazelod.hmds() lists them)");
+        v.xi_cpd = lod::xi_cpd(*d);
+      } else {
+        throw py::type_error("select() got an unexpected viewer field '" + key + "'");
+      }
     } catch (const py::cast_error&) {
       throw py::type_error("select(): viewer field '" + key + "' has the wrong type (" +
                            std::string(py::str(py::type::of(val).attr("__name__"))) + ")");

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // gazelod._gazelod: traces as numpy arrays (read_trace) and their classification (classify),
 // through the same readers and classifier as `gazelod trace stats`.
 #include "bindings/python/py_common.hpp"
@@ -16,7 +17,8 @@ namespace {
 gaze::TraceFormat format_of(const std::string& name) {
   const auto f = gaze::parse_trace_format(name);
   if (!f)
-    throw py::value_error("format '" + name + "' is not one of auto, gazelod, gazebasevr, pupil, pupil_cloud, sranipal");
+    throw py::value_error("format '" + name +
+                          "' is not one of auto, gazelod, gazebasevr, pupil, pupil_cloud, sranipal");
   return *f;
 }
 
@@ -45,7 +47,8 @@ py::dict read_trace(const std::string& path, const std::string& format, bool len
     gaze::ReadOptions options;
     options.lenient = lenient;
     auto stream = gaze::open_trace(path, format_of(format), options);
-    detected = std::string(gaze::trace_format_name(gaze::opened_trace_format(*stream).value_or(gaze::TraceFormat::gazelod)));
+    detected =
+        std::string(gaze::trace_format_name(gaze::opened_trace_format(*stream).value_or(gaze::TraceFormat::gazelod)));
     with_head = stream->has_head();
     gaze::TraceRecord r;
     while (stream->next(r)) {
@@ -86,7 +89,8 @@ py::dict classify(const std::string& path, const std::string& format) {
     st = gaze::compute_trace_stats(*stream, {}, {}, {}, &c);
   }
   std::vector<std::uint8_t> label(c.label.size());
-  std::transform(c.label.begin(), c.label.end(), label.begin(), [](gaze::GazeLabel l) { return static_cast<std::uint8_t>(l); });
+  std::transform(c.label.begin(), c.label.end(), label.begin(),
+                 [](gaze::GazeLabel l) { return static_cast<std::uint8_t>(l); });
   std::vector<std::int64_t> s_start, s_end, f_start, f_end;
   std::vector<double> s_amp, s_peak;
   for (const auto& s : c.saccades) {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "gaze/hid/clock_map.hpp"
 
 #include <algorithm>
@@ -7,8 +8,7 @@ namespace gazelod::gaze::hid {
 
 ClockMap::ClockMap(ClockMapConfig config) : config_(config) {
   config_.counter_bits = std::clamp(config_.counter_bits, 8, 64);
-  mask_ = config_.counter_bits >= 64 ? ~std::uint64_t{0}
-                                     : (std::uint64_t{1} << config_.counter_bits) - 1;
+  mask_ = config_.counter_bits >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << config_.counter_bits) - 1;
   if (config_.window_ns < 1) config_.window_ns = 1;
   if (config_.max_windows < 2) config_.max_windows = 2;
 }
@@ -67,9 +67,8 @@ void ClockMap::refit() {
   // Completed windows only (the last one is still collecting its minimum), once there are two.
   const std::size_t done = windows_.size() - 1;
   if (done < 2) {
-    auto best = std::min_element(
-        windows_.begin(), windows_.end(),
-        [](const Window& a, const Window& b) { return a.offset_ns < b.offset_ns; });
+    auto best = std::min_element(windows_.begin(), windows_.end(),
+                                 [](const Window& a, const Window& b) { return a.offset_ns < b.offset_ns; });
     fit_x_ns_ = static_cast<double>(best->device_ns);
     fit_y_ns_ = best->offset_ns;
     slope_ = 0.0;

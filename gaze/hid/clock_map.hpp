@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Maps a tracker's device timestamps (microseconds, on its own clock) to the host clock the
 // frame loop uses (nanoseconds), estimating offset and drift from (device time, host receive
 // time) pairs. The USB transfer only ever adds latency, so the lowest "receive - device" values
@@ -58,7 +59,7 @@ class ClockMap {
   std::uint64_t last_raw_ = 0;
   std::int64_t device_ns_ = 0;
   std::int64_t window_start_ns_ = 0;
-  std::deque<Window> windows_;  // completed windows, then the current one at the back
+  std::deque<Window> windows_;                            // completed windows, then the current one at the back
   double fit_x_ns_ = 0.0, fit_y_ns_ = 0.0, slope_ = 0.0;  // offset(x) = fit_y + slope (x - fit_x)
   std::size_t clock_resets_ = 0;
 };

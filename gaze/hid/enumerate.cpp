@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "gaze/hid/enumerate.hpp"
 
 #include "gaze/hid/reports.hpp"
@@ -63,7 +64,8 @@ std::string check_hidraw_path(const std::string& path) {
   struct stat st {};
   if (::stat(path.c_str(), &st) != 0) return path + ": " + std::strerror(errno);
   if (!S_ISCHR(st.st_mode)) return path + ": not a character device (an eye tracker is a /dev/hidrawN)";
-  const std::string sys = "/sys/dev/char/" + std::to_string(major(st.st_rdev)) + ":" + std::to_string(minor(st.st_rdev));
+  const std::string sys =
+      "/sys/dev/char/" + std::to_string(major(st.st_rdev)) + ":" + std::to_string(minor(st.st_rdev));
   std::error_code ec;
   const std::filesystem::path subsystem = std::filesystem::read_symlink(sys + "/subsystem", ec);
   if (ec || subsystem.filename() != "hidraw")

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Finding eye trackers: HID devices whose top-level collection is on the "Eye and Head
 // Trackers" usage page (0x12). hidapi reports usage_page/usage per collection on the hidraw,
 // Windows and macOS backends (not libusb), which is the backend gazelod links.

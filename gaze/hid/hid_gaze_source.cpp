@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "gaze/hid/hid_gaze_source.hpp"
 
 namespace gazelod::gaze::hid {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The HID eye tracker as a GazeSource: the frame loop asks for gaze at time t and gets the
 // newest valid sample taken at or before t, held for at most `max_hold_ns` (a blink or a late
 // report), else nothing. sample_at() only drains the reader thread's queue (never blocks).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The HID eye tracker device thread: finds a usage-page-0x12 device, opens it, reads its
 // Capabilities / Configuration / Status feature reports, requests gaze mode through the Control
 // report, then reads Tracking Data input reports into a bounded queue, mapping device time to

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "gaze/hid/reports.hpp"
 
 #include <sstream>
@@ -33,9 +34,7 @@ class Reader {
     return p;
   }
 
-  DecodeError error(std::size_t at, std::string message) const {
-    return DecodeError{report_, at, std::move(message)};
-  }
+  DecodeError error(std::size_t at, std::string message) const { return DecodeError{report_, at, std::move(message)}; }
   // Common checks: a report ID byte that matches, and `need` bytes in total.
   std::optional<DecodeError> check_header(std::uint8_t id, std::size_t need) {
     if (b_.empty()) return error(0, "empty report");
@@ -82,19 +81,23 @@ std::string DecodeError::to_string() const {
 
 const char* to_string(ConfigurationStatus s) {
   switch (s) {
-    case ConfigurationStatus::kReserved: return "reserved";
-    case ConfigurationStatus::kReady: return "ready";
-    case ConfigurationStatus::kConfiguring: return "configuring";
-    case ConfigurationStatus::kScreenSetupNeeded: return "screen setup needed";
-    case ConfigurationStatus::kUserCalibrationNeeded: return "user calibration needed";
+    case ConfigurationStatus::kReserved:
+      return "reserved";
+    case ConfigurationStatus::kReady:
+      return "ready";
+    case ConfigurationStatus::kConfiguring:
+      return "configuring";
+    case ConfigurationStatus::kScreenSetupNeeded:
+      return "screen setup needed";
+    case ConfigurationStatus::kUserCalibrationNeeded:
+      return "user calibration needed";
   }
   return "unknown";
 }
 
 Decoded<Capabilities> decode_capabilities(std::span<const std::uint8_t> report) {
   Reader r(report, "capabilities");
-  if (auto e = r.check_header(kReportCapabilities, kCapabilitiesSize))
-    return fail<Capabilities>(*e);
+  if (auto e = r.check_header(kReportCapabilities, kCapabilitiesSize)) return fail<Capabilities>(*e);
   Capabilities c;
   c.tracker_quality = r.u8();
   c.min_tracking_distance_um = r.u32();
@@ -109,8 +112,7 @@ Decoded<Capabilities> decode_capabilities(std::span<const std::uint8_t> report) 
   return ok(c);
 }
 
-Decoded<Configuration> decode_configuration(std::span<const std::uint8_t> report,
-                                            const ReportLayout& layout) {
+Decoded<Configuration> decode_configuration(std::span<const std::uint8_t> report, const ReportLayout& layout) {
   Reader r(report, "configuration");
   if (auto e = r.check_header(kReportConfiguration, kConfigurationSize + layout.configuration_pad))
     return fail<Configuration>(*e);
@@ -132,14 +134,12 @@ Decoded<Configuration> decode_configuration(std::span<const std::uint8_t> report
 
 Decoded<Status> decode_status(std::span<const std::uint8_t> report, const ReportLayout& layout) {
   Reader r(report, "status");
-  if (auto e = r.check_header(kReportStatus, kStatusSize + layout.status_pad))
-    return fail<Status>(*e);
+  if (auto e = r.check_header(kReportStatus, kStatusSize + layout.status_pad)) return fail<Status>(*e);
   r.skip(layout.status_pad);
   const std::size_t status_at = r.offset();
   const std::uint8_t raw = r.u8();
   if (raw > static_cast<std::uint8_t>(ConfigurationStatus::kUserCalibrationNeeded))
-    return fail<Status>(
-        r.error(status_at, "configuration status " + std::to_string(raw) + " outside 0..4"));
+    return fail<Status>(r.error(status_at, "configuration status " + std::to_string(raw) + " outside 0..4"));
   Status s;
   s.configuration_status = static_cast<ConfigurationStatus>(raw);
   s.sampling_frequency_hz = r.u16();
@@ -159,17 +159,14 @@ Decoded<std::uint8_t> decode_control(std::span<const std::uint8_t> report) {
   return ok(mode);
 }
 
-Decoded<TrackingData> decode_tracking(std::span<const std::uint8_t> report,
-                                      const ReportLayout& layout) {
+Decoded<TrackingData> decode_tracking(std::span<const std::uint8_t> report, const ReportLayout& layout) {
   Reader r(report, "tracking data");
   const std::size_t pad = layout.tracking_pad;
-  if (auto e = r.check_header(kReportTrackingData, kTrackingSizeNoHead + pad))
-    return fail<TrackingData>(*e);
+  if (auto e = r.check_header(kReportTrackingData, kTrackingSizeNoHead + pad)) return fail<TrackingData>(*e);
   // Exactly the short form, or at least the long form: anything between is a cut-off head block.
   const std::size_t n = report.size();
   if (n > kTrackingSizeNoHead + pad && n < kTrackingSizeWithHead + pad)
-    return fail<TrackingData>(r.error(n, "report is " + std::to_string(n) +
-                                             " bytes: head fields cut off (expected " +
+    return fail<TrackingData>(r.error(n, "report is " + std::to_string(n) + " bytes: head fields cut off (expected " +
                                              std::to_string(kTrackingSizeNoHead + pad) + " or " +
                                              std::to_string(kTrackingSizeWithHead + pad) + ")"));
   r.skip(pad);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Pure decoders for the HID "Eye and Head Trackers" usage page (0x12, HUTRR74) reports, as
 // Windows eye trackers implement it. Plain bytes in, plain structs out; every error names the
 // report and the byte offset where decoding failed. No hidapi here.
@@ -85,8 +86,7 @@ struct Configuration {
   std::int32_t calibrated_screen_height_um = 0;
 };
 inline constexpr std::size_t kConfigurationSize = 19;  // without padding
-Decoded<Configuration> decode_configuration(std::span<const std::uint8_t> report,
-                                            const ReportLayout& layout = {});
+Decoded<Configuration> decode_configuration(std::span<const std::uint8_t> report, const ReportLayout& layout = {});
 
 // Configuration status values (Tracker.h TRACKER_STATUS_*; HUTRR74 usage 0x301).
 enum class ConfigurationStatus : std::uint8_t {
@@ -104,8 +104,7 @@ struct Status {
   std::uint16_t sampling_frequency_hz = 0;
 };
 inline constexpr std::size_t kStatusSize = 4;  // without padding
-Decoded<Status> decode_status(std::span<const std::uint8_t> report,
-                              const ReportLayout& layout = {});
+Decoded<Status> decode_status(std::span<const std::uint8_t> report, const ReportLayout& layout = {});
 
 // Control feature report (0x14): the mode request bits (Tracker.h MODE_REQUEST_ENABLE_*).
 inline constexpr std::uint8_t kModeGazePoint = 1;
@@ -135,7 +134,6 @@ struct TrackingData {
 // Without head fields: ID + 8 + 2*4 + 2*3*4 = 41 bytes; with them 65 (plus layout padding).
 inline constexpr std::size_t kTrackingSizeNoHead = 41;
 inline constexpr std::size_t kTrackingSizeWithHead = 65;
-Decoded<TrackingData> decode_tracking(std::span<const std::uint8_t> report,
-                                      const ReportLayout& layout = {});
+Decoded<TrackingData> decode_tracking(std::span<const std::uint8_t> report, const ReportLayout& layout = {});
 
 }  // namespace gazelod::gaze::hid

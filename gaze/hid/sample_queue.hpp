@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A bounded queue between the HID reader thread (producer) and the frame loop (consumer).
 // The producer never grows it past its capacity: when full it drops the oldest sample (new gaze
 // is worth more than old) and counts the drop. The consumer never waits: drain() uses try_lock

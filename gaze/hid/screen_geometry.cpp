@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "gaze/hid/screen_geometry.hpp"
 
 #include <glm/geometric.hpp>
@@ -24,8 +25,7 @@ glm::dvec3 eye_in_s(const Point3Um& p, const ScreenGeometry& g) {
 }  // namespace
 
 std::string validate(const ScreenGeometry& g) {
-  if (!(std::isfinite(g.width_m) && g.width_m > 0.0 && std::isfinite(g.height_m) &&
-        g.height_m > 0.0))
+  if (!(std::isfinite(g.width_m) && g.width_m > 0.0 && std::isfinite(g.height_m) && g.height_m > 0.0))
     return "screen size must be finite and > 0 m, got " + std::to_string(g.width_m) + " x " +
            std::to_string(g.height_m);
   return "";
@@ -45,9 +45,7 @@ GazeSample gaze_from_screen(const TrackingData& t, const ScreenGeometry& g) {
 
   const double gx = t.gaze_x_um * kUmToM, gy = t.gaze_y_um * kUmToM;
   // Trackers report a little beyond the edges; half a screen beyond is not a gaze point.
-  if (gx < -0.5 * g.width_m || gx > 1.5 * g.width_m || gy < -0.5 * g.height_m ||
-      gy > 1.5 * g.height_m)
-    return s;
+  if (gx < -0.5 * g.width_m || gx > 1.5 * g.width_m || gy < -0.5 * g.height_m || gy > 1.5 * g.height_m) return s;
   const glm::dvec3 point{gx - 0.5 * g.width_m, 0.5 * g.height_m - gy, 0.0};
 
   const glm::dvec3 d = point - eye;

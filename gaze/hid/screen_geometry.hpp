@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // From a screen-plane tracker's report (gaze point on the screen, eye positions in front of it)
 // to a gaze direction in head space for the LOD core.
 //

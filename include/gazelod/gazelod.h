@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* gazelod: gaze-contingent level of detail, C ABI (C99; also valid C++17).
  *
  * One opaque handle, gzl_plugin, created in one of two modes:
@@ -15,8 +16,8 @@
  *     "the default" wherever a field says so.
  *   - Every function but gzl_version, gzl_result_to_string and gzl_destroy returns a gzl_result;
  *     on failure gzl_get_last_error gives a message that names the field at fault and the
- *     remedy (a message longer than the buffer is cut; *length says its full size). No exception and no C++ type crosses the
- *     boundary; the per-frame calls do not allocate.
+ *     remedy (a message longer than the buffer is cut; *length says its full size). No exception and no C++ type
+ * crosses the boundary; the per-frame calls do not allocate.
  *   - Inputs are copied before a call returns (create infos, views, configs and their strings,
  *     levels, samples, frame inputs): nothing the application passes must outlive the call.
  *     Lent OpenXR handles (base and gaze spaces) are used until replaced or gzl_shutdown.
@@ -67,20 +68,20 @@ GZL_API uint32_t gzl_version(void);
 /* ---- results ------------------------------------------------------------------------------ */
 typedef enum gzl_result {
   GZL_SUCCESS = 0,
-  GZL_ERROR_NULL_HANDLE = -1,        /* the gzl_plugin is NULL */
-  GZL_ERROR_NULL_POINTER = -2,       /* a required pointer argument or field is NULL */
-  GZL_ERROR_STRUCT_TYPE = -3,        /* a struct's `type` is not the one this call takes */
-  GZL_ERROR_INVALID_ARGUMENT = -4,   /* not finite, out of range, inconsistent (the message says which field) */
-  GZL_ERROR_TIME_OUT_OF_ORDER = -5,  /* a gaze sample older than the last one pushed */
-  GZL_ERROR_TIME_IN_FUTURE = -6,     /* a gaze sample later than the frame clock allows */
-  GZL_ERROR_OBJECT_INVALID = -7,     /* an object handle that was removed or never issued */
-  GZL_ERROR_WRONG_MODE = -8,         /* an OpenXR-mode call on a data-mode plugin, or the reverse */
-  GZL_ERROR_OPENXR_CALL = -9,        /* an OpenXR call failed; the message names it and its XrResult */
-  GZL_ERROR_OPENXR_FUNCTION = -10,   /* xrGetInstanceProcAddr gave no pointer for a function gazelod needs */
-  GZL_ERROR_CAPACITY = -11,          /* an output array is too small (the needed count is written) */
-  GZL_ERROR_SHUT_DOWN = -12,         /* the plugin was shut down (gzl_shutdown): only gzl_destroy remains */
+  GZL_ERROR_NULL_HANDLE = -1,       /* the gzl_plugin is NULL */
+  GZL_ERROR_NULL_POINTER = -2,      /* a required pointer argument or field is NULL */
+  GZL_ERROR_STRUCT_TYPE = -3,       /* a struct's `type` is not the one this call takes */
+  GZL_ERROR_INVALID_ARGUMENT = -4,  /* not finite, out of range, inconsistent (the message says which field) */
+  GZL_ERROR_TIME_OUT_OF_ORDER = -5, /* a gaze sample older than the last one pushed */
+  GZL_ERROR_TIME_IN_FUTURE = -6,    /* a gaze sample later than the frame clock allows */
+  GZL_ERROR_OBJECT_INVALID = -7,    /* an object handle that was removed or never issued */
+  GZL_ERROR_WRONG_MODE = -8,        /* an OpenXR-mode call on a data-mode plugin, or the reverse */
+  GZL_ERROR_OPENXR_CALL = -9,       /* an OpenXR call failed; the message names it and its XrResult */
+  GZL_ERROR_OPENXR_FUNCTION = -10,  /* xrGetInstanceProcAddr gave no pointer for a function gazelod needs */
+  GZL_ERROR_CAPACITY = -11,         /* an output array is too small (the needed count is written) */
+  GZL_ERROR_SHUT_DOWN = -12,        /* the plugin was shut down (gzl_shutdown): only gzl_destroy remains */
   GZL_ERROR_OUT_OF_MEMORY = -13,
-  GZL_ERROR_INTERNAL = -14,          /* a bug in gazelod: please report the message */
+  GZL_ERROR_INTERNAL = -14, /* a bug in gazelod: please report the message */
   GZL_RESULT_MAX_ENUM = 0x7fffffff
 } gzl_result;
 
@@ -143,14 +144,14 @@ typedef enum gzl_criterion_bits {
 typedef struct gzl_config {
   gzl_structure_type type; /* GZL_TYPE_CONFIG */
   const void* next;
-  uint32_t disabled_criteria;      /* gzl_criterion_bits that may not coarsen a level */
+  uint32_t disabled_criteria;       /* gzl_criterion_bits that may not coarsen a level */
   gzl_bool32 disable_switch_policy; /* draw each frame's perceptual level (levels then flicker) */
-  double frame_budget_ms;          /* 0: no budget; else Mason's (1999) incremental knapsack */
-  double gaze_accuracy_deg;        /* 0: 1.5; the floor of the gaze uncertainty (widens the cone) */
-  double head_fixed_cone_deg;      /* 0: 20; the cone without gaze (where eyes usually are) */
-  double gaze_silence_timeout_s;   /* 0: 1.0; a gaze input silent this long after focus is distrusted */
-  double max_gaze_sample_age_s;    /* 0: 0.1; pushed samples older than this at a frame are not used */
-  const char* hmd_preset;          /* NULL or "": xi from the views; else a preset ("questpro", ...) */
+  double frame_budget_ms;           /* 0: no budget; else Mason's (1999) incremental knapsack */
+  double gaze_accuracy_deg;         /* 0: 1.5; the floor of the gaze uncertainty (widens the cone) */
+  double head_fixed_cone_deg;       /* 0: 20; the cone without gaze (where eyes usually are) */
+  double gaze_silence_timeout_s;    /* 0: 1.0; a gaze input silent this long after focus is distrusted */
+  double max_gaze_sample_age_s;     /* 0: 0.1; pushed samples older than this at a frame are not used */
+  const char* hmd_preset;           /* NULL or "": xi from the views; else a preset ("questpro", ...) */
 } gzl_config;
 
 /* ---- data mode ---------------------------------------------------------------------------- */
@@ -313,9 +314,9 @@ typedef struct gzl_gaze_sample {
    * (else GZL_ERROR_TIME_OUT_OF_ORDER), at most 1 s after the last frame's display time (else
    * GZL_ERROR_TIME_IN_FUTURE: another clock). */
   int64_t time_ns;
-  gzl_vec3 direction;  /* unit (normalised here), head space unless GZL_GAZE_SAMPLE_IN_WORLD */
-  gzl_vec3 origin_m;   /* cyclopean eye, head space (zero: the head's origin) */
-  uint32_t flags;      /* gzl_gaze_sample_flag_bits */
+  gzl_vec3 direction;        /* unit (normalised here), head space unless GZL_GAZE_SAMPLE_IN_WORLD */
+  gzl_vec3 origin_m;         /* cyclopean eye, head space (zero: the head's origin) */
+  uint32_t flags;            /* gzl_gaze_sample_flag_bits */
   gzl_quat head_orientation; /* with GZL_GAZE_SAMPLE_HEAD_ORIENTATION: head to base space */
 } gzl_gaze_sample;
 
@@ -341,7 +342,7 @@ typedef struct gzl_frame_input {
   const void* next;
   int64_t display_time_ns; /* increasing from frame to frame */
   gzl_head_pose head;
-  uint32_t view_count;   /* 0: the views given at creation (or last frame) */
+  uint32_t view_count; /* 0: the views given at creation (or last frame) */
   const gzl_view* views;
 } gzl_frame_input;
 
@@ -357,8 +358,7 @@ GZL_API gzl_result gzl_end_frame(gzl_plugin plugin, double measured_frame_ms);
 /* levels[i] = the level to draw for objects[i] (0 = full detail), GZL_LEVEL_DISABLED for a
  * disabled object. A removed handle fails with GZL_ERROR_OBJECT_INVALID (nothing written past
  * the levels already filled). Objects added after the last frame read level 0. */
-GZL_API gzl_result gzl_get_levels(gzl_plugin plugin, uint32_t count, const gzl_object* objects,
-                                  uint8_t* levels);
+GZL_API gzl_result gzl_get_levels(gzl_plugin plugin, uint32_t count, const gzl_object* objects, uint8_t* levels);
 
 typedef enum gzl_gaze_source {
   GZL_GAZE_SOURCE_HEAD_FIXED = 0, /* no usable gaze: straight ahead, widened cone */
@@ -378,9 +378,9 @@ typedef enum gzl_eye_motion {
 typedef struct gzl_frame_info {
   gzl_structure_type type; /* GZL_TYPE_FRAME_INFO */
   void* next;
-  uint64_t frame_index;    /* frames published so far (0: none yet) */
+  uint64_t frame_index; /* frames published so far (0: none yet) */
   int64_t display_time_ns;
-  uint32_t object_count;   /* objects registered (enabled or not) */
+  uint32_t object_count; /* objects registered (enabled or not) */
   gzl_gaze_source gaze_source;
   gzl_eye_motion eye_motion;
   gzl_bool32 gaze_suppressed; /* saccade or blink: vision suppressed, switches hidden */
@@ -415,8 +415,8 @@ typedef struct gzl_foveal_cone {
    * from the top (0) to the bottom (1). radius_u, radius_v: the half-angle's extent along u
    * and v at the centre. in_view: the gaze direction lies inside the view's field of view.
    * Scalars, not arrays, so the struct is blittable (C#, Rust) and read without copies. */
-  double center_u, center_v;  /* (0.5, 0.5) when the gaze points behind the view */
-  double radius_u, radius_v;  /* 0 when the gaze points behind the view */
+  double center_u, center_v; /* (0.5, 0.5) when the gaze points behind the view */
+  double radius_u, radius_v; /* 0 when the gaze points behind the view */
   gzl_bool32 in_view;
 } gzl_foveal_cone;
 
@@ -431,7 +431,7 @@ typedef struct gzl_frame_record {
   gzl_head_pose head;
   uint32_t view_count;
   gzl_view views[GZL_MAX_VIEWS];
-  gzl_bool32 has_gaze_sample; /* a sample was read from the gaze input this frame */
+  gzl_bool32 has_gaze_sample;  /* a sample was read from the gaze input this frame */
   gzl_gaze_sample gaze_sample; /* in head space, with the head's orientation at its time */
 } gzl_frame_record;
 

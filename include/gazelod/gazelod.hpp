@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // gazelod: a thin C++17 wrapper over the C ABI (gazelod/gazelod.h). Header-only: it adds RAII
 // and exceptions on the application's side of the boundary and nothing else, so the
 // application's compiler and standard library never meet gazelod's.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Conversions between the C ABI's structs and the engine's types (plugin/capi/capi_convert.hpp).
 #include "plugin/capi/capi_convert.hpp"
 
@@ -10,9 +11,13 @@
 namespace gazelod::capi {
 namespace {
 
-Refusal invalid(const std::string& m) { return Refusal{GZL_ERROR_INVALID_ARGUMENT, "gazelod: " + m}; }
+Refusal invalid(const std::string& m) {
+  return Refusal{GZL_ERROR_INVALID_ARGUMENT, "gazelod: " + m};
+}
 
-bool finite(double v) { return std::isfinite(v); }
+bool finite(double v) {
+  return std::isfinite(v);
+}
 
 // A zero (or unset) value means the default; otherwise finite and in range.
 double or_default(double v, double def, double lo, double hi, const char* field) {
@@ -51,7 +56,9 @@ PluginConfig to_plugin_config(const gzl_config* c) {
 OpenXrOptions to_openxr_options(const gzl_openxr_create_info& info) {
   OpenXrOptions o;
   switch (info.view_configuration_type) {
-    case 0: o.view_configuration = XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO; break;
+    case 0:
+      o.view_configuration = XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO;
+      break;
     case XR_VIEW_CONFIGURATION_TYPE_PRIMARY_MONO:
     case XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO:
     case XR_VIEW_CONFIGURATION_TYPE_PRIMARY_QUAD_VARJO:
@@ -68,12 +75,21 @@ OpenXrOptions to_openxr_options(const gzl_openxr_create_info& info) {
       o.gaze_space = from_handle<XrSpace>(info.gaze_space);
       o.gaze_action = from_handle<XrAction>(info.gaze_action);
       break;
-    case GZL_GAZE_INPUT_MERGE_BINDING: o.gaze_input = OpenXrGazeInput::merge_binding; break;
-    case GZL_GAZE_INPUT_PUSHED: o.gaze_input = OpenXrGazeInput::pushed; break;
-    case GZL_GAZE_INPUT_PLUGIN_ACTIONS: o.gaze_input = OpenXrGazeInput::plugin_actions; break;
-    case GZL_GAZE_INPUT_NONE: o.gaze_input = OpenXrGazeInput::none; break;
+    case GZL_GAZE_INPUT_MERGE_BINDING:
+      o.gaze_input = OpenXrGazeInput::merge_binding;
+      break;
+    case GZL_GAZE_INPUT_PUSHED:
+      o.gaze_input = OpenXrGazeInput::pushed;
+      break;
+    case GZL_GAZE_INPUT_PLUGIN_ACTIONS:
+      o.gaze_input = OpenXrGazeInput::plugin_actions;
+      break;
+    case GZL_GAZE_INPUT_NONE:
+      o.gaze_input = OpenXrGazeInput::none;
+      break;
     default:
-      throw invalid("info->gaze_input " + std::to_string(enum_value(info.gaze_input)) + " is not a gzl_gaze_input value");
+      throw invalid("info->gaze_input " + std::to_string(enum_value(info.gaze_input)) +
+                    " is not a gzl_gaze_input value");
   }
   return o;
 }
@@ -134,8 +150,12 @@ glm::dquat to_quat(const gzl_quat& q, const char* what) {
   return glm::dquat(q.w * s, q.x * s, q.y * s, q.z * s);
 }
 
-gzl_vec3 to_gzl(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
-gzl_quat to_gzl(const glm::dquat& q) { return {q.x, q.y, q.z, q.w}; }
+gzl_vec3 to_gzl(const glm::dvec3& v) {
+  return {v.x, v.y, v.z};
+}
+gzl_quat to_gzl(const glm::dquat& q) {
+  return {q.x, q.y, q.z, q.w};
+}
 
 std::vector<lod::LodLevel> to_levels(const gzl_object_desc& d, int view_height_px) {
   if (d.level_count == 0 || d.level_count > 255) throw invalid("desc->level_count must be 1..255");
@@ -153,7 +173,7 @@ std::vector<lod::LodLevel> to_levels(const gzl_object_desc& d, int view_height_p
     const double v = d.levels[k].value;
     out[k].triangles = d.levels[k].triangles;
     out[k].detail_kind = metric == GZL_LEVEL_REMOVED_CYCLES_PER_DIAMETER ? lod::DetailKind::removed_cycles_per_diameter
-                                                                            : lod::DetailKind::geometric_error_m;
+                                                                         : lod::DetailKind::geometric_error_m;
     if (k == 0) continue;  // full detail
     const std::string at = "desc->levels[" + std::to_string(k) + "].value";
     if (!finite(v) || v <= 0.0) throw invalid(at + " must be finite and > 0");
@@ -163,8 +183,12 @@ std::vector<lod::LodLevel> to_levels(const gzl_object_desc& d, int view_height_p
         if (v > 1.0) throw invalid(at + " is a share of the view's height: (0, 1]");
         out[k].detail = diameter_m / (v * h_px);
         break;
-      case GZL_LEVEL_PIXELS_AT_FULL_HEIGHT: out[k].detail = v * diameter_m / h_px; break;
-      default: out[k].detail = v; break;
+      case GZL_LEVEL_PIXELS_AT_FULL_HEIGHT:
+        out[k].detail = v * diameter_m / h_px;
+        break;
+      default:
+        out[k].detail = v;
+        break;
     }
   }
   return out;
@@ -192,7 +216,8 @@ gzl_gaze_sample to_gzl_sample(const plugin::GazeRead& g) {
   s.time_ns = g.sample.t_ns;
   s.direction = to_gzl(g.sample.direction);
   s.origin_m = to_gzl(g.sample.origin_m);
-  s.flags = (g.sample.valid ? static_cast<std::uint32_t>(GZL_GAZE_SAMPLE_VALID) : 0u) | GZL_GAZE_SAMPLE_HEAD_ORIENTATION;
+  s.flags =
+      (g.sample.valid ? static_cast<std::uint32_t>(GZL_GAZE_SAMPLE_VALID) : 0u) | GZL_GAZE_SAMPLE_HEAD_ORIENTATION;
   s.head_orientation = to_gzl(g.head_orientation);
   return s;
 }

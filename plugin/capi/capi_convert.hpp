@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Conversions between the C ABI's plain structs and the engine's types, each with the checks
 // that name the field at fault (Refusal, plugin/capi/capi_errors.hpp).
 #pragma once

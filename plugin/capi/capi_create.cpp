@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // gzl_create_data, gzl_create_openxr, errors, versions and teardown (include/gazelod/gazelod.h).
 #include "plugin/capi/capi_convert.hpp"
 #include "plugin/capi/capi_errors.hpp"
@@ -15,7 +16,9 @@ std::string& thread_error() {
   return message;
 }
 
-std::string prefixed(const std::string& m) { return m.rfind("gazelod:", 0) == 0 ? m : "gazelod: " + m; }
+std::string prefixed(const std::string& m) {
+  return m.rfind("gazelod:", 0) == 0 ? m : "gazelod: " + m;
+}
 
 void set_error(gzl_plugin p, const std::string& message) {
   if (p == nullptr) {
@@ -67,12 +70,15 @@ gzl_result finish_create(std::unique_ptr<gzl_plugin_T> p, gzl_plugin* out) {
 
 extern "C" {
 
-GZL_API uint32_t gzl_version(void) { return GZL_HEADER_VERSION; }
+GZL_API uint32_t gzl_version(void) {
+  return GZL_HEADER_VERSION;
+}
 
 GZL_API const char* gzl_result_to_string(gzl_result r) {
   switch (r) {
 #define GZL_CASE(name) \
-  case name: return #name;
+  case name:           \
+    return #name;
     GZL_CASE(GZL_SUCCESS)
     GZL_CASE(GZL_ERROR_NULL_HANDLE)
     GZL_CASE(GZL_ERROR_NULL_POINTER)
@@ -89,7 +95,8 @@ GZL_API const char* gzl_result_to_string(gzl_result r) {
     GZL_CASE(GZL_ERROR_OUT_OF_MEMORY)
     GZL_CASE(GZL_ERROR_INTERNAL)
 #undef GZL_CASE
-    default: break;
+    default:
+      break;
   }
   return "GZL_RESULT_UNKNOWN";
 }
@@ -155,9 +162,10 @@ GZL_API gzl_result gzl_create_openxr(const gzl_openxr_create_info* info, gzl_plu
     *plugin = nullptr;
     need_struct(info, GZL_TYPE_OPENXR_CREATE_INFO, "info");
     if (info->get_instance_proc_addr == nullptr)
-      throw Refusal{GZL_ERROR_NULL_POINTER,
-                    "gazelod: info->get_instance_proc_addr is NULL; pass (gzl_void_function)xrGetInstanceProcAddr, or the "
-                    "pointer your engine hands its plugins"};
+      throw Refusal{
+          GZL_ERROR_NULL_POINTER,
+          "gazelod: info->get_instance_proc_addr is NULL; pass (gzl_void_function)xrGetInstanceProcAddr, or the "
+          "pointer your engine hands its plugins"};
     if (info->instance == 0 || info->session == 0 || info->base_space == 0)
       throw Refusal{GZL_ERROR_INVALID_ARGUMENT, "gazelod: info->instance, session and base_space must be live handles"};
     auto p = std::make_unique<gzl_plugin_T>();
@@ -167,8 +175,8 @@ GZL_API gzl_result gzl_create_openxr(const gzl_openxr_create_info* info, gzl_plu
     const auto gipa = reinterpret_cast<PFN_xrGetInstanceProcAddr>(info->get_instance_proc_addr);
     try {
       p->xr = LodPlugin::create(gipa, from_handle<XrInstance>(info->instance), static_cast<XrSystemId>(info->system_id),
-                                from_handle<XrSession>(info->session), from_handle<XrSpace>(info->base_space), p->config,
-                                options);
+                                from_handle<XrSession>(info->session), from_handle<XrSpace>(info->base_space),
+                                p->config, options);
     } catch (const XrCallError& e) {
       // A function the application's loader does not give is a different fault from a call
       // that failed.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The C ABI's one error policy: every entry point runs its body through guarded(), which turns
 // a refusal into a result code plus a message ("gazelod: ..." with the remedy) on the plugin (or
 // on the calling thread, for a failed create) and never lets an exception cross the boundary.
@@ -61,8 +62,9 @@ template <typename T>
 void need_struct(const T* s, gzl_structure_type type, const char* what) {
   if (s == nullptr) throw Refusal{GZL_ERROR_NULL_POINTER, std::string("gazelod: ") + what + " is NULL"};
   if (enum_value(s->type) != static_cast<std::int32_t>(type))
-    throw Refusal{GZL_ERROR_STRUCT_TYPE, std::string("gazelod: ") + what + "->type is " + std::to_string(enum_value(s->type)) +
-                                             ", expected " + std::to_string(type) + " (set it to its GZL_TYPE_ value)"};
+    throw Refusal{GZL_ERROR_STRUCT_TYPE, std::string("gazelod: ") + what + "->type is " +
+                                             std::to_string(enum_value(s->type)) + ", expected " +
+                                             std::to_string(type) + " (set it to its GZL_TYPE_ value)"};
 }
 
 }  // namespace gazelod::capi

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // guarded(): the template body of plugin/capi/capi_errors.hpp.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Frames and inputs through the C ABI: session state, spaces, views, gaze samples, the frame's
 // decision and its publication (include/gazelod/gazelod.h).
 #include "plugin/capi/capi_convert.hpp"
@@ -16,10 +17,14 @@ void need_openxr(gzl_plugin p, const char* call) {
 
 void check_push(plugin::PushResult r, const std::string& why) {
   switch (r) {
-    case plugin::PushResult::ok: return;
-    case plugin::PushResult::out_of_order: throw Refusal{GZL_ERROR_TIME_OUT_OF_ORDER, why};
-    case plugin::PushResult::in_future: throw Refusal{GZL_ERROR_TIME_IN_FUTURE, why};
-    case plugin::PushResult::invalid: throw Refusal{GZL_ERROR_INVALID_ARGUMENT, why};
+    case plugin::PushResult::ok:
+      return;
+    case plugin::PushResult::out_of_order:
+      throw Refusal{GZL_ERROR_TIME_OUT_OF_ORDER, why};
+    case plugin::PushResult::in_future:
+      throw Refusal{GZL_ERROR_TIME_IN_FUTURE, why};
+    case plugin::PushResult::invalid:
+      throw Refusal{GZL_ERROR_INVALID_ARGUMENT, why};
   }
 }
 
@@ -72,7 +77,8 @@ GZL_API gzl_result gzl_on_session_state(gzl_plugin p, int32_t state, int64_t tim
     need_live(p);
     need_time(time_ns, "time_ns");
     if (state < XR_SESSION_STATE_UNKNOWN || state > XR_SESSION_STATE_EXITING)
-      throw Refusal{GZL_ERROR_INVALID_ARGUMENT, "gazelod: session state " + std::to_string(state) + " is not an XrSessionState"};
+      throw Refusal{GZL_ERROR_INVALID_ARGUMENT,
+                    "gazelod: session state " + std::to_string(state) + " is not an XrSessionState"};
     std::lock_guard lock(p->mu);
     p->core().session_state(state == XR_SESSION_STATE_FOCUSED, time_ns);
     return GZL_SUCCESS;
@@ -94,8 +100,9 @@ GZL_API gzl_result gzl_set_view_resolution(gzl_plugin p, uint32_t view, uint32_t
     need_live(p);
     std::lock_guard lock(p->mu);
     if (view >= p->view_count)
-      throw Refusal{GZL_ERROR_INVALID_ARGUMENT, "gazelod: view " + std::to_string(view) + " out of range: the plugin has " +
-                                                    std::to_string(p->view_count) + " views"};
+      throw Refusal{GZL_ERROR_INVALID_ARGUMENT, "gazelod: view " + std::to_string(view) +
+                                                    " out of range: the plugin has " + std::to_string(p->view_count) +
+                                                    " views"};
     if (width_px == 0 || height_px == 0 || width_px > 65536 || height_px > 65536)
       throw Refusal{GZL_ERROR_INVALID_ARGUMENT, "gazelod: a view's resolution must be 1..65536 pixels on each side"};
     if (p->openxr) {
@@ -114,7 +121,8 @@ GZL_API gzl_result gzl_push_gaze_sample(gzl_plugin p, const gzl_gaze_sample* s) 
     need_struct(s, GZL_TYPE_GAZE_SAMPLE, "sample");
     need_time(s->time_ns, "sample->time_ns");
     if (s->flags & ~7u)
-      throw Refusal{GZL_ERROR_INVALID_ARGUMENT, "gazelod: sample->flags has bits that are not gzl_gaze_sample_flag_bits"};
+      throw Refusal{GZL_ERROR_INVALID_ARGUMENT,
+                    "gazelod: sample->flags has bits that are not gzl_gaze_sample_flag_bits"};
     const plugin::PushedSample ps = to_pushed(*s);
     std::string why;
     std::lock_guard lock(p->mu);
@@ -130,8 +138,9 @@ GZL_API gzl_result gzl_begin_frame_openxr(gzl_plugin p, int64_t t) {
     need_time(t, "predicted_display_time");
     std::lock_guard lock(p->mu);
     if (p->frames > 0 && t <= p->pub.info.display_time_ns)
-      throw Refusal{GZL_ERROR_TIME_OUT_OF_ORDER, "gazelod: predicted_display_time " + std::to_string(t) +
-                                                     " is not after the last frame's; pass xrWaitFrame's predictedDisplayTime"};
+      throw Refusal{GZL_ERROR_TIME_OUT_OF_ORDER,
+                    "gazelod: predicted_display_time " + std::to_string(t) +
+                        " is not after the last frame's; pass xrWaitFrame's predictedDisplayTime"};
     const FrameDecisions& d = p->xr->begin_frame(static_cast<XrTime>(t));
     publish(p, d, t);
     return GZL_SUCCESS;
@@ -144,16 +153,18 @@ GZL_API gzl_result gzl_begin_frame_data(gzl_plugin p, const gzl_frame_input* in)
     need_struct(in, GZL_TYPE_FRAME_INPUT, "input");
     need_time(in->display_time_ns, "input->display_time_ns");
     if (p->openxr)
-      throw Refusal{GZL_ERROR_WRONG_MODE, "gazelod: gzl_begin_frame_data is for a plugin made by gzl_create_data; "
-                                          "OpenXR mode takes gzl_begin_frame_openxr"};
+      throw Refusal{GZL_ERROR_WRONG_MODE,
+                    "gazelod: gzl_begin_frame_data is for a plugin made by gzl_create_data; "
+                    "OpenXR mode takes gzl_begin_frame_openxr"};
     bool angular = false, linear = false;
     const plugin::HeadMotion given = to_head(in->head, angular, linear);
     const std::uint32_t n = check_views(in->view_count, in->views, "input->views", true);
     std::lock_guard lock(p->mu);
     DataFront& f = *p->data;
     if (f.have_frame && in->display_time_ns <= f.last_t_ns)
-      throw Refusal{GZL_ERROR_TIME_OUT_OF_ORDER, "gazelod: input->display_time_ns " + std::to_string(in->display_time_ns) +
-                                                     " is not after the last frame's (" + std::to_string(f.last_t_ns) + ")"};
+      throw Refusal{GZL_ERROR_TIME_OUT_OF_ORDER,
+                    "gazelod: input->display_time_ns " + std::to_string(in->display_time_ns) +
+                        " is not after the last frame's (" + std::to_string(f.last_t_ns) + ")"};
     if (n > 0) {
       p->view_count = n;
       std::copy(in->views, in->views + n, p->data_views.begin());

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Objects through the C ABI: stable handles over the engine's dense ids (include/gazelod/gazelod.h).
 #include "plugin/capi/capi_convert.hpp"
 #include "plugin/capi/capi_errors.hpp"
@@ -14,7 +15,8 @@ constexpr std::uint32_t kRemoved = std::numeric_limits<std::uint32_t>::max();
 // The engine id of a live handle, or a Refusal naming the handle.
 std::uint32_t slot_of(gzl_plugin p, gzl_object h) {
   if (h == GZL_NULL_OBJECT || h > p->slot_of_handle.size())
-    throw Refusal{GZL_ERROR_OBJECT_INVALID, "gazelod: object " + std::to_string(h) + " was never issued by this plugin"};
+    throw Refusal{GZL_ERROR_OBJECT_INVALID,
+                  "gazelod: object " + std::to_string(h) + " was never issued by this plugin"};
   const std::uint32_t s = p->slot_of_handle[h - 1];
   if (s == kRemoved) throw Refusal{GZL_ERROR_OBJECT_INVALID, "gazelod: object " + std::to_string(h) + " was removed"};
   return s;
@@ -42,7 +44,8 @@ GZL_API gzl_result gzl_add_object(gzl_plugin p, const gzl_object_desc* d, gzl_ob
     ObjectDesc desc;
     desc.center_m = to_vec(d->center_m, "desc->center_m");
     desc.velocity_m_s = to_vec(d->velocity_m_s, "desc->velocity_m_s");
-    if (!std::isfinite(d->radius_m) || d->radius_m < 0.0) throw Refusal{GZL_ERROR_INVALID_ARGUMENT, "gazelod: desc->radius_m must be finite and >= 0"};
+    if (!std::isfinite(d->radius_m) || d->radius_m < 0.0)
+      throw Refusal{GZL_ERROR_INVALID_ARGUMENT, "gazelod: desc->radius_m must be finite and >= 0"};
     desc.radius_m = d->radius_m;
     if (!std::isfinite(d->importance) || d->importance < 0.0 || d->importance > 1.0)
       throw Refusal{GZL_ERROR_INVALID_ARGUMENT, "gazelod: desc->importance must be in [0, 1] (0 means 1)"};
@@ -114,7 +117,8 @@ GZL_API gzl_result gzl_set_object_enabled(gzl_plugin p, gzl_object h, gzl_bool32
   });
 }
 
-GZL_API gzl_result gzl_set_object_motion(gzl_plugin p, gzl_object h, const gzl_vec3* center_m, const gzl_vec3* velocity_m_s) {
+GZL_API gzl_result gzl_set_object_motion(gzl_plugin p, gzl_object h, const gzl_vec3* center_m,
+                                         const gzl_vec3* velocity_m_s) {
   return guarded(p, [&]() -> gzl_result {
     need_live(p);
     if (center_m == nullptr || velocity_m_s == nullptr)

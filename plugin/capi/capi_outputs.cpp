@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Readers of the last published frame (include/gazelod/gazelod.h): they take only the short
 // publication lock, never the one a frame holds while it is decided.
 #include "plugin/capi/capi_errors.hpp"
@@ -17,9 +18,9 @@ GZL_API gzl_result gzl_get_levels(gzl_plugin p, uint32_t count, const gzl_object
     for (std::uint32_t i = 0; i < count; ++i) {
       const gzl_object h = objects[i];
       if (h == GZL_NULL_OBJECT || h > issued || p->pub.state_by_handle[h - 1] == kHandleRemoved)
-        throw Refusal{GZL_ERROR_OBJECT_INVALID, "gazelod: objects[" + std::to_string(i) + "] = " + std::to_string(h) +
-                                                    (h == GZL_NULL_OBJECT || h > issued ? " was never issued by this plugin"
-                                                                                        : " was removed")};
+        throw Refusal{GZL_ERROR_OBJECT_INVALID,
+                      "gazelod: objects[" + std::to_string(i) + "] = " + std::to_string(h) +
+                          (h == GZL_NULL_OBJECT || h > issued ? " was never issued by this plugin" : " was removed")};
       levels[i] = p->pub.level_by_handle[h - 1];
     }
     return GZL_SUCCESS;
@@ -30,7 +31,8 @@ GZL_API gzl_result gzl_get_frame_info(gzl_plugin p, gzl_frame_info* info) {
   return guarded(p, [&]() -> gzl_result {
     need_plugin(p);
     if (info == nullptr) throw Refusal{GZL_ERROR_NULL_POINTER, "gazelod: info (the output) is NULL"};
-    if (info->type != GZL_TYPE_FRAME_INFO) throw Refusal{GZL_ERROR_STRUCT_TYPE, "gazelod: info->type must be GZL_TYPE_FRAME_INFO"};
+    if (info->type != GZL_TYPE_FRAME_INFO)
+      throw Refusal{GZL_ERROR_STRUCT_TYPE, "gazelod: info->type must be GZL_TYPE_FRAME_INFO"};
     void* next = info->next;
     std::lock_guard lock(p->out_mu);
     *info = p->pub.info;
@@ -52,11 +54,13 @@ GZL_API gzl_result gzl_get_foveal_cone(gzl_plugin p, uint32_t view, gzl_foveal_c
   return guarded(p, [&]() -> gzl_result {
     need_plugin(p);
     if (cone == nullptr) throw Refusal{GZL_ERROR_NULL_POINTER, "gazelod: cone (the output) is NULL"};
-    if (cone->type != GZL_TYPE_FOVEAL_CONE) throw Refusal{GZL_ERROR_STRUCT_TYPE, "gazelod: cone->type must be GZL_TYPE_FOVEAL_CONE"};
+    if (cone->type != GZL_TYPE_FOVEAL_CONE)
+      throw Refusal{GZL_ERROR_STRUCT_TYPE, "gazelod: cone->type must be GZL_TYPE_FOVEAL_CONE"};
     void* next = cone->next;
     std::lock_guard lock(p->out_mu);
     if (view >= p->pub.record.view_count)
-      throw Refusal{GZL_ERROR_INVALID_ARGUMENT, "gazelod: view " + std::to_string(view) + " out of range: the last frame had " +
+      throw Refusal{GZL_ERROR_INVALID_ARGUMENT, "gazelod: view " + std::to_string(view) +
+                                                    " out of range: the last frame had " +
                                                     std::to_string(p->pub.record.view_count) + " views"};
     *cone = p->pub.cones[view];
     cone->next = next;

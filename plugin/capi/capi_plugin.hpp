@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What a gzl_plugin handle is (include/gazelod/gazelod.h): the engine in one of its two fronts,
 // the stable object handles over the engine's dense ids, the last published frame, and the
 // locks that make every call safe from any thread. Internal to libgazelod.
@@ -40,7 +41,7 @@ inline constexpr std::uint8_t kHandleIssued = 0, kHandleRemoved = 2;
 struct Published {
   std::vector<std::uint8_t> level_by_handle;  // index = handle - 1
   std::vector<std::uint8_t> state_by_handle;  // kHandleIssued or kHandleRemoved
-  std::size_t decided_handles = 0;  // handles [0, this) existed when the frame was decided
+  std::size_t decided_handles = 0;            // handles [0, this) existed when the frame was decided
   // Each handle's triangles per level, back to back (written at registration), so a frame
   // publishes only its levels and gzl_get_frame_info sums triangles when asked.
   std::vector<std::uint32_t> triangles_first_by_handle;
@@ -65,7 +66,7 @@ struct gzl_plugin_T {
   bool openxr = false;
   gzl_gaze_input gaze_input = GZL_GAZE_INPUT_NONE;  // OpenXR mode's
   bool shut_down = false;
-  std::unique_ptr<gazelod::LodPlugin> xr;        // OpenXR mode
+  std::unique_ptr<gazelod::LodPlugin> xr;          // OpenXR mode
   std::unique_ptr<gazelod::capi::DataFront> data;  // data mode
   std::uint32_t view_count = 0;
   std::array<gzl_view, GZL_MAX_VIEWS> data_views{};

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A decided frame, published for readers (plugin/capi/capi_publish.hpp).
 #include "plugin/capi/capi_publish.hpp"
 
@@ -15,7 +16,9 @@ constexpr double kDegPerRad = 180.0 / std::numbers::pi;
 constexpr double kHalfPi = std::numbers::pi / 2.0;
 
 // Normalised image coordinate of a tangent between two edge tangents.
-double along(double tan_at, double tan_low, double tan_high) { return (tan_at - tan_low) / (tan_high - tan_low); }
+double along(double tan_at, double tan_low, double tan_high) {
+  return (tan_at - tan_low) / (tan_high - tan_low);
+}
 
 // The extent (in normalised units) of +-a around angle c, on an axis with the given edges.
 double extent(double c, double a, double lo, double hi) {
@@ -89,7 +92,8 @@ void publish(gzl_plugin p, const FrameDecisions& d, std::int64_t t_ns) {
   const plugin::HeadMotion& head = core.head();
   const glm::dquat q = head.valid ? head.orientation : glm::dquat(1.0, 0.0, 0.0, 0.0);
   for (std::uint32_t v = 0; v < core.view_count(); ++v)
-    pub.cones[v] = cone_in_view(diag.gaze_direction_world, q, core.views()[v], lod::kEccentricitySeamDeg, diag.gaze_error_deg);
+    pub.cones[v] =
+        cone_in_view(diag.gaze_direction_world, q, core.views()[v], lod::kEccentricitySeamDeg, diag.gaze_error_deg);
 
   gzl_frame_record& r = pub.record;
   r.display_time_ns = t_ns;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Publishing a decided frame for readers on other threads (plugin/capi/capi_outputs.cpp).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // blinks: the eye closes for duration_ms about rate_per_min times a minute (people blink
 // ~15-20 times a minute, 100-300 ms each). Time is cut into periods of 60 / rate s; one blink
 // starts at a random offset in each (seed, effect, period index). Samples in a blink are invalid.
@@ -30,7 +31,8 @@ class Blinks final : public Effect {
     if (t_ns < 0) return false;
     const std::int64_t k = t_ns / period_ns_;
     const double slack_ns = static_cast<double>(period_ns_ - blink_ns_);
-    const std::int64_t start = k * period_ns_ + static_cast<std::int64_t>(rng_.uniform(static_cast<std::uint64_t>(k)) * slack_ns);
+    const std::int64_t start =
+        k * period_ns_ + static_cast<std::int64_t>(rng_.uniform(static_cast<std::uint64_t>(k)) * slack_ns);
     return t_ns >= start && t_ns < start + blink_ns_;
   }
   CounterRng rng_;
@@ -39,6 +41,8 @@ class Blinks final : public Effect {
 
 }  // namespace
 
-std::unique_ptr<Effect> make_blinks(EffectInit& init) { return std::make_unique<Blinks>(init); }
+std::unique_ptr<Effect> make_blinks(EffectInit& init) {
+  return std::make_unique<Blinks>(init);
+}
 
 }  // namespace gazelod::sim::effects

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // calibration_offset: a constant yaw / pitch error of the tracker plus a slow linear drift
 // (headset slipping on the face), added to every sample at its sample time.
 #include "sim/angles.hpp"

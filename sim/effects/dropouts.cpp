@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // dropouts: the tracker loses the eye now and then. Time is cut into bursts of burst_ms; each
 // burst is lost with probability `fraction`, drawn from (seed, effect, burst index).
 #include "sim/effects/effects.hpp"
@@ -30,6 +31,8 @@ class Dropouts final : public Effect {
 
 }  // namespace
 
-std::unique_ptr<Effect> make_dropouts(EffectInit& init) { return std::make_unique<Dropouts>(init); }
+std::unique_ptr<Effect> make_dropouts(EffectInit& init) {
+  return std::make_unique<Dropouts>(init);
+}
 
 }  // namespace gazelod::sim::effects

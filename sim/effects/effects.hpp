@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The effect makers, one per file in this folder; effect_registry.cpp maps names to them.
 #pragma once
 
@@ -22,8 +23,7 @@ std::unique_ptr<Effect> make_calibration_offset(EffectInit& init);
 std::unique_ptr<Effect> make_object_motion(EffectInit& init);
 
 // Index of the scenario object called `name`; fails at params' key when there is none.
-std::size_t object_index(const Scenario& scenario, JsonFields& params, const std::string& key,
-                         const std::string& name);
+std::size_t object_index(const Scenario& scenario, JsonFields& params, const std::string& key, const std::string& name);
 
 // Fresh copies of the gaze-stage effects listed before the one being made (same specs, same
 // random streams, so the same values at any time), for an effect that must know the incoming

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // head_sweep: the head swings in yaw and pitch as sinusoids (a visual search / look-around).
 //   yaw(t) = A_yaw sin(2 pi (t - start) / T_yaw), likewise pitch; rates are the exact derivatives.
 #include "sim/angles.hpp"
@@ -34,6 +35,8 @@ class HeadSweep final : public Effect {
 
 }  // namespace
 
-std::unique_ptr<Effect> make_head_sweep(EffectInit& init) { return std::make_unique<HeadSweep>(init); }
+std::unique_ptr<Effect> make_head_sweep(EffectInit& init) {
+  return std::make_unique<HeadSweep>(init);
+}
 
 }  // namespace gazelod::sim::effects

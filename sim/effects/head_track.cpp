@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // head_track: the head pose replayed from a recorded trace (gazelod's trace format, or any
 // layout gaze/trace_open.hpp reads) with head columns. Trace time `offset_s` (default: its
 // first row, with a head pose or not) plays at scenario time `start_s` (default 0); poses are interpolated (slerp /
@@ -24,8 +25,7 @@ std::string resolve(const std::string& file, const std::string& source) {
   const std::filesystem::path p(file);
   if (p.is_absolute()) return file;
   const std::filesystem::path src(source);
-  if (std::filesystem::is_regular_file(src) && !std::filesystem::exists(p))
-    return (src.parent_path() / p).string();
+  if (std::filesystem::is_regular_file(src) && !std::filesystem::exists(p)) return (src.parent_path() / p).string();
   return file;
 }
 
@@ -118,6 +118,8 @@ class HeadTrack final : public Effect {
 
 }  // namespace
 
-std::unique_ptr<Effect> make_head_track(EffectInit& init) { return std::make_unique<HeadTrack>(init); }
+std::unique_ptr<Effect> make_head_track(EffectInit& init) {
+  return std::make_unique<HeadTrack>(init);
+}
 
 }  // namespace gazelod::sim::effects

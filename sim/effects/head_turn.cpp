@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // head_turn: a turn at a constant rate (up to 300 deg/s, fast head turns in VR) about yaw or
 // pitch, from start_s for duration_s; the angle reached is then held.
 #include "sim/angles.hpp"
@@ -13,9 +14,12 @@ class HeadTurn final : public Effect {
   explicit HeadTurn(EffectInit& in) {
     rate_rad_s_ = in.params.required_number("rate_deg_s", -300.0, 300.0) * kRadPerDeg;
     const std::string axis = in.params.string("axis", "yaw");
-    if (axis == "yaw") pitch_ = false;
-    else if (axis == "pitch") pitch_ = true;
-    else in.params.fail("axis", "expected \"yaw\" or \"pitch\", got \"" + axis + "\"");
+    if (axis == "yaw")
+      pitch_ = false;
+    else if (axis == "pitch")
+      pitch_ = true;
+    else
+      in.params.fail("axis", "expected \"yaw\" or \"pitch\", got \"" + axis + "\"");
     start_ns_ = to_ns(in.params.number("start_s", 0.0, 0.0, 1e6));
     duration_ns_ = to_ns(in.params.required_number("duration_s", 0.0, 1e6));
   }
@@ -42,6 +46,8 @@ class HeadTurn final : public Effect {
 
 }  // namespace
 
-std::unique_ptr<Effect> make_head_turn(EffectInit& init) { return std::make_unique<HeadTurn>(init); }
+std::unique_ptr<Effect> make_head_turn(EffectInit& init) {
+  return std::make_unique<HeadTurn>(init);
+}
 
 }  // namespace gazelod::sim::effects

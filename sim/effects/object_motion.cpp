@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // object_motion: one named object (or "*" for all) gets an extra constant velocity and/or a
 // sinusoidal oscillation p += amplitude sin(2 pi f t), with the exact velocity.
 #include "sim/effects/effects.hpp"
@@ -35,6 +36,8 @@ class ObjectMotion final : public Effect {
 
 }  // namespace
 
-std::unique_ptr<Effect> make_object_motion(EffectInit& init) { return std::make_unique<ObjectMotion>(init); }
+std::unique_ptr<Effect> make_object_motion(EffectInit& init) {
+  return std::make_unique<ObjectMotion>(init);
+}
 
 }  // namespace gazelod::sim::effects

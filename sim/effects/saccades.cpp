@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // saccades: fixations of random duration joined by saccades of random amplitude and direction
 // that follow the main sequence (sim/main_sequence.hpp). The whole schedule is drawn once, from
 // (seed, effect, fixation index) in order, so any time can be asked for in any order.
@@ -16,7 +17,7 @@ struct Segment {
   std::int64_t sac_start_ns = 0;  // ... then a saccade to `to` ...
   std::int64_t sac_end_ns = 0;    // ... that lands here
   glm::dvec3 from{0, 0, -1}, to{0, 0, -1};
-  double ratio = 0.5;             // mean / peak velocity
+  double ratio = 0.5;  // mean / peak velocity
 };
 
 class Saccades final : public Effect {
@@ -35,10 +36,13 @@ class Saccades final : public Effect {
   void apply_gaze(std::int64_t t_ns, const EffectContext&, glm::dvec3& dir) const override {
     if (!window_.contains(t_ns)) return;
     const Segment& s = segments_[segment_index(t_ns)];
-    if (t_ns < s.sac_start_ns) dir = s.from;
-    else if (t_ns >= s.sac_end_ns) dir = s.to;
+    if (t_ns < s.sac_start_ns)
+      dir = s.from;
+    else if (t_ns >= s.sac_end_ns)
+      dir = s.to;
     else {
-      const double tau = static_cast<double>(t_ns - s.sac_start_ns) / static_cast<double>(s.sac_end_ns - s.sac_start_ns);
+      const double tau =
+          static_cast<double>(t_ns - s.sac_start_ns) / static_cast<double>(s.sac_end_ns - s.sac_start_ns);
       dir = glm::normalize(slerp_dir(s.from, s.to, saccade_progress(tau, s.ratio)));
     }
   }
@@ -121,6 +125,8 @@ class Saccades final : public Effect {
 
 }  // namespace
 
-std::unique_ptr<Effect> make_saccades(EffectInit& init) { return std::make_unique<Saccades>(init); }
+std::unique_ptr<Effect> make_saccades(EffectInit& init) {
+  return std::make_unique<Saccades>(init);
+}
 
 }  // namespace gazelod::sim::effects

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // smooth_pursuit: the eye follows a named scene object with a velocity gain (pursuit gain is
 // ~0.9 for slow targets and falls for fast ones). The lag that a gain below 1 builds up is
 // removed by a catch-up saccade every catch_up_interval_s: within an interval starting at ts,
@@ -59,6 +60,8 @@ class SmoothPursuit final : public Effect {
 
 }  // namespace
 
-std::unique_ptr<Effect> make_smooth_pursuit(EffectInit& init) { return std::make_unique<SmoothPursuit>(init); }
+std::unique_ptr<Effect> make_smooth_pursuit(EffectInit& init) {
+  return std::make_unique<SmoothPursuit>(init);
+}
 
 }  // namespace gazelod::sim::effects

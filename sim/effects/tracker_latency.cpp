@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // tracker_latency: a sample taken at s reaches the application at s + latency_ms, so at time t
 // the newest sample is one taken at or before t - latency.
 #include "sim/effects/effects.hpp"
@@ -19,6 +20,8 @@ class TrackerLatency final : public Effect {
 
 }  // namespace
 
-std::unique_ptr<Effect> make_tracker_latency(EffectInit& init) { return std::make_unique<TrackerLatency>(init); }
+std::unique_ptr<Effect> make_tracker_latency(EffectInit& init) {
+  return std::make_unique<TrackerLatency>(init);
+}
 
 }  // namespace gazelod::sim::effects

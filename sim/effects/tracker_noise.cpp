@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // tracker_noise: Gaussian angular noise on each tracker sample, std_deg per axis (yaw and
 // pitch independent), drawn from (seed, effect, sample time) so a sample is always the same.
 #include "sim/angles.hpp"
@@ -28,6 +29,8 @@ class TrackerNoise final : public Effect {
 
 }  // namespace
 
-std::unique_ptr<Effect> make_tracker_noise(EffectInit& init) { return std::make_unique<TrackerNoise>(init); }
+std::unique_ptr<Effect> make_tracker_noise(EffectInit& init) {
+  return std::make_unique<TrackerNoise>(init);
+}
 
 }  // namespace gazelod::sim::effects

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // tracker_rate: the tracker samples at rate_hz (samples at k / rate from time 0); between
 // samples the application sees the newest one. Default: the display preset's eye-tracking rate.
 #include "sim/effects/effects.hpp"
@@ -26,6 +27,8 @@ class TrackerRate final : public Effect {
 
 }  // namespace
 
-std::unique_ptr<Effect> make_tracker_rate(EffectInit& init) { return std::make_unique<TrackerRate>(init); }
+std::unique_ptr<Effect> make_tracker_rate(EffectInit& init) {
+  return std::make_unique<TrackerRate>(init);
+}
 
 }  // namespace gazelod::sim::effects

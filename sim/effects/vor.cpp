@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // vor: the vestibulo-ocular reflex. While the eye fixates, it counter-rotates the head's rotation
 // since the fixation began, so the gaze stays on a world point while the head moves:
 //   eye(t) = scale(H(t)^-1 H(a), gain) * in(t)
@@ -37,10 +38,10 @@
 namespace gazelod::sim::effects {
 namespace {
 
-constexpr std::int64_t kStepNs = 1'000'000;                   // detection and range checks: 1 ms
+constexpr std::int64_t kStepNs = 1'000'000;                    // detection and range checks: 1 ms
 constexpr double kMovingRadPerStep = 1.0 * kRadPerDeg * 1e-3;  // 1 deg/s over one step
-constexpr std::int64_t kMaxMoveSteps = 250;  // a longer movement is followed in 250 ms pieces
-constexpr double kRangeSlackRad = 1e-9;      // rounding, not physiology
+constexpr std::int64_t kMaxMoveSteps = 250;                    // a longer movement is followed in 250 ms pieces
+constexpr double kRangeSlackRad = 1e-9;                        // rounding, not physiology
 const glm::dvec3 kForward{0.0, 0.0, -1.0};
 
 // q with its angle times s, about the same axis (the short way round).
@@ -53,7 +54,9 @@ glm::dquat scale_rotation(glm::dquat q, double s) {
   return glm::angleAxis(s * 2.0 * std::atan2(sv, q.w), v / sv);
 }
 
-double eccentricity_rad(const glm::dvec3& d) { return angle_between_rad(d, kForward); }
+double eccentricity_rad(const glm::dvec3& d) {
+  return angle_between_rad(d, kForward);
+}
 
 // One piece of the eye's path; it lasts until the next one starts.
 struct Segment {
@@ -243,15 +246,19 @@ class Vor final : public Effect {
     if (t_ns < window_.start_ns) return;
     if (t_ns >= window_.end_ns) {
       const Segment& e = end_saccade(ctx);
-      if (t_ns < e.end_ns) truth.in_saccade = true;
-      else if (e.end_ns > e.start_ns) truth.last_saccade_end_ns = std::max(truth.last_saccade_end_ns, e.end_ns);
+      if (t_ns < e.end_ns)
+        truth.in_saccade = true;
+      else if (e.end_ns > e.start_ns)
+        truth.last_saccade_end_ns = std::max(truth.last_saccade_end_ns, e.end_ns);
       return;
     }
     std::size_t i = segment_index(t_ns, ctx);
     truth.in_saccade = segments_[i].saccade;
     while (segments_[i].saccade && i > 0) --i;  // the latest hold: it began when the saccade before it landed
-    if (first_index_ + i != 0) truth.last_saccade_end_ns = segments_[i].start_ns;
-    else truth.last_saccade_end_ns = std::min(truth.last_saccade_end_ns, window_.start_ns);
+    if (first_index_ + i != 0)
+      truth.last_saccade_end_ns = segments_[i].start_ns;
+    else
+      truth.last_saccade_end_ns = std::min(truth.last_saccade_end_ns, window_.start_ns);
   }
 
   double gain_ = 1.0, range_rad_ = 0.0;
@@ -269,6 +276,8 @@ class Vor final : public Effect {
 
 }  // namespace
 
-std::unique_ptr<Effect> make_vor(EffectInit& init) { return std::make_unique<Vor>(init); }
+std::unique_ptr<Effect> make_vor(EffectInit& init) {
+  return std::make_unique<Vor>(init);
+}
 
 }  // namespace gazelod::sim::effects

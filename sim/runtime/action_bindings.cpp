@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Binding resolution (see action_bindings.hpp).
 #include "sim/runtime/action_bindings.hpp"
 #include "sim/runtime/interaction_profiles.hpp"
@@ -14,11 +15,16 @@ namespace {
 bool feeds(XrActionType action, InputKind source) {
   switch (action) {
     case XR_ACTION_TYPE_BOOLEAN_INPUT:
-    case XR_ACTION_TYPE_FLOAT_INPUT: return source == InputKind::boolean || source == InputKind::scalar;
-    case XR_ACTION_TYPE_VECTOR2F_INPUT: return source == InputKind::vector2;
-    case XR_ACTION_TYPE_POSE_INPUT: return source == InputKind::pose;
-    case XR_ACTION_TYPE_VIBRATION_OUTPUT: return source == InputKind::haptic;
-    default: return false;
+    case XR_ACTION_TYPE_FLOAT_INPUT:
+      return source == InputKind::boolean || source == InputKind::scalar;
+    case XR_ACTION_TYPE_VECTOR2F_INPUT:
+      return source == InputKind::vector2;
+    case XR_ACTION_TYPE_POSE_INPUT:
+      return source == InputKind::pose;
+    case XR_ACTION_TYPE_VIBRATION_OUTPUT:
+      return source == InputKind::haptic;
+    default:
+      return false;
   }
 }
 
@@ -54,7 +60,8 @@ bool is_attached(const Session& session, const Action& action) {
 XrResult check_subaction(const Instance& inst, const Action& action, XrPath subaction) {
   if (subaction == XR_NULL_PATH) return XR_SUCCESS;
   if (inst.paths.find(subaction) == nullptr) return XR_ERROR_PATH_INVALID;
-  if (std::find(action.subaction_paths.begin(), action.subaction_paths.end(), subaction) == action.subaction_paths.end())
+  if (std::find(action.subaction_paths.begin(), action.subaction_paths.end(), subaction) ==
+      action.subaction_paths.end())
     return XR_ERROR_PATH_UNSUPPORTED;
   return XR_SUCCESS;
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // xrSyncActions and the action state queries, bound sources, localized names and haptics
 // (OpenXR 1.0 sections 11.5-11.8). Input values come from XR_EXT_conformance_automation.
 #include "sim/runtime/action_bindings.hpp"
@@ -155,8 +156,8 @@ namespace {
 // values now and at the previous sync, handed to `fill`, which sets the typed current state and
 // whether it changed. isActive and lastChangeTime follow from whether any source is bound.
 template <typename State, typename Fill>
-XrResult get_action_state(XrSession session, const XrActionStateGetInfo* info, State* state,
-                          XrActionType action_type, XrStructureType struct_type, Fill fill) {
+XrResult get_action_state(XrSession session, const XrActionStateGetInfo* info, State* state, XrActionType action_type,
+                          XrStructureType struct_type, Fill fill) {
   return guarded([&] {
     std::lock_guard lock(runtime_mutex());
     Session* s = find_session(session);

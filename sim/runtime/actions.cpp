@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Action sets, actions, suggested bindings, attaching to a session and the current
 // interaction profile (OpenXR 1.0 chapter 11 "Input and Haptics").
 #include "sim/runtime/entry_points.hpp"
@@ -12,7 +13,9 @@
 namespace gazelod::xrrt {
 namespace {
 
-std::string bounded(const char* s, std::size_t cap) { return std::string(s, strnlen(s, cap)); }
+std::string bounded(const char* s, std::size_t cap) {
+  return std::string(s, strnlen(s, cap));
+}
 
 bool any_set_attached(const Instance& inst) {
   for (const auto& [id, set] : runtime().action_sets.live)
@@ -70,9 +73,14 @@ XrResult CreateAction(XrActionSet actionSet, const XrActionCreateInfo* info, XrA
       return XR_ERROR_VALIDATION_FAILURE;
     if (set->attached) return XR_ERROR_ACTIONSETS_ALREADY_ATTACHED;
     switch (info->actionType) {
-      case XR_ACTION_TYPE_BOOLEAN_INPUT: case XR_ACTION_TYPE_FLOAT_INPUT: case XR_ACTION_TYPE_VECTOR2F_INPUT:
-      case XR_ACTION_TYPE_POSE_INPUT: case XR_ACTION_TYPE_VIBRATION_OUTPUT: break;
-      default: return XR_ERROR_VALIDATION_FAILURE;
+      case XR_ACTION_TYPE_BOOLEAN_INPUT:
+      case XR_ACTION_TYPE_FLOAT_INPUT:
+      case XR_ACTION_TYPE_VECTOR2F_INPUT:
+      case XR_ACTION_TYPE_POSE_INPUT:
+      case XR_ACTION_TYPE_VIBRATION_OUTPUT:
+        break;
+      default:
+        return XR_ERROR_VALIDATION_FAILURE;
     }
     const std::string name = bounded(info->actionName, XR_MAX_ACTION_NAME_SIZE);
     const std::string localized = bounded(info->localizedActionName, XR_MAX_LOCALIZED_ACTION_NAME_SIZE);

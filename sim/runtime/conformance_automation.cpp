@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // XR_EXT_conformance_automation: tests switch devices on and off and set their inputs and
 // poses; values take effect at the next xrSyncActions. A location set on
 // /user/eyes_ext/input/gaze_ext/pose replaces the simulated gaze.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Loader negotiation (the runtime's one exported symbol) and xrGetInstanceProcAddr: name ->
 // function, refusing extension commands whose extension the instance did not enable
 // (XR_ERROR_FUNCTION_UNSUPPORTED) and non-global commands without an instance.
@@ -19,8 +20,10 @@ struct Entry {
 };
 
 // static_cast to the PFN type checks each signature against the headers.
-#define XRRT_ENTRY(name, needs) \
-  Entry { "xr" #name, reinterpret_cast<PFN_xrVoidFunction>(static_cast<PFN_xr##name>(&name)), needs }
+#define XRRT_ENTRY(name, needs)                                                               \
+  Entry {                                                                                     \
+    "xr" #name, reinterpret_cast<PFN_xrVoidFunction>(static_cast<PFN_xr##name>(&name)), needs \
+  }
 
 const Entry kEntries[] = {
     XRRT_ENTRY(GetInstanceProcAddr, Needs::core),
@@ -87,8 +90,8 @@ const Entry kEntries[] = {
     XRRT_ENTRY(GetVulkanGraphicsDevice2KHR, Needs::vulkan2),
     // Same signature as the v1 query; the v2 name is served by the same function.
     Entry{"xrGetVulkanGraphicsRequirements2KHR",
-          reinterpret_cast<PFN_xrVoidFunction>(static_cast<PFN_xrGetVulkanGraphicsRequirements2KHR>(
-              &GetVulkanGraphicsRequirementsKHR)),
+          reinterpret_cast<PFN_xrVoidFunction>(
+              static_cast<PFN_xrGetVulkanGraphicsRequirements2KHR>(&GetVulkanGraphicsRequirementsKHR)),
           Needs::vulkan2},
     XRRT_ENTRY(ConvertTimespecTimeToTimeKHR, Needs::timespec),
     XRRT_ENTRY(ConvertTimeToTimespecTimeKHR, Needs::timespec),
@@ -104,12 +107,18 @@ const Entry kEntries[] = {
 bool enabled(const Instance& inst, Needs needs) {
   switch (needs) {
     case Needs::global:
-    case Needs::core: return true;
-    case Needs::vulkan: return inst.ext_vulkan;
-    case Needs::vulkan2: return inst.ext_vulkan2;
-    case Needs::simulator_state: return inst.ext_simulator_state;
-    case Needs::timespec: return inst.ext_timespec;
-    case Needs::automation: return inst.ext_automation;
+    case Needs::core:
+      return true;
+    case Needs::vulkan:
+      return inst.ext_vulkan;
+    case Needs::vulkan2:
+      return inst.ext_vulkan2;
+    case Needs::simulator_state:
+      return inst.ext_simulator_state;
+    case Needs::timespec:
+      return inst.ext_timespec;
+    case Needs::automation:
+      return inst.ext_automation;
   }
   return false;
 }
@@ -146,8 +155,7 @@ XrResult GetInstanceProcAddr(XrInstance instance, const char* name, PFN_xrVoidFu
 
 // The only exported symbol (the library is built with hidden visibility).
 extern "C" __attribute__((visibility("default"))) XrResult xrNegotiateLoaderRuntimeInterface(
-    const gazelod::xrrt::XrNegotiateLoaderInfo* loaderInfo,
-    gazelod::xrrt::XrNegotiateRuntimeRequest* runtimeRequest) {
+    const gazelod::xrrt::XrNegotiateLoaderInfo* loaderInfo, gazelod::xrrt::XrNegotiateRuntimeRequest* runtimeRequest) {
   using namespace gazelod::xrrt;
   if (loaderInfo == nullptr || runtimeRequest == nullptr ||
       loaderInfo->structType != XR_LOADER_INTERFACE_STRUCT_LOADER_INFO ||

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Every OpenXR command the simulated runtime implements, one declaration each, with the exact
 // signature of its PFN_xr* type (dispatch.cpp checks this at compile time). The definitions
 // live in one file per concept: instance, system, session, spaces, views, frame loop, ...
@@ -18,8 +19,7 @@ XrResult CreateInstance(const XrInstanceCreateInfo* createInfo, XrInstance* inst
 XrResult DestroyInstance(XrInstance instance);
 XrResult GetInstanceProperties(XrInstance instance, XrInstanceProperties* props);
 XrResult ResultToString(XrInstance instance, XrResult value, char buffer[XR_MAX_RESULT_STRING_SIZE]);
-XrResult StructureTypeToString(XrInstance instance, XrStructureType value,
-                               char buffer[XR_MAX_STRUCTURE_NAME_SIZE]);
+XrResult StructureTypeToString(XrInstance instance, XrStructureType value, char buffer[XR_MAX_STRUCTURE_NAME_SIZE]);
 
 // paths.cpp
 XrResult StringToPath(XrInstance instance, const char* pathString, XrPath* path);
@@ -34,10 +34,10 @@ XrResult GetSystemProperties(XrInstance instance, XrSystemId systemId, XrSystemP
 XrResult EnumerateEnvironmentBlendModes(XrInstance instance, XrSystemId systemId,
                                         XrViewConfigurationType viewConfigurationType, uint32_t capacity,
                                         uint32_t* count, XrEnvironmentBlendMode* modes);
-XrResult EnumerateViewConfigurations(XrInstance instance, XrSystemId systemId, uint32_t capacity,
-                                     uint32_t* count, XrViewConfigurationType* types);
-XrResult GetViewConfigurationProperties(XrInstance instance, XrSystemId systemId,
-                                        XrViewConfigurationType type, XrViewConfigurationProperties* props);
+XrResult EnumerateViewConfigurations(XrInstance instance, XrSystemId systemId, uint32_t capacity, uint32_t* count,
+                                     XrViewConfigurationType* types);
+XrResult GetViewConfigurationProperties(XrInstance instance, XrSystemId systemId, XrViewConfigurationType type,
+                                        XrViewConfigurationProperties* props);
 XrResult EnumerateViewConfigurationViews(XrInstance instance, XrSystemId systemId, XrViewConfigurationType type,
                                          uint32_t capacity, uint32_t* count, XrViewConfigurationView* views);
 
@@ -49,8 +49,7 @@ XrResult EndSession(XrSession session);
 XrResult RequestExitSession(XrSession session);
 
 // spaces.cpp
-XrResult EnumerateReferenceSpaces(XrSession session, uint32_t capacity, uint32_t* count,
-                                  XrReferenceSpaceType* spaces);
+XrResult EnumerateReferenceSpaces(XrSession session, uint32_t capacity, uint32_t* count, XrReferenceSpaceType* spaces);
 XrResult CreateReferenceSpace(XrSession session, const XrReferenceSpaceCreateInfo* createInfo, XrSpace* space);
 XrResult GetReferenceSpaceBoundsRect(XrSession session, XrReferenceSpaceType type, XrExtent2Df* bounds);
 XrResult CreateActionSpace(XrSession session, const XrActionSpaceCreateInfo* createInfo, XrSpace* space);
@@ -101,10 +100,10 @@ XrResult ApplyHapticFeedback(XrSession session, const XrHapticActionInfo* info, 
 XrResult StopHapticFeedback(XrSession session, const XrHapticActionInfo* info);
 
 // vulkan_enable.cpp (XR_KHR_vulkan_enable and XR_KHR_vulkan_enable2)
-XrResult GetVulkanInstanceExtensionsKHR(XrInstance instance, XrSystemId systemId, uint32_t capacity,
-                                        uint32_t* count, char* buffer);
-XrResult GetVulkanDeviceExtensionsKHR(XrInstance instance, XrSystemId systemId, uint32_t capacity,
-                                      uint32_t* count, char* buffer);
+XrResult GetVulkanInstanceExtensionsKHR(XrInstance instance, XrSystemId systemId, uint32_t capacity, uint32_t* count,
+                                        char* buffer);
+XrResult GetVulkanDeviceExtensionsKHR(XrInstance instance, XrSystemId systemId, uint32_t capacity, uint32_t* count,
+                                      char* buffer);
 XrResult GetVulkanGraphicsDeviceKHR(XrInstance instance, XrSystemId systemId, VkInstance vkInstance,
                                     VkPhysicalDevice* vkPhysicalDevice);
 XrResult GetVulkanGraphicsRequirementsKHR(XrInstance instance, XrSystemId systemId,
@@ -121,8 +120,7 @@ XrResult ConvertTimespecTimeToTimeKHR(XrInstance instance, const struct timespec
 XrResult ConvertTimeToTimespecTimeKHR(XrInstance instance, XrTime time, struct timespec* timespecTime);
 
 // conformance_automation.cpp (XR_EXT_conformance_automation)
-XrResult SetInputDeviceActiveEXT(XrSession session, XrPath interactionProfile, XrPath topLevelPath,
-                                 XrBool32 isActive);
+XrResult SetInputDeviceActiveEXT(XrSession session, XrPath interactionProfile, XrPath topLevelPath, XrBool32 isActive);
 XrResult SetInputDeviceStateBoolEXT(XrSession session, XrPath topLevelPath, XrPath inputSourcePath, XrBool32 state);
 XrResult SetInputDeviceStateFloatEXT(XrSession session, XrPath topLevelPath, XrPath inputSourcePath, float state);
 XrResult SetInputDeviceStateVector2fEXT(XrSession session, XrPath topLevelPath, XrPath inputSourcePath,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Event queue, session state transitions and xrPollEvent (see events.hpp).
 #include "sim/runtime/events.hpp"
 #include "sim/runtime/entry_points.hpp"
@@ -35,10 +36,14 @@ E read_event(const XrEventDataBuffer& buffer) {
 
 int rank(XrSessionState s) {
   switch (s) {
-    case XR_SESSION_STATE_SYNCHRONIZED: return 1;
-    case XR_SESSION_STATE_VISIBLE: return 2;
-    case XR_SESSION_STATE_FOCUSED: return 3;
-    default: return 0;
+    case XR_SESSION_STATE_SYNCHRONIZED:
+      return 1;
+    case XR_SESSION_STATE_VISIBLE:
+      return 2;
+    case XR_SESSION_STATE_FOCUSED:
+      return 3;
+    default:
+      return 0;
   }
 }
 
@@ -50,8 +55,8 @@ void change_state(Instance& inst, Session& session, XrSessionState state, XrTime
   time = std::max(time, session.last_event_time);
   session.last_event_time = time;
   session.state = state;
-  XrEventDataSessionStateChanged e{XR_TYPE_EVENT_DATA_SESSION_STATE_CHANGED, nullptr,
-                                   to_handle<XrSession>(session.id), state, time};
+  XrEventDataSessionStateChanged e{XR_TYPE_EVENT_DATA_SESSION_STATE_CHANGED, nullptr, to_handle<XrSession>(session.id),
+                                   state, time};
   push(inst, e);
 }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The event queue and the session state machine of OpenXR 1.0 section 9.3 ("Session
 // Lifecycle"): IDLE -> READY -> SYNCHRONIZED -> VISIBLE -> FOCUSED, and back down through
 // STOPPING to IDLE and EXITING when the application or the scenario's end asks to stop.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // xrWaitFrame (paced to the display rate, or unpaced for offline runs), xrBeginFrame and
 // xrEndFrame with the layer checks of OpenXR 1.0 chapter 10 ("Rendering") and 12.
 #include "sim/runtime/entry_points.hpp"
@@ -89,7 +90,7 @@ XrResult WaitFrame(XrSession session, const XrFrameWaitInfo* waitInfo, XrFrameSt
     inst.clock.note_frame(predicted);
     s->last_predicted_time = predicted;
     ++s->waited_frames;
-  ++s->wait_frame_calls;
+    ++s->wait_frame_calls;
     // The frame loop is now synchronised with the (simulated) compositor.
     if (s->state == XR_SESSION_STATE_READY) raise_to_focused(inst, *s, predicted);
     check_scenario_end(inst, *s, predicted);

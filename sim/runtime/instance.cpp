@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Instance commands: extension list, xrCreateInstance (loads the scenario), properties and the
 // result / structure-type names (from openxr_reflection.h).
 #include "sim/runtime/entry_points.hpp"
@@ -90,15 +91,24 @@ XrResult CreateInstance(const XrInstanceCreateInfo* info, XrInstance* instance) 
       if (name_c == nullptr) return XR_ERROR_VALIDATION_FAILURE;
       const std::string_view name(name_c);
       if (!offered(name)) return XR_ERROR_EXTENSION_NOT_PRESENT;
-      if (name == XR_KHR_VULKAN_ENABLE_EXTENSION_NAME) inst->ext_vulkan = true;
-      else if (name == XR_KHR_VULKAN_ENABLE2_EXTENSION_NAME) inst->ext_vulkan2 = true;
-      else if (name == XR_KHR_CONVERT_TIMESPEC_TIME_EXTENSION_NAME) inst->ext_timespec = true;
-      else if (name == XR_MND_HEADLESS_EXTENSION_NAME) inst->ext_headless = true;
-      else if (name == XR_EXT_EYE_GAZE_INTERACTION_EXTENSION_NAME) inst->ext_eye_gaze = true;
-      else if (name == XR_EXT_CONFORMANCE_AUTOMATION_EXTENSION_NAME) inst->ext_automation = true;
-      else if (name == XR_GAZELOD_SIMULATOR_STATE_EXTENSION_NAME) inst->ext_simulator_state = true;
-      else if (name == XR_EXT_DEBUG_UTILS_EXTENSION_NAME) continue;  // implemented by the loader
-      else return XR_ERROR_EXTENSION_NOT_PRESENT;
+      if (name == XR_KHR_VULKAN_ENABLE_EXTENSION_NAME)
+        inst->ext_vulkan = true;
+      else if (name == XR_KHR_VULKAN_ENABLE2_EXTENSION_NAME)
+        inst->ext_vulkan2 = true;
+      else if (name == XR_KHR_CONVERT_TIMESPEC_TIME_EXTENSION_NAME)
+        inst->ext_timespec = true;
+      else if (name == XR_MND_HEADLESS_EXTENSION_NAME)
+        inst->ext_headless = true;
+      else if (name == XR_EXT_EYE_GAZE_INTERACTION_EXTENSION_NAME)
+        inst->ext_eye_gaze = true;
+      else if (name == XR_EXT_CONFORMANCE_AUTOMATION_EXTENSION_NAME)
+        inst->ext_automation = true;
+      else if (name == XR_GAZELOD_SIMULATOR_STATE_EXTENSION_NAME)
+        inst->ext_simulator_state = true;
+      else if (name == XR_EXT_DEBUG_UTILS_EXTENSION_NAME)
+        continue;  // implemented by the loader
+      else
+        return XR_ERROR_EXTENSION_NOT_PRESENT;
     }
     inst->app_name = info->applicationInfo.applicationName;
     try {
@@ -145,11 +155,13 @@ XrResult ResultToString(XrInstance instance, XrResult value, char buffer[XR_MAX_
     if (find_instance(instance) == nullptr) return XR_ERROR_HANDLE_INVALID;
     if (buffer == nullptr) return XR_ERROR_VALIDATION_FAILURE;
     switch (value) {
-#define XRRT_RESULT_CASE(name, val) \
-  case name: copy_name(buffer, XR_MAX_RESULT_STRING_SIZE, #name); return XR_SUCCESS;
+#define XRRT_RESULT_CASE(name, val)                      \
+  case name:                                             \
+    copy_name(buffer, XR_MAX_RESULT_STRING_SIZE, #name); \
+    return XR_SUCCESS;
       XR_LIST_ENUM_XrResult(XRRT_RESULT_CASE)
 #undef XRRT_RESULT_CASE
-      default: break;
+          default : break;
     }
     // Unknown values, as the specification words them.
     std::snprintf(buffer, XR_MAX_RESULT_STRING_SIZE, value >= 0 ? "XR_UNKNOWN_SUCCESS_%d" : "XR_UNKNOWN_FAILURE_%d",
@@ -164,11 +176,13 @@ XrResult StructureTypeToString(XrInstance instance, XrStructureType value, char 
     if (find_instance(instance) == nullptr) return XR_ERROR_HANDLE_INVALID;
     if (buffer == nullptr) return XR_ERROR_VALIDATION_FAILURE;
     switch (value) {
-#define XRRT_TYPE_CASE(name, val) \
-  case name: copy_name(buffer, XR_MAX_STRUCTURE_NAME_SIZE, #name); return XR_SUCCESS;
+#define XRRT_TYPE_CASE(name, val)                         \
+  case name:                                              \
+    copy_name(buffer, XR_MAX_STRUCTURE_NAME_SIZE, #name); \
+    return XR_SUCCESS;
       XR_LIST_ENUM_XrStructureType(XRRT_TYPE_CASE)
 #undef XRRT_TYPE_CASE
-      default: break;
+          default : break;
     }
     std::snprintf(buffer, XR_MAX_STRUCTURE_NAME_SIZE, "XR_UNKNOWN_STRUCTURE_TYPE_%d", static_cast<int>(value));
     return XR_SUCCESS;

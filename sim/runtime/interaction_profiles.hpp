@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The interaction profiles the runtime accepts bindings for (OpenXR 1.0 section 6.4 and
 // XR_EXT_eye_gaze_interaction), with their top-level user paths and input/output paths.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Path grammar and the per-instance string <-> XrPath table (see path_table.hpp).
 #include "sim/runtime/path_table.hpp"
 
@@ -20,8 +21,7 @@ bool is_well_formed_name(std::string_view s) {
 }
 
 bool is_well_formed_path(std::string_view s) {
-  if (s.size() < 2 || s.size() >= XR_MAX_PATH_LENGTH || s.front() != '/' || s.back() == '/')
-    return false;
+  if (s.size() < 2 || s.size() >= XR_MAX_PATH_LENGTH || s.front() != '/' || s.back() == '/') return false;
   std::size_t start = 1;
   while (start <= s.size()) {
     std::size_t end = s.find('/', start);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // XrPath atoms for one instance: the string <-> path table behind xrStringToPath and
 // xrPathToString, with the path well-formedness rules of OpenXR 1.0 section 6.1
 // ("Path Atom Type": lower-case, digits, '-', '_', '.', separated by '/').

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // xrStringToPath / xrPathToString (OpenXR 1.0 section 6.1); the grammar is in path_table.cpp.
 #include "sim/runtime/entry_points.hpp"
 #include "sim/runtime/path_table.hpp"
@@ -17,8 +18,8 @@ XrResult StringToPath(XrInstance instance, const char* pathString, XrPath* path)
   });
 }
 
-XrResult PathToString(XrInstance instance, XrPath path, uint32_t bufferCapacityInput,
-                      uint32_t* bufferCountOutput, char* buffer) {
+XrResult PathToString(XrInstance instance, XrPath path, uint32_t bufferCapacityInput, uint32_t* bufferCountOutput,
+                      char* buffer) {
   return guarded([&] {
     std::lock_guard lock(runtime_mutex());
     Instance* inst = find_instance(instance);

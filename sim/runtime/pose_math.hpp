@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The simulated runtime's poses: the shared rigid-pose math (xr/pose_math.hpp) in this namespace.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Optional runtime log (see runtime_log.hpp).
 #include "sim/runtime/runtime_log.hpp"
 

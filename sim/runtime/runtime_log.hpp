@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Optional runtime log on stderr (GAZELOD_SIM_LOG=1): session states, frame counts at the end
 // of a session. Tests read it to see what the runtime itself did.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Handle registry and the cascade of destruction (destroying an instance destroys its
 // sessions, action sets and actions; a session its spaces and swapchains).
 #include "sim/runtime/runtime_state.hpp"
@@ -18,13 +19,27 @@ Runtime& runtime() {
   return r;
 }
 
-Instance* find_instance(XrInstance h) { return runtime().instances.find(handle_id(h)); }
-Session* find_session(XrSession h) { return runtime().sessions.find(handle_id(h)); }
-Space* find_space(XrSpace h) { return runtime().spaces.find(handle_id(h)); }
-ActionSet* find_action_set(XrActionSet h) { return runtime().action_sets.find(handle_id(h)); }
-Action* find_action(XrAction h) { return runtime().actions.find(handle_id(h)); }
-Swapchain* find_swapchain(XrSwapchain h) { return runtime().swapchains.find(handle_id(h)); }
-Instance* instance_of(const Session& session) { return runtime().instances.find(session.instance_id); }
+Instance* find_instance(XrInstance h) {
+  return runtime().instances.find(handle_id(h));
+}
+Session* find_session(XrSession h) {
+  return runtime().sessions.find(handle_id(h));
+}
+Space* find_space(XrSpace h) {
+  return runtime().spaces.find(handle_id(h));
+}
+ActionSet* find_action_set(XrActionSet h) {
+  return runtime().action_sets.find(handle_id(h));
+}
+Action* find_action(XrAction h) {
+  return runtime().actions.find(handle_id(h));
+}
+Swapchain* find_swapchain(XrSwapchain h) {
+  return runtime().swapchains.find(handle_id(h));
+}
+Instance* instance_of(const Session& session) {
+  return runtime().instances.find(session.instance_id);
+}
 
 void destroy_swapchain(std::uint64_t id) {
   Runtime& rt = runtime();

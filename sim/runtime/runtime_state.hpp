@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The simulated OpenXR runtime's objects (instance, session, space, action set, action,
 // swapchain) and the handle registry that turns handles into objects, so that an invalid or
 // destroyed handle gets XR_ERROR_HANDLE_INVALID as the OpenXR 1.0 specification requires.
@@ -26,8 +27,8 @@ std::mutex& runtime_mutex();
 
 struct Instance {
   std::uint64_t id = 0;
-  bool ext_vulkan = false, ext_vulkan2 = false, ext_headless = false, ext_eye_gaze = false,
-       ext_automation = false, ext_timespec = false, ext_simulator_state = false;
+  bool ext_vulkan = false, ext_vulkan2 = false, ext_headless = false, ext_eye_gaze = false, ext_automation = false,
+       ext_timespec = false, ext_simulator_state = false;
   std::string app_name;
   std::unique_ptr<sim::Simulator> simulator;
   SimClock clock;
@@ -63,7 +64,7 @@ struct InputDevice {  // one top-level user path, as XR_EXT_conformance_automati
   std::map<XrPath, Location> locations;
 };
 
-struct SourceValue {  // one bound input source's value at a sync
+struct SourceValue {   // one bound input source's value at a sync
   float value = 0.0f;  // bool as 0 / 1, float as is
   XrVector2f vec2{0.0f, 0.0f};
 };
@@ -79,10 +80,10 @@ struct Session {
   XrSessionState state = XR_SESSION_STATE_UNKNOWN;
   XrTime last_event_time = 0;
   bool running = false;
-  bool exit_requested = false;     // xrRequestExitSession or the scenario's end
+  bool exit_requested = false;  // xrRequestExitSession or the scenario's end
   bool headless = false;
-  bool scenario_ended = false;      // the stop was started by the scenario's end
-  bool lost = false;                // injected session loss (RuntimeFaults): frame calls fail
+  bool scenario_ended = false;  // the stop was started by the scenario's end
+  bool lost = false;            // injected session loss (RuntimeFaults): frame calls fail
   XrViewConfigurationType view_config = XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO;
   // Vulkan binding (XR_KHR_vulkan_enable(2)); null when headless.
   VkInstance vk_instance = VK_NULL_HANDLE;
@@ -90,20 +91,20 @@ struct Session {
   VkDevice vk_device = VK_NULL_HANDLE;
   std::uint32_t vk_queue_family = 0, vk_queue_index = 0;
   // Frame loop.
-  std::int64_t last_vsync_index = -1;    // index k of the last xrWaitFrame (display at k + 1)
+  std::int64_t last_vsync_index = -1;  // index k of the last xrWaitFrame (display at k + 1)
   std::uint64_t wait_frame_calls = 0;
-  int waited_frames = 0;                 // xrWaitFrame calls not yet matched by xrBeginFrame
+  int waited_frames = 0;  // xrWaitFrame calls not yet matched by xrBeginFrame
   bool frame_begun = false;
   XrTime last_predicted_time = 0;
-  std::uint64_t frames_submitted = 0;   // successful xrEndFrame calls
+  std::uint64_t frames_submitted = 0;  // successful xrEndFrame calls
   std::uint64_t layers_submitted = 0;
   // Actions.
   bool actions_attached = false;
   std::vector<std::uint64_t> attached_sets;
-  std::map<XrPath, InputDevice> devices;          // by top-level user path
+  std::map<XrPath, InputDevice> devices;               // by top-level user path
   std::map<std::uint64_t, ActionState> action_states;  // by action id
   XrTime last_sync_time = 0;
-  std::vector<std::uint64_t> synced_sets;        // active sets of the last xrSyncActions
+  std::vector<std::uint64_t> synced_sets;  // active sets of the last xrSyncActions
 };
 
 // What a space is attached to.
@@ -157,7 +158,7 @@ struct Swapchain {
   bool waited = false;                 // the oldest acquired image has been waited on
   std::uint32_t next_index = 0;
   bool released_once = false;
-  bool static_acquired = false;        // XR_SWAPCHAIN_CREATE_STATIC_IMAGE_BIT used up
+  bool static_acquired = false;  // XR_SWAPCHAIN_CREATE_STATIC_IMAGE_BIT used up
 };
 
 // Handle registry. Handles are opaque integers (never pointers), so a stale handle can never

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Loads the runtime's scenario from the environment (see scenario_source.hpp).
 #include "sim/runtime/scenario_source.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Session creation (Vulkan binding or XR_MND_headless), begin / end / request exit, following
 // the error codes of OpenXR 1.0 section 9 ("Session").
 #include "sim/runtime/entry_points.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The simulated clock (see sim_clock.hpp).
 #include "sim/runtime/sim_clock.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The simulated clock: XrTime is nanoseconds on a clock whose scenario time 0 is kTimeBaseNs,
 // so scenario time = XrTime - kTimeBaseNs. Paced, the clock runs with CLOCK_MONOTONIC from
 // instance creation; unpaced, only xrWaitFrame moves time (one display period per frame).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // XR_GAZELOD_simulator_state: the side channel that reports the simulation's progress
 // (see simulator_state_ext.h).
 #include "sim/runtime/entry_points.hpp"

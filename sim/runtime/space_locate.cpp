@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Space poses in LOCAL (see space_locate.hpp).
 #include "sim/runtime/space_locate.hpp"
 #include "sim/runtime/interaction_profiles.hpp"
@@ -10,7 +11,9 @@ namespace {
 
 constexpr int kMaxLocateDepth = 4;  // automation poses set relative to other action spaces
 
-std::int64_t scenario_time(XrTime t) { return std::max<std::int64_t>(0, SimClock::scenario_ns(t)); }
+std::int64_t scenario_time(XrTime t) {
+  return std::max<std::int64_t>(0, SimClock::scenario_ns(t));
+}
 
 Located head_attached(Instance& inst, const Pose& offset, XrTime time) {
   const sim::HeadState h = inst.simulator->head_at(scenario_time(time));
@@ -51,8 +54,8 @@ Located default_controller(std::string_view top_level, const Pose& offset) {
   return l;
 }
 
-Located locate_gaze(Instance& inst, Session& session, const InputDevice* eyes, XrPath gaze_path,
-                    const Pose& offset, XrTime time, int depth) {
+Located locate_gaze(Instance& inst, Session& session, const InputDevice* eyes, XrPath gaze_path, const Pose& offset,
+                    XrTime time, int depth) {
   Located l;
   l.is_gaze = true;
   if (eyes != nullptr) {
@@ -67,9 +70,15 @@ Located locate_gaze(Instance& inst, Session& session, const InputDevice* eyes, X
   if (opt.gaze_delivery == sim::GazeDelivery::never_delivers) return l;
   const gaze::GazeSample g = inst.simulator->tracker_at(scenario_time(time));
   switch (opt.gaze_delivery) {
-    case sim::GazeDelivery::sample_time_zero: l.gaze_sample_time = 0; break;
-    case sim::GazeDelivery::sample_time_is_request_time: l.gaze_sample_time = time; break;
-    default: l.gaze_sample_time = g.t_ns + kTimeBaseNs; break;
+    case sim::GazeDelivery::sample_time_zero:
+      l.gaze_sample_time = 0;
+      break;
+    case sim::GazeDelivery::sample_time_is_request_time:
+      l.gaze_sample_time = time;
+      break;
+    default:
+      l.gaze_sample_time = g.t_ns + kTimeBaseNs;
+      break;
   }
   const double len = glm::length(g.direction);
   if (!g.valid || !(len > 1e-9)) return l;  // blink, dropout: position and orientation both untracked
@@ -86,19 +95,21 @@ Located locate_in_local(Instance& inst, Session& session, const Space& space, Xr
   const Pose offset = from_xr(space.offset);
   if (space.kind == SpaceKind::reference) {
     switch (space.reference) {
-      case XR_REFERENCE_SPACE_TYPE_VIEW: return head_attached(inst, offset, time);
+      case XR_REFERENCE_SPACE_TYPE_VIEW:
+        return head_attached(inst, offset, time);
       case XR_REFERENCE_SPACE_TYPE_STAGE:
       case XR_REFERENCE_SPACE_TYPE_LOCAL: {
         Located l;
         l.valid = l.tracked = true;
         const Pose origin{glm::dquat(1, 0, 0, 0), space.reference == XR_REFERENCE_SPACE_TYPE_STAGE
-                                                       ? glm::dvec3(0.0, -kStageFloorBelowLocalM, 0.0)
-                                                       : glm::dvec3(0.0)};
+                                                      ? glm::dvec3(0.0, -kStageFloorBelowLocalM, 0.0)
+                                                      : glm::dvec3(0.0)};
         l.pose = compose(origin, offset);
         l.has_velocity = true;  // both are fixed in the world
         return l;
       }
-      default: return {};
+      default:
+        return {};
     }
   }
   // Action space: follows one bound source of its action (active at the last xrSyncActions),

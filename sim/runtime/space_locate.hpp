@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Where a space is in LOCAL at a time: reference spaces (LOCAL, STAGE, VIEW from the head
 // script), the eye-gaze action space (the simulator's tracker sample, with the scenario's
 // delivery quirk) and action spaces placed by XR_EXT_conformance_automation.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reference and action spaces and xrLocateSpace with XrSpaceVelocity and
 // XrEyeGazeSampleTimeEXT (OpenXR 1.0 chapter 7 "Spaces", XR_EXT_eye_gaze_interaction).
 #include "sim/runtime/action_bindings.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Swapchains (OpenXR 1.0 section 10.1): formats, creation on the application's VkDevice, and
 // the acquire -> wait -> release cycle with its XR_ERROR_CALL_ORDER_INVALID rules. A headless
 // session offers no format (XR_MND_headless).

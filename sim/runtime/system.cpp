@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The one system (an HMD showing the scenario's display): xrGetSystem, its properties with
 // XrSystemEyeGazeInteractionPropertiesEXT, the view configuration (per-eye pixels and FOV of
 // the scenario display) and the environment blend modes (opaque only).
@@ -50,7 +51,8 @@ XrResult GetSystemProperties(XrInstance instance, XrSystemId systemId, XrSystemP
     const sim::Scenario& sc = inst->simulator->scenario();
     properties->systemId = kSystemId;
     properties->vendorId = 0;
-    std::string name = "gazelod simulated HMD (" + (sc.display.label.empty() ? sc.display.name : sc.display.label) + ")";
+    std::string name =
+        "gazelod simulated HMD (" + (sc.display.label.empty() ? sc.display.name : sc.display.label) + ")";
     name.resize(std::min<std::size_t>(name.size(), XR_MAX_SYSTEM_NAME_SIZE - 1));
     std::memcpy(properties->systemName, name.c_str(), name.size() + 1);
     properties->graphicsProperties.maxSwapchainImageWidth = kMaxImageSize;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The simulated system's fixed facts (one HMD, its limits) and the view configuration it
 // offers: stereo, or mono for a one-view display.
 #pragma once

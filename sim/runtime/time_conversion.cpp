@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // XR_KHR_convert_timespec_time: CLOCK_MONOTONIC <-> XrTime on the simulated clock.
 #include "sim/runtime/entry_points.hpp"
 #include "sim/runtime/runtime_state.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // xrLocateViews: one view per eye, placed half the IPD either side of the head pose from the
 // scenario's head script, with the display's per-eye field of view.
 #include "sim/runtime/entry_points.hpp"
@@ -45,7 +46,8 @@ XrResult LocateViews(XrSession session, const XrViewLocateInfo* info, XrViewStat
       const Pose eye = compose(head.pose, Pose{glm::dquat(1, 0, 0, 0), glm::dvec3(x, 0.0, 0.0)});
       views[i].pose = to_xr(compose(to_base, eye));
       const lod::FovRad& f = d.views[i].fov;
-      views[i].fov = {float(f.angle_left_rad), float(f.angle_right_rad), float(f.angle_up_rad), float(f.angle_down_rad)};
+      views[i].fov = {float(f.angle_left_rad), float(f.angle_right_rad), float(f.angle_up_rad),
+                      float(f.angle_down_rad)};
     }
     return XR_SUCCESS;
   });

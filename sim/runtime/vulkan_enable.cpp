@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // XR_KHR_vulkan_enable and XR_KHR_vulkan_enable2: graphics requirements, the physical device
 // to use (the first the Vulkan loader lists: lavapipe when VK_ICD_FILENAMES forces it), and
 // instance / device creation on the application's behalf (enable2).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // VkImage creation for swapchains (see vulkan_images.hpp).
 #include "sim/runtime/vulkan_images.hpp"
 
@@ -7,9 +8,9 @@ namespace gazelod::xrrt {
 namespace {
 
 constexpr VkFormat kCandidateFormats[] = {
-    VK_FORMAT_R8G8B8A8_SRGB,  VK_FORMAT_B8G8R8A8_SRGB,  VK_FORMAT_R8G8B8A8_UNORM,      VK_FORMAT_B8G8R8A8_UNORM,
-    VK_FORMAT_R16G16B16A16_SFLOAT, VK_FORMAT_D32_SFLOAT, VK_FORMAT_D16_UNORM, VK_FORMAT_D24_UNORM_S8_UINT,
-    VK_FORMAT_D32_SFLOAT_S8_UINT,
+    VK_FORMAT_R8G8B8A8_SRGB,  VK_FORMAT_B8G8R8A8_SRGB,       VK_FORMAT_R8G8B8A8_UNORM,
+    VK_FORMAT_B8G8R8A8_UNORM, VK_FORMAT_R16G16B16A16_SFLOAT, VK_FORMAT_D32_SFLOAT,
+    VK_FORMAT_D16_UNORM,      VK_FORMAT_D24_UNORM_S8_UINT,   VK_FORMAT_D32_SFLOAT_S8_UINT,
 };
 
 bool is_depth(VkFormat f) {
@@ -72,8 +73,8 @@ VkResult transition_layouts(const Session& s, const Swapchain& sc, VkImageLayout
       b.image = img.image;
       b.subresourceRange = {aspect, 0, VK_REMAINING_MIP_LEVELS, 0, VK_REMAINING_ARRAY_LAYERS};
       b.dstAccessMask = 0;
-      vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0, 0,
-                           nullptr, 0, nullptr, 1, &b);
+      vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0, 0, nullptr,
+                           0, nullptr, 1, &b);
     }
     vkEndCommandBuffer(cmd);
     VkFenceCreateInfo fence_info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
@@ -155,7 +156,8 @@ XrResult create_vulkan_images(const Session& s, Swapchain& sc, std::uint32_t cou
   }
   if (layout != VK_IMAGE_LAYOUT_UNDEFINED) {
     if (VkResult r = transition_layouts(s, sc, layout, aspect); r != VK_SUCCESS) {
-      std::fprintf(stderr, "gazelod_xr_runtime: swapchain layout transition failed (VkResult %d)\n", static_cast<int>(r));
+      std::fprintf(stderr, "gazelod_xr_runtime: swapchain layout transition failed (VkResult %d)\n",
+                   static_cast<int>(r));
       destroy_vulkan_images(s, sc);
       return XR_ERROR_RUNTIME_FAILURE;
     }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Swapchain images as real VkImages on the application's VkDevice (XR_KHR_vulkan_enable2
 // "Swapchain Images"): allocated, bound and moved to the attachment layout the specification
 // promises at acquire time.

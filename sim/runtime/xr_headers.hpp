@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The OpenXR headers as the simulated runtime compiles them: Vulkan and timespec platform
 // types enabled, plus the loader-runtime negotiation structures (OpenXR loader specification,
 // "Runtime Negotiation"), which the Debian 1.0.20 headers do not install.

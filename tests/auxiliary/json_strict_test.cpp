@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The strict JSON parser (auxiliary/json_strict.hpp): a repeated key is refused with its path,
 // at any depth and inside arrays; the same key in different objects is fine; nesting past the
 // limit is refused; syntax errors stay nlohmann's.
@@ -20,7 +21,8 @@ std::string error_of(const std::string& text, int depth = kDefaultMaxJsonDepth) 
 }
 
 TEST(JsonStrict, RepeatedKeyIsRefusedWithItsPath) {
-  EXPECT_EQ(error_of(R"({"a": 1, "b": 2, "a": 3})"), "a: the key appears twice in one object (which one counts is undefined)");
+  EXPECT_EQ(error_of(R"({"a": 1, "b": 2, "a": 3})"),
+            "a: the key appears twice in one object (which one counts is undefined)");
   EXPECT_EQ(error_of(R"({"scene": {"objects": [{"name": "x"}, {"name": "y", "lods": [], "name": "z"}]}})"),
             "scene.objects[1].name: the key appears twice in one object (which one counts is undefined)");
   EXPECT_EQ(error_of(R"([1, [2, 3], {"k": {"q": 1, "q": 2}}])"),
@@ -33,7 +35,8 @@ TEST(JsonStrict, SameKeyInDifferentObjectsAndValuesAreKept) {
   const nlohmann::json j = parse_json_strict(R"({"a": {"x": 1}, "b": {"x": 2}, "c": [{"x": 3}, {"x": 4}], "x": 5})");
   EXPECT_EQ(j.at("c")[1].at("x").get<int>(), 4);
   EXPECT_EQ(j.at("x").get<int>(), 5);
-  EXPECT_EQ(j.dump(), nlohmann::json::parse(R"({"a": {"x": 1}, "b": {"x": 2}, "c": [{"x": 3}, {"x": 4}], "x": 5})").dump());
+  EXPECT_EQ(j.dump(),
+            nlohmann::json::parse(R"({"a": {"x": 1}, "b": {"x": 2}, "c": [{"x": 3}, {"x": 4}], "x": 5})").dump());
   EXPECT_EQ(parse_json_strict("3").get<int>(), 3);
   EXPECT_EQ(parse_json_strict("[]").size(), 0u);
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // bake_file on the generated scene: MSFT_lod structure, extras, and what must survive.
 #include "bake/bake.hpp"
 #include "bake/detail.hpp"
@@ -40,8 +41,7 @@ const Value& lod_extras(const Model& m, int node) {
 
 std::size_t triangles_of_mesh(const Model& m, int mesh) {
   std::size_t t = 0;
-  for (const auto& p : m.meshes.at(std::size_t(mesh)).primitives)
-    t += m.accessors.at(std::size_t(p.indices)).count / 3;
+  for (const auto& p : m.meshes.at(std::size_t(mesh)).primitives) t += m.accessors.at(std::size_t(p.indices)).count / 3;
   return t;
 }
 
@@ -97,8 +97,7 @@ TEST_P(BakeScene, EveryMeshNodeGetsAnMsftLodChain) {
       EXPECT_EQ(l.scale, base.scale);
       EXPECT_EQ(l.matrix, base.matrix);
       EXPECT_TRUE(l.children.empty());
-      for (const auto& s : b.out.scenes)
-        EXPECT_EQ(std::count(s.nodes.begin(), s.nodes.end(), chain[k]), 0);
+      for (const auto& s : b.out.scenes) EXPECT_EQ(std::count(s.nodes.begin(), s.nodes.end(), chain[k]), 0);
       for (const auto& other : b.out.nodes)
         EXPECT_EQ(std::count(other.children.begin(), other.children.end(), chain[k]), 0);
     }
@@ -140,7 +139,8 @@ TEST_P(BakeScene, NamesMaterialsTexturesTransformsSurvive) {
       EXPECT_EQ(triangles_of_mesh(b.out, int(mi)), triangles_of_mesh(b.in, int(mi)));
     }
   }
-  const auto& wavy_lod = b.out.meshes[std::size_t(b.out.nodes[std::size_t(b.out.nodes[2].extensions.at("MSFT_lod").Get("ids").Get(0).GetNumberAsInt())].mesh)];
+  const auto& wavy_lod = b.out.meshes[std::size_t(
+      b.out.nodes[std::size_t(b.out.nodes[2].extensions.at("MSFT_lod").Get("ids").Get(0).GetNumberAsInt())].mesh)];
   EXPECT_EQ(wavy_lod.name, "Wavy_lod1");
   ASSERT_EQ(wavy_lod.primitives.size(), 2u);
   EXPECT_EQ(wavy_lod.primitives[0].material, 0);
@@ -222,8 +222,9 @@ TEST(Bake, TooSmallMeshEndsItsChainEarlyAndSaysWhy) {
   EXPECT_LT(r.meshes[0].levels.size(), 4u);
   EXPECT_NE(r.meshes[0].note.find("cannot get below"), std::string::npos);
   const Model out = load_gltf(dir + "/out.glb").model;
-  EXPECT_EQ(out.nodes[0].extensions.count("MSFT_lod") ? out.nodes[0].extensions.at("MSFT_lod").Get("ids").ArrayLen() + 1 : 1u,
-            r.meshes[0].levels.size());
+  EXPECT_EQ(
+      out.nodes[0].extensions.count("MSFT_lod") ? out.nodes[0].extensions.at("MSFT_lod").Get("ids").ArrayLen() + 1 : 1u,
+      r.meshes[0].levels.size());
 }
 
 }  // namespace

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Round trip: bake the generated scene, read it back with load_baked_scene.
 #include "bake/bake.hpp"
 #include "bake/bake_error.hpp"
@@ -93,8 +94,8 @@ TEST(BakedScene, BrokenIdsAndChainsAreNamedByJsonPath) {
   const std::string dir = path.substr(0, path.rfind('/'));
   {
     tinygltf::Model m = load_gltf(path).model;
-    m.nodes[1].extensions["MSFT_lod"] = tinygltf::Value(tinygltf::Value::Object{
-        {"ids", tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(999)})}});
+    m.nodes[1].extensions["MSFT_lod"] = tinygltf::Value(
+        tinygltf::Value::Object{{"ids", tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(999)})}});
     testing::write_model(m, dir + "/ids.glb");
     EXPECT_HAS(load_error(dir + "/ids.glb"), "ids.glb: /nodes/1/extensions/MSFT_lod/ids/0: not a node index");
   }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // gazelod bake through gazelod::cli::run: exit codes, progress, summary, usage errors.
 #include "tests/cli_run.hpp"
 #include "bake/baked_scene.hpp"

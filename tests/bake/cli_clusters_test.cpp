@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // gazelod bake --clusters through gazelod::cli::run: progress with throughput, summary, the
 // output form (second argument or -o), usage errors, exit codes.
 #include "tests/cli_run.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // gazelod eval gltfpack through gazelod::cli::run: the bake's chain beside meshoptimizer's
 // gltfpack (Debian package gltfpack; the tests that run it skip, saying why, without it).
 #include "tests/cli_run.hpp"
@@ -20,15 +21,18 @@ using test::run_cli;
 
 #define EXPECT_HAS(haystack, needle) EXPECT_NE(std::string(haystack).find(needle), std::string::npos) << (haystack)
 
-bool have_gltfpack() { return std::system("command -v gltfpack >/dev/null 2>&1") == 0; }
+bool have_gltfpack() {
+  return std::system("command -v gltfpack >/dev/null 2>&1") == 0;
+}
 
 TEST(CliEvalGltfpack, OneMeshAgreesWithGltfpack) {
-  if (!have_gltfpack()) GAZELOD_SKIP_OR_FAIL("gltfpack not installed (Debian package gltfpack; bash scripts/install-deps.sh)");
+  if (!have_gltfpack())
+    GAZELOD_SKIP_OR_FAIL("gltfpack not installed (Debian package gltfpack; bash scripts/install-deps.sh)");
   const std::string dir = bake::testing::temp_dir("cli_eval_gltfpack");
-  const std::string in = bake::testing::write_model(bake::testing::single_mesh_model(bake::testing::grid(64, 10.0, 0.5)),
-                                                    dir + "/grid.glb");
-  const test::CliResult r = run_cli({"eval", "gltfpack", in, "--ratios", "0.25", "0.0625", "--out", dir + "/out",
-                                     "--work", dir + "/work"});
+  const std::string in = bake::testing::write_model(
+      bake::testing::single_mesh_model(bake::testing::grid(64, 10.0, 0.5)), dir + "/grid.glb");
+  const test::CliResult r =
+      run_cli({"eval", "gltfpack", in, "--ratios", "0.25", "0.0625", "--out", dir + "/out", "--work", dir + "/work"});
   ASSERT_EQ(r.rc, 0) << r.err;
   EXPECT_HAS(r.err, "gazelod eval gltfpack [");
   EXPECT_HAS(r.out, "| gazelod bake | 0.25 |");
@@ -56,8 +60,8 @@ TEST(CliEvalGltfpack, OneMeshAgreesWithGltfpack) {
 
 TEST(CliEvalGltfpack, SaysWhatIsMissing) {
   const std::string dir = bake::testing::temp_dir("cli_eval_gltfpack_bad");
-  const std::string in = bake::testing::write_model(bake::testing::single_mesh_model(bake::testing::icosphere(1, 1.0)),
-                                                    dir + "/s.glb");
+  const std::string in =
+      bake::testing::write_model(bake::testing::single_mesh_model(bake::testing::icosphere(1, 1.0)), dir + "/s.glb");
   test::CliResult r = run_cli({"eval", "gltfpack", in, "--gltfpack", dir + "/no-such-gltfpack", "--out", dir + "/o"});
   EXPECT_EQ(r.rc, 1);
   EXPECT_HAS(r.err, "--gltfpack: cannot run '" + dir + "/no-such-gltfpack' (Debian package gltfpack");

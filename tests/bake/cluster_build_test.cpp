@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // build_cluster_hierarchy (bake/cluster_build.hpp): the hierarchy's invariants on a closed
 // sphere, an open grid and separate pieces; stored errors against the true distance from the
 // source; the nearest-triangle grid and the splitter it uses; small, empty and degenerate input;
@@ -39,8 +40,8 @@ std::string build_error(const testing::TestMesh& m, const ClusterBuildOptions& o
 
 std::size_t top_triangles(const ClusterBuildResult& r) {
   const std::size_t n = testing::cut(r, std::numeric_limits<float>::max()).size() / 3;
-  std::printf("  %zu source triangles -> %zu clusters, %zu groups, %u levels, top %zu triangles\n",
-              r.source_triangles, r.hierarchy.size(), r.groups, r.levels, n);
+  std::printf("  %zu source triangles -> %zu clusters, %zu groups, %u levels, top %zu triangles\n", r.source_triangles,
+              r.hierarchy.size(), r.groups, r.levels, n);
   return n;
 }
 
@@ -122,7 +123,8 @@ TEST(ClusterBuild, FoldsAreTrianglesFacingAgainstTheirCorners) {
   }
   std::size_t folds = 0;
   for (const auto& [g, in] : members) {
-    const Folds f = find_folds(wavy.positions, testing::triangles_of(r, in), testing::triangles_of(r, products[g]), normals);
+    const Folds f =
+        find_folds(wavy.positions, testing::triangles_of(r, in), testing::triangles_of(r, products[g]), normals);
     folds += f.triangles;
     EXPECT_GE(double(r.hierarchy.parent_error_m[in[0]]), f.width_m) << "group " << g;
   }
@@ -155,7 +157,8 @@ TEST(ClusterBuild, FoldRetriesLeaveFewerAndNarrowerFolds) {
     double widest_m = 0.0;
     for (const auto& [g, in] : members)
       widest_m = std::max(widest_m, find_folds(block.positions, testing::triangles_of(r, in),
-                                               testing::triangles_of(r, products[g]), normals).width_m);
+                                               testing::triangles_of(r, products[g]), normals)
+                                        .width_m);
     return widest_m;
   };
   EXPECT_LE(widest_fold(r2), widest_fold(r0));

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // No crack, no overlap on a real cut: a generated terrain (bake/terrain_mesh.hpp, 50 k
 // triangles) goes through the file pipeline (write_generated_glb, bake_clusters_file,
 // load_baked), a viewer walks and looks across it for 30 steps, and each step's
@@ -50,8 +51,8 @@ std::vector<std::uint32_t> weld(const std::vector<float>& positions) {
 }
 
 struct EdgeUse {
-  int uses = 0;      // triangles using the edge
-  int direction = 0; // +1 per use from the smaller id to the larger, -1 the other way
+  int uses = 0;       // triangles using the edge
+  int direction = 0;  // +1 per use from the smaller id to the larger, -1 the other way
 };
 using Edges = std::unordered_map<std::uint64_t, EdgeUse>;
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // bake --clusters through the library: GAZELOD_cluster_lod written and read back identical,
 // the rest of the file unchanged, strips and fans, degenerate triangles reported, and the
 // reader's and the bake's errors naming file and place.
@@ -119,7 +120,8 @@ TEST(ClusterGltf, SideBySideBuildsWriteTheSameFile) {
   EXPECT_TRUE(files[0] == files[1]) << "a different file on 3 threads";
   for (const auto& l : lines)  // one line per mesh, in either order
     for (const char* mesh : {" done: mesh 0 'Sphere': 5120 triangles", " done: mesh 1 'Wavy': 2048 triangles"})
-      EXPECT_EQ(std::count_if(l.begin(), l.end(), [&](const std::string& s) { return s.find(mesh) != std::string::npos; }), 1)
+      EXPECT_EQ(
+          std::count_if(l.begin(), l.end(), [&](const std::string& s) { return s.find(mesh) != std::string::npos; }), 1)
           << mesh;
 }
 
@@ -127,7 +129,8 @@ std::string base64(const std::vector<unsigned char>& bytes) {
   static const char* k = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
   std::string out;
   for (std::size_t i = 0; i < bytes.size(); i += 3) {
-    const std::uint32_t n = std::uint32_t(bytes[i]) << 16 | (i + 1 < bytes.size() ? std::uint32_t(bytes[i + 1]) << 8 : 0) |
+    const std::uint32_t n = std::uint32_t(bytes[i]) << 16 |
+                            (i + 1 < bytes.size() ? std::uint32_t(bytes[i + 1]) << 8 : 0) |
                             (i + 2 < bytes.size() ? bytes[i + 2] : 0);
     out += k[n >> 18 & 63], out += k[n >> 12 & 63];
     out += i + 1 < bytes.size() ? k[n >> 6 & 63] : '=';
@@ -302,7 +305,8 @@ TEST(ClusterGltf, APrimitiveOfDegenerateTrianglesIsNamedAndAFileOfThemRefused) {
   const Baked b = bake("cl_degen_prim", m);
   ASSERT_EQ(b.report.primitives.size(), 1u);
   EXPECT_EQ(b.report.primitives[0].primitive, 0);
-  EXPECT_HAS(format_cluster_summary(b.report), "warning: mesh 0 'M' primitive 1: no triangles left, no cluster hierarchy");
+  EXPECT_HAS(format_cluster_summary(b.report),
+             "warning: mesh 0 'M' primitive 1: no triangles left, no cluster hierarchy");
   const tinygltf::Model out = load_gltf(b.out).model;
   ASSERT_EQ(out.meshes[0].primitives.size(), 2u);
   EXPECT_EQ(out.meshes[0].primitives[0].extensions.count(kClusterLodExtension), 1u);
@@ -323,7 +327,8 @@ TEST(ClusterGltf, BadGeometryNamesFileMeshAndVertex) {
   const auto& ia = m.accessors[std::size_t(m.meshes[0].primitives[0].indices)];
   const std::uint32_t big = 1000;
   std::memcpy(m.buffers[0].data.data() + m.bufferViews[std::size_t(ia.bufferView)].byteOffset + 4 * 5, &big, 4);
-  EXPECT_HAS(bake_error(m, "cl_range"), "in.glb: mesh 0 'M' primitive 0: index 5 is 1000, but there are only 42 vertices");
+  EXPECT_HAS(bake_error(m, "cl_range"),
+             "in.glb: mesh 0 'M' primitive 0: index 5 is 1000, but there are only 42 vertices");
   m.meshes[0].primitives[0].mode = TINYGLTF_MODE_LINE;
   EXPECT_HAS(bake_error(m, "cl_lines"), "in.glb: nothing to bake: the meshes the nodes use have no triangle primitive");
   m.nodes[0].mesh = -1;
@@ -429,36 +434,42 @@ TEST(ClusterGltf, ReaderNamesTheJsonPath) {
              p + "/errors: missing");
   EXPECT_HAS(reader_error("cl_r_type", [](tinygltf::Model&, Value::Object& e) { e["errors"] = e["ranges"]; }),
              p + "/errors: accessor");
-  EXPECT_HAS(reader_error("cl_r_count", [](tinygltf::Model&, Value::Object& e) {
-               e["clusterCount"] = Value(e["clusterCount"].GetNumberAsInt() + 1);
-             }),
+  EXPECT_HAS(reader_error("cl_r_count",
+                          [](tinygltf::Model&, Value::Object& e) {
+                            e["clusterCount"] = Value(e["clusterCount"].GetNumberAsInt() + 1);
+                          }),
              "elements, clusterCount is");
-  EXPECT_HAS(reader_error("cl_r_range", [](tinygltf::Model& m, Value::Object& e) {
-               const std::uint32_t huge = 1u << 30;
-               std::memcpy(data_of(m, e, "ranges") + 8 * 3, &huge, 4);
-             }),
+  EXPECT_HAS(reader_error("cl_r_range",
+                          [](tinygltf::Model& m, Value::Object& e) {
+                            const std::uint32_t huge = 1u << 30;
+                            std::memcpy(data_of(m, e, "ranges") + 8 * 3, &huge, 4);
+                          }),
              p + "/ranges: element 3: first 1073741824");
-  EXPECT_HAS(reader_error("cl_r_monotone", [](tinygltf::Model& m, Value::Object& e) {
-               const float big = 1e6f;
-               std::memcpy(data_of(m, e, "errors"), &big, 4);  // self error of cluster 0
-             }),
+  EXPECT_HAS(reader_error("cl_r_monotone",
+                          [](tinygltf::Model& m, Value::Object& e) {
+                            const float big = 1e6f;
+                            std::memcpy(data_of(m, e, "errors"), &big, 4);  // self error of cluster 0
+                          }),
              p + "/errors: element 0: need 0 <= self error <= parent error");
-  EXPECT_HAS(reader_error("cl_r_nan", [](tinygltf::Model& m, Value::Object& e) {
-               const float nan = std::numeric_limits<float>::quiet_NaN();
-               std::memcpy(data_of(m, e, "selfSpheres") + 16 * 2, &nan, 4);
-             }),
+  EXPECT_HAS(reader_error("cl_r_nan",
+                          [](tinygltf::Model& m, Value::Object& e) {
+                            const float nan = std::numeric_limits<float>::quiet_NaN();
+                            std::memcpy(data_of(m, e, "selfSpheres") + 16 * 2, &nan, 4);
+                          }),
              p + "/selfSpheres: element 2 is not finite");
-  EXPECT_HAS(reader_error("cl_r_sphere", [](tinygltf::Model& m, Value::Object& e) {
-               const float tiny = 1e-6f;
-               std::memcpy(data_of(m, e, "parentSpheres") + 12, &tiny, 4);  // radius of cluster 0
-             }),
+  EXPECT_HAS(reader_error("cl_r_sphere",
+                          [](tinygltf::Model& m, Value::Object& e) {
+                            const float tiny = 1e-6f;
+                            std::memcpy(data_of(m, e, "parentSpheres") + 12, &tiny, 4);  // radius of cluster 0
+                          }),
              p + "/parentSpheres: element 0: does not contain the self sphere");
   EXPECT_HAS(reader_error("cl_r_depth", [](tinygltf::Model&, Value::Object& e) { e["levelCount"] = Value(1); }),
              p + "/depths: element");
-  EXPECT_HAS(reader_error("cl_r_index", [](tinygltf::Model& m, Value::Object& e) {
-               const std::uint16_t big = 60000;
-               std::memcpy(data_of(m, e, "indices") + 2 * 7, &big, 2);
-             }),
+  EXPECT_HAS(reader_error("cl_r_index",
+                          [](tinygltf::Model& m, Value::Object& e) {
+                            const std::uint16_t big = 60000;
+                            std::memcpy(data_of(m, e, "indices") + 2 * 7, &big, 2);
+                          }),
              p + "/indices: index 7 is 60000, but there are only 642 vertices");
 }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The hierarchy invariants of cluster_invariants.hpp.
 #include "tests/bake/cluster_invariants.hpp"
 
@@ -19,8 +20,8 @@ std::vector<std::uint32_t> weld(std::span<const float> p) {
   std::map<std::array<float, 3>, std::uint32_t> first;
   std::vector<std::uint32_t> w(p.size() / 3);
   for (std::size_t v = 0; v < w.size(); ++v)
-    w[v] = first.try_emplace({p[3 * v] + 0.0f, p[3 * v + 1] + 0.0f, p[3 * v + 2] + 0.0f},
-                             static_cast<std::uint32_t>(v)).first->second;
+    w[v] = first.try_emplace({p[3 * v] + 0.0f, p[3 * v + 1] + 0.0f, p[3 * v + 2] + 0.0f}, static_cast<std::uint32_t>(v))
+               .first->second;
   return w;
 }
 
@@ -91,9 +92,9 @@ void expect_hierarchy_invariants(const ClusterBuildResult& r, std::span<const fl
   const std::size_t n = h.size();
   ASSERT_EQ(r.parent_group.size(), n);
   ASSERT_EQ(r.source_group.size(), n);
-  for (const auto* v : {&h.self_center_x_m, &h.self_center_y_m, &h.self_center_z_m, &h.self_radius_m,
-                        &h.parent_center_x_m, &h.parent_center_y_m, &h.parent_center_z_m,
-                        &h.parent_radius_m, &h.parent_error_m})
+  for (const auto* v :
+       {&h.self_center_x_m, &h.self_center_y_m, &h.self_center_z_m, &h.self_radius_m, &h.parent_center_x_m,
+        &h.parent_center_y_m, &h.parent_center_z_m, &h.parent_radius_m, &h.parent_error_m})
     ASSERT_EQ(v->size(), n);
   ASSERT_EQ(h.first_index.size(), n);
   ASSERT_EQ(h.index_count.size(), n);
@@ -206,9 +207,9 @@ void expect_hierarchy_invariants(const ClusterBuildResult& r, std::span<const fl
     SCOPED_TRACE("cut at " + std::to_string(t));
     const std::vector<std::uint32_t> drawn = cut(r, t);
     const OpenEdges border = open_edges(pos, drawn);
-    EXPECT_TRUE(fixed(border) == source_fixed) << "no crack, no overlap: " << fixed(border).size()
-                                               << " open edges off the free outline, the source has "
-                                               << source_fixed.size();
+    EXPECT_TRUE(fixed(border) == source_fixed)
+        << "no crack, no overlap: " << fixed(border).size() << " open edges off the free outline, the source has "
+        << source_fixed.size();
     EXPECT_LE(drawn.size(), previous);
     previous = drawn.size();
   }

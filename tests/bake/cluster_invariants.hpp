@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Checks the cluster-hierarchy tests share (unit and integration): the open edges of a set of
 // triangles with positions welded, the cut at an error threshold, and every invariant
 // build_cluster_hierarchy promises (cluster_build.hpp), as gtest expectations.
@@ -36,7 +37,6 @@ std::vector<std::vector<std::vector<std::uint8_t>>> meeting_vertices_of(const ti
 // open border, where not locked, may change, along itself), and cuts at no error, at every group
 // error and at the top having the source's open border off that free outline (no crack).
 void expect_hierarchy_invariants(const ClusterBuildResult& r, std::span<const float> positions,
-                                 std::span<const std::uint32_t> source,
-                                 const ClusterBuildOptions& options = {});
+                                 std::span<const std::uint32_t> source, const ClusterBuildOptions& options = {});
 
 }  // namespace gazelod::bake::testing

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Where separately baked primitives meet (bake/shared_positions.hpp) and what the cluster bake
 // does there: the meeting positions stay at every level, so neighbouring meshes drawn at
 // different levels still meet, while each mesh's free rim is simplified.
@@ -46,8 +47,9 @@ TEST(SharedPositions, InstancesMeetThroughTheirTransforms) {
   EXPECT_EQ(s[0], (std::vector<std::uint8_t>{1, 1, 1, 1, 1}));
   const std::vector<PlacedPrimitive> alone{{seam, kSquare, {glm::dmat4(1.0)}}};
   EXPECT_EQ(shared_positions(alone)[0], (std::vector<std::uint8_t>(5, 0)));
-  const std::vector<PlacedPrimitive> apart{{kLeft, kSquare, {glm::translate(glm::dmat4(1.0), glm::dvec3(5.0, 0.0, 0.0))}},
-                                           {kRight, kSquare, {glm::dmat4(1.0)}}};
+  const std::vector<PlacedPrimitive> apart{
+      {kLeft, kSquare, {glm::translate(glm::dmat4(1.0), glm::dvec3(5.0, 0.0, 0.0))}},
+      {kRight, kSquare, {glm::dmat4(1.0)}}};
   for (const auto& flags : shared_positions(apart)) EXPECT_EQ(std::accumulate(flags.begin(), flags.end(), 0), 0);
 }
 
@@ -98,8 +100,7 @@ TEST(SharedPositions, TiledTerrainKeepsTileSeamsAndSimplifiesTheRim) {
         ++seam_edges;
         EXPECT_EQ(top.count(e), 1u) << "seam edge " << e.first << "-" << e.second << " kept";
       }
-    for (const auto& [e, count] : top)
-      (seam[e.first] && seam[e.second] ? top_seam_edges : top_rim_edges) += 1;
+    for (const auto& [e, count] : top) (seam[e.first] && seam[e.second] ? top_seam_edges : top_rim_edges) += 1;
     EXPECT_EQ(seam_edges, 2u * (per_side - 1));
     EXPECT_EQ(top_seam_edges, seam_edges) << "nothing else runs along the seam";
     EXPECT_LT(top_rim_edges, seam_edges / 4) << "the outer rim is simplified";

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Integration: bake --clusters output checked by Khronos's glTF-Validator (npm gltf-validator,
 // run with node; scripts/install-gltf-validator.sh installs it under the build folder), and a
 // real model: Debian's assimp-testmodels ship Khronos's 2CylinderEngine (29 meshes, 75730
@@ -49,8 +50,8 @@ struct Validation {
 
 Validation validate(const std::string& node_path, const std::string& file) {
   const std::string log = file + ".validator.txt";
-  const std::string cmd = "NODE_PATH='" + node_path + "' node '" GAZELOD_SOURCE_DIR
-                          "/tests/bake/gltf_validate.js' '" + file + "' >'" + log + "' 2>&1";
+  const std::string cmd = "NODE_PATH='" + node_path + "' node '" GAZELOD_SOURCE_DIR "/tests/bake/gltf_validate.js' '" +
+                          file + "' >'" + log + "' 2>&1";
   Validation v;
   const int status = std::system(cmd.c_str());
   v.rc = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -61,17 +62,17 @@ Validation validate(const std::string& node_path, const std::string& file) {
   return v;
 }
 
-#define SKIP_WITHOUT_VALIDATOR(path)                                                        \
-  const std::string path = validator_path();                                                \
-  if (path.empty())                                                                         \
+#define SKIP_WITHOUT_VALIDATOR(path)                                                                   \
+  const std::string path = validator_path();                                                           \
+  if (path.empty())                                                                                    \
   GAZELOD_SKIP_OR_FAIL("node or gltf-validator not installed (bash scripts/install-gltf-validator.sh " \
                        << GAZELOD_BINARY_DIR << "/gltf-validator)")
 
 TEST(ClusterValidator, GeneratedMeshesValidate) {
   SKIP_WITHOUT_VALIDATOR(node_path);
   const std::string dir = testing::temp_dir("clv_generated");
-  for (const auto& [name, mesh] : {std::pair{"sphere", testing::icosphere(5, 0.5)},
-                                   std::pair{"grid", testing::grid(100, 10.0, 1.0)}}) {
+  for (const auto& [name, mesh] :
+       {std::pair{"sphere", testing::icosphere(5, 0.5)}, std::pair{"grid", testing::grid(100, 10.0, 1.0)}}) {
     SCOPED_TRACE(name);
     const std::string in = testing::write_model(testing::single_mesh_model(mesh), dir + "/" + name + ".glb");
     const std::string out = dir + "/" + name + "_clusters.glb";
@@ -199,8 +200,10 @@ TEST(ClusterValidator, EveryAssimpModelBakesOrSaysWhy) {
       SCOPED_TRACE(models[i] + (clusters ? " (--clusters)" : " (chains)"));
       const std::string out = dir + "/out" + std::to_string(i) + (clusters ? "c" : "") + ".glb";
       try {
-        if (clusters) bake_clusters_file(models[i], out, ClusterBakeOptions{});
-        else bake_file(models[i], out, BakeOptions{});
+        if (clusters)
+          bake_clusters_file(models[i], out, ClusterBakeOptions{});
+        else
+          bake_file(models[i], out, BakeOptions{});
       } catch (const BakeError& e) {
         refused += clusters;
         EXPECT_EQ(std::string(e.what()).rfind(models[i] + ": ", 0), 0u) << e.what();
@@ -223,8 +226,8 @@ TEST(ClusterValidator, EveryAssimpModelBakesOrSaysWhy) {
       validate_files.push_back(models[i]);
       validate_files.push_back(out);
     }
-  std::printf("%zu models: --clusters %zu baked, %zu refused with a reason; chains %zu baked\n", models.size(),
-              baked, refused, chains_baked);
+  std::printf("%zu models: --clusters %zu baked, %zu refused with a reason; chains %zu baked\n", models.size(), baked,
+              refused, chains_baked);
   EXPECT_GE(baked, 25u);
   EXPECT_GE(chains_baked, 25u);
   const std::string node_path = validator_path();
@@ -235,7 +238,7 @@ TEST(ClusterValidator, EveryAssimpModelBakesOrSaysWhy) {
     ASSERT_TRUE(codes.count(in) && codes.count(out)) << "no validator report for " << in << " or " << out;
     for (const std::string& c : codes.at(out))
       EXPECT_TRUE(codes.at(in).count(c)) << out << " (from " << in << "): validator error " << c
-                                          << " that the input does not have";
+                                         << " that the input does not have";
   }
 }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Every bake error path gives a message naming the file and the place, and no output file.
 #include "bake/bake.hpp"
 #include "bake/cluster_bake.hpp"
@@ -129,13 +130,11 @@ TEST(BakeErrors, SparseAccessor) {
 
 TEST(BakeErrors, UnsupportedModes) {
   // Strips and fans are read as triangle lists (cluster_gltf_test.cpp); points are not triangles.
-  const std::string points = bake_edited("points", [](tinygltf::Model& g) {
-    g.meshes[0].primitives[0].mode = TINYGLTF_MODE_POINTS;
-  });
+  const std::string points =
+      bake_edited("points", [](tinygltf::Model& g) { g.meshes[0].primitives[0].mode = TINYGLTF_MODE_POINTS; });
   EXPECT_HAS(points, "mesh 0 'M' primitive 0: mode 0 (POINTS) is not supported");
-  const std::string lines = bake_edited("lines", [](tinygltf::Model& g) {
-    g.meshes[0].primitives[0].mode = TINYGLTF_MODE_LINE;
-  });
+  const std::string lines =
+      bake_edited("lines", [](tinygltf::Model& g) { g.meshes[0].primitives[0].mode = TINYGLTF_MODE_LINE; });
   EXPECT_HAS(lines, "mode 1 (LINES) is not supported");
 }
 
@@ -153,7 +152,9 @@ TEST(BakeErrors, CompressedGeometryIsNamed) {
     g.extensionsUsed = {"KHR_draco_mesh_compression"};
     g.extensionsRequired = {"KHR_draco_mesh_compression"};
   });
-  EXPECT_HAS(m, "in.glb: /extensionsRequired: KHR_draco_mesh_compression (compressed geometry), which gazelod does not decode");
+  EXPECT_HAS(
+      m,
+      "in.glb: /extensionsRequired: KHR_draco_mesh_compression (compressed geometry), which gazelod does not decode");
 }
 
 TEST(BakeErrors, IndexOutOfRange) {
@@ -174,9 +175,8 @@ TEST(BakeErrors, AccessorPastItsBuffer) {
 }
 
 TEST(BakeErrors, NonFloatPositionAndNonFinite) {
-  const std::string q = bake_edited("quant", [](tinygltf::Model& g) {
-    g.accessors[0].componentType = TINYGLTF_COMPONENT_TYPE_SHORT;
-  });
+  const std::string q =
+      bake_edited("quant", [](tinygltf::Model& g) { g.accessors[0].componentType = TINYGLTF_COMPONENT_TYPE_SHORT; });
   EXPECT_HAS(q, "POSITION accessor 0 must be float VEC3");
   const std::string nan = bake_edited("nan", [](tinygltf::Model& g) {
     const float x = NAN;
@@ -186,9 +186,8 @@ TEST(BakeErrors, NonFloatPositionAndNonFinite) {
 }
 
 TEST(BakeErrors, IndexCountNotTriangles) {
-  const std::string m = bake_edited("count", [](tinygltf::Model& g) {
-    g.accessors[std::size_t(g.meshes[0].primitives[0].indices)].count -= 1;
-  });
+  const std::string m = bake_edited(
+      "count", [](tinygltf::Model& g) { g.accessors[std::size_t(g.meshes[0].primitives[0].indices)].count -= 1; });
   EXPECT_HAS(m, "959 indices is not a whole number of triangles");
 }
 
@@ -250,18 +249,28 @@ TEST(BakeErrors, SceneGraphProblemsAreRefusedByBothBakes) {
     const char* message;
   };
   const std::vector<GraphCase> cases = {
-      {"cycle", [](tinygltf::Model& m) {
+      {"cycle",
+       [](tinygltf::Model& m) {
          m.nodes.push_back(m.nodes[0]);
          m.nodes[0].children = {1};
          m.nodes[1].children = {0};
-       }, "node graph has a cycle"},
+       },
+       "node graph has a cycle"},
       {"child", [](tinygltf::Model& m) { m.nodes[0].children = {7}; }, "/nodes/0/children/0: no node 7"},
       {"scene", [](tinygltf::Model& m) { m.scenes[0].nodes.push_back(9); }, "/scenes/0/nodes/1: no node 9"},
       {"mesh", [](tinygltf::Model& m) { m.nodes[0].mesh = 5; }, "/nodes/0/mesh: no mesh 5"},
-      {"zero_scale", [](tinygltf::Model& m) { m.nodes[0].scale = {1.0, 0.0, 1.0}; }, "collapses the node"},
+      {"zero_scale",
+       [](tinygltf::Model& m) {
+         m.nodes[0].scale = {1.0, 0.0, 1.0};
+       },
+       "collapses the node"},
       {"zero_matrix", [](tinygltf::Model& m) { m.nodes[0].matrix.assign(16, 0.0); }, "matrix is singular"},
       // (No NaN case: JSON cannot carry one; a rotation of zeros collapses the node too.)
-      {"zero_rotation", [](tinygltf::Model& m) { m.nodes[0].rotation = {0.0, 0.0, 0.0, 0.0}; }, "a zero quaternion"},
+      {"zero_rotation",
+       [](tinygltf::Model& m) {
+         m.nodes[0].rotation = {0.0, 0.0, 0.0, 0.0};
+       },
+       "a zero quaternion"},
   };
   for (const GraphCase& c : cases) expect_both_bakes_refuse(std::string("graph_") + c.name, c.edit, c.message);
 }
@@ -281,11 +290,14 @@ TEST(BakeErrors, HugePositionsAndAllDegenerateRefusedByBothBakes) {
     const char* message;
   };
   const std::vector<GeometryCase> cases = {
-      {"huge", [](tinygltf::Model& g) {
+      {"huge",
+       [](tinygltf::Model& g) {
          const float x = 3e38f;
          std::memcpy(g.buffers[0].data.data() + g.bufferViews[0].byteOffset + 12 * 7, &x, 4);
-       }, "mesh 0 'M' primitive 0: POSITION 7 is out of range"},
-      {"degenerate", [](tinygltf::Model& g) {
+       },
+       "mesh 0 'M' primitive 0: POSITION 7 is out of range"},
+      {"degenerate",
+       [](tinygltf::Model& g) {
          // Every triangle's first two corners at one vertex.
          auto& acc = g.accessors[std::size_t(g.meshes[0].primitives[0].indices)];
          const auto& view = g.bufferViews[std::size_t(acc.bufferView)];
@@ -296,7 +308,8 @@ TEST(BakeErrors, HugePositionsAndAllDegenerateRefusedByBothBakes) {
            unsigned char* p = g.buffers[0].data.data() + view.byteOffset + acc.byteOffset + 3 * size * t;
            std::memcpy(p + size, p, size);
          }
-       }, "nothing to bake: no triangle primitive has a triangle left once degenerate ones"},
+       },
+       "nothing to bake: no triangle primitive has a triangle left once degenerate ones"},
   };
   for (const GeometryCase& c : cases) expect_both_bakes_refuse(std::string("geom_") + c.name, c.edit, c.message);
 }

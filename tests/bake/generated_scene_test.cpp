@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Generated test scenes (bake/terrain_mesh.hpp, bake/city_mesh.hpp, bake/generated_scene.hpp)
 // and `gazelod scene generate`: sizes, determinism by seed, the flat path, orientation, tile
 // seams, the glTF written, bad options and unwritable outputs.
@@ -54,8 +55,8 @@ TEST(FractalNoise, BoundedDeterministicAndSeeded) {
   }
   EXPECT_GE(lo, -1.0);
   EXPECT_LE(hi, 1.0);
-  EXPECT_GT(hi - lo, 0.3);  // not flat
-  EXPECT_GT(diff, 0.1);     // another seed, another field
+  EXPECT_GT(hi - lo, 0.3);                          // not flat
+  EXPECT_GT(diff, 0.1);                             // another seed, another field
   EXPECT_EQ(gradient_noise(3.0, -4.0, 1, 0), 0.0);  // zero at lattice points
   EXPECT_EQ(gradient_noise(NAN, 1.0, 1, 0), 0.0);
 }
@@ -186,7 +187,8 @@ TEST(GeneratedScene, WritesAGlbThatBakeReads) {
         try {
           generated_model({bad});
         } catch (const std::invalid_argument& e) {
-          EXPECT_HAS(std::string(e.what()), "generated mesh 0 'terrain': index 4 is 1000, but there are only 9 vertices");
+          EXPECT_HAS(std::string(e.what()),
+                     "generated mesh 0 'terrain': index 4 is 1000, but there are only 9 vertices");
           throw;
         }
       },
@@ -197,12 +199,14 @@ TEST(GeneratedScene, WritesAGlbThatBakeReads) {
 
 TEST(CliSceneGenerate, WritesReportsAndRefusesBadInput) {
   const std::string dir = testing::temp_dir("cli_scene_generate");
-  test::CliResult r = test::run_cli({"scene", "generate", "terrain", dir + "/t.glb", "--triangles", "3000", "--seed", "4"});
+  test::CliResult r =
+      test::run_cli({"scene", "generate", "terrain", dir + "/t.glb", "--triangles", "3000", "--seed", "4"});
   ASSERT_EQ(r.rc, 0) << r.err;
   EXPECT_HAS(r.out, "wrote " + dir + "/t.glb: terrain 300 x 300 m, 39 x 39 quads");
   EXPECT_HAS(r.out, "3042 triangles, 1600 vertices in 1 mesh;");
   const auto size = std::filesystem::file_size(dir + "/t.glb");
-  ASSERT_EQ(test::run_cli({"scene", "generate", "terrain", dir + "/u.glb", "--triangles", "3000", "--seed", "4"}).rc, 0);
+  ASSERT_EQ(test::run_cli({"scene", "generate", "terrain", dir + "/u.glb", "--triangles", "3000", "--seed", "4"}).rc,
+            0);
   EXPECT_EQ(std::filesystem::file_size(dir + "/u.glb"), size);
   r = test::run_cli({"scene", "generate", "city", dir + "/c.glb", "--triangles", "5000"});
   ASSERT_EQ(r.rc, 0) << r.err;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A glTF's external files: only regular files inside its own folder, unless the user allows
 // more (bake --allow-outside-uris). An escape (../../etc/passwd), a FIFO (which would block the
 // reader forever) and a directory are refused with the uri and the reason.

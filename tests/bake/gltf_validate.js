@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // node gltf_validate.js FILE...: Khronos's glTF-Validator (npm gltf-validator, found through
 // NODE_PATH) on each file (.glb, or .gltf with its external buffers and images beside it). Per
 // file it prints "validator VERSION errors E warnings W infos I", then "error codes: CODE ..."

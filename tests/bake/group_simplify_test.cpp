@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // simplify_group_triangles (bake/group_simplify.hpp), one group's step on its own: the target
 // share, free collapses past it on flat panels, locks honoured, too small a group left alone,
 // and fold retries that never keep a wider fold.
@@ -34,7 +35,7 @@ TEST(GroupSimplify, CurvedSurfaceStopsNearTheTargetShare) {
   EXPECT_EQ(out.size(), m.indices.size());
   EXPECT_GT(r.index_count, 0u);
   EXPECT_EQ(r.index_count % 3, 0u);
-  EXPECT_LE(r.index_count, m.indices.size() / 2);         // meshopt stops at or under the target
+  EXPECT_LE(r.index_count, m.indices.size() / 2);          // meshopt stops at or under the target
   EXPECT_GE(r.index_count, m.indices.size() / 2 - 3 * 8);  // and close to it, with no error limit
   expect_own_vertices(out, r.index_count, m.positions.size() / 3);
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reddy's rendered perceptual profile (bake/profile_*): the FFT and the energy frequency on
 // hand-made images, the view sphere, the profile of generated meshes (icosphere, bumpy sphere)
 // and a round trip: gazelod bake --profile, load_baked_scene, render the loaded chain.
@@ -31,14 +32,14 @@ namespace {
 TEST(ProfileSpectrum, FftMatchesADirectDft) {
   const std::size_t n = 16;
   std::vector<double> re(n), im(n);
-  for (std::size_t i = 0; i < n; ++i) re[i] = std::sin(0.7 * double(i)) + 0.1 * double(i), im[i] = std::cos(1.3 * double(i));
+  for (std::size_t i = 0; i < n; ++i)
+    re[i] = std::sin(0.7 * double(i)) + 0.1 * double(i), im[i] = std::cos(1.3 * double(i));
   const std::vector<double> re0 = re, im0 = im;
   fft_inplace(re, im);
   for (std::size_t k = 0; k < n; ++k) {
     std::complex<double> s = 0.0;
     for (std::size_t t = 0; t < n; ++t)
-      s += std::complex<double>(re0[t], im0[t]) *
-           std::polar(1.0, -2.0 * std::numbers::pi * double(k * t) / double(n));
+      s += std::complex<double>(re0[t], im0[t]) * std::polar(1.0, -2.0 * std::numbers::pi * double(k * t) / double(n));
     EXPECT_NEAR(re[k], s.real(), 1e-9) << k;
     EXPECT_NEAR(im[k], s.imag(), 1e-9) << k;
   }

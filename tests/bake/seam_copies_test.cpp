@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A group stuck at attribute seams is simplified across them (ClusterBuildOptions::
 // stuck_across_seams), each new corner given back the copy of its position from its triangle's
 // side (bake/seam_copies.hpp).
@@ -19,11 +20,11 @@ namespace {
 // [0, 1], meeting at x = z = 0 with the edge's vertices split (a hard edge): floor 0-3, wall
 // 4-7, vertices 4 and 5 at the positions of 0 and 1. Vertex 8 is an unused copy of 2's position.
 struct HardEdge {
-  std::vector<float> pos{0, 0, 0, 0, 1, 0, 1, 0, 0, 1, 1, 0,   // floor
-                         0, 0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1,   // wall
-                         1, 0, 0};                             // unused
-  std::vector<std::uint32_t> tris{0, 2, 3, 0, 3, 1,   // floor, facing +z
-                                  4, 5, 7, 4, 7, 6};  // wall, facing +x
+  std::vector<float> pos{0, 0, 0, 0, 1, 0, 1, 0, 0, 1, 1, 0,  // floor
+                         0, 0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1,  // wall
+                         1, 0, 0};                            // unused
+  std::vector<std::uint32_t> tris{0, 2, 3, 0, 3, 1,           // floor, facing +z
+                                  4, 5, 7, 4, 7, 6};          // wall, facing +x
 };
 
 TEST(SeamCopies, ACornerTakesTheCopyOfTheSideItsTriangleFaces) {
@@ -55,8 +56,8 @@ TEST(SeamCopies, AManyCopyPositionChoosesAmongTheGroupsCopies) {
   std::vector<std::uint32_t> tris;
   for (int i = 0; i < 100; ++i) {  // triangle i: apex, rim i, rim i + 1, its own three vertices
     const double a0 = 2 * M_PI * i / 100, a1 = 2 * M_PI * (i + 1) / 100;
-    const float t[9] = {0, 0, 0, float(std::cos(a0)), float(std::sin(a0)), 0,
-                        float(std::cos(a1)), float(std::sin(a1)), 0};
+    const float t[9] = {0, 0, 0, float(std::cos(a0)), float(std::sin(a0)), 0, float(std::cos(a1)), float(std::sin(a1)),
+                        0};
     for (int k = 0; k < 3; ++k) {
       tris.push_back(static_cast<std::uint32_t>(pos.size() / 3));
       pos.insert(pos.end(), t + 3 * k, t + 3 * k + 3);
@@ -84,7 +85,7 @@ TEST(SeamCopies, OnAFlatSeamTheNearerSideWins) {
   // Left quad x in [-1, 0] (vertices 0-3), right quad x in [0, 1] (4-7); 1/3 and 4/6 share the
   // seam x = 0 as separate copies.
   const std::vector<float> pos{-1, 0, 0, 0, 0, 0, -1, 1, 0, 0, 1, 0,   // left
-                               0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0};    // right
+                               0,  0, 0, 1, 0, 0, 0,  1, 0, 1, 1, 0};  // right
   const std::vector<std::uint32_t> tris{0, 1, 3, 0, 3, 2, 4, 5, 7, 4, 7, 6};
   const std::vector<std::uint32_t> weld = weld_positions(pos);
   const SeamCopies seams(pos, weld, tris);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // simplify_chain and the detail descriptor on generated meshes.
 #include "bake/detail.hpp"
 #include "bake/simplify_chain.hpp"
@@ -56,8 +57,8 @@ TEST(SimplifyChain, ScaleIsTheLargestExtent) {
   const auto m = icosphere(2, 0.5);
   const PrimitiveChain c = simplify_chain(m.positions, m.indices, ChainOptions{});
   double lo = 1e9, hi = -1e9;  // x extent; the icosphere is symmetric, all axes alike
-  for (std::size_t i = 0; i < m.positions.size(); i += 3) lo = std::min(lo, double(m.positions[i])),
-                                                         hi = std::max(hi, double(m.positions[i]));
+  for (std::size_t i = 0; i < m.positions.size(); i += 3)
+    lo = std::min(lo, double(m.positions[i])), hi = std::max(hi, double(m.positions[i]));
   EXPECT_NEAR(c.scale_m, hi - lo, 1e-6);
 }
 
@@ -148,10 +149,8 @@ TEST(Detail, DiameterOverTwiceTheError) {
 TEST(ChainOptions, ValidationNamesTheBadValue) {
   EXPECT_EQ(validate_chain_options(ChainOptions{}), "");
   EXPECT_NE(validate_chain_options(ChainOptions{{}, 1.0}).find("1 to 254"), std::string::npos);
-  EXPECT_NE(validate_chain_options(ChainOptions{{1.0}, 1.0}).find("ratio 1 must be in (0, 1)"),
-            std::string::npos);
-  EXPECT_NE(validate_chain_options(ChainOptions{{0.5, 0.5}, 1.0}).find("decrease strictly"),
-            std::string::npos);
+  EXPECT_NE(validate_chain_options(ChainOptions{{1.0}, 1.0}).find("ratio 1 must be in (0, 1)"), std::string::npos);
+  EXPECT_NE(validate_chain_options(ChainOptions{{0.5, 0.5}, 1.0}).find("decrease strictly"), std::string::npos);
   EXPECT_NE(validate_chain_options(ChainOptions{{0.5}, 0.0}).find("target error"), std::string::npos);
   EXPECT_NE(validate_chain_options(ChainOptions{{0.5}, NAN}).find("target error"), std::string::npos);
 }

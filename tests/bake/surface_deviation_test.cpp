@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // World-space triangle soups and one-sided surface distances (bake/surface_deviation.hpp), the
 // measure of gazelod eval gltfpack.
 #include "bake/surface_deviation.hpp"
@@ -20,7 +21,8 @@ TriangleSoup square(double z, int cells) {  // [0, 1]^2 at height z, cells x cel
   const auto at = [&](int i, int j) { return static_cast<std::uint32_t>(j * (cells + 1) + i); };
   for (int j = 0; j < cells; ++j)
     for (int i = 0; i < cells; ++i)
-      s.indices.insert(s.indices.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+      s.indices.insert(s.indices.end(),
+                       {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j), at(i + 1, j + 1), at(i, j + 1)});
   return s;
 }
 

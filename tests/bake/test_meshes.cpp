@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Generators and writers for test_meshes.hpp.
 #include "tests/bake/test_meshes.hpp"
 
@@ -34,7 +35,7 @@ int add_positions(tinygltf::Model& m, const std::vector<float>& p) {
   a.minValues = {1e30, 1e30, 1e30}, a.maxValues = {-1e30, -1e30, -1e30};
   for (std::size_t i = 0; i < p.size(); ++i)
     a.minValues[i % 3] = std::min(a.minValues[i % 3], double(p[i])),
-    a.maxValues[i % 3] = std::max(a.maxValues[i % 3], double(p[i]));
+                    a.maxValues[i % 3] = std::max(a.maxValues[i % 3], double(p[i]));
   m.accessors.push_back(a);
   return int(m.accessors.size() - 1);
 }
@@ -67,8 +68,7 @@ tinygltf::Primitive primitive(tinygltf::Model& m, const TestMesh& t, int materia
   return p;
 }
 
-bool no_image_write(const std::string*, const std::string*, const tinygltf::Image*, bool,
-                    std::string*, void*) {
+bool no_image_write(const std::string*, const std::string*, const tinygltf::Image*, bool, std::string*, void*) {
   return false;
 }
 
@@ -76,11 +76,11 @@ bool no_image_write(const std::string*, const std::string*, const tinygltf::Imag
 
 TestMesh icosphere(int subdivisions, double radius_m) {
   const double t = (1.0 + std::sqrt(5.0)) / 2.0;
-  std::vector<double> v = {-1, t, 0, 1, t, 0, -1, -t, 0, 1, -t, 0, 0, -1, t, 0, 1, t,
-                           0, -1, -t, 0, 1, -t, t, 0, -1, t, 0, 1, -t, 0, -1, -t, 0, 1};
-  std::vector<std::uint32_t> f = {0, 11, 5, 0, 5, 1, 0, 1, 7, 0, 7, 10, 0, 10, 11, 1, 5, 9, 5, 11, 4,
-                                  11, 10, 2, 10, 7, 6, 7, 1, 8, 3, 9, 4, 3, 4, 2, 3, 2, 6, 3, 6, 8,
-                                  3, 8, 9, 4, 9, 5, 2, 4, 11, 6, 2, 10, 8, 6, 7, 9, 8, 1};
+  std::vector<double> v = {-1, t,  0,  1, t, 0,  -1, -t, 0,  1, -t, 0, 0,  -1, t,  0,  1, t,
+                           0,  -1, -t, 0, 1, -t, t,  0,  -1, t, 0,  1, -t, 0,  -1, -t, 0, 1};
+  std::vector<std::uint32_t> f = {0, 11, 5,  0, 5,  1, 0, 1, 7, 0, 7,  10, 0, 10, 11, 1, 5, 9, 5, 11,
+                                  4, 11, 10, 2, 10, 7, 6, 7, 1, 8, 3,  9,  4, 3,  4,  2, 3, 2, 6, 3,
+                                  6, 8,  3,  8, 9,  4, 9, 5, 2, 4, 11, 6,  2, 10, 8,  6, 7, 9, 8, 1};
   for (int s = 0; s < subdivisions; ++s) {
     std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> mid;
     auto midpoint = [&](std::uint32_t a, std::uint32_t b) {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Meshes and scenes the bake tests generate themselves: an icosphere, a (wavy) grid, a soup of
 // separate triangles, and a small scene with names, materials, a texture and transforms,
 // written to .gltf or .glb with tinygltf.

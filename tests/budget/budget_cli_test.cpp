@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The `gazelod budget` command: the contract's JSON output, exit codes and error messages.
 #include "apps/gazelod/command.hpp"
 
@@ -57,7 +58,8 @@ TEST(BudgetCli, AllSolversAnswerT2) {
 
 TEST(BudgetCli, FunkhouserInfeasibleAnswerIsReported) {
   const Result r = budget(R"({"capacity": 100, "subsets": [[{"profit": 0, "cost": 0}, {"profit": 100, "cost": 1}],
-                              [{"profit": 9999, "cost": 100}]]})", "funkhouser");
+                              [{"profit": 9999, "cost": 100}]]})",
+                          "funkhouser");
   EXPECT_EQ(r.code, 4);
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_FALSE(j["feasible"].get<bool>());
@@ -77,17 +79,21 @@ TEST(BudgetCli, ErrorsNameTheJsonPath) {
     EXPECT_EQ(r.code, 2) << text;
     EXPECT_NE(r.err.find(what), std::string::npos) << r.err;
   };
-  expect_error(R"({"capacity": 5, "subsets": [[{"profit": 1, "cost": 1}], [{"profit": 1, "cost": 1}, {"profit": 2, "cost": -1}]]})",
-               "subsets[1][1].cost: must be a finite number >= 0");
-  expect_error(R"({"capacity": 5, "subsets": [[{"profit": "a", "cost": 1}]]})", "subsets[0][0].profit: must be a finite number");
+  expect_error(
+      R"({"capacity": 5, "subsets": [[{"profit": 1, "cost": 1}], [{"profit": 1, "cost": 1}, {"profit": 2, "cost": -1}]]})",
+      "subsets[1][1].cost: must be a finite number >= 0");
+  expect_error(R"({"capacity": 5, "subsets": [[{"profit": "a", "cost": 1}]]})",
+               "subsets[0][0].profit: must be a finite number");
   expect_error(R"({"capacity": 5, "subsets": [[]]})", "subsets[0]: must be a non-empty array");
-  expect_error(R"({"capacity": -1, "subsets": [[{"profit": 1, "cost": 1}]]})", "capacity: must be a finite number >= 0");
+  expect_error(R"({"capacity": -1, "subsets": [[{"profit": 1, "cost": 1}]]})",
+               "capacity: must be a finite number >= 0");
   expect_error(R"({"subsets": [[{"profit": 1, "cost": 1}]]})", "capacity: missing");
   expect_error(R"({"capacity": 5, "subsets": [[{"profit": 1, "cost": 1, "x": 2}]]})", "subsets[0][0].x: unknown key");
   expect_error(R"({"capacity": 5, "subsets": [[{"profit": 1, "cost": 1}]], "groups": [{"subsets": [3]}]})",
                "groups[0].subsets[0]: must be a subset index in [0, 1)");
-  expect_error(R"({"capacity": 5, "subsets": [[{"profit": 1, "cost": 1}]], "groups": [{"subsets": [0]}, {"subsets": [0]}]})",
-               "groups[1].subsets[0]: subset 0 is already in groups[0]");
+  expect_error(
+      R"({"capacity": 5, "subsets": [[{"profit": 1, "cost": 1}]], "groups": [{"subsets": [0]}, {"subsets": [0]}]})",
+      "groups[1].subsets[0]: subset 0 is already in groups[0]");
   expect_error(R"({"capacity": 5, "subsets": [[{"profit": 1, "cost": 1}]] )", "JSON parse error at byte");
   expect_error(R"({"capacity": 5, "subsets": [[{"profit": 1, "cost": 1, "cost": 9}]]})",
                "subsets[0][0].cost: the key appears twice in one object");
@@ -109,12 +115,14 @@ TEST(BudgetCli, ProfitsAreAtLeastZeroAndTheirSumsDoNotOverflow) {
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("subsets[0][0].profit: must be a finite number >= 0"), std::string::npos) << r.err;
   r = budget(R"({"capacity": 5, "subsets": [[{"profit": 1, "cost": 1}]],
-                 "groups": [{"subsets": [0], "impostors": [{"profit": -2, "cost": 0}]}]})", "mason-hierarchical");
+                 "groups": [{"subsets": [0], "impostors": [{"profit": -2, "cost": 0}]}]})",
+             "mason-hierarchical");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("groups[0].impostors[0].profit: must be a finite number >= 0"), std::string::npos) << r.err;
   // Profits each finite, their sum not: was "profit": null, "optimal": true, exit 0.
   for (const char* solver : {"exact", "mason-greedy", "funkhouser"}) {
-    r = budget(R"({"capacity": 10, "subsets": [[{"profit": 1e308, "cost": 1}], [{"profit": 1e308, "cost": 1}]]})", solver);
+    r = budget(R"({"capacity": 10, "subsets": [[{"profit": 1e308, "cost": 1}], [{"profit": 1e308, "cost": 1}]]})",
+               solver);
     EXPECT_EQ(r.code, 2) << solver;
     EXPECT_NE(r.err.find("subsets: the largest profits of the subsets (and impostors) must add up to at most the "
                          "largest double, 1.8e308, got an overflow"),
@@ -125,10 +133,12 @@ TEST(BudgetCli, ProfitsAreAtLeastZeroAndTheirSumsDoNotOverflow) {
     EXPECT_EQ(j["kind"], "bad_input");
     EXPECT_FALSE(j.contains("profit"));
   }
-  r = budget(R"({"capacity": 1e308, "subsets": [[{"profit": 1, "cost": 1e308}], [{"profit": 1, "cost": 1e308}]]})", "exact");
+  r = budget(R"({"capacity": 1e308, "subsets": [[{"profit": 1, "cost": 1e308}], [{"profit": 1, "cost": 1e308}]]})",
+             "exact");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("subsets: the largest costs of the subsets (and impostors) must add up to at most"),
-            std::string::npos) << r.err;
+            std::string::npos)
+      << r.err;
   // Text output: no "inf" left to print.
   r = budget(R"({"capacity": 10, "subsets": [[{"profit": 1e308, "cost": 1}], [{"profit": 1e308, "cost": 1}]]})",
              "exact", false);
@@ -142,8 +152,9 @@ TEST(BudgetCli, JsonErrorsAreOneObjectOnStdout) {
   auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["kind"], "infeasible_instance");
   EXPECT_EQ(j["exit_code"].get<int>(), 3);
-  EXPECT_NE(j["error"].get<std::string>().find("infeasible instance: the cheapest level of detail costs 2 > capacity 1"),
-            std::string::npos);
+  EXPECT_NE(
+      j["error"].get<std::string>().find("infeasible instance: the cheapest level of detail costs 2 > capacity 1"),
+      std::string::npos);
   EXPECT_NE(r.err.find("infeasible instance"), std::string::npos) << "stderr keeps its line";
   r = budget(kT2, "simplex");
   EXPECT_EQ(r.code, 2);
@@ -198,8 +209,7 @@ std::string big_instance() {
 
 struct InstanceFile {
   explicit InstanceFile(const std::string& text)
-      : path(std::filesystem::temp_directory_path() /
-             ("gazelod_budget_det_" + std::to_string(::getpid()) + ".json")) {
+      : path(std::filesystem::temp_directory_path() / ("gazelod_budget_det_" + std::to_string(::getpid()) + ".json")) {
     std::ofstream(path) << text;
   }
   ~InstanceFile() { std::filesystem::remove(path); }
@@ -213,16 +223,17 @@ struct InstanceFile {
   std::filesystem::path path;
 };
 
-void expect_same_output_every_run(const InstanceFile& file,
-                                  std::initializer_list<std::string_view> solvers) {
+void expect_same_output_every_run(const InstanceFile& file, std::initializer_list<std::string_view> solvers) {
   for (std::string_view solver : solvers) {
     for (const bool as_json : {false, true}) {
       std::vector<std::string> args{"--solver", std::string(solver)};
       if (as_json) args.push_back("--json");
       const Result first = file.run_budget(args);
       // Funkhouser & Sequin's greedy may answer infeasibly (exit 4, the answer still printed).
-      if (solver == "funkhouser") ASSERT_TRUE(first.code == 0 || first.code == 4) << first.err;
-      else ASSERT_EQ(first.code, 0) << solver << first.err;
+      if (solver == "funkhouser")
+        ASSERT_TRUE(first.code == 0 || first.code == 4) << first.err;
+      else
+        ASSERT_EQ(first.code, 0) << solver << first.err;
       for (int again = 0; again < 2; ++again) {
         const Result r = file.run_budget(args);
         EXPECT_EQ(r.code, first.code) << solver;
@@ -236,12 +247,10 @@ void expect_same_output_every_run(const InstanceFile& file,
 TEST(BudgetCli, SameInstanceFilePrintsIdenticalOutputEveryRun) {
   // Every solver but branch and bound (too slow on this size) on a 300-object instance; then
   // every solver on T2.
-  expect_same_output_every_run(InstanceFile(big_instance()),
-                               {"funkhouser", "funkhouser-incremental", "mason-greedy",
-                                "mason-full", "mason-incremental", "mason-hierarchical"});
-  expect_same_output_every_run(InstanceFile(kT2),
-                               {"exact", "funkhouser", "funkhouser-incremental", "mason-greedy",
-                                "mason-full", "mason-incremental", "mason-hierarchical"});
+  expect_same_output_every_run(InstanceFile(big_instance()), {"funkhouser", "funkhouser-incremental", "mason-greedy",
+                                                              "mason-full", "mason-incremental", "mason-hierarchical"});
+  expect_same_output_every_run(InstanceFile(kT2), {"exact", "funkhouser", "funkhouser-incremental", "mason-greedy",
+                                                   "mason-full", "mason-incremental", "mason-hierarchical"});
 }
 
 TEST(BudgetCli, MaxMovesTruncatesDeterministically) {
@@ -263,8 +272,8 @@ TEST(BudgetCli, MaxMovesTruncatesDeterministically) {
   EXPECT_LT(aj["profit"].get<double>(), fj["profit"].get<double>());
   for (const auto& c : aj["selection"]) EXPECT_FALSE(c.is_null());
   // A limit at what the solve needs changes nothing.
-  const Result same = file.run_budget(
-      {"--solver", "mason-incremental", "--json", "--max-moves", std::to_string(needed)});
+  const Result same =
+      file.run_budget({"--solver", "mason-incremental", "--json", "--max-moves", std::to_string(needed)});
   EXPECT_EQ(same.out, full.out);
   // Text output says so too.
   const Result text = file.run_budget({"--solver", "mason-incremental", "--max-moves", "50"});
@@ -275,8 +284,7 @@ TEST(BudgetCli, LimitOptionsAreChecked) {
   const InstanceFile file(kT2);
   const Result greedy = file.run_budget({"--solver", "mason-greedy", "--max-moves", "5"});
   EXPECT_EQ(greedy.code, 2);
-  EXPECT_NE(greedy.err.find("--max-moves: applies to the incremental solvers only"), std::string::npos)
-      << greedy.err;
+  EXPECT_NE(greedy.err.find("--max-moves: applies to the incremental solvers only"), std::string::npos) << greedy.err;
   for (const char* bad : {"-1", "x", "1.5", "", "99999999999999999999999"}) {
     const Result r = file.run_budget({"--solver", "mason-incremental", "--max-moves", bad});
     EXPECT_EQ(r.code, 2) << bad << r.out;

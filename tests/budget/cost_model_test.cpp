@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Cost model (Funkhouser & Sequin 1993 sec. 4) and its RLS calibration.
 #include "budget/cost_model.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Determinism (issue: budget answers depend only on their inputs): Mason's incremental solver and
 // FrameBudget give bit-identical results on repeated runs of the same frames, however many, with
 // or without truncation; truncation is by a move limit (SolveLimits::max_moves), is reported,
@@ -18,7 +19,9 @@
 namespace gazelod::budget {
 namespace {
 
-std::uint64_t bits(double v) { return std::bit_cast<std::uint64_t>(v); }
+std::uint64_t bits(double v) {
+  return std::bit_cast<std::uint64_t>(v);
+}
 
 // Everything a step reports, doubles by their bits.
 void expect_identical(const MckpSolution& a, const MckpSolution& b, int frame) {
@@ -73,8 +76,7 @@ std::vector<MckpInstance> drifting_frames(int objects, int frames, std::uint32_t
 }
 
 // One run: a fresh (or reset) scheduler, each frame started from the previous answer.
-std::vector<MckpSolution> run_frames(IncrementalScheduler& sched,
-                                     const std::vector<MckpInstance>& frames,
+std::vector<MckpSolution> run_frames(IncrementalScheduler& sched, const std::vector<MckpInstance>& frames,
                                      const SolveLimits& limits) {
   sched.reset(frames.front());
   std::vector<MckpSolution> answers;
@@ -104,8 +106,10 @@ TEST(BudgetDeterminism, IncrementalIsBitIdenticalAcrossRunsOfManyFrames) {
       EXPECT_TRUE(first[f].feasible) << f;
       truncated += first[f].truncated;
     }
-    if (max_moves == SolveLimits::kNoMoveLimit) EXPECT_EQ(truncated, 0);
-    else EXPECT_GT(truncated, 10);  // the limit really binds in the limited run
+    if (max_moves == SolveLimits::kNoMoveLimit)
+      EXPECT_EQ(truncated, 0);
+    else
+      EXPECT_GT(truncated, 10);  // the limit really binds in the limited run
   }
 }
 
@@ -162,8 +166,8 @@ TEST(BudgetDeterminism, MoveLimitTruncationIsReportedFeasibleAndComplete) {
   sched.step(inst, {}, {}, SolveLimits{}, full);
   ASSERT_FALSE(full.truncated);
   ASSERT_GT(full.iterations, 1000u);
-  for (const std::uint64_t limit : {std::uint64_t{0}, std::uint64_t{1}, std::uint64_t{100},
-                                    std::uint64_t{1000}, full.iterations / 2}) {
+  for (const std::uint64_t limit :
+       {std::uint64_t{0}, std::uint64_t{1}, std::uint64_t{100}, std::uint64_t{1000}, full.iterations / 2}) {
     sched.reset(inst);
     sched.step(inst, {}, {}, SolveLimits{.max_moves = limit}, out);
     EXPECT_TRUE(out.truncated) << limit;
@@ -299,9 +303,8 @@ std::vector<FrameRecord> run_frame_budget(const FrameBudgetOptions& options, int
     for (std::size_t k = 0; k < n; ++k)
       true_s += object_cost_s(truth, chains[k][out[k]].triangles, chains[k][out[k]].vertices, 0.0);
     fb.observe(1e3 * true_s * (1.0 + noise(rng)));
-    records.push_back({out, bits(fb.predicted_ms()), bits(fb.coefficients().c0_s),
-                       bits(fb.coefficients().c1_s_per_tri), feasible, fb.truncated(),
-                       fb.solver_moves()});
+    records.push_back({out, bits(fb.predicted_ms()), bits(fb.coefficients().c0_s), bits(fb.coefficients().c1_s_per_tri),
+                       feasible, fb.truncated(), fb.solver_moves()});
   }
   return records;
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // FrameBudget (budget/frame_budget.hpp): the predicted frame time stays under the budget when
 // any choice fits, no level finer than the perceptual one, the coarsest levels (reported
 // infeasible) when nothing fits, and the RLS cost fit converging on synthetic frame times.
@@ -36,8 +37,7 @@ Chains random_chains(std::mt19937& rng, std::size_t objects, std::size_t levels)
 }
 
 // Independent prediction: C0 + sum over objects of C1 triangles + C2 vertices, in ms.
-double predicted_by_hand(const budget::CostCoefficients& c, const Chains& chains,
-                         std::span<const std::uint8_t> lods) {
+double predicted_by_hand(const budget::CostCoefficients& c, const Chains& chains, std::span<const std::uint8_t> lods) {
   double s = c.c0_s;
   for (std::size_t k = 0; k < chains.size(); ++k)
     s += c.c1_s_per_tri * chains[k][lods[k]].triangles + c.c2_s_per_vert * chains[k][lods[k]].vertices;

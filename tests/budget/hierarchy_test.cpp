@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The hierarchical MCKP (Mason 1999 Ch. 4, 6, 7) against brute force over every valid level of
 // detail of random hierarchies built to satisfy hierarchical convexity.
 #include "budget/knapsack.hpp"

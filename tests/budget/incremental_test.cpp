@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Mason's incremental algorithm (1999 Fig. 41, sec. 7.2): from any start state it reaches the
 // greedy answer under convexity; every intermediate state is a valid level of detail; time
 // truncation still yields a complete, affordable selection; a frame allocates nothing.
@@ -25,16 +26,32 @@ void* operator new(std::size_t n, const std::nothrow_t&) noexcept {
   if (g_count_allocations) ++g_allocations;
   return std::malloc(n ? n : 1);
 }
-void* operator new[](std::size_t n) { return operator new(n); }
-void* operator new[](std::size_t n, const std::nothrow_t& t) noexcept { return operator new(n, t); }
+void* operator new[](std::size_t n) {
+  return operator new(n);
+}
+void* operator new[](std::size_t n, const std::nothrow_t& t) noexcept {
+  return operator new(n, t);
+}
 // Every form of delete pairs with one of the mallocs above (std::stable_sort, for one, uses the
 // nothrow new: replacing only some forms mismatches under AddressSanitizer).
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, const std::nothrow_t&) noexcept { std::free(p); }
+void operator delete(void* p) noexcept {
+  std::free(p);
+}
+void operator delete(void* p, std::size_t) noexcept {
+  std::free(p);
+}
+void operator delete(void* p, const std::nothrow_t&) noexcept {
+  std::free(p);
+}
+void operator delete[](void* p) noexcept {
+  std::free(p);
+}
+void operator delete[](void* p, std::size_t) noexcept {
+  std::free(p);
+}
+void operator delete[](void* p, const std::nothrow_t&) noexcept {
+  std::free(p);
+}
 
 namespace gazelod::budget {
 namespace {
@@ -123,8 +140,7 @@ TEST(BudgetIncremental, CoherentFramesEqualGreedyEveryFrame) {
 // previous choice maps to its own level, so from any start the object ends at its best level,
 // as the greedy answer (which drops the dominated levels first) has it.
 TEST(BudgetIncremental, IdenticalLevelDoesNotBlockFreeGains) {
-  const MckpInstance inst = test::make_instance(
-      7, {{{5, 2}, {5, 2}, {7, 2}, {9, 2}}, {{1, 1}, {4, 3}, {6, 6}}});
+  const MckpInstance inst = test::make_instance(7, {{{5, 2}, {5, 2}, {7, 2}, {9, 2}}, {{1, 1}, {4, 3}, {6, 6}}});
   const MckpSolution greedy = solve_mason_greedy(inst, false);
   ASSERT_EQ(greedy.choice, (std::vector<std::uint32_t>{3, 1}));
   IncrementalScheduler sched;
@@ -184,8 +200,7 @@ TEST(BudgetIncremental, EveryIntermediateStateIsAValidLod) {
   for (int trial = 0; trial < 300; ++trial) {
     const MckpInstance inst = trial % 2 ? test::random_hierarchical(rng) : test::random_general(rng);
     sched.reset(inst);
-    sched.step(inst, trial % 2 ? std::vector<std::uint32_t>{} : random_choice(rng, inst), {},
-               SolveLimits{}, out);
+    sched.step(inst, trial % 2 ? std::vector<std::uint32_t>{} : random_choice(rng, inst), {}, SolveLimits{}, out);
   }
   EXPECT_GT(watch.calls, 1000);
   EXPECT_EQ(watch.invalid, 0);
@@ -210,7 +225,7 @@ TEST(BudgetIncremental, TruncatedFrameIsStillCompleteAndAffordable) {
   sched.reset(inst);
   MckpSolution out;
   const SolveLimits no_time{.wall_clock_limit = std::chrono::nanoseconds(0)};  // the outer option
-  sched.step(inst, {}, {}, no_time, out);  // stop at the first check
+  sched.step(inst, {}, {}, no_time, out);                                      // stop at the first check
   EXPECT_TRUE(out.truncated);
   EXPECT_TRUE(out.feasible);
   EXPECT_LE(out.cost, inst.capacity);

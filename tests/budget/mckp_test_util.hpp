@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Helpers for the budget tests: instance builders, brute-force optima, random generators.
 #pragma once
 
@@ -113,26 +114,25 @@ inline MckpItem node_item(const MckpInstance& inst, const HmckpNode& n) {
 
 // Every valid level of detail of a (small) tree, as selected-node lists.
 inline std::vector<std::vector<std::uint32_t>> all_lods(const HmckpTree& t) {
-  std::function<std::vector<std::vector<std::uint32_t>>(std::uint32_t)> expand =
-      [&](std::uint32_t node) {
-        std::vector<std::vector<std::uint32_t>> acc{{}};
-        const HmckpNode& n = t.nodes[node];
-        for (std::uint32_t a = n.first; a < n.first + n.count; ++a) {
-          const std::uint32_t m = t.members[a];
-          std::vector<std::vector<std::uint32_t>> opts{{m}};
-          if (t.nodes[m].count > 0)
-            for (auto& o : expand(m)) opts.push_back(o);
-          std::vector<std::vector<std::uint32_t>> next;
-          for (const auto& x : acc)
-            for (const auto& o : opts) {
-              auto y = x;
-              y.insert(y.end(), o.begin(), o.end());
-              next.push_back(std::move(y));
-            }
-          acc = std::move(next);
+  std::function<std::vector<std::vector<std::uint32_t>>(std::uint32_t)> expand = [&](std::uint32_t node) {
+    std::vector<std::vector<std::uint32_t>> acc{{}};
+    const HmckpNode& n = t.nodes[node];
+    for (std::uint32_t a = n.first; a < n.first + n.count; ++a) {
+      const std::uint32_t m = t.members[a];
+      std::vector<std::vector<std::uint32_t>> opts{{m}};
+      if (t.nodes[m].count > 0)
+        for (auto& o : expand(m)) opts.push_back(o);
+      std::vector<std::vector<std::uint32_t>> next;
+      for (const auto& x : acc)
+        for (const auto& o : opts) {
+          auto y = x;
+          y.insert(y.end(), o.begin(), o.end());
+          next.push_back(std::move(y));
         }
-        return acc;
-      };
+      acc = std::move(next);
+    }
+    return acc;
+  };
   return expand(0);
 }
 
@@ -207,8 +207,10 @@ inline MckpInstance random_hierarchical(std::mt19937& rng) {
   }
   for (std::size_t i = 1; i < t.nodes.size(); ++i) {
     const HmckpNode& n = t.nodes[i];
-    if (n.subset != kNoItem) inst.items[inst.subset_offsets[n.subset] + n.index] = val[i];
-    else inst.groups[n.group].impostors[n.index] = val[i];
+    if (n.subset != kNoItem)
+      inst.items[inst.subset_offsets[n.subset] + n.index] = val[i];
+    else
+      inst.groups[n.group].impostors[n.index] = val[i];
   }
   // Capacity between the lowest and the highest level.
   double lo = 0;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Property tests against brute force on random instances (Mason 1999 Thms 2.1, 3.x, 6.x):
 // every answer feasible, exact equals brute force, Mason's algorithms at least half the
 // optimum and within their a-posteriori bound p_s - p_t of it.
@@ -73,8 +74,8 @@ TEST(BudgetProperty, MasonHalfOptimalAndWithinCriticalBoundUnderConvexity) {
   std::mt19937 rng(99);
   for (int trial = 0; trial < 800; ++trial) {
     const MckpInstance inst = test::random_convex(rng);
-    for (SolverKind k : {SolverKind::mason_greedy, SolverKind::mason_full,
-                         SolverKind::mason_incremental, SolverKind::mason_hierarchical})
+    for (SolverKind k : {SolverKind::mason_greedy, SolverKind::mason_full, SolverKind::mason_incremental,
+                         SolverKind::mason_hierarchical})
       check_guarantee(inst, k, trial);
   }
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Mason's (1999) worked instances: counterexamples 1 and 2, Figures 21, 23, 27.
 #include "budget/knapsack.hpp"
 #include "budget/knapsack_incremental.hpp"
@@ -13,7 +14,9 @@ using Sel = std::vector<std::uint32_t>;
 
 // T1, counterexample 1 (Def. 2.5): p = (100, 9999), w = (1, 100), c = 100. Our MCKP needs one
 // item per subset, so object 1 also gets F&S's "draw nothing" level (0/0).
-MckpInstance t1() { return make_instance(100, {{{0, 0}, {100, 1}}, {{9999, 100}}}); }
+MckpInstance t1() {
+  return make_instance(100, {{{0, 0}, {100, 1}}, {{9999, 100}}});
+}
 
 TEST(BudgetWorked, T1FunkhouserGreedyLeavesAnObjectEmpty) {
   const MckpSolution fs = solve_funkhouser(t1());
@@ -76,7 +79,9 @@ TEST(BudgetWorked, T2IncrementalFromEveryStartState) {
 }
 
 // T3, Fig. 21 (simplified algorithm), capacity 9: result {3/3, 5/5}, profit 8.
-MckpInstance t3() { return make_instance(9, {{{1, 2}, {3, 3}, {4, 5}}, {{2, 1}, {3, 2}, {5, 5}, {6, 8}}}); }
+MckpInstance t3() {
+  return make_instance(9, {{{1, 2}, {3, 3}, {4, 5}}, {{2, 1}, {3, 2}, {5, 5}, {6, 8}}});
+}
 
 TEST(BudgetWorked, T3Figure21) {
   const MckpSolution g = solve_mason_greedy(t3());
@@ -107,8 +112,8 @@ TEST(BudgetWorked, T4Figure23) {
 // incremental one gets there from either start without cycling.
 TEST(BudgetWorked, TiesGoToTheLowerStableId) {
   const MckpInstance inst = make_instance(3, {{{1, 1}, {3, 2}}, {{1, 1}, {3, 2}}});
-  for (SolverKind k : {SolverKind::mason_greedy, SolverKind::mason_full,
-                       SolverKind::mason_incremental, SolverKind::mason_hierarchical}) {
+  for (SolverKind k : {SolverKind::mason_greedy, SolverKind::mason_full, SolverKind::mason_incremental,
+                       SolverKind::mason_hierarchical}) {
     const MckpSolution s = solve(k, inst);
     EXPECT_EQ(s.choice, (Sel{1, 0})) << solver_name(k);
     EXPECT_DOUBLE_EQ(s.profit, 4) << solver_name(k);
@@ -127,7 +132,7 @@ TEST(BudgetWorked, TiesGoToTheLowerStableId) {
 // children D (7), E (8). Leaves are subsets A, B, D, E; C and the root are groups.
 MckpInstance t5(double capacity) {
   MckpInstance inst = make_instance(capacity, {{{4, 4}}, {{5, 5}, {9, 9}}, {{7, 7}}, {{8, 8}}});
-  inst.groups.push_back({{2, 3}, {}, {{3, 3}}});         // C over D, E: impostor 3
+  inst.groups.push_back({{2, 3}, {}, {{3, 3}}});           // C over D, E: impostor 3
   inst.groups.push_back({{0, 1}, {0}, {{1, 1}, {2, 2}}});  // root over A, B, C: impostors 1, 2
   return inst;
 }

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # scripts/abi-check.sh can fail: two builds of a tiny library, the second changing a public
 # struct's layout, must be refused with the same SONAME and let through with a new one; an
 # added function must pass. (CTest: abi_check_selftest.)

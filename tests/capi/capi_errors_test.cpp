@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Bad input through the C ABI: every refusal is a result code and a "gazelod:" message that
 // names the field, never a crash; the plugin stays usable after it.
 #include "tests/capi/capi_test_util.hpp"

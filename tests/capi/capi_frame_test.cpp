@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Data mode's frames through the C ABI: the fovea follows the pushed gaze, no allocation per
 // frame, engine-style levels equal their geometric equivalent, the foveal cone in a view's
 // image coordinates, and an application thread beside a render thread (run under TSan in CI).

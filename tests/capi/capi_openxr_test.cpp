@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The C ABI in OpenXR mode over the Khronos loader and the simulated runtime: every OpenXR call
 // through the application's xrGetInstanceProcAddr; an OpenXR-mode run recorded frame by frame
 // (gzl_get_frame_record) and replayed through data mode gives the same levels in every frame;
@@ -57,9 +58,9 @@ TEST(CApiOpenXr, RecordedRunReplaysThroughDataModeIdentically) {
   std::vector<StateEvent> events;
   int gaze_frames = 0;
   while (records.size() < 600 && app.poll_events([&](XrSessionState s, XrTime t) {
-           events.push_back({records.size(), s, t});
-           ASSERT_EQ(gzl_on_session_state(xr, s, t), GZL_SUCCESS);
-         })) {
+    events.push_back({records.size(), s, t});
+    ASSERT_EQ(gzl_on_session_state(xr, s, t), GZL_SUCCESS);
+  })) {
     if (!app.session_running()) continue;
     const XrFrameState fs = app.wait_frame();
     app.begin_frame();
@@ -234,9 +235,11 @@ TEST(CApiOpenXr, BaseSpaceAndResolutionChangeBetweenFrames) {
     app.end_frame(fs.predictedDisplayTime, {});
   }
   ASSERT_EQ(infos.size(), 20u);
-  EXPECT_NEAR(infos[10].eye_position_base_m.y - infos[9].eye_position_base_m.y, 2.0, 0.05) << "the head 2 m higher in the new space";
+  EXPECT_NEAR(infos[10].eye_position_base_m.y - infos[9].eye_position_base_m.y, 2.0, 0.05)
+      << "the head 2 m higher in the new space";
   EXPECT_LT(infos[10].xi_cpd, 0.6 * infos[9].xi_cpd) << "500 px rendered: a lower display limit";
-  EXPECT_EQ(gzl_set_view_resolution(p, 2, 500, 500), GZL_ERROR_INVALID_ARGUMENT) << "a stereo configuration has 2 views";
+  EXPECT_EQ(gzl_set_view_resolution(p, 2, 500, 500), GZL_ERROR_INVALID_ARGUMENT)
+      << "a stereo configuration has 2 views";
   gzl_shutdown(p);
   gzl_destroy(p);
   xrDestroySpace(lower);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Shared by the C ABI's tests: a data-mode display, object grids and the last error as text.
 #pragma once
 
@@ -51,7 +52,8 @@ inline gzl_object_desc object_at(double yaw_deg, double pitch_deg, double distan
   const double y = yaw_deg * M_PI / 180, p = pitch_deg * M_PI / 180;
   gzl_object_desc d{};
   d.type = GZL_TYPE_OBJECT_DESC;
-  d.center_m = {-std::sin(y) * std::cos(p) * distance_m, std::sin(p) * distance_m, -std::cos(y) * std::cos(p) * distance_m};
+  d.center_m = {-std::sin(y) * std::cos(p) * distance_m, std::sin(p) * distance_m,
+                -std::cos(y) * std::cos(p) * distance_m};
   d.radius_m = radius_m;
   d.metric = GZL_LEVEL_GEOMETRIC_ERROR_M;
   d.level_count = 4;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The audit's breakdown (apps/gazelod/run_audit_breakdown.hpp) on synthetic frames: the true
 // gaze state's seams, the object classes, the excess split between the switch policy and the
 // selection, visible and oracle switches, and the JSON round trip.
@@ -90,8 +91,11 @@ TEST(AuditBreakdown, ClassesExcessSplitAndSwitches) {
   EXPECT_EQ(vor.visible_switches, 1);
   EXPECT_EQ(vor.oracle_switches, 1);
   EXPECT_DOUBLE_EQ(vor.object_s, 0.03);
-  for (std::size_t g = 0; g < kTrueGazeCount; ++g)
-    if (g != static_cast<std::size_t>(TrueGaze::vor)) EXPECT_EQ(b.gaze[g].object_frames, 0) << g;
+  for (std::size_t g = 0; g < kTrueGazeCount; ++g) {
+    if (g != static_cast<std::size_t>(TrueGaze::vor)) {
+      EXPECT_EQ(b.gaze[g].object_frames, 0) << g;
+    }
+  }
 
   EXPECT_EQ(b.objects[static_cast<std::size_t>(ObjectClass::near_in_cone)].object_frames, 1);
   EXPECT_EQ(b.objects[static_cast<std::size_t>(ObjectClass::far_outside)].object_frames, 2)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The visibility audit's arithmetic (apps/gazelod/run_audit.hpp) on synthetic frames, its
 // report columns and plot, and the --decisions file (RFC 4180 names, atomic write).
 #include "apps/gazelod/run_audit.hpp"
@@ -228,8 +229,8 @@ TEST(RunAudit, ReportWritesColumnsSummaryAndPlotWithShadedWindows) {
   std::istringstream csv(read(dir / "frames.csv"));
   std::string header, row;
   std::getline(csv, header);
-  for (const char* col : {",objects_in_view", ",audit_suppressed", ",audit_degraded", ",audit_oracle_triangles",
-                          ",audit_switches"})
+  for (const char* col :
+       {",objects_in_view", ",audit_suppressed", ",audit_degraded", ",audit_oracle_triangles", ",audit_switches"})
     EXPECT_NE(header.find(col), std::string::npos) << col;
   std::getline(csv, row);
   EXPECT_EQ(std::count(row.begin(), row.end(), ','), std::count(header.begin(), header.end(), ','));
@@ -290,7 +291,8 @@ TEST(RunAudit, ReportWithoutGroundTruthLeavesCellsEmptyAndSaysWhy) {
   std::ostringstream out;
   print_summary(info, s, out);
   EXPECT_NE(out.str().find("audit           unavailable (no ground truth: not the simulated runtime)"),
-            std::string::npos) << out.str();
+            std::string::npos)
+      << out.str();
 }
 
 TEST(SvgPlot, SpansAreShadedInEveryPanel) {
@@ -326,7 +328,8 @@ TEST(DecisionsCsv, WrittenAtomicallyWithHeaderAndRows) {
     d.write(1, 22222222, b);
     EXPECT_FALSE(std::filesystem::exists(file)) << "nothing at the path before commit";
     int temps = 0;
-    for (const auto& e : std::filesystem::directory_iterator(dir)) temps += e.path().filename().string().find(".tmp-") != std::string::npos;
+    for (const auto& e : std::filesystem::directory_iterator(dir))
+      temps += e.path().filename().string().find(".tmp-") != std::string::npos;
     EXPECT_EQ(temps, 1) << "the rows go to a temporary file in the same folder";
     d.commit();
   }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "apps/gazelod/run_report.hpp"
 
 #include <gtest/gtest.h>
@@ -10,8 +11,8 @@
 namespace gazelod::cli {
 namespace {
 
-FrameRecord frame(std::int64_t i, double ms, std::uint64_t drawn, std::uint64_t size_only,
-                  std::uint64_t size_ecc, std::uint64_t size_vel) {
+FrameRecord frame(std::int64_t i, double ms, std::uint64_t drawn, std::uint64_t size_only, std::uint64_t size_ecc,
+                  std::uint64_t size_vel) {
   FrameRecord f;
   f.index = i;
   f.t_s = static_cast<double>(i) / 90.0;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Options are read as a user means them, for every command: decimal integers only ("0x10" is
 // not 16), no negative into an unsigned option (CLI11 wrapped "-1"), finite numbers only (NaN
 // passed range checks); lists without empty or repeated items; no silently dropped input.
@@ -22,7 +23,8 @@ TEST(StrictOptions, NumbersListsAndSourcesAreRefusedWithTheOption) {
       {{"run", "--frames", "0x10", "--no-render"}, "--frames: '0x10' is not a decimal integer"},
       {{"run", "--frames", "1e3", "--no-render"}, "--frames: "},  // the range check refuses it first
       {{"scene", "generate", "terrain", "/tmp/gazelod-never.glb", "--seed", "-1"}, "--seed: '-1' is negative"},
-      {{"scenario", "record", "--rate", "nan", "--out", "/tmp/gazelod-never.csv"}, "--rate: 'nan' is not a finite number"},
+      {{"scenario", "record", "--rate", "nan", "--out", "/tmp/gazelod-never.csv"},
+       "--rate: 'nan' is not a finite number"},
       {{"scenario", "record", "--duration", "inf", "--out", "/tmp/gazelod-never.csv"}, "--duration: "},
       {{"eval", "--radius-scale", "nan"}, "--radius-scale: 'nan' is not a finite number"},
       {{"run", "--criteria", "size,", "--no-render"}, "--criteria: an empty item in 'size,'"},

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Checks on the SVG plots gazelod writes, as a reader would make them at a glance: every tick
 // label a round number (at most three significant digits, k / M / G allowed), and no two texts
 // overlapping. Texts are boxes of 0.6 em a character (the plots' own estimate, plot_axis.hpp)
@@ -14,9 +15,9 @@ namespace gazelod::cli::svgcheck {
 
 struct TextBox {
   std::string text, cls;
-  double cx = 0, cy = 0;      // the box's centre
+  double cx = 0, cy = 0;  // the box's centre
   double half_w = 0, half_h = 0;
-  double angle_rad = 0;       // the text's direction
+  double angle_rad = 0;  // the text's direction
 };
 
 inline double attr(const std::string& attrs, const std::string& name, double fallback) {
@@ -51,7 +52,8 @@ inline std::vector<TextBox> text_boxes(const std::string& svg, double default_fo
     std::smatch m;
     if (std::regex_search(transform, m, std::regex("translate\\(([-0-9.eE+]+),\\s*([-0-9.eE+]+)\\)")))
       x = std::stod(m[1]), y = std::stod(m[2]);
-    if (std::regex_search(transform, m, std::regex("rotate\\(([-0-9.eE+]+)\\)"))) angle = std::stod(m[1]) * M_PI / 180.0;
+    if (std::regex_search(transform, m, std::regex("rotate\\(([-0-9.eE+]+)\\)")))
+      angle = std::stod(m[1]) * M_PI / 180.0;
     const std::string anchor = attr_text(attrs, "text-anchor");
     // Along the text: start, middle or end at the anchor; across: ascent 0.8 em, descent 0.2.
     const double along = anchor == "middle" ? 0.0 : anchor == "end" ? -w / 2 : w / 2;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "apps/gazelod/svg_plot.hpp"
 
 #include "apps/gazelod/compare_svg.hpp"
@@ -120,8 +121,8 @@ TEST(PlotAxis, LogAxisAtDecadesAndTickLabels) {
   EXPECT_EQ(labels(log_axis(0.015, 16.0)), (std::vector<std::string>{"0.01", "0.1", "1", "10", "100"}));
   EXPECT_EQ(labels(log_axis(3.0, 40.0)), (std::vector<std::string>{"1", "2", "5", "10", "20", "50", "100"}));
   const std::vector<std::pair<double, std::string>> cases{
-      {0, "0"}, {0.05, "0.05"}, {2.5, "2.5"}, {120, "120"}, {1500, "1.5k"}, {20000, "20k"}, {1.5e6, "1.5M"},
-      {2e9, "2G"}, {-500, "-500"}, {0.0025, "0.0025"}, {1234567, "1.23M"}};
+      {0, "0"},        {0.05, "0.05"}, {2.5, "2.5"},   {120, "120"},       {1500, "1.5k"},    {20000, "20k"},
+      {1.5e6, "1.5M"}, {2e9, "2G"},    {-500, "-500"}, {0.0025, "0.0025"}, {1234567, "1.23M"}};
   for (const auto& [v, text] : cases) EXPECT_EQ(tick_label(v), text) << v;
   EXPECT_EQ(tick_label(NAN), "");
 }
@@ -164,8 +165,11 @@ TEST(SvgPlot, RoundTicksNoOverlapsLogWhereNeededAndIdenticalSeriesShown) {
   EXPECT_EQ(svg.find(">triangles (log)<"), std::string::npos) << "triangles do not span decades";
   EXPECT_NE(svg.find("excess levels (same as degraded)"), std::string::npos);
   EXPECT_EQ(count(svg, "stroke-dasharray"), 2u) << "the identical series and its legend line";
-  for (const svgcheck::TextBox& b : svgcheck::text_boxes(svg))
-    if (b.cls == "tick") EXPECT_EQ(b.text.find('-'), std::string::npos) << "no negative tick for counts: " << b.text;
+  for (const svgcheck::TextBox& b : svgcheck::text_boxes(svg)) {
+    if (b.cls == "tick") {
+      EXPECT_EQ(b.text.find('-'), std::string::npos) << "no negative tick for counts: " << b.text;
+    }
+  }
   EXPECT_NE(svg.find(">saccade onsets (a long legend for the marker key)</text>"), std::string::npos);
   EXPECT_NE(svg.find(">suppression windows</text>"), std::string::npos);
 }
@@ -183,11 +187,12 @@ TEST(BarChart, RoundTicksSlantedGroupsAndLegendRowsWithoutOverlap) {
   BarChart c;
   c.title = "gazelod compare: triangles per frame";
   c.y_label = "% of full detail";
-  const char* names[] = {"iglasses", "questpro", "quest3", "varjoxr4", "visionpro", "pimaxcrystal", "viveproeye",
-                         "psvr2", "index", "desktop"};
+  const char* names[] = {"iglasses",     "questpro",   "quest3", "varjoxr4", "visionpro",
+                         "pimaxcrystal", "viveproeye", "psvr2",  "index",    "desktop"};
   for (const char* n : names) c.groups.push_back(std::string(n) + " (a longer group name)");
   for (int s = 0; s < 6; ++s) {
-    BarSeries bs{"criteria set number " + std::to_string(s) + " with a long label", "#" + std::string(6, char('3' + s)), {}};
+    BarSeries bs{
+        "criteria set number " + std::to_string(s) + " with a long label", "#" + std::string(6, char('3' + s)), {}};
     for (std::size_t g = 0; g < c.groups.size(); ++g) bs.values.push_back(3.069 * static_cast<double>(g + s));
     c.series.push_back(bs);
   }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The per-cluster audit's pure parts (apps/gazelod/run_cluster_audit.hpp,
 // run_cluster_scene.hpp): counting leaves against the oracle, the run summary, and node
 // transforms as the plugin's poses.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ClusterCover (apps/gazelod/run_cluster_cover.hpp) on hierarchies bake builds: the groups it
 // derives from record equality are the build's own groups, every threshold cut covers every
 // leaf exactly once with the cover a reference computes on the build's group links, broken cuts

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `gazelod run --scene F` with F from `gazelod bake --clusters` (a generated wavy wall) on the
 // simulated runtime: the wall is a cluster mesh in its glTF placement (--scene-placement
 // file) and a non-uniformly scaled copy of it stays a plain object; the report has the
@@ -49,8 +50,8 @@ class ClusterRun : public ::testing::Test {
     // One folder per process: CTest runs each test of the suite as its own process, two at a
     // time under -j2, and a shared folder removed by one while the other reads its bake made the
     // other's setup fail (reported as skipped).
-    dir_ = std::filesystem::path(GAZELOD_BINARY_DIR) / "test-scratch" /
-           ("ClusterRunSuite-" + std::to_string(::getpid()));
+    dir_ =
+        std::filesystem::path(GAZELOD_BINARY_DIR) / "test-scratch" / ("ClusterRunSuite-" + std::to_string(::getpid()));
     std::filesystem::remove_all(dir_);
     std::filesystem::create_directories(dir_);
     // The wall 12 m ahead of a viewer at eye height; a copy stretched along Y far to the side
@@ -246,8 +247,8 @@ TEST_F(ClusterRun, FramePngTintsEachDrawnDepth) {
   constexpr int kFrames = 45, kCaptured = 44;  // past the switch policy's hold: the periphery coarsened
   const std::string cut = (out / "cut.csv").string();
   const CliResult r = run_cli({"run", "--frames", std::to_string(kFrames), "--capture-frame", std::to_string(kCaptured),
-                               "--cluster-decisions", cut, "--scene", baked_, "--scene-placement", "file",
-                               "--scenario", scenario_, "--out", out.string(), "--quiet"});
+                               "--cluster-decisions", cut, "--scene", baked_, "--scene-placement", "file", "--scenario",
+                               scenario_, "--out", out.string(), "--quiet"});
   ASSERT_EQ(r.rc, 0) << r.err;
   // The captured frame's drawn depths: frame,t_ns,mesh,cluster,depth,triangles,limited_by,held.
   std::ifstream csv(cut);
@@ -261,7 +262,8 @@ TEST_F(ClusterRun, FramePngTintsEachDrawnDepth) {
     const auto depth = static_cast<std::uint32_t>(std::stoul(cells[4]));
     triangles_by_tint[std::min<std::uint32_t>(depth, render::kLodPaletteSize - 1)] += std::stoull(cells[5]);
   }
-  for (const auto& [tint, n] : triangles_by_tint) std::printf("depth tint %u: %llu triangles drawn\n", tint, static_cast<unsigned long long>(n));
+  for (const auto& [tint, n] : triangles_by_tint)
+    std::printf("depth tint %u: %llu triangles drawn\n", tint, static_cast<unsigned long long>(n));
   ASSERT_GE(triangles_by_tint.size(), 2u) << "the captured frame's cut has one depth: nothing to tell apart";
   std::set<int> allowed{0};  // the stretched copy, a plain object at its one level, where it is in view
   for (const auto& [tint, n] : triangles_by_tint) allowed.insert(static_cast<int>(tint));
@@ -403,8 +405,8 @@ TEST_F(ClusterRun, ClusterDecisionsListEveryFramesCut) {
   std::ifstream frames(opt.out_dir / "frames.csv");
   ASSERT_TRUE(std::getline(frames, line));
   const auto header = split(line);
-  const auto col = static_cast<std::size_t>(
-      std::find(header.begin(), header.end(), "cluster_triangles_drawn") - header.begin());
+  const auto col =
+      static_cast<std::size_t>(std::find(header.begin(), header.end(), "cluster_triangles_drawn") - header.begin());
   ASSERT_LT(col, header.size());
   for (std::size_t f = 0; f < cuts.size(); ++f) {
     ASSERT_TRUE(std::getline(frames, line));
@@ -421,8 +423,8 @@ TEST_F(ClusterRun, ClusterDecisionsListEveryFramesCut) {
 }
 
 // object_motion moves a cluster mesh: the wall recedes at 1 km/s, its cut coarsens against the
-// same walk with the wall still (to the hierarchy's top, 2 km away), the audit's oracle follows it (every leaf covered once, few
-// degradations), and the rendered frame draws it where it went.
+// same walk with the wall still (to the hierarchy's top, 2 km away), the audit's oracle follows it (every leaf covered
+// once, few degradations), and the rendered frame draws it where it went.
 TEST_F(ClusterRun, ObjectMotionMovesTheClusterMesh) {
   std::string moving = read_text(scenario_);
   const std::string effects = "\"effects\": [";
@@ -437,18 +439,18 @@ TEST_F(ClusterRun, ObjectMotionMovesTheClusterMesh) {
     std::string line, last;
     std::getline(csv, line);
     const auto header = split(line);
-    const auto col = static_cast<std::size_t>(
-        std::find(header.begin(), header.end(), "cluster_triangles_drawn") - header.begin());
+    const auto col =
+        static_cast<std::size_t>(std::find(header.begin(), header.end(), "cluster_triangles_drawn") - header.begin());
     while (std::getline(csv, line)) last = line;
     return std::stoull(split(last).at(col));
   };
   // Size and eccentricity only: the distance's effect alone.
-  CliResult r = run_cli({"run", "--no-render", "--frames", "180", "--scene", baked_, "--scene-placement", "file",
-                         "--scenario", scenario_, "--criteria", "size,eccentricity", "--out", (dir / "still").string(),
-                         "--quiet"});
+  CliResult r =
+      run_cli({"run", "--no-render", "--frames", "180", "--scene", baked_, "--scene-placement", "file", "--scenario",
+               scenario_, "--criteria", "size,eccentricity", "--out", (dir / "still").string(), "--quiet"});
   ASSERT_EQ(r.rc, 0) << r.err;
-  r = run_cli({"run", "--no-render", "--frames", "180", "--scene", baked_, "--scene-placement", "file",
-               "--scenario", moving_path, "--criteria", "size,eccentricity", "--out", (dir / "moving").string()});
+  r = run_cli({"run", "--no-render", "--frames", "180", "--scene", baked_, "--scene-placement", "file", "--scenario",
+               moving_path, "--criteria", "size,eccentricity", "--out", (dir / "moving").string()});
   ASSERT_EQ(r.rc, 0) << r.err;
   EXPECT_EQ(r.err.find("does not move"), std::string::npos) << r.err;
   EXPECT_LT(last_triangles(dir / "moving"), last_triangles(dir / "still") / 10)
@@ -465,7 +467,8 @@ TEST_F(ClusterRun, ObjectMotionMovesTheClusterMesh) {
     const render::RgbaImage img = render::read_png(png);
     std::size_t n = 0;
     for (std::uint32_t y = 0; y < img.height; y += 4)
-      for (std::uint32_t x = 0; x < img.width; x += 4) n += glm::length(img.rgb(x, y) - render::background_colour()) > 0.05f;
+      for (std::uint32_t x = 0; x < img.width; x += 4)
+        n += glm::length(img.rgb(x, y) - render::background_colour()) > 0.05f;
     return n;
   };
   for (const char* frame : {"0", "150"}) {
@@ -480,8 +483,8 @@ TEST_F(ClusterRun, ObjectMotionMovesTheClusterMesh) {
 
 TEST_F(ClusterRun, BadPlacementIsAUsageError) {
   const auto out = scratch_dir() / "run";
-  CliResult r = run_cli({"run", "--no-render", "--frames", "5", "--scene", baked_, "--scene-placement", "bogus",
-                         "--out", out.string()});
+  CliResult r = run_cli(
+      {"run", "--no-render", "--frames", "5", "--scene", baked_, "--scene-placement", "bogus", "--out", out.string()});
   EXPECT_EQ(r.rc, 2);
   EXPECT_NE(r.err.find("--scene-placement: 'bogus' (use in-front or file)"), std::string::npos) << r.err;
   r = run_cli({"run", "--no-render", "--frames", "5", "--scene-placement", "file", "--out", out.string()});
@@ -499,11 +502,12 @@ TEST(ClusterOnlyRun, ReportsHaveNoEmptyPerObjectLinesOrPanels) {
   ASSERT_EQ(run_cli({"scene", "generate", "terrain", terrain, "--triangles", "4000"}).rc, 0);
   const CliResult b = run_cli({"bake", "--clusters", terrain, baked});
   ASSERT_EQ(b.rc, 0) << b.err;
-  const CliResult r = run_cli({"run", "--no-render", "--quiet", "--frames", "30", "--scene", baked, "--scene-placement",
-                               "file", "--scenario", std::string(GAZELOD_SOURCE_DIR) + "/sim/scenarios/terrain-walk.json",
-                               "--out", (dir / "out").string()});
+  const CliResult r = run_cli(
+      {"run", "--no-render", "--quiet", "--frames", "30", "--scene", baked, "--scene-placement", "file", "--scenario",
+       std::string(GAZELOD_SOURCE_DIR) + "/sim/scenarios/terrain-walk.json", "--out", (dir / "out").string()});
   ASSERT_EQ(r.rc, 0) << r.err;
-  EXPECT_NE(r.out.find("objects         every object is a cluster mesh (no per-object LOD)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("objects         every object is a cluster mesh (no per-object LOD)"), std::string::npos)
+      << r.out;
   EXPECT_NE(r.out.find("clusters        1 mesh, "), std::string::npos) << r.out;
   for (const char* gone : {"LOD histogram", "reduction owed", "triangles       0 drawn", "audit           visible"})
     EXPECT_EQ(r.out.find(gone), std::string::npos) << gone << "\n" << r.out;

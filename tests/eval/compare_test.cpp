@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // gazelod compare end to end on the simulated runtime (headless), and its parsing of a run's
 // summary: the JSON contract, no criterion ever adding triangles, errors for bad input.
 #include "lod/display.hpp"
@@ -42,8 +43,8 @@ std::filesystem::path write_scenario(const std::filesystem::path& dir) {
 TEST(Compare, JsonShapeAndNoCriterionAddsTriangles) {
   use_simulated_runtime();
   const auto dir = scratch();
-  const Result r = cli({"compare", "--hmd", "questpro", "--hmd", "iglasses", "--scenario",
-                        write_scenario(dir).string(), "--json", "--out", (dir / "out").string()});
+  const Result r = cli({"compare", "--hmd", "questpro", "--hmd", "iglasses", "--scenario", write_scenario(dir).string(),
+                        "--json", "--out", (dir / "out").string()});
   ASSERT_EQ(r.rc, 0) << r.err;
   const auto doc = nlohmann::json::parse(r.out);
   ASSERT_TRUE(doc.at("hmds").is_array());
@@ -69,9 +70,11 @@ TEST(Compare, JsonShapeAndNoCriterionAddsTriangles) {
     const auto tri = [&](const char* s) { return runs[s]["triangles"].get<double>(); };
     const auto lod = [&](const char* s) { return runs[s]["average_lod"].get<double>(); };
     // Each added criterion: never more triangles, never a finer average level.
-    const std::pair<const char*, const char*> added[] = {
-        {"none", "size"}, {"size", "size+eccentricity"}, {"size", "size+velocity"},
-        {"size+eccentricity", "size+eccentricity+velocity"}, {"size+velocity", "size+eccentricity+velocity"}};
+    const std::pair<const char*, const char*> added[] = {{"none", "size"},
+                                                         {"size", "size+eccentricity"},
+                                                         {"size", "size+velocity"},
+                                                         {"size+eccentricity", "size+eccentricity+velocity"},
+                                                         {"size+velocity", "size+eccentricity+velocity"}};
     for (const auto& [without, with] : added) {
       EXPECT_LE(tri(with), tri(without)) << name << ": " << with << " vs " << without;
       EXPECT_GE(lod(with), lod(without)) << name << ": " << with << " vs " << without;
@@ -110,7 +113,8 @@ TEST(Compare, UnknownHmdIsAnErrorNamingIt) {
 }
 
 TEST(Compare, SummaryMissingAFieldNamesItsPath) {
-  nlohmann::json s = {{"frames", 10}, {"criteria", "size,eccentricity,velocity"},
+  nlohmann::json s = {{"frames", 10},
+                      {"criteria", "size,eccentricity,velocity"},
                       {"criteria_sets", {{"none", {{"triangles", 100}, {"average_lod", 0.0}}}}}};
   try {
     comparison_from_summary("questpro", s, "x/summary.json");
@@ -124,9 +128,14 @@ TEST(Compare, SharesFromHandMadeSummary) {
   // none 1000, size 400, size+ecc 300, size+vel 350, all 250: reduction 750;
   // size (1000-400)/750 = 0.8, eccentricity (350-250)/750, velocity (300-250)/750.
   const auto set = [](int t, double l) { return nlohmann::json{{"triangles", t}, {"average_lod", l}}; };
-  nlohmann::json s = {{"frames", 10}, {"criteria", "size,eccentricity,velocity"},
-                      {"criteria_sets", {{"none", set(1000, 0)}, {"size", set(400, 1)}, {"size+eccentricity", set(300, 1.2)},
-                                         {"size+velocity", set(350, 1.1)}, {"drawn", set(250, 1.5)}}},
+  nlohmann::json s = {{"frames", 10},
+                      {"criteria", "size,eccentricity,velocity"},
+                      {"criteria_sets",
+                       {{"none", set(1000, 0)},
+                        {"size", set(400, 1)},
+                        {"size+eccentricity", set(300, 1.2)},
+                        {"size+velocity", set(350, 1.1)},
+                        {"drawn", set(250, 1.5)}}},
                       {"lod_map", set(500, 1.0)}};
   const HmdComparison c = comparison_from_summary("iglasses", s, "hand");
   EXPECT_NEAR(c.share_size, 0.8, 1e-12);
@@ -140,9 +149,14 @@ TEST(Compare, SharesFromHandMadeSummary) {
 
 TEST(Compare, AuditIsReadBackFromTheSummary) {
   const auto set = [](int t, double l) { return nlohmann::json{{"triangles", t}, {"average_lod", l}}; };
-  nlohmann::json s = {{"frames", 10}, {"criteria", "size,eccentricity,velocity"},
-                      {"criteria_sets", {{"none", set(1000, 0)}, {"size", set(400, 1)}, {"size+eccentricity", set(300, 1.2)},
-                                         {"size+velocity", set(350, 1.1)}, {"drawn", set(250, 1.5)}}},
+  nlohmann::json s = {{"frames", 10},
+                      {"criteria", "size,eccentricity,velocity"},
+                      {"criteria_sets",
+                       {{"none", set(1000, 0)},
+                        {"size", set(400, 1)},
+                        {"size+eccentricity", set(300, 1.2)},
+                        {"size+velocity", set(350, 1.1)},
+                        {"drawn", set(250, 1.5)}}},
                       {"lod_map", set(500, 1.0)}};
   AuditSummary a;
   a.available = true;
@@ -202,8 +216,10 @@ TEST(EvalSmoke, HeadlessTablesAreWrittenAndConsistent) {
   int rows = 0;
   bool in_figure6 = false;
   while (std::getline(md, line)) {
-    if (line.rfind("### Figure 6", 0) == 0) in_figure6 = true;
-    else if (line.rfind("###", 0) == 0) in_figure6 = false;
+    if (line.rfind("### Figure 6", 0) == 0)
+      in_figure6 = true;
+    else if (line.rfind("###", 0) == 0)
+      in_figure6 = false;
     if (!in_figure6 || (line.rfind("| 10 |", 0) != 0 && line.rfind("| 50 |", 0) != 0)) continue;
     // | objects | in view | LOD all | LOD ecc+vel | ...
     std::vector<std::string> cells;

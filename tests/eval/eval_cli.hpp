@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Running `gazelod` commands in the test process for the eval tests: the result, a scratch
 // folder per test, and the simulated runtime unpaced.
 #pragma once

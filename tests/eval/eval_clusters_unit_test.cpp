@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // gazelod eval clusters' parts that need no run: the same-rule baseline's hierarchy
 // (eval_clusters_baseline.hpp) and the reading of a run's reports (eval_clusters_report.hpp),
 // with errors naming the file and JSON path.
@@ -46,14 +47,15 @@ TEST(EvalClustersBaseline, ChainBecomesOneClusterPerLevel) {
 
 TEST(EvalClustersReport, ReadsASideAndNamesWhatIsMissing) {
   const auto dir = scratch("read");
-  nlohmann::json audit = {{"available", true},
-                          {"triangles_in_view",
-                           {{"drawn_over_oracle", 1.25},
-                            {"drawn", 120},
-                            {"oracle", 96},
-                            {"oracle_by_criterion_alone", {{"size", 300}, {"eccentricity", 200}, {"velocity", 500}}}}},
-                          {"visible_degradations", {{"object_frames", 40}, {"leaf_frames", 400}, {"share", 0.01}}},
-                          {"switches", {{"outside_suppression", {{"per_object_second", 0.5}, {"per_leaf_second", 0.7}}}}}};
+  nlohmann::json audit = {
+      {"available", true},
+      {"triangles_in_view",
+       {{"drawn_over_oracle", 1.25},
+        {"drawn", 120},
+        {"oracle", 96},
+        {"oracle_by_criterion_alone", {{"size", 300}, {"eccentricity", 200}, {"velocity", 500}}}}},
+      {"visible_degradations", {{"object_frames", 40}, {"leaf_frames", 400}, {"share", 0.01}}},
+      {"switches", {{"outside_suppression", {{"per_object_second", 0.5}, {"per_leaf_second", 0.7}}}}}};
   nlohmann::json j = {{"frames", 2}, {"triangles_drawn", 300}, {"triangles_full", 1000}, {"audit", audit}};
   std::ofstream(dir / "summary.json") << j.dump();
   std::ofstream(dir / "frames.csv") << "frame,t_s,triangles_drawn,cluster_triangles_drawn\n0,0,100,10\n1,0.1,200,30\n";

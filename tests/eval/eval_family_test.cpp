@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // gazelod eval family end to end on the simulated runtime: the report's shape, determinism,
 // bad options, and the audit's distribution on held-out seeds (docs/evaluation.md, "Scenario
 // family"), which the defaults were not tuned on.
@@ -23,7 +24,9 @@ Result cli(const std::vector<std::string>& args) {
   return testing::cli(args);
 }
 
-std::filesystem::path scratch() { return testing::scratch("family."); }
+std::filesystem::path scratch() {
+  return testing::scratch("family.");
+}
 
 std::string read(const std::filesystem::path& p) {
   std::ifstream in(p);
@@ -34,8 +37,11 @@ std::string read(const std::filesystem::path& p) {
 
 TEST(EvalFamily, ReportShapeDeterminismAndSettings) {
   const auto dir = scratch();
-  const std::vector<std::string> args{"eval", "family", "--seeds", "7-9", "--duration", "3",
-                                      "--out", (dir / "a").string(), "--set", "switch.coarsen_hold_s=0.3"};
+  const std::vector<std::string> args{"eval",       "family",
+                                      "--seeds",    "7-9",
+                                      "--duration", "3",
+                                      "--out",      (dir / "a").string(),
+                                      "--set",      "switch.coarsen_hold_s=0.3"};
   const Result r = cli(args);
   ASSERT_EQ(r.rc, 0) << r.err;
   EXPECT_NE(r.err.find("[3/3] seed 9"), std::string::npos) << "a progress line per seed\n" << r.err;

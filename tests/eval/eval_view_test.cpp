@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The evaluation's helpers: the frustum test behind the "in view" figures, and the bar chart.
 #include "apps/gazelod/compare_svg.hpp"
 #include "apps/gazelod/eval_lod_map.hpp"
@@ -41,8 +42,8 @@ TEST(SphereInView, FollowsTheHeadAndTheEyePosition) {
   const glm::dquat still{1.0, 0.0, 0.0, 0.0};
   EXPECT_FALSE(sphere_in_view({0, 0, -10}, 0.5, {0, 0, -20}, still, reddy_fov()));
   // Vertical: 20 deg up is outside the 16.7 deg half-height.
-  EXPECT_FALSE(sphere_in_view({0, 10 * std::sin(20 * kDeg), -10 * std::cos(20 * kDeg)}, 0.1, glm::dvec3(0.0),
-                              still, reddy_fov()));
+  EXPECT_FALSE(sphere_in_view({0, 10 * std::sin(20 * kDeg), -10 * std::cos(20 * kDeg)}, 0.1, glm::dvec3(0.0), still,
+                              reddy_fov()));
 }
 
 TEST(SphereInView, NonFiniteIsNotInView) {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The LOD-map thesis's policy: hand-computed scores, the published weights, colour salience,
 // the level mapping and its guards.
 #include "lod/lod_map.hpp"

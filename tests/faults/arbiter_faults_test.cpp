@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Faults through the gaze arbiter's state machine (plugin/gaze_arbiter.hpp) with scripted
 // sources: NaN, zero-length and invalid samples, a frozen tracker, time jumping back, a source
 // that disappears and comes back. Every change is reported once, with why; a sample that
@@ -67,8 +68,8 @@ TEST(ArbiterFaults, NanGazeFromTheRuntimeFallsBackInsteadOfReachingTheDecision) 
   xr.next = sample(0, kAhead);
   hid.next = sample(0, glm::normalize(glm::dvec3(0.1, 0.0, -1.0)));
   EXPECT_EQ(a.update(0).source, GazeSourceKind::openxr);
-  for (const glm::dvec3 bad : {glm::dvec3(kNaN, 0.0, -1.0), glm::dvec3(0.0),
-                               glm::dvec3(std::numeric_limits<double>::infinity(), 0.0, 0.0)}) {
+  for (const glm::dvec3 bad :
+       {glm::dvec3(kNaN, 0.0, -1.0), glm::dvec3(0.0), glm::dvec3(std::numeric_limits<double>::infinity(), 0.0, 0.0)}) {
     xr.next = sample(10 * kMs, bad);
     const ArbiterResult r = a.update(10 * kMs);
     EXPECT_EQ(r.source, GazeSourceKind::external);
@@ -155,8 +156,7 @@ TEST(ArbiterFaults, UnplugAndReplugOfTheExternalTrackerAreEachReportedOnce) {
   // secondary (first frame), distrust of openxr (frame 10, re-reported), head-fixed, secondary.
   ASSERT_EQ(c.seen.size(), 4u);
   EXPECT_EQ(c.seen[2].first, GazeSourceKind::head_fixed);
-  EXPECT_NE(c.seen[2].second.find("hid unavailable (hid: unplugged)"), std::string::npos)
-      << c.seen[2].second;
+  EXPECT_NE(c.seen[2].second.find("hid unavailable (hid: unplugged)"), std::string::npos) << c.seen[2].second;
   EXPECT_EQ(c.seen[3].first, GazeSourceKind::external);
 }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A frame that takes ten times its budget, and measured times that are no time at all (NaN,
 // infinite, negative), fed to the frame-budget scheduler (budget/frame_budget.hpp): the next
 // frames are still chosen, coarser or equal, under the budget by prediction, with finite
@@ -21,11 +22,13 @@ lod::LodLevel level(std::uint32_t tris) {
 }
 
 std::vector<std::vector<lod::LodLevel>> chains(std::size_t objects) {
-  return std::vector<std::vector<lod::LodLevel>>(
-      objects, {level(200000), level(50000), level(12500), level(3000), level(800)});
+  return std::vector<std::vector<lod::LodLevel>>(objects,
+                                                 {level(200000), level(50000), level(12500), level(3000), level(800)});
 }
 
-int total(const std::vector<std::uint8_t>& lods) { return std::accumulate(lods.begin(), lods.end(), 0); }
+int total(const std::vector<std::uint8_t>& lods) {
+  return std::accumulate(lods.begin(), lods.end(), 0);
+}
 
 bool finite(const budget::CostCoefficients& c) {
   return std::isfinite(c.c0_s) && std::isfinite(c.c1_s_per_tri) && std::isfinite(c.c2_s_per_vert) &&
@@ -95,7 +98,7 @@ TEST(BudgetFaults, ReplayingTheSameFaultsGivesTheSameFrames) {
       perceptual[static_cast<std::size_t>(i * 7) % n] ^= 1;
       fb.choose(perceptual, view, lods);
       frames.push_back(lods);
-      const double measured = i % 40 == 20 ? 10.0 * 11.1                               // a hitch
+      const double measured = i % 40 == 20   ? 10.0 * 11.1                               // a hitch
                               : i % 40 == 30 ? std::numeric_limits<double>::quiet_NaN()  // refused
                                              : fb.predicted_ms() * 1.1;
       fb.observe(measured);

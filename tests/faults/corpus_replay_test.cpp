@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Every file of the fuzz corpus (fuzz/corpus/<target>/: the seeds and each input a fuzzing
 // campaign found crashing, kept as regressions) through the same entry function the libFuzzer
 // target runs, here in the normal build. An entry aborts on a broken invariant and lets any
@@ -46,12 +47,24 @@ void replay(const std::string& target, Entry entry) {
   EXPECT_EQ(entry(&one, 1), 0);
 }
 
-TEST(FuzzCorpus, TraceReader) { replay("trace_reader", &trace_reader); }
-TEST(FuzzCorpus, Scenario) { replay("scenario", &scenario); }
-TEST(FuzzCorpus, HidReports) { replay("hid_reports", &hid_reports); }
-TEST(FuzzCorpus, BudgetInstance) { replay("budget_instance", &budget_instance); }
-TEST(FuzzCorpus, Gltf) { replay("gltf", &gltf); }
-TEST(FuzzCorpus, Capi) { replay("capi", &capi); }
+TEST(FuzzCorpus, TraceReader) {
+  replay("trace_reader", &trace_reader);
+}
+TEST(FuzzCorpus, Scenario) {
+  replay("scenario", &scenario);
+}
+TEST(FuzzCorpus, HidReports) {
+  replay("hid_reports", &hid_reports);
+}
+TEST(FuzzCorpus, BudgetInstance) {
+  replay("budget_instance", &budget_instance);
+}
+TEST(FuzzCorpus, Gltf) {
+  replay("gltf", &gltf);
+}
+TEST(FuzzCorpus, Capi) {
+  replay("capi", &capi);
+}
 
 }  // namespace
 }  // namespace gazelod::fuzz

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Faults of the external HID tracker (fake hidapi, tests/hid/fake_hidapi.hpp) seen through the
 // gaze arbiter, as the plugin sees them: unplugged and replugged mid-run, a device clock that
 // jumps back (tracker restart), a frozen tracker repeating one report.
@@ -31,24 +32,19 @@ bool wait_until(const std::function<bool()>& done, int timeout_ms = 5000) {
 }
 
 std::int64_t now_ns() {
-  return std::chrono::duration_cast<std::chrono::nanoseconds>(
-             std::chrono::steady_clock::now().time_since_epoch())
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
       .count();
 }
 
 void plug_tracker() {
   fake_hid::plug({kPath});
-  fake_hid::set_feature(kPath, Bytes{}
-                                   .u8(hid::kReportConfiguration)
-                                   .u16(1).u16(2).u32(3).u16(4)
-                                   .i32(527040).i32(296460)
-                                   .b);
+  fake_hid::set_feature(kPath,
+                        Bytes{}.u8(hid::kReportConfiguration).u16(1).u16(2).u32(3).u16(4).i32(527040).i32(296460).b);
   fake_hid::set_feature(kPath, Bytes{}.u8(hid::kReportStatus).u8(1).u16(250).b);
 }
 
 std::vector<std::uint8_t> gaze_at(std::uint64_t t_us) {  // screen centre, eyes 600 mm away
-  return hid::testing::tracking_report(t_us, 263520, 148230, {-32000, 0, 600000},
-                                       {32000, 0, 600000});
+  return hid::testing::tracking_report(t_us, 263520, 148230, {-32000, 0, 600000}, {32000, 0, 600000});
 }
 
 hid::HidTrackerConfig config(std::vector<std::string>& log, std::mutex& m) {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `gazelod run` against the simulated runtime with injected faults (docs/hardening.md): the
 // session lost (with XR_SESSION_STATE_LOSS_PENDING, and silently with only
 // XR_ERROR_SESSION_LOST), a bad fault variable, a gaze trace that freezes or jumps back, a
@@ -74,8 +75,8 @@ TEST_F(RuntimeFaults, AFrozenGazeTraceKeepsTheLoopGoingWithoutNan) {
     t << "t_ns,gaze_x,gaze_y,gaze_z\n";
     for (int i = 0; i < 50; ++i) t << "0,0.6,0,-0.8\n";
   }
-  const CliResult r = run_cli({"run", "--frames", "90", "--no-render", "--quiet", "--no-eye-gaze",
-                               "--trace", (dir / "frozen.csv").string(), "--out", (dir / "out").string()});
+  const CliResult r = run_cli({"run", "--frames", "90", "--no-render", "--quiet", "--no-eye-gaze", "--trace",
+                               (dir / "frozen.csv").string(), "--out", (dir / "out").string()});
   ASSERT_EQ(r.rc, 0) << r.err;
   const std::string csv = read_text(dir / "out" / "frames.csv");
   EXPECT_EQ(data_rows(csv), 90u);

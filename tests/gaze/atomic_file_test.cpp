@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Atomic output files (gaze/atomic_file.hpp) and the trace writer on top of them: a failure at
 // any step (injected write / fsync / rename errors, a missing or unwritable folder, a
 // directory in the way, a full device, a full file system) throws WriteError with the
@@ -157,7 +158,8 @@ TEST(AtomicFile, FolderNotWritable) {
 
 TEST(AtomicFile, DevicesAreWrittenInPlace) {
   if (!fs::exists("/dev/full") || !fs::exists("/dev/null")) GTEST_SKIP() << "no /dev/full or /dev/null here";
-  EXPECT_EQ(error_of([&] { write_file_atomic("/dev/full", kBig); }), "cannot write '/dev/full': No space left on device");
+  EXPECT_EQ(error_of([&] { write_file_atomic("/dev/full", kBig); }),
+            "cannot write '/dev/full': No space left on device");
   EXPECT_EQ(error_of([&] { write_file_atomic("/dev/null", kBig); }), "");
   EXPECT_TRUE(fs::is_character_file("/dev/null")) << "never replaced by a regular file";
   EXPECT_TRUE(fs::is_character_file("/dev/full"));

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The frame-loop gaze conditioner (gaze/gaze_conditioner.hpp): classification of eye-in-world
 // motion, fixation smoothing, pursuit velocity, prediction, uncertainty, blinks and bad input.
 // Synthetic traces with seeded Gaussian noise; "0.5 deg RMS" is the total angular RMS (per
@@ -30,10 +31,14 @@ constexpr std::int64_t kT0 = 1'000'000'000;  // stream start, ns
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-std::int64_t ns_of(double t_s) { return kT0 + static_cast<std::int64_t>(std::llround(t_s * 1e9)); }
+std::int64_t ns_of(double t_s) {
+  return kT0 + static_cast<std::int64_t>(std::llround(t_s * 1e9));
+}
 
 // Head yaw (positive = turned right) as a head-to-world rotation about +Y.
-glm::dquat head_yaw(double yaw_deg) { return glm::angleAxis(-yaw_deg * kRadPerDeg, glm::dvec3(0, 1, 0)); }
+glm::dquat head_yaw(double yaw_deg) {
+  return glm::angleAxis(-yaw_deg * kRadPerDeg, glm::dvec3(0, 1, 0));
+}
 
 // Ground truth at time t (s from the stream start): eye-in-world yaw/pitch, head yaw.
 struct Truth {
@@ -52,9 +57,9 @@ struct Frame {
 
 struct Sim {
   double rate_hz = 120.0;
-  double noise_deg = 0.5;   // total RMS
-  double frame_hz = 0.0;    // 0: one at() per sample; else frames that push the newest sample
-  double latency_s = 0.015; // display time - frame (or sample) time
+  double noise_deg = 0.5;    // total RMS
+  double frame_hz = 0.0;     // 0: one at() per sample; else frames that push the newest sample
+  double latency_s = 0.015;  // display time - frame (or sample) time
   unsigned seed = 1;
 };
 
@@ -103,10 +108,16 @@ std::vector<Frame> simulate(GazeConditioner& c, const TruthFn& truth, double sec
   return frames;
 }
 
-double err_deg(const Frame& f) { return angle_between_rad(f.out.direction_world, f.truth.world()) * kDegPerRad; }
-double speed_deg_s(const ConditionedGaze& g) { return glm::length(g.angular_velocity_world_rad_s) * kDegPerRad; }
+double err_deg(const Frame& f) {
+  return angle_between_rad(f.out.direction_world, f.truth.world()) * kDegPerRad;
+}
+double speed_deg_s(const ConditionedGaze& g) {
+  return glm::length(g.angular_velocity_world_rad_s) * kDegPerRad;
+}
 
-bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool finite(const glm::dvec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 void expect_sane(const ConditionedGaze& g, const ConditionerConfig& cfg) {
   ASSERT_TRUE(finite(g.direction_world));
   ASSERT_TRUE(finite(g.direction_head));
@@ -119,7 +130,9 @@ void expect_sane(const ConditionedGaze& g, const ConditionerConfig& cfg) {
   if (g.motion != EyeMotion::pursuit && !g.carried) {
     ASSERT_EQ(g.angular_velocity_world_rad_s, glm::dvec3(0.0));
   }
-  if (g.carried) ASSERT_EQ(g.motion, EyeMotion::fixation);
+  if (g.carried) {
+    ASSERT_EQ(g.motion, EyeMotion::fixation);
+  }
   if (!g.valid) {
     ASSERT_FALSE(g.suppressed);
   }
@@ -259,7 +272,12 @@ TEST(GazeConditioner, FastPursuitIsNotASaccade) {
   // pursuit in progress (a saccade on a moving background).
   for (unsigned seed = 1; seed <= 5; ++seed) {
     GazeConditioner c;
-    const auto frames = simulate(c, [](double t) { return Truth{-30.0 + 40.0 * t, 0.0, 0.0}; }, 1.5, Sim{.seed = seed});
+    const auto frames = simulate(
+        c,
+        [](double t) {
+          return Truth{-30.0 + 40.0 * t, 0.0, 0.0};
+        },
+        1.5, Sim{.seed = seed});
     int counted = 0, pursuit = 0;
     for (const Frame& f : frames) {
       expect_sane(f.out, c.config());
@@ -300,9 +318,7 @@ TEST(GazeConditioner, VorFixationDuringA100DegPerSecondHeadTurnIsAFixation) {
     GazeConditioner c;
     // The head turns from -20 to +20 deg at 100 deg/s; the eye counter-rotates in the head
     // (100 deg/s there) so that gaze stays on a world point at yaw 5.
-    const TruthFn vor = [](double t) {
-      return Truth{5.0, 0.0, std::clamp(-20.0 + 100.0 * (t - 0.4), -20.0, 20.0)};
-    };
+    const TruthFn vor = [](double t) { return Truth{5.0, 0.0, std::clamp(-20.0 + 100.0 * (t - 0.4), -20.0, 20.0)}; };
     const auto frames = simulate(c, vor, 1.2, Sim{.seed = seed});
     int counted = 0, fixation = 0;
     double sum_sq = 0.0;
@@ -418,7 +434,12 @@ TEST(GazeConditioner, UncertaintyGrowsWithSampleAgeAndSpeed) {
 
   // At the same age, pursuit (velocity error) and saccade (held estimate) are less certain.
   GazeConditioner pur;
-  simulate(pur, [](double t) { return Truth{20.0 * t, 0.0, 0.0}; }, 1.0, Sim{});
+  simulate(
+      pur,
+      [](double t) {
+        return Truth{20.0 * t, 0.0, 0.0};
+      },
+      1.0, Sim{});
   const std::int64_t last_p = ns_of(static_cast<double>(119) / 120.0);
   const ConditionedGaze gp = pur.at(last_p + 20 * kMs, head_yaw(0.0));
   ASSERT_EQ(gp.motion, EyeMotion::pursuit);
@@ -541,7 +562,7 @@ TEST(GazeConditioner, GarbageInNeverGivesNaNOut) {
     glm::dquat q(1.0 + 0.2 * u(rng), 0.3 * u(rng), 0.3 * u(rng), 0.3 * u(rng));
     if (p == 7) q.w = specials[rng() % 7];
     c.push(s, q);
-    const std::int64_t display = p == 8 ? std::numeric_limits<std::int64_t>::min()
+    const std::int64_t display = p == 8   ? std::numeric_limits<std::int64_t>::min()
                                  : p == 9 ? std::numeric_limits<std::int64_t>::max()
                                           : t + static_cast<std::int64_t>(20 * kMs * u(rng));
     const ConditionedGaze g = c.at(display, p == 10 ? glm::dquat(kNaN, 0, 0, 0) : q);
@@ -556,8 +577,12 @@ TEST(GazeConditioner, WorksFrom30To1000HzWithOneSamplePerFrame) {
     const std::string what = std::to_string(static_cast<int>(rate)) + " Hz at 90 Hz frames";
     {
       GazeConditioner c;
-      const auto frames = simulate(c, [](double) { return Truth{-4.0, 2.0, 0.0}; }, 5.0,
-                                   Sim{.rate_hz = rate, .frame_hz = 90.0, .seed = 3});
+      const auto frames = simulate(
+          c,
+          [](double) {
+            return Truth{-4.0, 2.0, 0.0};
+          },
+          5.0, Sim{.rate_hz = rate, .frame_hz = 90.0, .seed = 3});
       int counted = 0, fixation = 0;
       double sum_sq = 0.0;
       for (const Frame& f : frames) {
@@ -595,7 +620,8 @@ TEST(GazeConditioner, SaccadeAt250And1000Hz) {
 
 TEST(GazeConditioner, ResetForgetsTheHistory) {
   GazeConditioner c;
-  simulate(c, [](double) { return Truth{}; }, 0.5, Sim{});
+  simulate(
+      c, [](double) { return Truth{}; }, 0.5, Sim{});
   EXPECT_TRUE(c.at(ns_of(0.5), head_yaw(0.0)).valid);
   c.reset();
   const ConditionedGaze g = c.at(ns_of(0.5), head_yaw(30.0));
@@ -650,8 +676,12 @@ namespace {
 
 // A head sweeping +-20 deg every 4 s (peak 31 deg/s); the eye either carried by it (5 deg
 // right in the head) or held on a world point by the vestibulo-ocular reflex.
-double sweep_deg(double t) { return 20.0 * std::sin(2.0 * std::numbers::pi * t / 4.0); }
-double sweep_speed_deg_s(double t) { return 20.0 * 2.0 * std::numbers::pi / 4.0 * std::fabs(std::cos(2.0 * std::numbers::pi * t / 4.0)); }
+double sweep_deg(double t) {
+  return 20.0 * std::sin(2.0 * std::numbers::pi * t / 4.0);
+}
+double sweep_speed_deg_s(double t) {
+  return 20.0 * 2.0 * std::numbers::pi / 4.0 * std::fabs(std::cos(2.0 * std::numbers::pi * t / 4.0));
+}
 
 TEST(GazeConditioner, EyesCarriedBySweepingHeadAreCarriedFixations) {
   for (unsigned seed = 1; seed <= 5; ++seed) {
@@ -706,7 +736,8 @@ TEST(GazeConditioner, NoisyFastTrackerHasNoFalseSaccades) {
     GazeConditioner c(cfg);
     int n = 0;
     // After the first 2 s, in which the noise level is learnt (kNoiseTau_s).
-    for (const Frame& f : simulate(c, still, 10.0, noisy)) n += f.t_s > 2.0 && f.out.motion == EyeMotion::saccade ? 1 : 0;
+    for (const Frame& f : simulate(c, still, 10.0, noisy))
+      n += f.t_s > 2.0 && f.out.motion == EyeMotion::saccade ? 1 : 0;
     return n;
   };
   EXPECT_EQ(count_saccades(ConditionerConfig{}), 0);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // GazeBaseVR and Pupil Labs importers: column mapping, axis conversion, missing-data marks.
 #include "gaze/import_gazebasevr.hpp"
 #include "gaze/import_pupil.hpp"
@@ -41,11 +42,10 @@ TEST(GazeBaseVr, ErrorsNameLine) {
   EXPECT_NE(error_of<GazeBaseVrReader>("n,lx,ly\n").find("in.csv:1: missing required GazeBaseVR column(s): x,y"),
             std::string::npos);
   EXPECT_NE(error_of<GazeBaseVrReader>(std::string(kGbvrHeader) + "4,0,0,0,0,0,0,0,0,1\n"
-                                                                   "2,0,0,0,0,0,0,0,0,1\n")
+                                                                  "2,0,0,0,0,0,0,0,0,1\n")
                 .find("in.csv:3:1: time goes backwards"),
             std::string::npos);
-  EXPECT_NE(error_of<GazeBaseVrReader>(std::string(kGbvrHeader) + "4,1,x,0,0,0,0,0,0,1\n")
-                .find("in.csv:2:5: y:"),
+  EXPECT_NE(error_of<GazeBaseVrReader>(std::string(kGbvrHeader) + "4,1,x,0,0,0,0,0,0,1\n").find("in.csv:2:5: y:"),
             std::string::npos);
 }
 
@@ -57,11 +57,10 @@ const char* kPupilHeader =
 TEST(Pupil, ConvertsOpenCvCameraAxesToOpenXr) {
   // Eyes at (+-30, 0, -20) mm: cyclopean (0, 0, -20). Gaze point straight ahead and a little
   // down in camera space (+y is down): (0, 100, 480) -> relative (0, 100, 500).
-  const auto r = read_all<PupilReader>(
-      std::string(kPupilHeader) +
-      "100.5,3,0.95,0.5,0.4,\"1 2\",0,100,480,-30,0,-20,30,0,-20\n"
-      "100.504,3,0.3,0.5,0.4,x,0,0,500,-30,0,-20,30,0,-20\n"
-      "100.508,3,0.99,0.5,0.4,x,,,,-30,0,-20,30,0,-20\n");
+  const auto r = read_all<PupilReader>(std::string(kPupilHeader) +
+                                       "100.5,3,0.95,0.5,0.4,\"1 2\",0,100,480,-30,0,-20,30,0,-20\n"
+                                       "100.504,3,0.3,0.5,0.4,x,0,0,500,-30,0,-20,30,0,-20\n"
+                                       "100.508,3,0.99,0.5,0.4,x,,,,-30,0,-20,30,0,-20\n");
   ASSERT_EQ(r.size(), 3u);
   EXPECT_EQ(r[0].gaze.t_ns, 100'500'000'000);
   EXPECT_TRUE(r[0].gaze.valid);
@@ -77,8 +76,7 @@ TEST(Pupil, ConvertsOpenCvCameraAxesToOpenXr) {
 }
 
 TEST(Pupil, TwoDimensionalExportRejectedByName) {
-  const std::string e =
-      error_of<PupilReader>("gaze_timestamp,world_index,confidence,norm_pos_x,norm_pos_y\n");
+  const std::string e = error_of<PupilReader>("gaze_timestamp,world_index,confidence,norm_pos_x,norm_pos_y\n");
   EXPECT_NE(e.find("gaze_point_3d_x"), std::string::npos) << e;
   EXPECT_NE(e.find("intrinsics"), std::string::npos) << e;
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // I-VT classification: robust to tracker noise, finds every saccade >= 3 deg.
 #include "gaze/gaze_events.hpp"
 #include "gaze/ivt_classifier.hpp"

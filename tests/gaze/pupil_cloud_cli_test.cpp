@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `gazelod trace stats|convert` on Pupil Cloud gaze.csv files the test writes: detected
 // without --format, blinks.csv beside applied, agreement with Pupil's ids reported.
 #include "tests/cli_run.hpp"
@@ -16,7 +17,9 @@ namespace {
 namespace fs = std::filesystem;
 
 using Result = test::CliResult;
-Result run(const std::vector<std::string>& args) { return test::run_cli(args); }
+Result run(const std::vector<std::string>& args) {
+  return test::run_cli(args);
+}
 
 fs::path temp_dir() {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
@@ -26,7 +29,9 @@ fs::path temp_dir() {
   return dir;
 }
 
-void write_text(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
+void write_text(const fs::path& p, const std::string& text) {
+  std::ofstream(p, std::ios::binary) << text;
+}
 
 TEST(PupilCloudCli, StatsDetectsTheExportAndReportsAgreement) {
   const fs::path dir = temp_dir();

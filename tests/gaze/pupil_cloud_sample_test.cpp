@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The real Pupil Invisible export in ../shared/data/gaze (not part of the repository; skipped
 // without it): it imports whole, its axes agree with its own scene pixels, and trace stats
 // reports the agreement with Pupil Cloud's fixations and blinks.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Pupil Cloud gaze.csv importer, its blinks file, layout detection in open_trace, and the
 // agreement of our classifiers with Pupil Cloud's own fixation / blink ids.
 #include "gaze/gaze_agreement.hpp"
@@ -24,8 +25,7 @@ namespace fs = std::filesystem;
 using testing::kPupilCloudGazeHeader;
 using testing::kUnixStartNs;
 
-std::vector<TraceRecord> read_all(const std::string& text, PupilCloudBlinks blinks = {},
-                                  ReadOptions o = {}) {
+std::vector<TraceRecord> read_all(const std::string& text, PupilCloudBlinks blinks = {}, ReadOptions o = {}) {
   std::istringstream in(text);
   PupilCloudReader r(in, "gaze.csv", o, std::move(blinks));
   std::vector<TraceRecord> out;
@@ -51,7 +51,9 @@ fs::path temp_dir() {
   return dir;
 }
 
-void write_text(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
+void write_text(const fs::path& p, const std::string& text) {
+  std::ofstream(p, std::ios::binary) << text;
+}
 
 // A row with made-up ids: "s,r,<t>,500,400,<worn>,<fix>,<blink>,<az>,<el>".
 std::string row(std::int64_t t, const std::string& rest = "1,,,0,0") {
@@ -60,8 +62,7 @@ std::string row(std::int64_t t, const std::string& rest = "1,,,0,0") {
 
 TEST(PupilCloud, AzimuthRightElevationUpInOpenXrAxes) {
   const auto r = read_all(std::string(kPupilCloudGazeHeader) + row(kUnixStartNs, "1,,,10,0") +
-                          row(kUnixStartNs + 5'000'000, "1,,,0,10") +
-                          row(kUnixStartNs + 10'000'000, "1,,,-20,-15"));
+                          row(kUnixStartNs + 5'000'000, "1,,,0,10") + row(kUnixStartNs + 10'000'000, "1,,,-20,-15"));
   ASSERT_EQ(r.size(), 3u);
   EXPECT_GT(r[0].gaze.direction.x, 0.0);  // azimuth positive = right = +x
   EXPECT_LT(r[0].gaze.direction.z, 0.0);  // forward = -z
@@ -75,8 +76,8 @@ TEST(PupilCloud, AzimuthRightElevationUpInOpenXrAxes) {
 
 TEST(PupilCloud, RebasesUnixNanosecondsExactly) {
   // Odd nanoseconds 1.65e18 from the epoch: a double would lose them (its step there is 256 ns).
-  const auto r = read_all(std::string(kPupilCloudGazeHeader) + row(kUnixStartNs) +
-                          row(kUnixStartNs + 4'012'345) + row(kUnixStartNs + 8'024'691));
+  const auto r = read_all(std::string(kPupilCloudGazeHeader) + row(kUnixStartNs) + row(kUnixStartNs + 4'012'345) +
+                          row(kUnixStartNs + 8'024'691));
   ASSERT_EQ(r.size(), 3u);
   EXPECT_EQ(r[0].gaze.t_ns, 0);
   EXPECT_EQ(r[1].gaze.t_ns, 4'012'345);
@@ -95,8 +96,8 @@ TEST(PupilCloud, ColumnsByNameNeonWithoutIdsAndExtraColumns) {
   TraceRecord rec;
   ASSERT_TRUE(reader.next(rec));
   EXPECT_TRUE(rec.gaze.valid);
-  EXPECT_NEAR(std::atan2(rec.gaze.direction.y, std::hypot(rec.gaze.direction.x, rec.gaze.direction.z)) *
-                  kDegPerRad, 5.0, 1e-12);
+  EXPECT_NEAR(std::atan2(rec.gaze.direction.y, std::hypot(rec.gaze.direction.x, rec.gaze.direction.z)) * kDegPerRad,
+              5.0, 1e-12);
   EXPECT_LT(rec.gaze.direction.x, 0.0);
   ASSERT_TRUE(reader.next(rec));
   EXPECT_FALSE(rec.gaze.valid);  // worn = 0
@@ -159,9 +160,12 @@ TEST(PupilCloud, ErrorsNameFileLineColumnAndColumnName) {
   EXPECT_NE(error_of(h + row(kUnixStartNs) + row(kUnixStartNs + 1, "2,,,0,0")).find("gaze.csv:3:"), std::string::npos);
   EXPECT_NE(error_of(h + row(kUnixStartNs, "2,,,0,0")).find("worn: expected 0 or 1"), std::string::npos);
   EXPECT_NE(error_of(h + row(kUnixStartNs, "1,x,,0,0")).find("fixation id: 'x' is not an integer"), std::string::npos);
-  EXPECT_NE(error_of(h + row(kUnixStartNs, "1,,0,0,0")).find("blink id: must be empty or an integer"), std::string::npos);
-  EXPECT_NE(error_of(h + row(kUnixStartNs, "1,,,200,0")).find("azimuth [deg]: must be in [-180, 180]"), std::string::npos);
-  EXPECT_NE(error_of(h + row(kUnixStartNs, "1,,,0,abc")).find("elevation [deg]: 'abc' is not a number"), std::string::npos);
+  EXPECT_NE(error_of(h + row(kUnixStartNs, "1,,0,0,0")).find("blink id: must be empty or an integer"),
+            std::string::npos);
+  EXPECT_NE(error_of(h + row(kUnixStartNs, "1,,,200,0")).find("azimuth [deg]: must be in [-180, 180]"),
+            std::string::npos);
+  EXPECT_NE(error_of(h + row(kUnixStartNs, "1,,,0,abc")).find("elevation [deg]: 'abc' is not a number"),
+            std::string::npos);
   EXPECT_NE(error_of(h + row(-5)).find("timestamp [ns]: negative Unix time"), std::string::npos);
   EXPECT_NE(error_of(h + "s,r,1,2\n").find("gaze.csv:2: row has 4 fields, header has 10"), std::string::npos);
   EXPECT_NE(error_of(h + row(kUnixStartNs) + "s,r2," + std::to_string(kUnixStartNs + 1) + ",500,400,1,,,0,0\n")
@@ -183,13 +187,15 @@ TEST(PupilCloud, BlinksFileErrorsNameThatFile) {
     }
     return std::string("(no error)");
   };
-  EXPECT_NE(error("blink id,start timestamp [ns]\n").find("b.csv:1: missing required Pupil Cloud blinks.csv column(s): 'end timestamp [ns]'"),
+  EXPECT_NE(error("blink id,start timestamp [ns]\n")
+                .find("b.csv:1: missing required Pupil Cloud blinks.csv column(s): 'end timestamp [ns]'"),
             std::string::npos);
   EXPECT_NE(error(std::string(testing::kPupilCloudBlinksHeader) + "s,r,1,20,10,0\n")
                 .find("b.csv:2:10: end timestamp [ns]: before start timestamp [ns]"),
             std::string::npos);
-  EXPECT_NE(error(std::string(testing::kPupilCloudBlinksHeader) + "s,r,1,x,10,0\n").find("b.csv:2:7: start timestamp [ns]:"),
-            std::string::npos);
+  EXPECT_NE(
+      error(std::string(testing::kPupilCloudBlinksHeader) + "s,r,1,x,10,0\n").find("b.csv:2:7: start timestamp [ns]:"),
+      std::string::npos);
 }
 
 TEST(TraceOpen, DetectsEachLayoutFromItsHeader) {

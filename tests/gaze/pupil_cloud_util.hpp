@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Test helpers: Pupil Cloud gaze.csv / blinks.csv text in the export's exact layout, from
 // synthetic gaze (tests/gaze/synth.hpp) with Pupil's own fixation and blink ids per sample.
 #pragma once
@@ -38,17 +39,18 @@ inline std::string shortest(double v) {
   return std::string(buf, r.ptr);
 }
 
-inline std::string id_cell(std::uint32_t id) { return id == 0 ? "" : std::to_string(id); }
+inline std::string id_cell(std::uint32_t id) {
+  return id == 0 ? "" : std::to_string(id);
+}
 
 inline std::string pupil_cloud_gaze_csv(const std::vector<PupilCloudRow>& rows) {
   std::string s = kPupilCloudGazeHeader;
   for (const auto& r : rows) {
     // Scene pixels as an Invisible's 1088 x 1080 camera would roughly give (not read).
     const double px = 544.0 + 15.0 * r.azimuth_deg, py = 540.0 - 15.0 * r.elevation_deg;
-    s += std::string(kSection) + "," + kRecording + "," + std::to_string(r.t_unix_ns) + "," +
-         shortest(px) + "," + shortest(py) + "," + std::to_string(r.worn) + "," +
-         id_cell(r.fixation_id) + "," + id_cell(r.blink_id) + "," + shortest(r.azimuth_deg) + "," +
-         shortest(r.elevation_deg) + "\n";
+    s += std::string(kSection) + "," + kRecording + "," + std::to_string(r.t_unix_ns) + "," + shortest(px) + "," +
+         shortest(py) + "," + std::to_string(r.worn) + "," + id_cell(r.fixation_id) + "," + id_cell(r.blink_id) + "," +
+         shortest(r.azimuth_deg) + "," + shortest(r.elevation_deg) + "\n";
   }
   return s;
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Replay: angular interpolation, slerp, no interpolation across invalid samples or saccades,
 // bounded hold-last-good.
 #include "gaze/angles.hpp"
@@ -21,7 +22,9 @@ TraceRecord rec(std::int64_t t_ns, double yaw_deg, bool valid = true) {
   return r;
 }
 
-double yaw_of(const glm::dvec3& d) { return std::atan2(d.x, -d.z) * kDegPerRad; }
+double yaw_of(const glm::dvec3& d) {
+  return std::atan2(d.x, -d.z) * kDegPerRad;
+}
 
 TEST(Replay, InterpolatesByAngle) {
   // Slow drift (2 deg per 4 ms would be a saccade; 0.04 deg per 4 ms is not).

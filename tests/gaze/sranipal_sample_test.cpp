@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The SRanipal importer on a real HTC Vive Pro Eye recording (../shared/data/gaze, not part of
 // the project): read whole and detected from its header, and its axes checked by physiology.
 // While the head turns, the vestibulo-ocular reflex turns the eyes the other way, so a gaze that
@@ -45,7 +46,8 @@ TEST(SranipalSample, ReadsWholeAndTheWorldGazeHoldsWhileTheHeadTurns) {
   const double rate_hz = double(records.size() - 1) / seconds;
   EXPECT_GT(rate_hz, 100.0);
   EXPECT_LT(rate_hz, 140.0);  // the Vive Pro Eye's 120 Hz
-  const auto invalid = std::count_if(records.begin(), records.end(), [](const TraceRecord& x) { return !x.gaze.valid; });
+  const auto invalid =
+      std::count_if(records.begin(), records.end(), [](const TraceRecord& x) { return !x.gaze.valid; });
   EXPECT_GT(invalid, 0) << "the recording has blinks";
   EXPECT_LT(double(invalid), 0.1 * double(records.size()));
 
@@ -59,19 +61,22 @@ TEST(SranipalSample, ReadsWholeAndTheWorldGazeHoldsWhileTheHeadTurns) {
     if (!a.gaze.valid || !b.gaze.valid || !a.head.valid || !b.head.valid) continue;
     const double dt_s = double(b.gaze.t_ns - a.gaze.t_ns) * 1e-9;
     if (!(dt_s > 0.0)) continue;
-    const double head = angle_between_rad(a.head.orientation * forward, b.head.orientation * forward) * kDegPerRad / dt_s;
+    const double head =
+        angle_between_rad(a.head.orientation * forward, b.head.orientation * forward) * kDegPerRad / dt_s;
     if (head < 15.0) continue;
     head_deg_s.push_back(head);
     in_head_deg_s.push_back(angle_between_rad(a.gaze.direction, b.gaze.direction) * kDegPerRad / dt_s);
     world_deg_s.push_back(
-        angle_between_rad(a.head.orientation * a.gaze.direction, b.head.orientation * b.gaze.direction) * kDegPerRad / dt_s);
+        angle_between_rad(a.head.orientation * a.gaze.direction, b.head.orientation * b.gaze.direction) * kDegPerRad /
+        dt_s);
   }
   ASSERT_GT(world_deg_s.size(), 200u) << "too few head turns to check the axes";
   const double world = median(world_deg_s), in_head = median(in_head_deg_s);
-  std::printf("%zu samples at %.1f Hz, %.1f %% invalid; %zu baselines with the head turning (median %.1f deg/s): "
-              "gaze %.1f deg/s in the head, %.1f in the world\n",
-              records.size(), rate_hz, 100.0 * double(invalid) / double(records.size()), world_deg_s.size(),
-              median(head_deg_s), in_head, world);
+  std::printf(
+      "%zu samples at %.1f Hz, %.1f %% invalid; %zu baselines with the head turning (median %.1f deg/s): "
+      "gaze %.1f deg/s in the head, %.1f in the world\n",
+      records.size(), rate_hz, 100.0 * double(invalid) / double(records.size()), world_deg_s.size(), median(head_deg_s),
+      in_head, world);
   EXPECT_LT(world, 0.5 * in_head);
   EXPECT_LT(world, 15.0);
 }

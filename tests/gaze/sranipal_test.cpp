@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // HTC Vive Pro Eye (SRanipal, logged from Unity) importer: the semicolon layout and its
 // detection, .NET ticks, the axis conversions checked against geometry worked out by hand
 // (converging eyes, a head turned left, a head pitched down), the validity bits, and errors
@@ -35,8 +36,12 @@ std::string row(std::int64_t ticks, int valid_l, int valid_r, const std::string&
          ";1;1;32;0;-40;-32;0;-40;" + dirs + ";False;" + head + "\n";
 }
 
-std::vector<TraceRecord> read_all(const std::string& text) { return testing::read_all<SranipalReader>(text); }
-std::string error_of(const std::string& text) { return testing::error_of<SranipalReader>(text); }
+std::vector<TraceRecord> read_all(const std::string& text) {
+  return testing::read_all<SranipalReader>(text);
+}
+std::string error_of(const std::string& text) {
+  return testing::error_of<SranipalReader>(text);
+}
 
 constexpr double kDeg = M_PI / 180.0;
 
@@ -82,10 +87,10 @@ TEST(Sranipal, OneEyeLeftOfTheUserTurnsToMinusX) {
 
 TEST(Sranipal, ValidityBitsDecide) {
   const std::string ahead = "0;0;1;0;0;1";
-  const auto r = read_all(kHeader + row(kTicks, 0, 0, ahead) +         // both lost (a blink)
-                          row(kTicks + 1, 29, 29, ahead) +             // bit 1 (direction) clear
-                          row(kTicks + 2, 2, 0, ahead) +               // direction without origin
-                          row(kTicks + 3, 31, 31, "0;0;0;0;0;0"));     // flagged, but no vector
+  const auto r = read_all(kHeader + row(kTicks, 0, 0, ahead) +      // both lost (a blink)
+                          row(kTicks + 1, 29, 29, ahead) +          // bit 1 (direction) clear
+                          row(kTicks + 2, 2, 0, ahead) +            // direction without origin
+                          row(kTicks + 3, 31, 31, "0;0;0;0;0;0"));  // flagged, but no vector
   ASSERT_EQ(r.size(), 4u);
   EXPECT_FALSE(r[0].gaze.valid);
   EXPECT_FALSE(r[1].gaze.valid);
@@ -93,8 +98,11 @@ TEST(Sranipal, ValidityBitsDecide) {
   EXPECT_EQ(r[2].gaze.origin_m, glm::dvec3(0.0));
   EXPECT_FALSE(r[3].gaze.valid);
   EXPECT_EQ(r[3].gaze.t_ns, kTicksUnixNs + 300);  // one tick is 100 ns
-  for (const TraceRecord& x : r)
-    if (!x.gaze.valid) EXPECT_EQ(x.gaze.confidence, 0.0f);
+  for (const TraceRecord& x : r) {
+    if (!x.gaze.valid) {
+      EXPECT_EQ(x.gaze.confidence, 0.0f);
+    }
+  }
   // A lost eye's columns are not read (SRanipal may leave them empty or NaN); the origin is
   // that of the eyes whose direction is used: here the left eye's, not the right's (bit 0 only).
   std::string lost = row(kTicks, 31, 1, "0;0;1;nan;;");
@@ -133,9 +141,10 @@ TEST(Sranipal, UnityHeadPoseBecomesOpenXrs) {
 }
 
 TEST(Sranipal, WithoutHelmetColumnsThereIsNoHead) {
-  std::istringstream in("time(100ns);eye_valid_L;eye_valid_R;gaze_direct_L.x;gaze_direct_L.y;gaze_direct_L.z;"
-                        "gaze_direct_R.x;gaze_direct_R.y;gaze_direct_R.z\n" +
-                        std::to_string(kTicks) + ";31;31;0;0;1;0;0;1\n");
+  std::istringstream in(
+      "time(100ns);eye_valid_L;eye_valid_R;gaze_direct_L.x;gaze_direct_L.y;gaze_direct_L.z;"
+      "gaze_direct_R.x;gaze_direct_R.y;gaze_direct_R.z\n" +
+      std::to_string(kTicks) + ";31;31;0;0;1;0;0;1\n");
   SranipalReader r(in, "vive.csv");
   EXPECT_FALSE(r.has_head());
   TraceRecord rec;
@@ -183,7 +192,8 @@ TEST(Sranipal, DetectedFromItsSemicolonHeader) {
   EXPECT_EQ(detect_trace_format(V{"time(100ns)", "eye_valid_L", "gaze_direct_L.x"}, false), TraceFormat::sranipal);
   EXPECT_EQ(parse_trace_format("sranipal"), TraceFormat::sranipal);
   EXPECT_EQ(trace_format_name(TraceFormat::sranipal), "sranipal");
-  const auto path = std::filesystem::temp_directory_path() / ("gazelod-sranipal-" + std::to_string(::getpid()) + ".csv");
+  const auto path =
+      std::filesystem::temp_directory_path() / ("gazelod-sranipal-" + std::to_string(::getpid()) + ".csv");
   std::ofstream(path) << kHeader << row(kTicks, 31, 31, "0;0;1;0;0;1");
   const auto s = open_trace(path.string(), TraceFormat::automatic);
   EXPECT_EQ(opened_trace_format(*s), TraceFormat::sranipal);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Synthetic gaze with known ground truth: fixations with Gaussian tracker noise and saccades
 // whose duration follows the main sequence (gaze/main_sequence.hpp) with a smooth
 // (raised-cosine) velocity profile.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The `gazelod trace` command-line contract, through gazelod::cli::run.
 #include "gaze/trace_writer.hpp"
 #include "tests/cli_run.hpp"
@@ -21,7 +22,9 @@ namespace {
 namespace fs = std::filesystem;
 
 using Result = test::CliResult;
-Result run(const std::vector<std::string>& args) { return test::run_cli(args); }
+Result run(const std::vector<std::string>& args) {
+  return test::run_cli(args);
+}
 
 fs::path temp_file(const std::string& name) {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();

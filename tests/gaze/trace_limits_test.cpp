@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What the trace readers read at most, and what they say about input that is not a trace: a
 // directory, a device, a pipe (read as a stream), a line without end (over-long lines),
 // CR-only line ends, NUL bytes, an empty file and one of blank lines.
@@ -54,8 +55,9 @@ const std::string kHeader = "t_ns,gaze_x,gaze_y,gaze_z\n";
 
 TEST(TraceLimits, LinesAreBounded) {
   const std::string long_line = kHeader + "0,0,0,-1\n" + std::string(CsvCursor::kMaxLineBytes + 1, '1') + "\n";
-  EXPECT_EQ(error_of(long_line), "t.csv:3:65537: line longer than 65536 bytes: not a CSV text trace (binary data, "
-                                 "or a file without line ends)");
+  EXPECT_EQ(error_of(long_line),
+            "t.csv:3:65537: line longer than 65536 bytes: not a CSV text trace (binary data, "
+            "or a file without line ends)");
   EXPECT_THAT(error_of(long_line, /*lenient=*/true), HasSubstr("t.csv:3:65537: line longer than 65536 bytes"))
       << "fatal in lenient mode too: nothing after it is a row";
   // No line ends at all: refused after kMaxLineBytes, not after reading everything.
@@ -64,7 +66,8 @@ TEST(TraceLimits, LinesAreBounded) {
   EXPECT_THAT(error_of<PupilReader>(std::string(1 << 17, 'p')), HasSubstr("t.csv:1:65537: line longer"));
   // Exactly the limit is a line.
   EXPECT_THAT(error_of(kHeader + std::string(CsvCursor::kMaxLineBytes, '1') + "\n"), HasSubstr("t.csv:2:"));
-  EXPECT_THAT(error_of(kHeader + std::string(CsvCursor::kMaxLineBytes, '1') + "\n"), ::testing::Not(HasSubstr("longer")));
+  EXPECT_THAT(error_of(kHeader + std::string(CsvCursor::kMaxLineBytes, '1') + "\n"),
+              ::testing::Not(HasSubstr("longer")));
 }
 
 TEST(TraceLimits, LineEndsAndBinaryData) {
@@ -72,10 +75,12 @@ TEST(TraceLimits, LineEndsAndBinaryData) {
             "t.csv:1:26: carriage return (CR) inside a line: the file has CR-only line ends; convert them to LF");
   EXPECT_EQ(error_of("t_ns,gaze_x,gaze_y,gaze_z\r\n0,0,0,-1\r\n"), "") << "CRLF is fine";
   EXPECT_EQ(error_of("\r\r\r"), "t.csv: no header row: the file's 1 line(s) are all blank or comments");
-  EXPECT_EQ(error_of(kHeader + "0,0,0,-1\n" + std::string("1,0\0,0,-1\n", 10)), "t.csv:3:4: NUL byte: binary data, not a CSV text trace");
+  EXPECT_EQ(error_of(kHeader + "0,0,0,-1\n" + std::string("1,0\0,0,-1\n", 10)),
+            "t.csv:3:4: NUL byte: binary data, not a CSV text trace");
   EXPECT_EQ(error_of(std::string(1000, '\0')), "t.csv:1:1: NUL byte: binary data, not a CSV text trace");
   EXPECT_EQ(error_of(""), "t.csv: empty file (0 bytes): no header row");
-  EXPECT_EQ(error_of("\n\n# only a comment\n  \n"), "t.csv: no header row: the file's 4 line(s) are all blank or comments");
+  EXPECT_EQ(error_of("\n\n# only a comment\n  \n"),
+            "t.csv: no header row: the file's 4 line(s) are all blank or comments");
   EXPECT_EQ(error_of<GazeBaseVrReader>(""), "t.csv: empty file (0 bytes): no header row");
   EXPECT_EQ(error_of<PupilReader>("\n"), "t.csv: no header row: the file's 1 line(s) are all blank or comments");
 }

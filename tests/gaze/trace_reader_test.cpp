@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Trace writer/reader: exact round trip, header rules, and every error naming file:line:column.
 #include "gaze/trace_reader.hpp"
 #include "gaze/trace_writer.hpp"
@@ -12,8 +13,7 @@
 namespace gazelod::gaze {
 namespace {
 
-std::vector<TraceRecord> read_all(const std::string& text, ReadOptions o = {},
-                                  SkipReport* skipped = nullptr) {
+std::vector<TraceRecord> read_all(const std::string& text, ReadOptions o = {}, SkipReport* skipped = nullptr) {
   std::istringstream in(text);
   TraceReader r(in, "t.csv", o);
   std::vector<TraceRecord> out;
@@ -45,12 +45,10 @@ void expect_identical(const TraceRecord& a, const TraceRecord& b, std::size_t i)
     EXPECT_TRUE(same_bits(a.gaze.origin_m[k], b.gaze.origin_m[k]));
   }
   EXPECT_EQ(a.gaze.valid, b.gaze.valid);
-  EXPECT_EQ(std::bit_cast<std::uint32_t>(a.gaze.confidence),
-            std::bit_cast<std::uint32_t>(b.gaze.confidence));
+  EXPECT_EQ(std::bit_cast<std::uint32_t>(a.gaze.confidence), std::bit_cast<std::uint32_t>(b.gaze.confidence));
   ASSERT_EQ(a.has_head, b.has_head);
   if (a.has_head) {
-    for (int k = 0; k < 4; ++k)
-      EXPECT_TRUE(same_bits(a.head.orientation[k], b.head.orientation[k]));
+    for (int k = 0; k < 4; ++k) EXPECT_TRUE(same_bits(a.head.orientation[k], b.head.orientation[k]));
     for (int k = 0; k < 3; ++k) EXPECT_TRUE(same_bits(a.head.position_m[k], b.head.position_m[k]));
     EXPECT_EQ(a.head.valid, b.head.valid);
     EXPECT_EQ(a.head.t_ns, b.head.t_ns);
@@ -92,8 +90,7 @@ TEST(TraceReader, WriterHeaderCarriesVersion) {
 }
 
 TEST(TraceReader, RejectsNewerVersion) {
-  EXPECT_NE(error_of("# gazelod-trace 99\nt_ns,gaze_x,gaze_y,gaze_z\n").find("newer"),
-            std::string::npos);
+  EXPECT_NE(error_of("# gazelod-trace 99\nt_ns,gaze_x,gaze_y,gaze_z\n").find("newer"), std::string::npos);
 }
 
 TEST(TraceReader, UnknownColumnsIgnoredAndDefaults) {
@@ -127,21 +124,19 @@ TEST(TraceReader, YawPitchAlternative) {
   EXPECT_NEAR(std::atan2(d.x, -d.z) * 180.0 / M_PI, -30.0, 1e-12);
   EXPECT_NEAR(std::atan2(d.y, std::hypot(d.x, d.z)) * 180.0 / M_PI, 10.0, 1e-12);
   EXPECT_EQ(r[3].gaze.t_ns, 3'000'000'000);
-  EXPECT_NE(error_of("t_s,gaze_yaw_deg,gaze_pitch_deg\n0,0,95\n").find("t.csv:2:5: gaze_pitch_deg"),
-            std::string::npos);
+  EXPECT_NE(error_of("t_s,gaze_yaw_deg,gaze_pitch_deg\n0,0,95\n").find("t.csv:2:5: gaze_pitch_deg"), std::string::npos);
 }
 
 TEST(TraceReader, ErrorsNameLineAndColumn) {
   const std::string h = "t_ns,gaze_x,gaze_y,gaze_z,valid\n";
   // Line 3 is bad; the column points at the field.
   EXPECT_NE(error_of(h + "1,0,0,-1,1\n2,0,abc,-1,1\n").find("t.csv:3:5: gaze_y: 'abc' is not a number"),
-            std::string::npos) << error_of(h + "1,0,0,-1,1\n2,0,abc,-1,1\n");
+            std::string::npos)
+      << error_of(h + "1,0,0,-1,1\n2,0,abc,-1,1\n");
   EXPECT_NE(error_of(h + "1,0,nan,-1,1\n").find("t.csv:2:5: gaze_y: NaN"), std::string::npos);
-  EXPECT_NE(error_of(h + "5,0,0,-1,1\n4,0,0,-1,1\n").find("t.csv:3:1: time goes backwards"),
-            std::string::npos);
+  EXPECT_NE(error_of(h + "5,0,0,-1,1\n4,0,0,-1,1\n").find("t.csv:3:1: time goes backwards"), std::string::npos);
   EXPECT_NE(error_of(h + "1,0,0,0,1\n").find("t.csv:2:3: zero gaze vector"), std::string::npos);
-  EXPECT_NE(error_of(h + "1,0,0,-2,1\n").find("t.csv:2:3: gaze vector is not unit"),
-            std::string::npos);
+  EXPECT_NE(error_of(h + "1,0,0,-2,1\n").find("t.csv:2:3: gaze vector is not unit"), std::string::npos);
   EXPECT_NE(error_of(h + "1,0,0,-1,2\n").find("t.csv:2:10: valid"), std::string::npos);
   EXPECT_NE(error_of(h + "1,0,0,-1\n").find("t.csv:2: row has 4 fields"), std::string::npos);
   EXPECT_NE(error_of(h + "1.5,0,0,-1,1\n").find("not an integer"), std::string::npos);
@@ -176,8 +171,7 @@ TEST(TraceReader, WindowsLineEndingsBomAndQuotes) {
 
 TEST(TraceReader, HeadQuaternionChecked) {
   const std::string h = "t_ns,gaze_x,gaze_y,gaze_z,head_qw,head_qx,head_qy,head_qz\n";
-  EXPECT_NE(error_of(h + "1,0,0,-1,0,0,0,0\n").find("t.csv:2:10: head quaternion"),
-            std::string::npos);
+  EXPECT_NE(error_of(h + "1,0,0,-1,0,0,0,0\n").find("t.csv:2:10: head quaternion"), std::string::npos);
   const auto r = read_all(h + "1,0,0,-1,0,0,1,0\n2,0,0,-1,,,,\n");
   ASSERT_EQ(r.size(), 2u);
   EXPECT_TRUE(r[0].has_head);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Test helpers: deterministic synthetic traces, and reading a CSV text whole with any reader.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Device-to-host time mapping: a simulated device clock with a known offset and drift, USB
 // latency with a known floor, 32-bit counter wrap-around, and device restarts.
 #include "gaze/hid/clock_map.hpp"
@@ -18,8 +19,7 @@ struct Latency {
   std::int64_t next(int i) {
     state = state * 6364136223846793005ull + 1442695040888963407ull;
     if (i % 8 == 0) return floor_ns;
-    return floor_ns +
-           static_cast<std::int64_t>((state >> 33) % static_cast<std::uint64_t>(spread_ns));
+    return floor_ns + static_cast<std::int64_t>((state >> 33) % static_cast<std::uint64_t>(spread_ns));
   }
 };
 
@@ -33,8 +33,7 @@ TEST(HidClockMap, RecoversOffsetAndDriftFromNoisyLatency) {
   for (int i = 0; i < 250 * 30; ++i) {
     const std::int64_t dev_us = 1000 + i * period_us;
     const std::int64_t true_host_ns =
-        offset + static_cast<std::int64_t>(
-                     std::llround(static_cast<double>(dev_us) * 1000.0 * (1.0 + drift)));
+        offset + static_cast<std::int64_t>(std::llround(static_cast<double>(dev_us) * 1000.0 * (1.0 + drift)));
     const std::int64_t recv = true_host_ns + lat.next(i);
     const std::int64_t mapped = map.map(static_cast<std::uint64_t>(dev_us), recv);
     EXPECT_LE(mapped, recv);
@@ -74,8 +73,7 @@ TEST(HidClockMap, SixtyFourBitTimestampsBeyondTwoToThe32AreUnwrappedToo) {
 
 TEST(HidClockMap, BackwardsOrHugeJumpRestartsTheFit) {
   ClockMap map;
-  for (int i = 0; i < 50; ++i)
-    map.map(1'000'000 + static_cast<std::uint64_t>(i) * 4000, 1'000'000'000 + i * 4'000'000);
+  for (int i = 0; i < 50; ++i) map.map(1'000'000 + static_cast<std::uint64_t>(i) * 4000, 1'000'000'000 + i * 4'000'000);
   // Device restarted: its clock is back near zero.
   const std::int64_t recv = 2'000'000'000;
   EXPECT_EQ(map.map(500, recv), recv);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The fake hidapi: the hid_* symbols gazelod_hid_core calls, served from fake_hid's state.
 #include "tests/hid/fake_hidapi.hpp"
 
@@ -141,8 +142,12 @@ fake_hid::Device* live(hid_device* h) {
 
 extern "C" {
 
-int hid_init(void) { return 0; }
-int hid_exit(void) { return 0; }
+int hid_init(void) {
+  return 0;
+}
+int hid_exit(void) {
+  return 0;
+}
 
 hid_device_info* hid_enumerate(unsigned short, unsigned short) {
   std::lock_guard lock(m);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A fake hidapi for the tests: fake_hidapi.cpp defines the hid_* functions gazelod calls, and
 // this header is how a test plays the device: plug it in, give it feature reports, queue input
 // reports (recorded bytes), unplug and replug it, and look at what the code sent to it.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // gazelod hid list / record, run through the command registry against the fake hidapi.
 #include "apps/gazelod/command.hpp"
 #include "tests/hid/fake_hidapi.hpp"
@@ -52,13 +53,11 @@ TEST_F(HidCliTest, ListShowsOnlyUsagePage0x12) {
 
 TEST_F(HidCliTest, RecordWritesEverySampleToATrace) {
   fake_hid::plug({kPath});
-  fake_hid::set_feature(
-      kPath,
-      Bytes{}.u8(kReportConfiguration).u16(1).u16(2).u32(3).u16(4).i32(527040).i32(296460).b);
+  fake_hid::set_feature(kPath, Bytes{}.u8(kReportConfiguration).u16(1).u16(2).u32(3).u16(4).i32(527040).i32(296460).b);
   fake_hid::set_feature(kPath, Bytes{}.u8(kReportStatus).u8(1).u16(250).b);
   for (int i = 0; i < 3; ++i)
-    fake_hid::push_input(kPath, tracking_report(1000 + 4000u * i, 263520, 148230,
-                                                {-32000, 0, 600000}, {32000, 0, 600000}));
+    fake_hid::push_input(kPath,
+                         tracking_report(1000 + 4000u * i, 263520, 148230, {-32000, 0, 600000}, {32000, 0, 600000}));
   fake_hid::push_input(kPath, Bytes{}.u8(0x10).pad(5).b);  // short: skipped, not written
   const auto out = std::filesystem::temp_directory_path() / "gazelod_hid_cli_test.csv";
   const Result r = run({"hid", "record", "--out", out.string(), "--seconds", "0.3"});
@@ -78,8 +77,7 @@ TEST_F(HidCliTest, BadOptionsAndNoDeviceFailWithAMessage) {
   const Result neg = run({"hid", "record", "--out", "/tmp/x.csv", "--seconds", "-1"});
   EXPECT_EQ(neg.code, 2);
   EXPECT_NE(neg.err.find("--seconds"), std::string::npos) << neg.err;
-  const Result layout =
-      run({"hid", "record", "--out", "/tmp/x.csv", "--seconds", "1", "--layout", "zz"});
+  const Result layout = run({"hid", "record", "--out", "/tmp/x.csv", "--seconds", "1", "--layout", "zz"});
   EXPECT_EQ(layout.code, 2);
   EXPECT_NE(layout.err.find("--layout"), std::string::npos) << layout.err;
   const auto out = std::filesystem::temp_directory_path() / "gazelod_hid_cli_none.csv";

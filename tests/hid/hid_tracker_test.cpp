@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The device thread against the fake hidapi: discovery by usage page, feature reports and the
 // gaze-mode request, samples from recorded report bytes, bad reports counted and skipped,
 // unplug / replug, the bounded queue, and the GazeSource on top. Waits are on conditions with
@@ -43,9 +44,8 @@ struct Log {
   }
   int count(const std::string& needle) {
     std::lock_guard lock(m);
-    return static_cast<int>(std::count_if(lines.begin(), lines.end(), [&](const std::string& l) {
-      return l.find(needle) != std::string::npos;
-    }));
+    return static_cast<int>(std::count_if(lines.begin(), lines.end(),
+                                          [&](const std::string& l) { return l.find(needle) != std::string::npos; }));
   }
 };
 
@@ -54,18 +54,9 @@ const std::string kPath = "/dev/hidraw-fake-et";
 // A 527.04 x 296.46 mm screen in the Configuration report; both eyes 600 mm in front.
 void plug_tracker(std::uint8_t status = 1) {
   fake_hid::plug({kPath});
-  fake_hid::set_feature(kPath, Bytes{}
-                                   .u8(kReportCapabilities)
-                                   .u8(1)
-                                   .u32(450000)
-                                   .u32(650000)
-                                   .u32(900000)
-                                   .u32(600000)
-                                   .u32(340000)
-                                   .b);
   fake_hid::set_feature(
-      kPath,
-      Bytes{}.u8(kReportConfiguration).u16(1).u16(2).u32(3).u16(4).i32(527040).i32(296460).b);
+      kPath, Bytes{}.u8(kReportCapabilities).u8(1).u32(450000).u32(650000).u32(900000).u32(600000).u32(340000).b);
+  fake_hid::set_feature(kPath, Bytes{}.u8(kReportConfiguration).u16(1).u16(2).u32(3).u16(4).i32(527040).i32(296460).b);
   fake_hid::set_feature(kPath, Bytes{}.u8(kReportStatus).u8(status).u16(250).b);
 }
 
@@ -127,8 +118,7 @@ TEST_F(HidTrackerTest, RecordedReportsBecomeHeadSpaceSamples) {
   ASSERT_TRUE(got[0].valid && got[1].valid);
   EXPECT_NEAR(got[0].direction.z, -1.0, 1e-12);
   // Right edge, 263.52 mm right of the centre at 600 mm: yaw = atan2(0.26352, 0.6) = 23.7111 deg.
-  EXPECT_NEAR(std::atan2(got[1].direction.x, -got[1].direction.z) * 180.0 / 3.14159265358979,
-              23.7111, 1e-3);
+  EXPECT_NEAR(std::atan2(got[1].direction.x, -got[1].direction.z) * 180.0 / 3.14159265358979, 23.7111, 1e-3);
   EXPECT_LE(got[0].t_ns, got[1].t_ns);
   EXPECT_EQ(t.counters().malformed + t.counters().unknown, 0u);
 }
@@ -140,8 +130,8 @@ TEST_F(HidTrackerTest, ShortMalformedAndUnknownReportsAreCountedSkippedAndLogged
   ASSERT_TRUE(wait_until([&] { return t.connected(); }));
   auto good = gaze_at(1000, 263520);
   fake_hid::push_input(kPath, std::vector<std::uint8_t>(good.begin(), good.begin() + 20));  // short
-  fake_hid::push_input(kPath, Bytes{}.u8(kReportStatus).u8(9).u16(250).b);  // status 9: bad value
-  fake_hid::push_input(kPath, Bytes{}.u8(0x42).pad(12).b);                  // unknown report ID
+  fake_hid::push_input(kPath, Bytes{}.u8(kReportStatus).u8(9).u16(250).b);                  // status 9: bad value
+  fake_hid::push_input(kPath, Bytes{}.u8(0x42).pad(12).b);                                  // unknown report ID
   fake_hid::push_input(kPath, good);
   ASSERT_TRUE(wait_until([&] { return t.counters().reports == 4; }));
   const HidCounters c = t.counters();
@@ -206,8 +196,7 @@ TEST_F(HidTrackerTest, FullQueueDropsTheOldestSamples) {
   ASSERT_TRUE(wait_until([&] { return t.drain(got) && !got.empty(); }));
   ASSERT_EQ(got.size(), 4u);
   // The survivors are the newest four (gaze 300..450 mm from the left: moving right).
-  for (std::size_t i = 1; i < got.size(); ++i)
-    EXPECT_GT(got[i].direction.x, got[i - 1].direction.x);
+  for (std::size_t i = 1; i < got.size(); ++i) EXPECT_GT(got[i].direction.x, got[i - 1].direction.x);
   EXPECT_GT(got[0].direction.x, 0.0);  // 300 mm > the 263.5 mm centre
 }
 
@@ -262,9 +251,8 @@ TEST_F(HidTrackerTest, GazeSourceHoldsTheNewestSampleBrieflyAndFailsOnUnplug) {
   fake_hid::push_input(kPath, gaze_at(1000, 263520));
   fake_hid::push_input(kPath, gaze_at(5000, 527040));
   ASSERT_TRUE(wait_until([&] { return source.tracker().counters().samples == 2; }));
-  const std::int64_t now = std::chrono::duration_cast<std::chrono::nanoseconds>(
-                               std::chrono::steady_clock::now().time_since_epoch())
-                               .count();
+  const std::int64_t now =
+      std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
   std::optional<GazeSample> s;
   ASSERT_TRUE(wait_until([&] { return (s = source.sample_at(now)).has_value(); }));
   EXPECT_GT(s->direction.x, 0.1);                                     // the newest: right edge

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Builders for HID report bytes in the tests: little-endian fields appended one by one, so a
 // test states each field's value and the expected decode independently of the decoder.
 #pragma once
@@ -30,9 +31,8 @@ struct Bytes {
 };
 
 // A Tracking Data report (packed layout) with the given values in micrometres.
-inline std::vector<std::uint8_t> tracking_report(std::uint64_t t_us, std::int32_t gx,
-                                                 std::int32_t gy, Point3Um left, Point3Um right,
-                                                 bool head = false, Point3Um head_pos = {},
+inline std::vector<std::uint8_t> tracking_report(std::uint64_t t_us, std::int32_t gx, std::int32_t gy, Point3Um left,
+                                                 Point3Um right, bool head = false, Point3Um head_pos = {},
                                                  Point3Um head_dir = {}) {
   Bytes r;
   r.u8(kReportTrackingData).u64(t_us).i32(gx).i32(gy);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Decoding HUTRR74 reports: hand-written byte strings (values worked out by hand, in the
 // comments) decode to those values; short, long, wrong-ID and out-of-range reports are errors
 // that name the byte; arbitrary bytes never crash the decoders.
@@ -18,9 +19,8 @@ using testing::tracking_report;
 // a 527.04 x 296.46 mm (24", 16:9) screen plane. Little-endian by hand:
 // 50000 = 0x0000C350, 65000 = 0x0000FDE8, 90000 = 0x00015F90, 527040 = 0x00080AC0,
 // 296460 = 0x0004860C.
-const std::vector<std::uint8_t> kCapabilities = {0x11, 0x01, 0x50, 0xc3, 0x00, 0x00, 0xe8, 0xfd,
-                                                 0x00, 0x00, 0x90, 0x5f, 0x01, 0x00, 0xc0, 0x0a,
-                                                 0x08, 0x00, 0x0c, 0x86, 0x04, 0x00};
+const std::vector<std::uint8_t> kCapabilities = {0x11, 0x01, 0x50, 0xc3, 0x00, 0x00, 0xe8, 0xfd, 0x00, 0x00, 0x90,
+                                                 0x5f, 0x01, 0x00, 0xc0, 0x0a, 0x08, 0x00, 0x0c, 0x86, 0x04, 0x00};
 
 TEST(HidReports, CapabilitiesDecodeToKnownValues) {
   ASSERT_EQ(kCapabilities.size(), kCapabilitiesSize);
@@ -54,14 +54,23 @@ TEST(HidReports, EveryTruncationOfEveryReportIsAnErrorAtItsEnd) {
       const std::span<const std::uint8_t> cut(full.data(), n);
       std::optional<DecodeError> e;
       switch (full[0]) {
-        case kReportCapabilities: e = decode_capabilities(cut).error; break;
-        case kReportConfiguration: e = decode_configuration(cut).error; break;
-        case kReportStatus: e = decode_status(cut).error; break;
-        case kReportControl: e = decode_control(cut).error; break;
-        default: e = decode_tracking(cut).error; break;
+        case kReportCapabilities:
+          e = decode_capabilities(cut).error;
+          break;
+        case kReportConfiguration:
+          e = decode_configuration(cut).error;
+          break;
+        case kReportStatus:
+          e = decode_status(cut).error;
+          break;
+        case kReportControl:
+          e = decode_control(cut).error;
+          break;
+        default:
+          e = decode_tracking(cut).error;
+          break;
       }
-      ASSERT_TRUE(e.has_value()) << "report 0x" << std::hex << int{full[0]} << " cut to "
-                                 << std::dec << n;
+      ASSERT_TRUE(e.has_value()) << "report 0x" << std::hex << int{full[0]} << " cut to " << std::dec << n;
       EXPECT_EQ(e->byte_offset, n) << e->to_string();  // the first missing byte
     }
   }
@@ -80,15 +89,8 @@ TEST(HidReports, WrongReportIdIsAnErrorAtByteZero) {
 TEST(HidReports, ConfigurationPackedAndDmfLayouts) {
   // Packed (vhidmini Tracker.h): ID, mfr 0x4c2d, product 0x0a7e, serial 12345678, date 0x1f20,
   // calibrated 527040 x 296460 um.
-  const auto packed = Bytes{}
-                          .u8(kReportConfiguration)
-                          .u16(0x4c2d)
-                          .u16(0x0a7e)
-                          .u32(12345678)
-                          .u16(0x1f20)
-                          .i32(527040)
-                          .i32(296460)
-                          .b;
+  const auto packed =
+      Bytes{}.u8(kReportConfiguration).u16(0x4c2d).u16(0x0a7e).u32(12345678).u16(0x1f20).i32(527040).i32(296460).b;
   const auto a = decode_configuration(packed, kLayoutGazeHidPacked);
   ASSERT_TRUE(a) << a.error->to_string();
   EXPECT_EQ(a.value->display_manufacturer_id, 0x4c2d);
@@ -132,8 +134,7 @@ TEST(HidReports, StatusValuesAndRange) {
   const auto bad = decode_status(Bytes{}.u8(kReportStatus).u8(5).u16(90).b);
   ASSERT_FALSE(bad);
   EXPECT_EQ(bad.error->byte_offset, 1u);
-  const auto bad_dmf =
-      decode_status(Bytes{}.u8(kReportStatus).pad(1).u8(9).u16(90).b, kLayoutGazeHidDmf);
+  const auto bad_dmf = decode_status(Bytes{}.u8(kReportStatus).pad(1).u8(9).u16(90).b, kLayoutGazeHidDmf);
   ASSERT_FALSE(bad_dmf);
   EXPECT_EQ(bad_dmf.error->byte_offset, 2u);
 }
@@ -207,9 +208,8 @@ TEST(HidReports, ArbitraryBytesNeverCrashAndErrorsStayInRange) {
     buf.resize(rng() % 80);
     for (auto& b : buf) b = static_cast<std::uint8_t>(rng());
     if (!buf.empty() && i % 2) buf[0] = static_cast<std::uint8_t>(0x10 + rng() % 5);
-    for (const auto& e :
-         {decode_tracking(buf).error, decode_status(buf).error, decode_configuration(buf).error,
-          decode_capabilities(buf).error, decode_control(buf).error}) {
+    for (const auto& e : {decode_tracking(buf).error, decode_status(buf).error, decode_configuration(buf).error,
+                          decode_capabilities(buf).error, decode_control(buf).error}) {
       if (e) {
         EXPECT_LE(e->byte_offset, buf.size());
       }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Screen-plane gaze to head-space direction, checked against hand-computed angles (atan2 of
 // the screen offsets over the eye distance) and the frame conventions in screen_geometry.hpp.
 #include "gaze/hid/screen_geometry.hpp"
@@ -10,7 +11,9 @@ namespace gazelod::gaze::hid {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-double deg(double rad) { return rad * 180.0 / kPi; }
+double deg(double rad) {
+  return rad * 180.0 / kPi;
+}
 
 // A 500 x 300 mm screen; both eyes 600 mm in front of its centre, 64 mm apart.
 const ScreenGeometry kScreen{0.5, 0.3, {}};

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The install_layer test (tests/install/CMakeLists.txt passes every argument): the eye-gaze API
 # layer as `cmake --install` lays it out, used from the install prefix only.
 #  1. cmake --install the xr_runtime, xr_layer and program components into <work>/prefix;

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The install_consumer test (tests/install/CMakeLists.txt passes every argument):
 #  1. cmake --install the build into <work>/prefix (a fresh one each run);
 #  2. check the layout, that no installed CMake/pkg-config file names the source or build

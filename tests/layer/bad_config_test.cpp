@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Misconfiguration never breaks the application: a missing trace, a config that is not JSON, a
 // bad value, a directory given as the config. Each is ONE line on stderr ("gazelod layer: ..."
 // saying what and where), the instance is created with XR_EXT_eye_gaze_interaction enabled,

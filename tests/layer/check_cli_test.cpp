@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `gazelod layer check` (apps/gazelod/cmd_layer.cpp): what the layer would do, through the
 // loader, on the simulated runtime with and without eye gaze, with a good and a bad source.
 #include "tests/cli_run.hpp"
@@ -18,23 +19,30 @@ TEST(LayerCheckCli, SaysWhatTheLayerWouldDo) {
   apply(setup);
   auto r = test::run_cli({"layer", "check"});
   EXPECT_EQ(r.rc, 0) << r.out << r.err;
-  EXPECT_NE(r.out.find("XR_APILAYER_GAZELOD_eye_gaze: found by the loader, enabled (XR_ENABLE_API_LAYERS)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("XR_APILAYER_GAZELOD_eye_gaze: found by the loader, enabled (XR_ENABLE_API_LAYERS)"),
+            std::string::npos)
+      << r.out;
   EXPECT_NE(r.out.find("runtime    gazelod simulated runtime"), std::string::npos) << r.out;
   // The layer's own advertisement does not hide that the runtime lacks the extension.
   EXPECT_NE(r.out.find("XR_EXT_eye_gaze_interaction: not offered by the runtime"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("source     trace " + dir + "/trace.csv (400 samples"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("decision   emulating XR_EXT_eye_gaze_interaction with gaze from trace"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("decision   emulating XR_EXT_eye_gaze_interaction with gaze from trace"), std::string::npos)
+      << r.out;
 
   setup.runtime_eye_gaze = true;
   apply(setup);
   r = test::run_cli({"layer", "check"});
   EXPECT_EQ(r.rc, 0);
-  EXPECT_NE(r.out.find("decision   the runtime offers XR_EXT_eye_gaze_interaction: passing it through"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("decision   the runtime offers XR_EXT_eye_gaze_interaction: passing it through"),
+            std::string::npos)
+      << r.out;
   std::ofstream(dir + "/override.json") << R"({"override": true})";
   setup.config = dir + "/override.json";
   apply(setup);
   r = test::run_cli({"layer", "check"});
-  EXPECT_NE(r.out.find("decision   overriding the runtime's XR_EXT_eye_gaze_interaction with gaze from trace"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("decision   overriding the runtime's XR_EXT_eye_gaze_interaction with gaze from trace"),
+            std::string::npos)
+      << r.out;
   // A configuration error is the user's to fix: exit 2, even though the layer would pass through.
   setup.config = dir + "/missing-config.json";
   apply(setup);
@@ -48,7 +56,8 @@ TEST(LayerCheckCli, SaysWhatTheLayerWouldDo) {
   apply(setup);
   r = test::run_cli({"layer", "check"});
   EXPECT_EQ(r.rc, 1);
-  EXPECT_NE(r.out.find("decision   gaze unavailable (GAZELOD_LAYER_TRACE: " + dir + "/missing.csv"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("decision   gaze unavailable (GAZELOD_LAYER_TRACE: " + dir + "/missing.csv"), std::string::npos)
+      << r.out;
 
   setup.layer = false;
   apply(setup);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // layer_gaze_client: a small OpenXR application that uses only the eye-gaze interaction
 // profile, run through check_xr_run.sh (with the core validation layer) and by the install
 // test. Headless; an ordinary event loop (begin on READY, end on STOPPING, quit on EXITING)
@@ -24,15 +25,24 @@ namespace {
 
 const char* state_name(XrSessionState s) {
   switch (s) {
-    case XR_SESSION_STATE_IDLE: return "XR_SESSION_STATE_IDLE";
-    case XR_SESSION_STATE_READY: return "XR_SESSION_STATE_READY";
-    case XR_SESSION_STATE_SYNCHRONIZED: return "XR_SESSION_STATE_SYNCHRONIZED";
-    case XR_SESSION_STATE_VISIBLE: return "XR_SESSION_STATE_VISIBLE";
-    case XR_SESSION_STATE_FOCUSED: return "XR_SESSION_STATE_FOCUSED";
-    case XR_SESSION_STATE_STOPPING: return "XR_SESSION_STATE_STOPPING";
-    case XR_SESSION_STATE_LOSS_PENDING: return "XR_SESSION_STATE_LOSS_PENDING";
-    case XR_SESSION_STATE_EXITING: return "XR_SESSION_STATE_EXITING";
-    default: return "XR_SESSION_STATE_UNKNOWN";
+    case XR_SESSION_STATE_IDLE:
+      return "XR_SESSION_STATE_IDLE";
+    case XR_SESSION_STATE_READY:
+      return "XR_SESSION_STATE_READY";
+    case XR_SESSION_STATE_SYNCHRONIZED:
+      return "XR_SESSION_STATE_SYNCHRONIZED";
+    case XR_SESSION_STATE_VISIBLE:
+      return "XR_SESSION_STATE_VISIBLE";
+    case XR_SESSION_STATE_FOCUSED:
+      return "XR_SESSION_STATE_FOCUSED";
+    case XR_SESSION_STATE_STOPPING:
+      return "XR_SESSION_STATE_STOPPING";
+    case XR_SESSION_STATE_LOSS_PENDING:
+      return "XR_SESSION_STATE_LOSS_PENDING";
+    case XR_SESSION_STATE_EXITING:
+      return "XR_SESSION_STATE_EXITING";
+    default:
+      return "XR_SESSION_STATE_UNKNOWN";
   }
 }
 
@@ -51,7 +61,8 @@ void write_trace(const std::string& path) {
     gazelod::gaze::TraceRecord r;
     const double t = i / 200.0;
     r.gaze.t_ns = static_cast<std::int64_t>(std::llround(t * 1e9));
-    r.gaze.direction = gazelod::gaze::direction_from_yaw_pitch_deg(6.0 * std::sin(2.0 * std::numbers::pi * 0.4 * t), 2.0);
+    r.gaze.direction =
+        gazelod::gaze::direction_from_yaw_pitch_deg(6.0 * std::sin(2.0 * std::numbers::pi * 0.4 * t), 2.0);
     r.gaze.valid = true;
     r.gaze.confidence = 1.0f;
     w.write(r);
@@ -62,7 +73,7 @@ void write_trace(const std::string& path) {
 
 int main(int argc, char** argv) {
   std::setvbuf(stdout, nullptr, _IOLBF, 0);  // lines in order with the runtime's and layers' stderr
-  int expect = 1;  // 1 gaze, 0 no gaze
+  int expect = 1;                            // 1 gaze, 0 no gaze
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--write-trace" && i + 1 < argc) {
@@ -187,8 +198,8 @@ int main(int argc, char** argv) {
     if (!ok(xrEndFrame(session, &fe), "xrEndFrame")) return 1;
     ++frames;
   }
-  std::printf("layer_gaze_client: %d frames, gaze located in %d (sample time wrong in %d), %d profile events\n",
-              frames, located, bad_time, profile_events);
+  std::printf("layer_gaze_client: %d frames, gaze located in %d (sample time wrong in %d), %d profile events\n", frames,
+              located, bad_time, profile_events);
   xrDestroySpace(gaze_space);
   xrDestroySession(session);
   xrDestroyInstance(instance);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // An application that uses only the eye-gaze interaction profile, against the simulated
 // runtime without XR_EXT_eye_gaze_interaction (GAZELOD_SIM_EYE_GAZE_EXTENSION=0) and the layer
 // replaying a trace: the extension is advertised, suggest / attach / sync / get state / locate
@@ -24,8 +25,12 @@ constexpr XrSpaceLocationFlags kAll = XR_SPACE_LOCATION_ORIENTATION_VALID_BIT | 
                                       XR_SPACE_LOCATION_POSITION_TRACKED_BIT;
 constexpr double kFloatRad = 2e-6;  // XrPosef is single precision
 
-glm::dquat q_of(const XrPosef& p) { return glm::dquat(p.orientation.w, p.orientation.x, p.orientation.y, p.orientation.z); }
-glm::dvec3 p_of(const XrPosef& p) { return {p.position.x, p.position.y, p.position.z}; }
+glm::dquat q_of(const XrPosef& p) {
+  return glm::dquat(p.orientation.w, p.orientation.x, p.orientation.y, p.orientation.z);
+}
+glm::dvec3 p_of(const XrPosef& p) {
+  return {p.position.x, p.position.y, p.position.z};
+}
 
 bool has_extension(const char* layer, const char* name) {
   uint32_t n = 0;
@@ -198,8 +203,7 @@ std::vector<GazeRig::Located> run_client(const LayerSetup& setup, int frames) {
 }
 
 bool same(const GazeRig::Located& a, const GazeRig::Located& b) {
-  return a.flags == b.flags && a.sample_time == b.sample_time &&
-         std::memcmp(&a.pose, &b.pose, sizeof a.pose) == 0;
+  return a.flags == b.flags && a.sample_time == b.sample_time && std::memcmp(&a.pose, &b.pose, sizeof a.pose) == 0;
 }
 
 TEST(LayerGazeClient, RuntimeWithEyeGazePassesThroughUnchanged) {
@@ -248,16 +252,20 @@ TEST(LayerGazeClient, LocateFromManyThreadsWhileTheFrameLoopSyncs) {
       while (!stop) {
         XrEyeGazeSampleTimeEXT sample{XR_TYPE_EYE_GAZE_SAMPLE_TIME_EXT};
         XrSpaceLocation loc{XR_TYPE_SPACE_LOCATION, &sample};
-        if (xrLocateSpace(rig.gaze_space, rig.local, latest.load(), &loc) != XR_SUCCESS) ++bad;
-        else if (loc.locationFlags != 0 && !(std::abs(glm::length(q_of(loc.pose)) - 1.0) < 1e-3)) ++bad;
+        if (xrLocateSpace(rig.gaze_space, rig.local, latest.load(), &loc) != XR_SUCCESS)
+          ++bad;
+        else if (loc.locationFlags != 0 && !(std::abs(glm::length(q_of(loc.pose)) - 1.0) < 1e-3))
+          ++bad;
         ++done;
       }
     });
   // The frame loop goes on until the threads have located a few thousand times, however the
   // scheduler interleaves them: frames within the trace's length, then syncs alone.
   for (long i = 0; i < 50'000'000 && (i < 150 || done.load() < 4000); ++i) {
-    if (i < 5000) latest = rig.frame();
-    else std::this_thread::yield();
+    if (i < 5000)
+      latest = rig.frame();
+    else
+      std::this_thread::yield();
     EXPECT_EQ(rig.sync(), XR_SUCCESS);
   }
   stop = true;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The layer with its HID source, built against the fake hidapi (tests/hid/fake_hidapi.cpp,
 // linked into this program and exported to the layer library, which is built with hid_* left
 // for the loader's process to provide): gaze from a plugged tracker makes the eye-gaze action
@@ -27,10 +28,10 @@ const std::string kPath = "/dev/hidraw-fake-layer";
 // A 527.04 x 296.46 mm screen in the Configuration report (as tests/hid/hid_tracker_test.cpp).
 void plug_tracker() {
   fake_hid::plug({kPath});
-  fake_hid::set_feature(kPath, Bytes{}.u8(hid::kReportCapabilities).u8(1).u32(450000).u32(650000).u32(900000)
-                                   .u32(600000).u32(340000).b);
-  fake_hid::set_feature(kPath, Bytes{}.u8(hid::kReportConfiguration).u16(1).u16(2).u32(3).u16(4).i32(527040)
-                                   .i32(296460).b);
+  fake_hid::set_feature(
+      kPath, Bytes{}.u8(hid::kReportCapabilities).u8(1).u32(450000).u32(650000).u32(900000).u32(600000).u32(340000).b);
+  fake_hid::set_feature(kPath,
+                        Bytes{}.u8(hid::kReportConfiguration).u16(1).u16(2).u32(3).u16(4).i32(527040).i32(296460).b);
   fake_hid::set_feature(kPath, Bytes{}.u8(hid::kReportStatus).u8(1).u16(250).b);
 }
 
@@ -41,8 +42,9 @@ class Feeder {
     stop_ = false;
     thread_ = std::thread([this] {
       while (!stop_) {
-        const auto us = std::chrono::duration_cast<std::chrono::microseconds>(
-                            std::chrono::steady_clock::now().time_since_epoch()).count();
+        const auto us =
+            std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now().time_since_epoch())
+                .count();
         fake_hid::push_input(kPath, hid::testing::tracking_report(static_cast<std::uint64_t>(us), 400000, 148230,
                                                                   {-32000, 0, 600000}, {32000, 0, 600000}));
         std::this_thread::sleep_for(std::chrono::milliseconds(4));

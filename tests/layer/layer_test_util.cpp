@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "tests/layer/layer_test_util.hpp"
 
 #include "gaze/replay_source.hpp"
@@ -30,29 +31,34 @@ void apply(const LayerSetup& s) {
   xrrt_test::use_runtime(s.duration_s, s.paced);
   setenv("GAZELOD_SIM_EYE_GAZE_EXTENSION", s.runtime_eye_gaze ? "1" : "0", 1);
   if (s.layer) {
-    setenv("XR_API_LAYER_PATH", (s.layer_dir.empty() ? std::string(GAZELOD_LAYER_MANIFEST_DIR) : s.layer_dir).c_str(), 1);
+    setenv("XR_API_LAYER_PATH", (s.layer_dir.empty() ? std::string(GAZELOD_LAYER_MANIFEST_DIR) : s.layer_dir).c_str(),
+           1);
     setenv("XR_ENABLE_API_LAYERS", "XR_APILAYER_GAZELOD_eye_gaze", 1);
   } else {
     unsetenv("XR_API_LAYER_PATH");
     unsetenv("XR_ENABLE_API_LAYERS");
   }
-  if (s.trace.empty()) unsetenv("GAZELOD_LAYER_TRACE");
-  else setenv("GAZELOD_LAYER_TRACE", s.trace.c_str(), 1);
-  if (s.config.empty()) unsetenv("GAZELOD_LAYER_CONFIG");
-  else setenv("GAZELOD_LAYER_CONFIG", s.config.c_str(), 1);
+  if (s.trace.empty())
+    unsetenv("GAZELOD_LAYER_TRACE");
+  else
+    setenv("GAZELOD_LAYER_TRACE", s.trace.c_str(), 1);
+  if (s.config.empty())
+    unsetenv("GAZELOD_LAYER_CONFIG");
+  else
+    setenv("GAZELOD_LAYER_CONFIG", s.config.c_str(), 1);
 }
 
 std::string scratch_dir() {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const std::filesystem::path dir =
-      std::filesystem::path(GAZELOD_BINARY_DIR) / "tests" / "layer" / "scratch" / (std::string(info->test_suite_name()) + "." + info->name());
+  const std::filesystem::path dir = std::filesystem::path(GAZELOD_BINARY_DIR) / "tests" / "layer" / "scratch" /
+                                    (std::string(info->test_suite_name()) + "." + info->name());
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir.string();
 }
 
-std::vector<gaze::TraceRecord> write_trace(const std::string& path, double seconds, double rate_hz,
-                                           double blink_from_s, double blink_to_s) {
+std::vector<gaze::TraceRecord> write_trace(const std::string& path, double seconds, double rate_hz, double blink_from_s,
+                                           double blink_to_s) {
   {
     std::ofstream out(path);
     gaze::TraceWriterOptions o;

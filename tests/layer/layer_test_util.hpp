@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Shared by the layer's integration tests: the environment that stacks the eye-gaze layer on
 // the simulated runtime (with or without the runtime's own eye gaze), synthetic traces with a
 // known answer, an eye-gaze-only client rig (suggest, attach, sync, locate), and stderr capture

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The layer's pure parts: the configuration (every key, and errors naming the JSON path or
 // byte), the decision, the eye-gaze pose of a sample, and the trace feed's session clock.
 #include "layer/decision.hpp"
@@ -21,7 +22,9 @@ LayerConfig parse_ok(const std::string& text) {
   return r.config;
 }
 
-std::string parse_error(const std::string& text) { return parse_config_json(text, "c.json", {}).error; }
+std::string parse_error(const std::string& text) {
+  return parse_config_json(text, "c.json", {}).error;
+}
 
 TEST(LayerConfig, EveryKey) {
   const LayerConfig c = parse_ok(R"({"override": true, "freshness_ms": 40, "trace_format": "pupil",
@@ -60,14 +63,18 @@ TEST(LayerConfig, ErrorsSayWhatAndWhere) {
             "c.json: head_offset.position_m: must be an array of 3 numbers, got [0,0]");
   EXPECT_EQ(parse_error(R"({"head_offset": {"rotation_deg": [0, 0, 200]}})"),
             "c.json: head_offset.rotation_deg[2]: must be in [-180, 180], got 200");
-  EXPECT_EQ(parse_error(R"({"hid": {"screen": 1}})"), "c.json: hid.screen: unknown key (known: path, layout, screen_mm)");
+  EXPECT_EQ(parse_error(R"({"hid": {"screen": 1}})"),
+            "c.json: hid.screen: unknown key (known: path, layout, screen_mm)");
   EXPECT_EQ(parse_error(R"({"overide": true})").rfind("c.json: overide: unknown key (known: override,", 0), 0u);
   EXPECT_EQ(parse_error(R"([1])"), "c.json: (top level): must be a JSON object, got [1]");
   EXPECT_EQ(parse_error(R"({"trace_format": "csv"})"),
-            "c.json: trace_format: must be \"auto\", \"gazelod\", \"gazebasevr\", \"pupil\", \"pupil_cloud\" or \"sranipal\", got \"csv\"");
+            "c.json: trace_format: must be \"auto\", \"gazelod\", \"gazebasevr\", \"pupil\", \"pupil_cloud\" or "
+            "\"sranipal\", got \"csv\"");
   const std::string syntax = parse_error("{\"override\": tru}");
   EXPECT_EQ(syntax.rfind("c.json: not valid JSON at byte 17: ", 0), 0u) << syntax;
-  EXPECT_EQ(load_config(nullptr, "/no/such/dir/c.json").error.rfind("GAZELOD_LAYER_CONFIG=/no/such/dir/c.json: cannot open: ", 0), 0u);
+  EXPECT_EQ(load_config(nullptr, "/no/such/dir/c.json")
+                .error.rfind("GAZELOD_LAYER_CONFIG=/no/such/dir/c.json: cannot open: ", 0),
+            0u);
 }
 
 TEST(LayerDecision, PassThroughEmulateOrNoGaze) {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `gazelod run --runtime system` on the simulated runtime without eye gaze, with the layer
 // replaying a trace: the plugin reports the OpenXR gaze source, and its decisions equal those
 // of a run that gives the same trace to the plugin as its external source (--trace), once both
@@ -39,8 +40,9 @@ struct Runs {
     if (via_layer) setup.trace = trace;
     apply(setup);
     unsetenv("GAZELOD_SIM_SCENARIO");  // the embedded default scenario, as the run's own
-    std::vector<std::string> args = {"run", "--runtime", "system", "--no-render", "--frames", "360",
-                                     "--decisions", dir + "/" + name + ".csv", "--out", dir + "/" + name};
+    std::vector<std::string> args = {"run",      "--runtime",     "system",      "--no-render",
+                                     "--frames", "360",           "--decisions", dir + "/" + name + ".csv",
+                                     "--out",    dir + "/" + name};
     if (!via_layer) args.insert(args.end(), {"--trace", trace});
     args.insert(args.end(), extra.begin(), extra.end());
     const auto r = test::run_cli(args);

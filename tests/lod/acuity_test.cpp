@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reddy's acuity model: the reference table of docs/perceptual-model.md, the hard inputs (0,
 // denormals, seams, inf, NaN) and monotonicity over dense grids that include the seams.
 #include "lod/acuity.hpp"
@@ -15,7 +16,9 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // Closed forms written out independently of acuity.cpp.
-double e_thr_formula(double xi) { return (std::sqrt(7.49 * 60.0 / xi) - 1.0) / 0.3; }
+double e_thr_formula(double xi) {
+  return (std::sqrt(7.49 * 60.0 / xi) - 1.0) / 0.3;
+}
 double v_thr_formula(double xi, double ecc) {
   const double m = ecc > 5.79 ? 7.49 / std::pow(0.3 * ecc + 1.0, 2) : 1.0;
   return std::pow(10.0, (57.69 - xi / m) / 27.78);
@@ -92,11 +95,15 @@ TEST(AcuityInverse, EdgeFrequencies) {
 }
 
 // --- hard cases for v ---------------------------------------------------------------------
-TEST(AcuityVelocity, Zero) { EXPECT_EQ(velocity_acuity_cpd(0.0), 60.0); }
+TEST(AcuityVelocity, Zero) {
+  EXPECT_EQ(velocity_acuity_cpd(0.0), 60.0);
+}
 TEST(AcuityVelocity, Denormal) {
   EXPECT_EQ(velocity_acuity_cpd(std::numeric_limits<double>::denorm_min()), 60.0);
 }
-TEST(AcuityVelocity, Tiny1em30) { EXPECT_EQ(velocity_acuity_cpd(1e-30), 60.0); }
+TEST(AcuityVelocity, Tiny1em30) {
+  EXPECT_EQ(velocity_acuity_cpd(1e-30), 60.0);
+}
 TEST(AcuityVelocity, SeamPlusMinusOneUlp) {
   const double below = std::nextafter(0.825, 0.0), above = std::nextafter(0.825, 1.0);
   EXPECT_EQ(velocity_acuity_cpd(below), 60.0);
@@ -114,7 +121,9 @@ TEST(AcuityVelocity, ZeroCrossing119PlusMinusEps) {
   }
   EXPECT_GE(velocity_acuity_cpd(std::nextafter(v0, 0.0)), velocity_acuity_cpd(std::nextafter(v0, 1e9)));
 }
-TEST(AcuityVelocity, Huge1e6) { EXPECT_EQ(velocity_acuity_cpd(1e6), 0.0); }
+TEST(AcuityVelocity, Huge1e6) {
+  EXPECT_EQ(velocity_acuity_cpd(1e6), 0.0);
+}
 TEST(AcuityVelocity, Infinite) {
   EXPECT_EQ(velocity_acuity_cpd(kInf), 0.0);
   EXPECT_EQ(acuity_cpd(kInf, 0.0, 12.0), 0.0);
@@ -128,7 +137,9 @@ TEST(AcuityVelocity, NaNIsConservativeAndRefused) {
 }
 
 // --- hard cases for E ---------------------------------------------------------------------
-TEST(AcuityEccentricity, Zero) { EXPECT_EQ(eccentricity_factor(0.0), 1.0); }
+TEST(AcuityEccentricity, Zero) {
+  EXPECT_EQ(eccentricity_factor(0.0), 1.0);
+}
 TEST(AcuityEccentricity, SeamPlusMinusEps) {
   const double below = std::nextafter(5.79, 0.0), above = std::nextafter(5.79, 10.0);
   EXPECT_EQ(eccentricity_factor(below), 1.0);
@@ -136,7 +147,9 @@ TEST(AcuityEccentricity, SeamPlusMinusEps) {
   EXPECT_LE(eccentricity_factor(above), 1.0);
   EXPECT_NEAR(eccentricity_factor(above), 0.99984, 1e-5);
 }
-TEST(AcuityEccentricity, Ninety) { EXPECT_NEAR(eccentricity_factor(90.0), 7.49 / (28.0 * 28.0), 1e-12); }
+TEST(AcuityEccentricity, Ninety) {
+  EXPECT_NEAR(eccentricity_factor(90.0), 7.49 / (28.0 * 28.0), 1e-12);
+}
 TEST(AcuityEccentricity, OneEighty) {
   EXPECT_NEAR(eccentricity_factor(180.0), 7.49 / (55.0 * 55.0), 1e-12);
   EXPECT_GT(eccentricity_factor(180.0), 0.0);
@@ -203,8 +216,7 @@ TEST(AcuityMonotone, EccentricityGridWithSeam) {
 TEST(AcuityMonotone, InversesNonIncreasingInFrequency) {
   double pe = kInf, pv = kInf, pj = kInf;
   for (double f = 1e-3; f <= 61.0; f += 1e-3) {
-    const double e = eccentricity_threshold_deg(f), v = velocity_threshold_dps(f),
-                 j = velocity_threshold_dps(f, 15.0);
+    const double e = eccentricity_threshold_deg(f), v = velocity_threshold_dps(f), j = velocity_threshold_dps(f, 15.0);
     ASSERT_LE(e, pe) << f;
     ASSERT_LE(v, pv) << f;
     ASSERT_LE(j, pj) << f;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // gazelod thresholds and gazelod hmds through gazelod::cli::run.
 #include "tests/cli_run.hpp"
 #include "lod/acuity.hpp"
@@ -27,8 +28,8 @@ TEST(CliThresholds, DesktopJsonMatchesReferenceTable) {
 }
 
 TEST(CliThresholds, PixelsAndFovMatchIGlasses) {
-  const Result r = run_cli({"thresholds", "--pixels", "263x230", "--fov", "30x24",
-                            "--at-eccentricity", "15", "--json"});
+  const Result r =
+      run_cli({"thresholds", "--pixels", "263x230", "--fov", "30x24", "--at-eccentricity", "15", "--json"});
   ASSERT_EQ(r.rc, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_NEAR(j["xi_h_cpd"].get<double>(), 4.38, 0.01);
@@ -101,8 +102,8 @@ TEST(CliHmds, ListsEveryPresetWithSource) {
   }
   const Result t = run_cli({"hmds"});
   ASSERT_EQ(t.rc, 0);
-  for (const char* name : {"desktop", "iglasses", "quest3", "questpro", "index", "viveproeye",
-                           "varjoxr4", "visionpro", "psvr2", "pimaxcrystal"})
+  for (const char* name : {"desktop", "iglasses", "quest3", "questpro", "index", "viveproeye", "varjoxr4", "visionpro",
+                           "psvr2", "pimaxcrystal"})
     EXPECT_NE(t.out.find(name), std::string::npos) << name;
 }
 

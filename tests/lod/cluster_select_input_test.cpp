@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Per-cluster selection at its seams (eye inside a sphere, gaze at a centre, errors 0 and +inf,
 // radius 0, the eye at a centre), with data validation refused and unvalidated bad data
 // harmless, and the instance transform / store.
@@ -37,9 +38,7 @@ struct Raw {
     count[0] = static_cast<std::uint32_t>(se.size());
     finest[0] = finest_cluster_error_m(se, pe);
   }
-  ClusterSet view() const {
-    return {sx, sy, sz, sr, se, px, py, pz, pr, pe, first, count, {}, {}, {}, finest};
-  }
+  ClusterSet view() const { return {sx, sy, sz, sr, se, px, py, pz, pr, pe, first, count, {}, {}, {}, finest}; }
   std::vector<float> sx, sy, sz, sr, se, px, py, pz, pr, pe;
   std::vector<std::uint32_t> first{0}, count{0};
   std::vector<double> finest{0.0};
@@ -95,7 +94,7 @@ TEST(ClusterSelectSeams, GazeExactlyAtTheCentreAndAway) {
 
 TEST(ClusterSelectSeams, ErrorZeroAlwaysGoesErrorInfiniteNever) {
   Raw raw;
-  raw.add({{0, 0, 0}, 1.0, 0.0}, {{0, 0, 0}, 1.0, kInfF});      // the eye at the centre
+  raw.add({{0, 0, 0}, 1.0, 0.0}, {{0, 0, 0}, 1.0, kInfF});        // the eye at the centre
   raw.add({{0, 0, -1e4}, 0.0, 0.0}, {{0, 0, -1e4}, 0.0, kInfF});  // far, radius 0
   Viewer vw;
   vw.xi_cpd = 60.0;
@@ -136,12 +135,16 @@ TEST(ClusterSelectSeams, UnvalidatedBadDataIsNotDrawnAndHarmsNothingElse) {
   const Result ref = run(vw, clean);
   for (float bad : {kNaN, kInfF, -1.0f}) {
     for (int field = 0; field < 10; ++field) {
-      std::vector<std::vector<float>> f{
-          {clean.self_center_x_m.begin(), clean.self_center_x_m.end()}, {clean.self_center_y_m.begin(), clean.self_center_y_m.end()},
-          {clean.self_center_z_m.begin(), clean.self_center_z_m.end()}, {clean.self_radius_m.begin(), clean.self_radius_m.end()},
-          {clean.self_error_m.begin(), clean.self_error_m.end()}, {clean.parent_center_x_m.begin(), clean.parent_center_x_m.end()},
-          {clean.parent_center_y_m.begin(), clean.parent_center_y_m.end()}, {clean.parent_center_z_m.begin(), clean.parent_center_z_m.end()},
-          {clean.parent_radius_m.begin(), clean.parent_radius_m.end()}, {clean.parent_error_m.begin(), clean.parent_error_m.end()}};
+      std::vector<std::vector<float>> f{{clean.self_center_x_m.begin(), clean.self_center_x_m.end()},
+                                        {clean.self_center_y_m.begin(), clean.self_center_y_m.end()},
+                                        {clean.self_center_z_m.begin(), clean.self_center_z_m.end()},
+                                        {clean.self_radius_m.begin(), clean.self_radius_m.end()},
+                                        {clean.self_error_m.begin(), clean.self_error_m.end()},
+                                        {clean.parent_center_x_m.begin(), clean.parent_center_x_m.end()},
+                                        {clean.parent_center_y_m.begin(), clean.parent_center_y_m.end()},
+                                        {clean.parent_center_z_m.begin(), clean.parent_center_z_m.end()},
+                                        {clean.parent_radius_m.begin(), clean.parent_radius_m.end()},
+                                        {clean.parent_error_m.begin(), clean.parent_error_m.end()}};
       const std::size_t victim = 7;
       f[field][victim] = bad;
       ClusterSet cs = clean;
@@ -184,8 +187,10 @@ TEST(ClusterSelectValidation, NamesTheFirstBadClusterAndField) {
   EXPECT_EQ(msg([](Raw& r) { r.se[0] = kNaN; }), "cluster 0: self_error_m must be finite and >= 0, got nan");
   EXPECT_EQ(msg([](Raw& r) { r.pz[2] = kInfF; }), "cluster 2: parent centre is not finite");
   EXPECT_EQ(msg([](Raw& r) { r.pe[0] = -0.5f; }), "cluster 0: parent_error_m must be >= 0 or +inf, got -0.5");
-  EXPECT_NE(msg([](Raw& r) { r.se[2] = 0.02f; }).find("cluster 2: self_error_m 0.02 exceeds parent_error_m 0.01"), std::string::npos);
-  EXPECT_NE(msg([](Raw& r) { r.pr[0] = 0.01f; }).find("cluster 0: parent sphere (radius 0.01) does not contain"), std::string::npos);
+  EXPECT_NE(msg([](Raw& r) { r.se[2] = 0.02f; }).find("cluster 2: self_error_m 0.02 exceeds parent_error_m 0.01"),
+            std::string::npos);
+  EXPECT_NE(msg([](Raw& r) { r.pr[0] = 0.01f; }).find("cluster 0: parent sphere (radius 0.01) does not contain"),
+            std::string::npos);
   EXPECT_NE(msg([](Raw& r) { r.finest[0] = 0.5; }).find("mesh 0: mesh_finest_error_m must be > 0"), std::string::npos);
   EXPECT_NE(msg([](Raw& r) { r.count[0] = 2; }).find("meshes cover 2 clusters, the arrays hold 3"), std::string::npos);
   EXPECT_NE(msg([](Raw& r) { r.pe.pop_back(); }).find("differ in length"), std::string::npos);
@@ -217,8 +222,9 @@ TEST(ClusterStore, TransformAndMovingMeshes) {
   xf.scale = 2.5;
   ClusterHierarchy world;
   ASSERT_EQ(transform_hierarchy(t.h, xf, world), "");
-  const glm::dvec3 c0 = xf.translation_m + xf.scale * (glm::mat3_cast(xf.rotation) *
-                                                       glm::dvec3{t.h.self_center_x_m[3], t.h.self_center_y_m[3], t.h.self_center_z_m[3]});
+  const glm::dvec3 c0 = xf.translation_m +
+                        xf.scale * (glm::mat3_cast(xf.rotation) *
+                                    glm::dvec3{t.h.self_center_x_m[3], t.h.self_center_y_m[3], t.h.self_center_z_m[3]});
   EXPECT_NEAR(world.self_center_y_m[3], c0.y, 1e-5);
   EXPECT_GE(world.parent_radius_m[3], 2.5f * t.h.parent_radius_m[3]);  // rounded up
   const std::size_t top = t.h.size() - 1;

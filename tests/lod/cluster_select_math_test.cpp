@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The float atan2 and log10 of the cluster kernel (lod/cluster_select_math.hpp) against libm,
 // within the bounds its slacks assume (lod/cluster_select_kernel.hpp).
 #include "lod/cluster_select_math.hpp"
@@ -34,7 +35,7 @@ TEST(ClusterSelectMath, Log10OverTheVelocityRange) {
     const float x = static_cast<float>(0.825 * std::pow(200.0 / 0.825, i / 200000.0));
     worst = std::max(worst, std::abs(double(fastf::log10_normal(x)) - std::log10(double(x))));
   }
-  EXPECT_LT(worst, 5e-7);  // G within 27.78 x 5e-7 = 1.4e-5 cycles/deg; slack 1e-4
+  EXPECT_LT(worst, 5e-7);                             // G within 27.78 x 5e-7 = 1.4e-5 cycles/deg; slack 1e-4
   EXPECT_NEAR(fastf::log10_normal(1.0f), 0.0, 3e-7);  // an end of the fitted interval
   EXPECT_NEAR(fastf::log10_normal(100.0f), 2.0, 5e-7);
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Per-cluster selection: the cut's consistency under random viewers on synthetic hierarchies,
 // the float kernel against the exact rule in double (never coarser, equal where robust),
 // equality with select_lods on a one-cluster-per-level chain, and monotonicity.
@@ -200,8 +201,8 @@ TEST(ClusterSelect, ShuffledClustersGiveTheSameDecisions) {
 
 // Every record of every cluster through the kernel (full evaluation, every criterion) and the
 // screen, against the exact rule.
-void expect_kernel_matches_reference(const Viewer& vw, const ClusterSet& cs, std::size_t& compared,
-                                     std::size_t& robust, std::size_t& by_ecc_or_vel) {
+void expect_kernel_matches_reference(const Viewer& vw, const ClusterSet& cs, std::size_t& compared, std::size_t& robust,
+                                     std::size_t& by_ecc_or_vel) {
   const detail::ClusterFrame f = detail::make_cluster_frame(vw);
   for (std::size_t k = 0; k < cs.mesh_count(); ++k) {
     const detail::ClusterMeshFrame m = detail::make_cluster_mesh_frame(vw, cs, k);
@@ -209,8 +210,8 @@ void expect_kernel_matches_reference(const Viewer& vw, const ClusterSet& cs, std
       const detail::RecordInput in =
           parent ? detail::RecordInput{cs.parent_center_x_m.data(), cs.parent_center_y_m.data(),
                                        cs.parent_center_z_m.data(), cs.parent_radius_m.data(), cs.parent_error_m.data()}
-                 : detail::RecordInput{cs.self_center_x_m.data(), cs.self_center_y_m.data(),
-                                       cs.self_center_z_m.data(), cs.self_radius_m.data(), cs.self_error_m.data()};
+                 : detail::RecordInput{cs.self_center_x_m.data(), cs.self_center_y_m.data(), cs.self_center_z_m.data(),
+                                       cs.self_radius_m.data(), cs.self_error_m.data()};
       const std::size_t end = std::size_t{cs.mesh_first_cluster[k]} + cs.mesh_cluster_count[k];
       for (std::size_t base = cs.mesh_first_cluster[k]; base < end; base += detail::kClusterBlock) {
         const std::size_t n = std::min(detail::kClusterBlock, end - base);
@@ -220,14 +221,13 @@ void expect_kernel_matches_reference(const Viewer& vw, const ClusterSet& cs, std
         detail::evaluate_records(f, m, in, base, n, true, detail::RecordScreen::trivial, nullptr, trivial);
         for (std::size_t j = 0; j < n; ++j) {
           const test::RecordRef ref = test::reference_record(vw, cs, base + j, parent);
-          const bool kc = full.combined[j] > 0.5f, ks = full.size[j] > 0.5f,
-                     ke = full.eccentricity[j] > 0.5f, kv = full.velocity[j] > 0.5f;
+          const bool kc = full.combined[j] > 0.5f, ks = full.size[j] > 0.5f, ke = full.eccentricity[j] > 0.5f,
+                     kv = full.velocity[j] > 0.5f;
           const auto where = [&]() {
-            return "record " + std::to_string(base + j) + (parent ? " (parent)" : " (self)") +
-                   ": E " + std::to_string(ref.ecc_deg) + " / " + std::to_string(full.ecc_deg[j]) +
-                   ", v " + std::to_string(ref.vel_dps) + " / " + std::to_string(full.vel_dps[j]) +
-                   ", d " + std::to_string(ref.near_m) + " / " + std::to_string(full.near_m[j]) +
-                   " (exact / kernel)";
+            return "record " + std::to_string(base + j) + (parent ? " (parent)" : " (self)") + ": E " +
+                   std::to_string(ref.ecc_deg) + " / " + std::to_string(full.ecc_deg[j]) + ", v " +
+                   std::to_string(ref.vel_dps) + " / " + std::to_string(full.vel_dps[j]) + ", d " +
+                   std::to_string(ref.near_m) + " / " + std::to_string(full.near_m[j]) + " (exact / kernel)";
           };
           ASSERT_EQ(screened.combined[j], full.combined[j]) << where();
           ASSERT_EQ(screened.size[j], full.size[j]) << where();
@@ -293,7 +293,7 @@ TEST(ClusterSelect, KernelNeverCoarserOnAdversarialRecords) {
       glm::dvec3 toward = dir();
       double r = i % 7 == 0 ? 0.0 : d * std::pow(10.0, 6.3 * u(rng) - 6);
       if (i % 5 == 1) r = d / (1.0 + std::pow(10.0, 5 * u(rng) - 7));  // eye just outside
-      if (i % 5 == 2) {  // the gaze grazing the sphere
+      if (i % 5 == 2) {                                                // the gaze grazing the sphere
         r = d * 0.3 * u(rng);
         const double a = std::asin(r / d) + (u(rng) - 0.5) * 1e-5;
         const glm::dvec3 side = glm::normalize(glm::cross(vw.gaze_direction, dir()));
@@ -302,7 +302,8 @@ TEST(ClusterSelect, KernelNeverCoarserOnAdversarialRecords) {
       const glm::dvec3 c = vw.eye_position_m + d * toward;
       const double e = i % 11 == 0 ? 0.0 : i % 13 == 0 ? double(kNoParentError) : std::pow(10.0, 10 * u(rng) - 9);
       const double vals[5] = {c.x, c.y, c.z, r, e};
-      for (int k = 0; k < 5; ++k) f[k].push_back(static_cast<float>(vals[k])), f[5 + k].push_back(static_cast<float>(vals[k]));
+      for (int k = 0; k < 5; ++k)
+        f[k].push_back(static_cast<float>(vals[k])), f[5 + k].push_back(static_cast<float>(vals[k]));
     }
     if (trial % 2) {  // pursuit of record 3: the gaze turns with it
       const glm::dvec3 r3 = glm::dvec3{f[0][3], f[1][3], f[2][3]} - vw.eye_position_m;
@@ -330,13 +331,14 @@ TEST(ClusterSelect, ChainSelectsTheLevelOfSelectLods) {
   const auto chain_of_radius = [&](float radius_m) {
     ClusterHierarchy chain;
     for (std::size_t k = 0; k < n; ++k) {
-      for (auto* v : {&chain.self_center_x_m, &chain.self_center_y_m, &chain.self_center_z_m,
-                      &chain.parent_center_x_m, &chain.parent_center_y_m, &chain.parent_center_z_m})
+      for (auto* v : {&chain.self_center_x_m, &chain.self_center_y_m, &chain.self_center_z_m, &chain.parent_center_x_m,
+                      &chain.parent_center_y_m, &chain.parent_center_z_m})
         v->push_back(0.0f);
       chain.self_radius_m.push_back(radius_m), chain.parent_radius_m.push_back(radius_m);
       chain.self_error_m.push_back(static_cast<float>(err[k]));
       chain.parent_error_m.push_back(k + 1 < n ? static_cast<float>(err[k + 1]) : kNoParentError);
-      chain.first_index.push_back(0), chain.index_count.push_back(0), chain.depth.push_back(static_cast<std::uint8_t>(k));
+      chain.first_index.push_back(0), chain.index_count.push_back(0),
+          chain.depth.push_back(static_cast<std::uint8_t>(k));
     }
     return chain;
   };
@@ -403,11 +405,12 @@ TEST(ClusterSelect, GazingAtAClusterNeverCoarsensIt) {
   for (int trial = 0; trial < 300; ++trial) {
     Viewer vw = random_viewer(rng, cs);
     const std::size_t m = trial % 2, node_cluster = sc.store.first_cluster(static_cast<std::uint32_t>(m)) +
-                                                   rng() % sc.trees[m].h.size();
+                                                    rng() % sc.trees[m].h.size();
     Out before(cs.size()), after(cs.size());
     ASSERT_EQ(select_clusters(vw, cs, before.combined_only()), "");
     vw.gaze_direction = glm::dvec3{cs.self_center_x_m[node_cluster], cs.self_center_y_m[node_cluster],
-                                   cs.self_center_z_m[node_cluster]} - vw.eye_position_m;
+                                   cs.self_center_z_m[node_cluster]} -
+                        vw.eye_position_m;
     if (!(glm::length(vw.gaze_direction) > 0.0)) continue;
     ASSERT_EQ(select_clusters(vw, cs, after.combined_only()), "");
     // The cluster's node and every leaf under it: a node above it drawn after only where that
@@ -450,10 +453,18 @@ TEST(ClusterSelect, SwitchingCriteriaOffNeverCoarsensAndCombinedIsAtLeastEachAlo
       if (!all.drawn[i]) continue;
       const auto why = static_cast<Criterion>(all.why[i]);
       ++by[all.why[i] < 5 ? all.why[i] : 0];
-      if (why == Criterion::none) { EXPECT_EQ(cs.self_error_m[i], 0.0f) << i; }
-      if (why == Criterion::size) { EXPECT_EQ(all.s[i], 1) << i; }
-      if (why == Criterion::eccentricity) { EXPECT_EQ(all.e[i], 1) << i; }
-      if (why == Criterion::velocity) { EXPECT_EQ(all.v[i], 1) << i; }
+      if (why == Criterion::none) {
+        EXPECT_EQ(cs.self_error_m[i], 0.0f) << i;
+      }
+      if (why == Criterion::size) {
+        EXPECT_EQ(all.s[i], 1) << i;
+      }
+      if (why == Criterion::eccentricity) {
+        EXPECT_EQ(all.e[i], 1) << i;
+      }
+      if (why == Criterion::velocity) {
+        EXPECT_EQ(all.v[i], 1) << i;
+      }
     }
     for (int mask = 0; mask < 7; ++mask) {
       Viewer off = on;

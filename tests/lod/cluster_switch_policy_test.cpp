@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The cluster switch policy: a held cut stays consistent after every step of a random gaze walk
 // and is never coarser than the perceptual cut; per record, coarsening waits for the hold (and
 // for suppression), refinement is immediate; reset and validation.
@@ -52,9 +53,9 @@ TEST(ClusterSwitchPolicy, HeldCutStaysConsistentOnARandomGazeWalk) {
   std::vector<int> last_held;
   for (int frame = 0; frame < 1500; ++frame) {
     double t = frame / 72.0;
-    if (frame == 700) t = kNaN;      // a frame without a clock
-    if (frame >= 900) t -= 0.5;      // the clock steps back once
-    if (u(rng) > 0.97) {             // a saccade: a new target, a few suppressed frames
+    if (frame == 700) t = kNaN;  // a frame without a clock
+    if (frame >= 900) t -= 0.5;  // the clock steps back once
+    if (u(rng) > 0.97) {         // a saccade: a new target, a few suppressed frames
       target = {cs.self_center_x_m[rng() % n], 0.0, cs.self_center_z_m[rng() % n]};
       suppressed_left = 4;
     }
@@ -80,8 +81,8 @@ TEST(ClusterSwitchPolicy, HeldCutStaysConsistentOnARandomGazeWalk) {
     for (std::size_t li = 0; li < last_held.size(); ++li) coarsened += held_levels[li] > last_held[li];
     last_held = held_levels;
   }
-  EXPECT_GT(differ, 1000u);   // the policy held detail back often
-  EXPECT_GT(coarsened, 100u); // and still coarsened
+  EXPECT_GT(differ, 1000u);    // the policy held detail back often
+  EXPECT_GT(coarsened, 100u);  // and still coarsened
 }
 
 // Two clusters: a source cluster under a top one. Bits: the source's self error (0) always
@@ -155,7 +156,8 @@ TEST(ClusterSwitchPolicy, RefusesBadConfigAndLengths) {
   std::vector<std::uint8_t> short_drawn(1);
   EXPECT_NE(apply_cluster_switch_policy({}, 0.0, false, bits, st.s(), short_drawn, st.why), "");
   std::vector<double> short_start(1);
-  EXPECT_NE(apply_cluster_switch_policy({}, 0.0, false, bits, {st.held, short_start, st.parent_start}, st.drawn, {}), "");
+  EXPECT_NE(apply_cluster_switch_policy({}, 0.0, false, bits, {st.held, short_start, st.parent_start}, st.drawn, {}),
+            "");
   EXPECT_EQ(st.held, before);
 }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Synthetic hierarchies (see cluster_test_hierarchy.hpp).
 #include "tests/lod/cluster_test_hierarchy.hpp"
 
@@ -39,10 +40,9 @@ TestTree make_tree(const TreeSpec& spec, std::uint64_t seed) {
   std::vector<std::vector<int>> parent_of(1);  // per level, each node's parent index above
   for (int i = 0; i < side; ++i)
     for (int j = 0; j < (spec.grid ? side : 1); ++j)
-      level[0].push_back({i * spec.spacing_m + 0.2 * spec.spacing_m * (u(rng) - 0.5),
-                          0.3 * spec.spacing_m * (u(rng) - 0.5),
-                          j * spec.spacing_m + 0.2 * spec.spacing_m * (u(rng) - 0.5),
-                          spec.spacing_m * (0.3 + 0.5 * u(rng)), 0.0});
+      level[0].push_back(
+          {i * spec.spacing_m + 0.2 * spec.spacing_m * (u(rng) - 0.5), 0.3 * spec.spacing_m * (u(rng) - 0.5),
+           j * spec.spacing_m + 0.2 * spec.spacing_m * (u(rng) - 0.5), spec.spacing_m * (0.3 + 0.5 * u(rng)), 0.0});
   for (int k = 1, n = side / 2; k <= spec.levels; ++k, n /= 2) {
     const std::vector<Record>& below = level.back();
     const int below_n = 2 * n;
@@ -78,8 +78,7 @@ TestTree make_tree(const TreeSpec& spec, std::uint64_t seed) {
 
   TestTree t;
   std::vector<int> first_node(level.size() + 1, 0);
-  for (std::size_t k = 0; k < level.size(); ++k)
-    first_node[k + 1] = first_node[k] + static_cast<int>(level[k].size());
+  for (std::size_t k = 0; k < level.size(); ++k) first_node[k + 1] = first_node[k] + static_cast<int>(level[k].size());
   t.node_parent.resize(first_node.back());
   t.node_clusters.resize(first_node.back());
   for (std::size_t k = 0; k < level.size(); ++k)
@@ -102,8 +101,7 @@ TestTree make_tree(const TreeSpec& spec, std::uint64_t seed) {
 std::string check_cut(const TestTree& t, std::span<const std::uint8_t> drawn) {
   for (std::size_t n = 0; n < t.node_clusters.size(); ++n)
     for (std::uint32_t c : t.node_clusters[n])
-      if (drawn[c] != drawn[t.node_clusters[n][0]])
-        return "node " + std::to_string(n) + ": its clusters disagree";
+      if (drawn[c] != drawn[t.node_clusters[n][0]]) return "node " + std::to_string(n) + ": its clusters disagree";
   for (int leaf : t.leaves) {
     int count = 0;
     for (int n = leaf; n >= 0; n = t.node_parent[n]) count += drawn[t.node_clusters[n][0]];

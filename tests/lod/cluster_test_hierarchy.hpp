@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Synthetic cluster hierarchies for the cluster-selection tests, built the way a bake would:
 // source clusters (error 0, their own spheres) over a line or a grid, grouped by 2 (line) or
 // 4 (grid) per level, each group's record enclosing its members' spheres with an error no
@@ -17,11 +18,11 @@
 namespace gazelod::lod::test {
 
 struct TreeSpec {
-  int levels = 6;            // groups above the source clusters
-  bool grid = false;         // 4 per group over a square grid, else 2 per group over a line
-  int outputs_per_group = 1; // clusters a group produces (source clusters: always 1)
-  double spacing_m = 0.4;    // between source clusters
-  double leaf_error_m = 0.0005;  // scale of the first group's error
+  int levels = 6;                   // groups above the source clusters
+  bool grid = false;                // 4 per group over a square grid, else 2 per group over a line
+  int outputs_per_group = 1;        // clusters a group produces (source clusters: always 1)
+  double spacing_m = 0.4;           // between source clusters
+  double leaf_error_m = 0.0005;     // scale of the first group's error
   double equal_error_chance = 0.1;  // a group's error equal to its largest member's
 };
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Foveal cone: widened by the tracker's error, clamped, NaN includes everything.
 #include "lod/cone.hpp"
 

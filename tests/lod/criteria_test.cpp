@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Per-object criteria: the geometric hard cases (gaze through the centre, eye inside the
 // sphere, object behind the eye, tiny angles) and retinal velocity.
 #include "tests/lod/reference_criteria.hpp"
@@ -49,7 +50,9 @@ TEST(Criteria, AngularRadiusJustOutside) {
   EXPECT_EQ(angular_radius_rad(10.0, 0.0), 0.0);
 }
 
-TEST(Criteria, PixelDiameter) { EXPECT_DOUBLE_EQ(pixel_diameter_px(1.0, 20.0), 40.0); }
+TEST(Criteria, PixelDiameter) {
+  EXPECT_DOUBLE_EQ(pixel_diameter_px(1.0, 20.0), 40.0);
+}
 
 TEST(Criteria, HeadRotationSweepsStaticObjects) {
   // 100 deg/s yaw: a static object ahead moves at 100 deg/s on the retina (eyes fixed in head).

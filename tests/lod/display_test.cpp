@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Displays: xi per axis, presets, validation, FOV near 0 and near 180 deg.
 #include "lod/acuity.hpp"
 #include "lod/display.hpp"
@@ -11,8 +12,8 @@ namespace gazelod::lod {
 namespace {
 
 TEST(Display, AllPresetsPresentAndValid) {
-  for (const char* name : {"desktop", "iglasses", "quest3", "questpro", "index", "viveproeye",
-                           "varjoxr4", "visionpro", "psvr2", "pimaxcrystal"}) {
+  for (const char* name : {"desktop", "iglasses", "quest3", "questpro", "index", "viveproeye", "varjoxr4", "visionpro",
+                           "psvr2", "pimaxcrystal"}) {
     const DisplaySpec* d = find_display_preset(name);
     ASSERT_NE(d, nullptr) << name;
     EXPECT_EQ(validate_display(*d), "") << name;

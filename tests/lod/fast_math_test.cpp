@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The selection loop's atan2 and log10 against libm, including tiny angles.
 #include "lod/fast_math.hpp"
 
@@ -10,7 +11,9 @@ namespace gazelod::lod {
 namespace {
 
 // atan2 through the half-angle form, with the length computed as the kernel has it.
-double atan2_fast(double y, double x) { return fast::atan2_with_norm(y, x, std::hypot(x, y)); }
+double atan2_fast(double y, double x) {
+  return fast::atan2_with_norm(y, x, std::hypot(x, y));
+}
 
 TEST(FastMath, Atan2MatchesLibmEverywhere) {
   std::mt19937_64 rng(7);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The exact per-record rule (see reference_cluster_select.hpp).
 #include "tests/lod/reference_cluster_select.hpp"
 
@@ -26,8 +27,8 @@ struct Decisions {
   bool combined, size, eccentricity, velocity;
 };
 
-Decisions decide(const Viewer& vw, double ecc, double vel, double near, double cap, double e,
-                 double slack_rel, double slack_cpd) {
+Decisions decide(const Viewer& vw, double ecc, double vel, double near, double cap, double e, double slack_rel,
+                 double slack_cpd) {
   const double s = vw.scale, xi = vw.xi_cpd;
   const auto a = [&](double v, double ecc_deg) {
     return acuity_cpd(v, ecc_deg, xi, s) * (1.0 + slack_rel) + slack_cpd;
@@ -44,16 +45,16 @@ Decisions decide(const Viewer& vw, double ecc, double vel, double near, double c
 
 }  // namespace
 
-RecordRef reference_record(const Viewer& vw, const glm::dvec3& mesh_vel, double finest,
-                           const glm::dvec3& c, double rho, double e) {
+RecordRef reference_record(const Viewer& vw, const glm::dvec3& mesh_vel, double finest, const glm::dvec3& c, double rho,
+                           double e) {
   const double floor_m = detail::kNearFloorM;
   const glm::dvec3 w = vw.head_angular_velocity_rad_s + vw.gaze_angular_velocity_in_head_rad_s;
   const double dist = glm::length(c - vw.eye_position_m);
   const bool near = !(dist - rho > floor_m);
   RecordRef r;
   r.near_m = near ? floor_m : dist - rho;
-  r.ecc_deg = std::max(0.0, nearest_point_eccentricity_deg(vw.eye_position_m, vw.gaze_direction, c, rho) -
-                                vw.tracker_error_deg);
+  r.ecc_deg = std::max(
+      0.0, nearest_point_eccentricity_deg(vw.eye_position_m, vw.gaze_direction, c, rho) - vw.tracker_error_deg);
   // The centre's retinal velocity lowered to the sphere's slowest point (cluster_select.hpp).
   const double speed = glm::length(mesh_vel - vw.eye_velocity_m_s), spin = glm::length(w);
   const double v_centre = retinal_velocity_dps(vw.eye_position_m, vw.eye_velocity_m_s, w, c, mesh_vel);
@@ -92,8 +93,8 @@ RecordRef reference_record(const Viewer& vw, const ClusterSet& cs, std::size_t i
                             {cs.parent_center_x_m[i], cs.parent_center_y_m[i], cs.parent_center_z_m[i]},
                             cs.parent_radius_m[i], cs.parent_error_m[i]);
   return reference_record(vw, vel, cs.mesh_finest_error_m[mesh],
-                          {cs.self_center_x_m[i], cs.self_center_y_m[i], cs.self_center_z_m[i]},
-                          cs.self_radius_m[i], cs.self_error_m[i]);
+                          {cs.self_center_x_m[i], cs.self_center_y_m[i], cs.self_center_z_m[i]}, cs.self_radius_m[i],
+                          cs.self_error_m[i]);
 }
 
 }  // namespace gazelod::lod::test

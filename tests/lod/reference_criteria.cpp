@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Exact per-object criteria (see criteria.hpp).
 #include "tests/lod/reference_criteria.hpp"
 
@@ -20,8 +21,8 @@ double pixel_diameter_px(double angular_radius_deg, double px_per_deg) {
   return std::max(0.0, 2.0 * angular_radius_deg * px_per_deg);
 }
 
-double nearest_point_eccentricity_deg(const glm::dvec3& eye_m, const glm::dvec3& gaze_dir,
-                                      const glm::dvec3& center_m, double radius_m) {
+double nearest_point_eccentricity_deg(const glm::dvec3& eye_m, const glm::dvec3& gaze_dir, const glm::dvec3& center_m,
+                                      double radius_m) {
   const glm::dvec3 r = center_m - eye_m;
   const double d = glm::length(r);
   if (!(d > radius_m)) return 0.0;  // eye inside or on the sphere
@@ -30,8 +31,8 @@ double nearest_point_eccentricity_deg(const glm::dvec3& eye_m, const glm::dvec3&
 }
 
 double retinal_velocity_dps(const glm::dvec3& eye_m, const glm::dvec3& eye_velocity_m_s,
-                            const glm::dvec3& gaze_angular_velocity_rad_s,
-                            const glm::dvec3& center_m, const glm::dvec3& object_velocity_m_s) {
+                            const glm::dvec3& gaze_angular_velocity_rad_s, const glm::dvec3& center_m,
+                            const glm::dvec3& object_velocity_m_s) {
   const glm::dvec3 r = center_m - eye_m;
   const double d2 = glm::dot(r, r);
   if (!(d2 > 0.0)) return 0.0;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Per-object selection: agreement with an exact scalar reference on random scenes, the
 // criteria switches, hard inputs, and monotonicity of the chosen level.
 #include "lod/acuity.hpp"
@@ -51,8 +52,8 @@ Ref reference(const Viewer& vw, const glm::dvec3& c, double r, const glm::dvec3&
   const double d = glm::length(c - vw.eye_position_m);
   // The detail's size is seen from the sphere's nearest point (lod/lod_chain.hpp).
   const double d_near = std::max(d - r, kNearestPointFloorM);
-  double e = std::max(0.0, nearest_point_eccentricity_deg(vw.eye_position_m, vw.gaze_direction, c, r) -
-                               vw.tracker_error_deg);
+  double e =
+      std::max(0.0, nearest_point_eccentricity_deg(vw.eye_position_m, vw.gaze_direction, c, r) - vw.tracker_error_deg);
   double v = retinal_velocity_dps(vw.eye_position_m, vw.eye_velocity_m_s,
                                   vw.head_angular_velocity_rad_s + vw.gaze_angular_velocity_in_head_rad_s, c, vel);
   if (!vw.use_eccentricity) e = 0;
@@ -186,11 +187,22 @@ TEST(Select, SwitchingOffNeverLowersDetailAndCombinedIsAtLeastEachAlone) {
     ASSERT_GE(on.lod[i], std::max({on.s[i], on.e[i], on.v[i]}));
     ASSERT_LT(on.lod[i], sc.chains[i].size());
     const auto why = static_cast<Criterion>(on.why[i]);
-    if (on.lod[i] == 0) { EXPECT_EQ(why, Criterion::none); }
-    if (why == Criterion::size) { EXPECT_EQ(on.s[i], on.lod[i]); ++by_size; }
-    if (why == Criterion::eccentricity) { EXPECT_EQ(on.e[i], on.lod[i]); }
-    if (why == Criterion::velocity) { EXPECT_EQ(on.v[i], on.lod[i]); }
-    if (why == Criterion::combined) { EXPECT_GT(on.lod[i], std::max({on.s[i], on.e[i], on.v[i]})); }
+    if (on.lod[i] == 0) {
+      EXPECT_EQ(why, Criterion::none);
+    }
+    if (why == Criterion::size) {
+      EXPECT_EQ(on.s[i], on.lod[i]);
+      ++by_size;
+    }
+    if (why == Criterion::eccentricity) {
+      EXPECT_EQ(on.e[i], on.lod[i]);
+    }
+    if (why == Criterion::velocity) {
+      EXPECT_EQ(on.v[i], on.lod[i]);
+    }
+    if (why == Criterion::combined) {
+      EXPECT_GT(on.lod[i], std::max({on.s[i], on.e[i], on.v[i]}));
+    }
   }
   EXPECT_GT(by_size, 0u);
 }
@@ -235,7 +247,7 @@ TEST(SelectHardCases, EyeInsideBoundingSphere) {
   Viewer vw;
   const One o = select_one(vw, {0, 0, -0.5}, 2.0, {});
   EXPECT_EQ(o.ecc, 0.0f);
-  EXPECT_EQ(o.lod, 0);  // fills the view: full detail
+  EXPECT_EQ(o.lod, 0);                                                  // fills the view: full detail
   EXPECT_EQ(select_one(vw, {0, 0, 0}, 2.0, {}, error_chain()).lod, 0);  // centre at the eye
 }
 
@@ -329,8 +341,9 @@ TEST(SelectValidation, ChainsRefusedAtRegistration) {
   t[2].triangles = t[1].triangles;
   EXPECT_EQ(validate_chain(t), "");
   t[3].triangles = t[2].triangles + 1;
-  EXPECT_EQ(validate_chain(t), "level 3: has more triangles (501) than level 2 (500): triangle counts must not "
-                               "increase along the chain");
+  EXPECT_EQ(validate_chain(t),
+            "level 3: has more triangles (501) than level 2 (500): triangle counts must not "
+            "increase along the chain");
   EXPECT_THROW(st.add({0, 0, -1}, 1, {}, t), std::invalid_argument);
 }
 
@@ -417,8 +430,8 @@ TEST(SelectMonotone, LowerScaleNeverMoreDetail) {
 // than 8 levels (a scalar loop), single-level chains, a count that is not a multiple of the
 // block size, and static objects (no velocity arrays).
 std::vector<LodLevel> chain_of(std::size_t levels, bool cycles) {
-  std::vector<LodLevel> c{{1000, 0, cycles ? DetailKind::removed_cycles_per_diameter
-                                           : DetailKind::geometric_error_m, 0.0}};
+  std::vector<LodLevel> c{
+      {1000, 0, cycles ? DetailKind::removed_cycles_per_diameter : DetailKind::geometric_error_m, 0.0}};
   for (std::size_t k = 1; k < levels; ++k)
     c.push_back({100, 0, c[0].detail_kind,
                  cycles ? 600.0 / std::pow(1.6, double(k - 1)) : 0.001 * std::pow(1.7, double(k - 1))});

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The switch policy: refinement at once, coarsening after the hold to the finest level allowed
 // in the window, suppression preferred with a bounded deferral, the flicker case, reset,
 // validation, non-finite time, and a seeded randomized check of the invariants.
@@ -20,8 +21,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // n objects' caller-owned state, reset to level 0.
 struct Objects {
-  explicit Objects(std::size_t n, std::uint8_t level = 0)
-      : drawn(n), finest(n), start(n), held(n, 0xff) {
+  explicit Objects(std::size_t n, std::uint8_t level = 0) : drawn(n), finest(n), start(n), held(n, 0xff) {
     EXPECT_EQ(reset_switch_state(state(), level), "");
   }
   SwitchState state() { return {drawn, finest, start}; }
@@ -95,7 +95,7 @@ TEST(SwitchPolicy, SteadyCoarserLevelReachedAfterHold) {
 TEST(SwitchPolicy, CoarsensToFinestLevelAllowedDuringWindow) {
   const SwitchPolicyConfig c = no_suppression(0.25);
   Objects o(1);
-  const double dt = 1.0 / 16;  // exact in binary
+  const double dt = 1.0 / 16;                  // exact in binary
   const std::uint8_t seq[] = {3, 1, 2, 3, 2};  // all coarser than 0: the window stays open
   for (int k = 0; k < 5; ++k) {
     o.frame(c, k * dt, false, seq[k]);
@@ -145,7 +145,7 @@ TEST(SwitchPolicy, SuppressedFrameCoarsensAtOnceByDefault) {
 }
 
 TEST(SwitchPolicy, SuppressedFrameReleasesCoarseningOnceHoldHasPassed) {
-  SwitchPolicyConfig c;  // hold 0.2, deferral 1.0, prefer suppression
+  SwitchPolicyConfig c;                    // hold 0.2, deferral 1.0, prefer suppression
   c.suppressed_hold_s = c.coarsen_hold_s;  // the full hold in suppression too
   Objects o(1);
   o.frame(c, 0.0, false, 2);
@@ -237,8 +237,7 @@ TEST(SwitchPolicy, ResetDrawsLevelWithNoWindowOpen) {
   }
   // One object: a state of one-entry subspans.
   const SwitchState s = o.state();
-  ASSERT_EQ(reset_switch_state({s.drawn.subspan(1, 1), s.finest_allowed.subspan(1, 1),
-                                s.window_start_s.subspan(1, 1)}),
+  ASSERT_EQ(reset_switch_state({s.drawn.subspan(1, 1), s.finest_allowed.subspan(1, 1), s.window_start_s.subspan(1, 1)}),
             "");
   EXPECT_EQ(o.drawn, (std::vector<std::uint8_t>{2, 0, 2, 2}));
   // A caller-written inconsistent entry (window "open" but finest not coarser than drawn)
@@ -266,17 +265,13 @@ TEST(SwitchPolicy, SizeMismatchRefusedAndNothingWritten) {
   const std::vector<std::uint8_t> lod4(4, 0), lod3(3, 0);
   std::vector<std::uint8_t> held2(2, 0xff);
   const SwitchPolicyConfig c = no_suppression(0.0);
-  EXPECT_NE(apply_switch_policy(c, 0.0, false, lod4, o.state(), o.held).find("state.drawn"),
-            std::string::npos);
-  EXPECT_NE(apply_switch_policy(c, 0.0, false, lod3, o.state(), held2).find("held"),
-            std::string::npos);
+  EXPECT_NE(apply_switch_policy(c, 0.0, false, lod4, o.state(), o.held).find("state.drawn"), std::string::npos);
+  EXPECT_NE(apply_switch_policy(c, 0.0, false, lod3, o.state(), held2).find("held"), std::string::npos);
   SwitchState s = o.state();
   s.window_start_s = s.window_start_s.first(2);
-  EXPECT_NE(apply_switch_policy(c, 0.0, false, lod3, s, o.held).find("window_start_s"),
-            std::string::npos);
+  EXPECT_NE(apply_switch_policy(c, 0.0, false, lod3, s, o.held).find("window_start_s"), std::string::npos);
   s = o.state(), s.finest_allowed = s.finest_allowed.first(1);
-  EXPECT_NE(apply_switch_policy(c, 0.0, false, lod3, s, o.held).find("finest_allowed"),
-            std::string::npos);
+  EXPECT_NE(apply_switch_policy(c, 0.0, false, lod3, s, o.held).find("finest_allowed"), std::string::npos);
   EXPECT_NE(reset_switch_state(s, 3), "");
   EXPECT_EQ(o.drawn, drawn);
   EXPECT_EQ(o.finest, finest);
@@ -287,9 +282,8 @@ TEST(SwitchPolicy, SizeMismatchRefusedAndNothingWritten) {
 TEST(SwitchPolicy, InvalidConfigRefused) {
   Objects o(1);
   const std::vector<std::uint8_t> lod{2};
-  for (const SwitchPolicyConfig& c :
-       {SwitchPolicyConfig{-0.1, 1.0, true}, SwitchPolicyConfig{kNaN, 1.0, true},
-        SwitchPolicyConfig{0.2, kInf, true}, SwitchPolicyConfig{0.2, -1.0, false}}) {
+  for (const SwitchPolicyConfig& c : {SwitchPolicyConfig{-0.1, 1.0, true}, SwitchPolicyConfig{kNaN, 1.0, true},
+                                      SwitchPolicyConfig{0.2, kInf, true}, SwitchPolicyConfig{0.2, -1.0, false}}) {
     EXPECT_NE(validate_switch_config(c), "");
     EXPECT_NE(apply_switch_policy(c, 0.0, false, lod, o.state(), o.held), "");
   }
@@ -372,8 +366,10 @@ TEST(SwitchPolicyProperty, NeverCoarserThanWindowMinimumAndRateBounded) {
     for (int k = 0; k < frames; ++k) {
       t += (1.0 / 90.0) * (0.5 + u(rng));
       const double tf = u(rng) < 0.02 ? kNaN : t;  // a few frames without a valid time
-      if (suppress_left > 0) --suppress_left;
-      else if (u(rng) < 0.03) suppress_left = 3 + static_cast<int>(u(rng) * 6);
+      if (suppress_left > 0)
+        --suppress_left;
+      else if (u(rng) < 0.03)
+        suppress_left = 3 + static_cast<int>(u(rng) * 6);
       const bool suppressed = suppress_left > 0;
       for (std::size_t i = 0; i < n; ++i) {
         if (u(rng) < 0.01) base[i] = std::floor(u(rng) * 5.0);
@@ -399,8 +395,7 @@ TEST(SwitchPolicyProperty, NeverCoarserThanWindowMinimumAndRateBounded) {
         const bool timed = std::isfinite(tf) && std::isfinite(run_start[i]);
         const double elapsed = timed ? tf - run_start[i] : -1.0;
         const bool due = timed && elapsed >= c.coarsen_hold_s &&
-                         (suppressed || !c.prefer_suppression ||
-                          elapsed >= c.coarsen_hold_s + c.max_deferral_s);
+                         (suppressed || !c.prefer_suppression || elapsed >= c.coarsen_hold_s + c.max_deferral_s);
         ASSERT_EQ(now > d, due) << trial << " " << k << " " << i << " " << elapsed;
         if (!due) {
           ASSERT_EQ(now, d);

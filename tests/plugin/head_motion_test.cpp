@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "plugin/head_motion.hpp"
 
 #include <gtest/gtest.h>
@@ -7,7 +8,9 @@
 namespace gazelod::plugin {
 namespace {
 
-glm::dquat about(const glm::dvec3& axis, double angle_rad) { return glm::angleAxis(angle_rad, glm::normalize(axis)); }
+glm::dquat about(const glm::dvec3& axis, double angle_rad) {
+  return glm::angleAxis(angle_rad, glm::normalize(axis));
+}
 
 TEST(HeadMotion, ConstantYawRateIsRecovered) {
   const double rate = glm::radians(120.0);  // deg/s

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """pytest fixtures of the Python package's tests; the helpers are in support.py."""
 import pytest
 

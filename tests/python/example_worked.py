@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The worked example of docs/python.md (the same code; tests/python/test_docs_example.py runs it
 and checks that the document still carries it word for word).
 

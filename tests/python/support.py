@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Shared helpers of the Python package's tests (tests/python/, registered by CMakeLists.txt).
 
 CTest passes GAZELOD_SOURCE_DIR (the repository) and GAZELOD_PROGRAM (the gazelod program) and

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """gazelod.hmds, thresholds and compare: their structure, and agreement with each other and
 with the gazelod program's `hmds --json` and `thresholds --json`."""
 import os

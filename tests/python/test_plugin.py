@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """gazelod.Plugin (the C ABI's data mode) on bad input: ValueError with the library's
 "gazelod: ..." message (and the gzl_result), never a crash; the plugin stays usable."""
 import numpy as np

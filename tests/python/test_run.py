@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """gazelod.run against the gazelod program's `run --no-render`, replaying a real recording on two
 HMDs, its progress callback, and Ctrl-C (KeyboardInterrupt) in a long run."""
 import csv

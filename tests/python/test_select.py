@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """gazelod.select on numpy arrays against the C++ selection inside the C ABI's data-mode plugin
 (gazelod.Plugin, include/gazelod/gazelod.h): the same objects and viewer give the same levels,
 bit for bit; and bad input to either raises, never crashes."""

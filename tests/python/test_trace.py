@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """gazelod.read_trace and gazelod.classify against the gazelod program's `trace stats` and
 `trace convert` on the real recordings (../shared/data/gaze), and on malformed files."""
 import numpy as np

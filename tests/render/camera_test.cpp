@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // View and projection against hand-computed values (OpenXR's XrFovf convention, Vulkan clip
 // space with y down and depth 0..1).
 #include "render/camera.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // MeshLibrary::add_cluster_mesh: one mesh id per cluster over one shared vertex block (ranges,
 // bad input), and on lavapipe a cut drawn cluster by cluster, each in its depth's tint. Without
 // a Vulkan device the drawing cases skip with the reason.
@@ -22,8 +23,8 @@ namespace {
 // +Z): centre C and four corners; cluster 0 the two triangles left of x = 0, cluster 1 the two
 // right of it, counter-clockwise seen from +Z.
 struct Cap {
-  std::vector<glm::vec3> positions{{0.0f, 0.0f, 1.0f},  {0.6f, 0.0f, 0.8f},  {0.0f, 0.6f, 0.8f},
-                                   {-0.6f, 0.0f, 0.8f}, {0.0f, -0.6f, 0.8f}};
+  std::vector<glm::vec3> positions{
+      {0.0f, 0.0f, 1.0f}, {0.6f, 0.0f, 0.8f}, {0.0f, 0.6f, 0.8f}, {-0.6f, 0.0f, 0.8f}, {0.0f, -0.6f, 0.8f}};
   std::vector<std::uint32_t> indices{0, 2, 3, 0, 3, 4,   // left: C U L, C L D
                                      0, 1, 2, 0, 4, 1};  // right: C R U, C D R
   std::vector<std::uint32_t> first{0, 6}, count{6, 6};

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // FrameRenderer's draw merging (set_merge_draws): consecutive items under the same centre,
 // radius and tint whose index ranges follow each other become one draw, and the image is the
 // unmerged one pixel for pixel; with multiDrawIndirect (set_multi_draw), one indirect command
@@ -37,8 +38,8 @@ class RenderDrawMerge : public ::testing::Test {
     const MeshData m = make_sphere(sphere_resolution(4000));
     for (std::uint32_t f = 0; f < m.indices.size(); f += 3 * kTrianglesPerCluster) {
       first_index_.push_back(f);
-      index_count_.push_back(std::min<std::uint32_t>(3 * kTrianglesPerCluster,
-                                                     static_cast<std::uint32_t>(m.indices.size()) - f));
+      index_count_.push_back(
+          std::min<std::uint32_t>(3 * kTrianglesPerCluster, static_cast<std::uint32_t>(m.indices.size()) - f));
     }
     first_ = meshes_.add_cluster_mesh(m.positions, m.indices, first_index_, index_count_);
     meshes_.upload(device_->context());
@@ -130,10 +131,10 @@ TEST_F(RenderDrawMerge, OnlyFollowingRangesUnderTheSameConstantsMerge) {
   };
   EXPECT_EQ(draws({{c, 1.0f, first_, 0}, {c, 1.0f, first_ + 1, 0}, {c, 1.0f, first_ + 2, 0}}), 1u);
   EXPECT_EQ(renderer.triangles_last_frame(), 3u * kTrianglesPerCluster);
-  EXPECT_EQ(draws({{c, 1.0f, first_, 0}, {c, 1.0f, first_ + 1, 1}}), 2u);              // tint
-  EXPECT_EQ(draws({{c, 1.0f, first_, 0}, {c, 1.0f, first_ + 2, 0}}), 2u);              // a gap
-  EXPECT_EQ(draws({{c, 1.0f, first_ + 1, 0}, {c, 1.0f, first_, 0}}), 2u);              // backwards
-  EXPECT_EQ(draws({{c, 1.0f, first_, 0}, {c, 1.01f, first_ + 1, 0}}), 2u);             // radius
+  EXPECT_EQ(draws({{c, 1.0f, first_, 0}, {c, 1.0f, first_ + 1, 1}}), 2u);   // tint
+  EXPECT_EQ(draws({{c, 1.0f, first_, 0}, {c, 1.0f, first_ + 2, 0}}), 2u);   // a gap
+  EXPECT_EQ(draws({{c, 1.0f, first_ + 1, 0}, {c, 1.0f, first_, 0}}), 2u);   // backwards
+  EXPECT_EQ(draws({{c, 1.0f, first_, 0}, {c, 1.01f, first_ + 1, 0}}), 2u);  // radius
   // A culled item (behind the eye) between two following ranges does not split them.
   EXPECT_EQ(draws({{c, 1.0f, first_, 0}, {-c, 1.0f, first_ + 5, 0}, {c, 1.0f, first_ + 1, 0}}), 1u);
   // The stand-in sphere ends right where cluster 0 starts, but in another vertex block.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The foveal circle of the debug view: dots at the requested angle around the gaze, and where
 // they land in a rendered frame.
 #include "render/device_context.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Test-process helper: keeps Mesa's lavapipe ICD loaded for the whole run. Lavapipe keeps a
 // few static allocations that become unreachable when the Vulkan loader unloads the ICD at
 // vkDestroyInstance, which LeakSanitizer (the unit tests' ASan run) then reports as leaks of

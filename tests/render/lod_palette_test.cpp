@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // LOD tints: distinct per level, distinct from the background, readable back from pixels.
 #include "render/lod_palette.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Offscreen rendering on lavapipe: an object lands where the hand-computed projection says,
 // in its LOD tint, with depth, in every supported target format. Without a Vulkan device
 // every case skips with the reason (never passes silently).
@@ -151,8 +152,9 @@ TEST_F(OffscreenRender, FrameSavedAsPngReadsBackIdentically) {
   const DrawItem item{{1.0f, 0.0f, -4.0f}, 0.3f, sphere_, 4};
   renderer.draw(0, asymmetric_view(), std::span(&item, 1));
   const RgbaImage img = renderer.read_back(0);
-  const auto file = std::filesystem::temp_directory_path() /
-                    ("gazelod_render_test_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + ".png");
+  const auto file =
+      std::filesystem::temp_directory_path() /
+      ("gazelod_render_test_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + ".png");
   write_png(file, img);
   const RgbaImage back = read_png(file);
   std::filesystem::remove(file);

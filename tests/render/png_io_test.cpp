@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // PNG round trip and errors that name the file.
 #include "render/png_io.hpp"
 #include "render/render_error.hpp"

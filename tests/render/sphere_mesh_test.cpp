@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The stand-in LOD meshes: triangle counts near the requested ones, closed, outward-facing.
 #include "render/sphere_mesh.hpp"
 

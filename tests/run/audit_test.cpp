@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The visibility audit of `gazelod run` end to end on the simulated runtime: the simulator's
 // ground truth (Simulator::eye_truth_at), the audit's outputs and their consistency (summary.json
 // against frames.csv), what a perfect tracker gives, the --decisions file, and that the audit
@@ -25,15 +26,21 @@ constexpr const char* kPursued = "drone, \"blue\"";
 
 std::string scenario_json(bool perfect_tracker) {
   nlohmann::json objects = nlohmann::json::array();
-  objects.push_back({{"name", kPursued}, {"position_m", {-3.0, 0.0, -8.0}}, {"velocity_m_s", {1.5, 0.0, 0.0}},
+  objects.push_back({{"name", kPursued},
+                     {"position_m", {-3.0, 0.0, -8.0}},
+                     {"velocity_m_s", {1.5, 0.0, 0.0}},
                      {"radius_m", 0.3},
-                     {"lods", {{{"triangles", 20000}, {"vertices", 10002}, {"detail", 0}},
-                               {{"triangles", 5000}, {"vertices", 2502}, {"detail", 35.36}},
-                               {{"triangles", 1250}, {"vertices", 627}, {"detail", 17.68}},
-                               {{"triangles", 312}, {"vertices", 158}, {"detail", 8.83}}}}});
+                     {"lods",
+                      {{{"triangles", 20000}, {"vertices", 10002}, {"detail", 0}},
+                       {{"triangles", 5000}, {"vertices", 2502}, {"detail", 35.36}},
+                       {{"triangles", 1250}, {"vertices", 627}, {"detail", 17.68}},
+                       {{"triangles", 312}, {"vertices", 158}, {"detail", 8.83}}}}});
   nlohmann::json effects = {
       {{"type", "head_sweep"}, {"yaw_amplitude_deg", 15}, {"yaw_period_s", 4}},
-      {{"type", "saccades"}, {"fixation_min_ms", 150}, {"fixation_max_ms", 350}, {"amplitude_min_deg", 3},
+      {{"type", "saccades"},
+       {"fixation_min_ms", 150},
+       {"fixation_max_ms", 350},
+       {"amplitude_min_deg", 3},
        {"amplitude_max_deg", 15}},
       {{"type", "smooth_pursuit"}, {"object", kPursued}, {"gain", 0.9}, {"start_s", 1.5}, {"end_s", 2.5}}};
   if (!perfect_tracker) {
@@ -42,19 +49,26 @@ std::string scenario_json(bool perfect_tracker) {
     effects.push_back({{"type", "tracker_noise"}, {"std_deg", 0.3}});
     effects.push_back({{"type", "blinks"}, {"rate_per_min", 30}, {"duration_ms", 150}});
   }
-  nlohmann::json j = {
-      {"version", 1},
-      {"name", perfect_tracker ? "audit-perfect" : "audit"},
-      {"display", "questpro"},
-      {"duration_s", 3},
-      {"frame_rate_hz", 90},
-      {"seed", 5},
-      {"scene", {{"objects", objects},
-                 {"generators", {{{"type", "random_field"}, {"count", 80}, {"min_m", {-10, -3, -40}},
-                                  {"max_m", {10, 3, -4}}, {"radius_min_m", 0.2}, {"radius_max_m", 1.0},
-                                  {"lod_count", 4}, {"triangles", 20000}, {"triangle_ratio", 4},
-                                  {"forward_speed_m_s", 1.0}}}}}},
-      {"effects", effects}};
+  nlohmann::json j = {{"version", 1},
+                      {"name", perfect_tracker ? "audit-perfect" : "audit"},
+                      {"display", "questpro"},
+                      {"duration_s", 3},
+                      {"frame_rate_hz", 90},
+                      {"seed", 5},
+                      {"scene",
+                       {{"objects", objects},
+                        {"generators",
+                         {{{"type", "random_field"},
+                           {"count", 80},
+                           {"min_m", {-10, -3, -40}},
+                           {"max_m", {10, 3, -4}},
+                           {"radius_min_m", 0.2},
+                           {"radius_max_m", 1.0},
+                           {"lod_count", 4},
+                           {"triangles", 20000},
+                           {"triangle_ratio", 4},
+                           {"forward_speed_m_s", 1.0}}}}}},
+                      {"effects", effects}};
   return j.dump(2);
 }
 
@@ -71,9 +85,12 @@ std::vector<std::string> csv_fields(const std::string& line) {
   for (std::size_t i = 0; i < line.size(); ++i) {
     const char c = line[i];
     if (quoted) {
-      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') cells.back() += '"', ++i;
-      else if (c == '"') quoted = false;
-      else cells.back() += c;
+      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"')
+        cells.back() += '"', ++i;
+      else if (c == '"')
+        quoted = false;
+      else
+        cells.back() += c;
     } else if (c == '"') {
       quoted = true;
     } else if (c == ',') {
@@ -163,8 +180,10 @@ TEST(RunAudit, OutputsExistAndTheSummaryAddsUpFromFramesCsv) {
   const auto& v = a.at("visible_degradations");
   EXPECT_EQ(v.at("object_frames").get<std::int64_t>(), view_out);
   EXPECT_EQ(v.at("degraded").get<std::int64_t>(), deg_out);
-  EXPECT_NEAR(v.at("share").get<double>(), view_out > 0 ? static_cast<double>(deg_out) / static_cast<double>(view_out) : 0.0, 1e-12);
-  EXPECT_NEAR(v.at("excess_levels_mean").get<double>(), deg_out > 0 ? static_cast<double>(excess_out) / static_cast<double>(deg_out) : 0.0, 1e-12);
+  EXPECT_NEAR(v.at("share").get<double>(),
+              view_out > 0 ? static_cast<double>(deg_out) / static_cast<double>(view_out) : 0.0, 1e-12);
+  EXPECT_NEAR(v.at("excess_levels_mean").get<double>(),
+              deg_out > 0 ? static_cast<double>(excess_out) / static_cast<double>(deg_out) : 0.0, 1e-12);
   EXPECT_EQ(v.at("excess_levels_max").get<std::int64_t>(), max_out);
   EXPECT_EQ(a.at("suppressed_degradations").at("object_frames").get<std::int64_t>(), view_in);
   EXPECT_EQ(a.at("suppressed_degradations").at("degraded").get<std::int64_t>(), deg_in);
@@ -196,8 +215,8 @@ TEST(RunAudit, PerfectTrackerMeasured) {
   const auto dir = scratch_dir();
   const auto scenario = write_scenario(dir, true);
   use_simulated_runtime("");
-  const CliResult r = run_cli({"run", "--scenario", scenario.string(), "--no-render", "--out",
-                               (dir / "out").string(), "--quiet"});
+  const CliResult r =
+      run_cli({"run", "--scenario", scenario.string(), "--no-render", "--out", (dir / "out").string(), "--quiet"});
   ASSERT_EQ(r.rc, 0) << r.err;
   const auto a = nlohmann::json::parse(read_text(dir / "out" / "summary.json")).at("audit");
   ASSERT_TRUE(a.at("available").get<bool>());
@@ -216,8 +235,8 @@ TEST(RunAudit, DecisionsFileFormatAndTheAuditNeverChangesThem) {
                          (dir / "a").string(), "--quiet", "--decisions", with.string()});
   ASSERT_EQ(r.rc, 0) << r.err;
   EXPECT_NE(r.out.find(with.string()), std::string::npos) << r.out;
-  r = run_cli({"run", "--scenario", scenario.string(), "--no-render", "--frames", "150", "--out",
-               (dir / "b").string(), "--quiet", "--decisions", without.string(), "--no-audit"});
+  r = run_cli({"run", "--scenario", scenario.string(), "--no-render", "--frames", "150", "--out", (dir / "b").string(),
+               "--quiet", "--decisions", without.string(), "--no-audit"});
   ASSERT_EQ(r.rc, 0) << r.err;
   EXPECT_NE(r.out.find("audit           unavailable (switched off with --no-audit)"), std::string::npos) << r.out;
   const std::string a = read_text(with), b = read_text(without);
@@ -244,7 +263,8 @@ TEST(RunAudit, DecisionsFileFormatAndTheAuditNeverChangesThem) {
     EXPECT_EQ(std::stoll(row[0]), static_cast<long long>(k));
     // The predicted display time on the scenario's clock: one 90 Hz period per frame.
     const long long t_ns = std::stoll(row[1]);
-    EXPECT_NEAR(static_cast<double>(t_ns), static_cast<double>(k + 1) * 1e9 / 90.0, 2.0 * static_cast<double>(k + 1)) << k;
+    EXPECT_NEAR(static_cast<double>(t_ns), static_cast<double>(k + 1) * 1e9 / 90.0, 2.0 * static_cast<double>(k + 1))
+        << k;
     for (std::size_t c = 2; c < row.size(); ++c) ++levels[std::stoi(row[c])];
   }
   // The same levels as the report's histogram.
@@ -263,8 +283,8 @@ TEST(RunAudit, DecisionsFileFormatAndTheAuditNeverChangesThem) {
 TEST(RunAudit, TargetsHoldOnTheDefaultAndItsLateNoisyAndStillHeadVariants) {
   use_simulated_runtime("");
   const std::string scenarios = std::string(GAZELOD_SOURCE_DIR) + "/sim/scenarios/";
-  for (const std::string& scenario : {std::string(), scenarios + "default-120hz-50ms.json",
-                                     scenarios + "still-head-120hz-50ms.json"}) {
+  for (const std::string& scenario :
+       {std::string(), scenarios + "default-120hz-50ms.json", scenarios + "still-head-120hz-50ms.json"}) {
     SCOPED_TRACE(scenario.empty() ? "the default scenario" : scenario);
     const auto dir = scratch_dir() / (scenario.empty() ? "default" : std::filesystem::path(scenario).stem());
     std::vector<std::string> args{"run", "--no-render", "--quiet", "--out", dir.string()};
@@ -304,8 +324,8 @@ TEST(RunAudit, SystemRuntimeHasNoGroundTruthAndSaysSo) {
   // "whatever runtime is active": the run's simulator cannot be assumed to be the runtime's.
   const auto dir = scratch_dir();
   use_simulated_runtime("");
-  const CliResult r = run_cli({"run", "--runtime", "system", "--no-render", "--frames", "20", "--out",
-                               (dir / "out").string(), "--quiet"});
+  const CliResult r = run_cli(
+      {"run", "--runtime", "system", "--no-render", "--frames", "20", "--out", (dir / "out").string(), "--quiet"});
   ASSERT_EQ(r.rc, 0) << r.err;
   EXPECT_NE(r.out.find("audit           unavailable (no ground truth: not the simulated runtime)"), std::string::npos)
       << r.out;

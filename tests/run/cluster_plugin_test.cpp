@@ -1,11 +1,12 @@
+// SPDX-License-Identifier: Apache-2.0
 // The plugin's cluster meshes over the simulated runtime (default scenario: head sweeps,
 // saccades, tracker noise): a 20 m wall built by bake's cluster hierarchy is cut per frame
 // with the conditioned gaze and the switch policy, and every frame's cut, before and after the
 // policy, covers the wall without a crack or an overlap. The cut follows the gaze:
 // it is coarser than full detail, finer than the hierarchy's top, and finer near the gaze.
 // (Cracks are checked on the triangles: every edge of the drawn cut is shared, except along
-// the mesh's own rim, which the bake simplifies too; overlaps on the group links. Edges on more than two triangles are not a
-// test: meshopt_simplify can leave a non-manifold edge inside a group even in a uniform cut.)
+// the mesh's own rim, which the bake simplifies too; overlaps on the group links. Edges on more than two triangles are
+// not a test: meshopt_simplify can leave a non-manifold edge inside a group even in a uniform cut.)
 #include "run_test_util.hpp"
 
 #include "apps/xr_host/xr_app.hpp"
@@ -87,7 +88,8 @@ TEST(PluginClusters, EveryFramesCutIsConsistentAndFollowsTheGaze) {
 
   xr_host::XrApp app(true);
   PluginConfig cfg;
-  auto plugin = LodPlugin::create(xrGetInstanceProcAddr, app.instance(), app.system(), app.session(), app.local_space(), cfg);
+  auto plugin =
+      LodPlugin::create(xrGetInstanceProcAddr, app.instance(), app.system(), app.session(), app.local_space(), cfg);
   ClusterMeshDesc desc;
   desc.hierarchy = built.hierarchy;
   desc.index_count = built.indices.size();

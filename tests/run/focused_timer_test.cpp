@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The gaze silence timer on the simulated runtime: a runtime that advertises eye gaze but never
 // delivers it is distrusted gaze_silence_timeout_s after the session became FOCUSED (the state
 // forwarded through on_session_state), not after the first frame. The simulated session is
@@ -27,7 +28,8 @@ TEST(PluginFocus, SilenceTimerRunsFromFocused) {
   ASSERT_TRUE(app.eye_gaze_enabled());
   PluginConfig cfg;
   cfg.gaze_silence_timeout_s = 1.0;
-  auto plugin = LodPlugin::create(xrGetInstanceProcAddr, app.instance(), app.system(), app.session(), app.local_space(), cfg);
+  auto plugin =
+      LodPlugin::create(xrGetInstanceProcAddr, app.instance(), app.system(), app.session(), app.local_space(), cfg);
   XrTime focused = 0, first_frame = 0, distrusted = 0, frame_t = 0;
   plugin->on_source_changed([&](GazeSourceKind, const std::string& why) {
     if (why.find("delivered no usable eye gaze") != std::string::npos && distrusted == 0) distrusted = frame_t;
@@ -35,9 +37,11 @@ TEST(PluginFocus, SilenceTimerRunsFromFocused) {
   int frames = 0;
   bool focus_pending = false;
   while (frames < 300 && app.poll_events([&](XrSessionState s, XrTime t) {
-           if (s == XR_SESSION_STATE_FOCUSED) focus_pending = true;
-           else plugin->on_session_state(s, t);
-         })) {
+    if (s == XR_SESSION_STATE_FOCUSED)
+      focus_pending = true;
+    else
+      plugin->on_session_state(s, t);
+  })) {
     if (!app.session_running()) continue;
     const XrFrameState fs = app.wait_frame();
     app.begin_frame();

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `gazelod run` end to end on the simulated runtime: the report, its invariants, and the
 // fallbacks when eye gaze is missing.
 #include "run_test_util.hpp"
@@ -94,7 +95,8 @@ TEST(RunCli, DecisionsCannotReplaceTheReportAndNoPhantomFramePng) {
   ASSERT_EQ(r.rc, 0) << r.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "frame.png"));
   EXPECT_EQ(r.out.find("frame.png"), std::string::npos) << r.out;
-  EXPECT_NE(r.err.find("no frame.png: --capture-frame 50 is past the run's last frame (6 frames)"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("no frame.png: --capture-frame 50 is past the run's last frame (6 frames)"), std::string::npos)
+      << r.err;
 }
 
 TEST(RunCli, WithoutEyeGazeFallsBackToHeadFixedAndSaysSo) {
@@ -115,8 +117,8 @@ TEST(RunCli, RuntimeThatNeverDeliversGazeIsDistrusted) {
     "effects": [{"type": "saccades"}],
     "runtime": {"gaze_delivery": "never_delivers"}})";
   use_simulated_runtime("");
-  const CliResult r = run_cli({"run", "--scenario", scenario.string(), "--frames", "180", "--out",
-                               (dir / "out").string(), "--no-render"});
+  const CliResult r = run_cli(
+      {"run", "--scenario", scenario.string(), "--frames", "180", "--out", (dir / "out").string(), "--no-render"});
   ASSERT_EQ(r.rc, 0) << r.err;
   EXPECT_NE(r.err.find("delivered no usable eye gaze"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("head-fixed"), std::string::npos) << r.err;
@@ -128,7 +130,8 @@ TEST(RunCli, RuntimeThatNeverDeliversGazeIsDistrusted) {
 TEST(RunCli, TraceIsTheGazeSourceForTheWholeRun) {
   use_simulated_runtime("");
   const auto dir = scratch_dir();
-  const CliResult rec = run_cli({"scenario", "record", "--default", "--out", (dir / "trace.csv").string(), "--duration", "1.5"});
+  const CliResult rec =
+      run_cli({"scenario", "record", "--default", "--out", (dir / "trace.csv").string(), "--duration", "1.5"});
   ASSERT_EQ(rec.rc, 0) << rec.err;
   const CliResult r = run_cli({"run", "--frames", "270", "--no-render", "--trace", (dir / "trace.csv").string(),
                                "--out", (dir / "out").string()});
@@ -137,7 +140,8 @@ TEST(RunCli, TraceIsTheGazeSourceForTheWholeRun) {
   std::string line;
   std::getline(csv, line);
   std::size_t column = 0;
-  for (std::size_t p = 0, c = 0; p != std::string::npos; p = line.find(',', p) == std::string::npos ? std::string::npos : line.find(',', p) + 1, ++c)
+  for (std::size_t p = 0, c = 0; p != std::string::npos;
+       p = line.find(',', p) == std::string::npos ? std::string::npos : line.find(',', p) + 1, ++c)
     if (line.compare(p, 12, "gaze_source,") == 0) column = c;
   ASSERT_GT(column, 0u) << line;
   int external = 0, head_fixed = 0, other = 0;
@@ -145,9 +149,12 @@ TEST(RunCli, TraceIsTheGazeSourceForTheWholeRun) {
     std::istringstream row(line);
     std::string cell;
     for (std::size_t c = 0; c <= column; ++c) std::getline(row, cell, ',');
-    if (cell == "external") ++external;
-    else if (cell == "head-fixed") ++head_fixed;
-    else ++other;
+    if (cell == "external")
+      ++external;
+    else if (cell == "head-fixed")
+      ++head_fixed;
+    else
+      ++other;
   }
   EXPECT_EQ(other, 0) << "never the runtime's own gaze";
   // 1.5 s of trace at 90 Hz (minus the tracker's latency before its first sample and the
@@ -185,9 +192,12 @@ TEST(RunCli, TraceWithHeadPosesMovesTheHeadAsRecorded) {
     for (const auto& e : j.at("effects")) types.push_back(e.at("type").get<std::string>());
     return std::make_pair(types, j);
   };
-  const auto has = [](const std::vector<std::string>& v, const char* t) { return std::find(v.begin(), v.end(), t) != v.end(); };
+  const auto has = [](const std::vector<std::string>& v, const char* t) {
+    return std::find(v.begin(), v.end(), t) != v.end();
+  };
 
-  CliResult r = run_cli({"run", "--frames", "20", "--no-render", "--trace", trace.string(), "--out", (dir / "rec").string()});
+  CliResult r =
+      run_cli({"run", "--frames", "20", "--no-render", "--trace", trace.string(), "--out", (dir / "rec").string()});
   ASSERT_EQ(r.rc, 0) << r.err;
   EXPECT_NE(r.err.find("gazelod run: --trace: the head moves as recorded in " + trace.string() +
                        ", from its first pose, in place of head_sweep, head_turn"),
@@ -283,7 +293,8 @@ TEST(RunCli, ReplayedHeadAndGazeStayTogetherPacedOrNot) {
     ASSERT_EQ(cli::run_session(opt, {out, err}), 0) << err.str();
     EXPECT_GE(seen, 80);
     EXPECT_LT(worst_deg, 0.3);
-    std::printf("%s: the world gaze within %.3f deg of still over %d frames\n", paced ? "paced" : "unpaced", worst_deg, seen);
+    std::printf("%s: the world gaze within %.3f deg of still over %d frames\n", paced ? "paced" : "unpaced", worst_deg,
+                seen);
   }
 }
 
@@ -292,9 +303,10 @@ TEST(RunCli, ReplayedHeadAndGazeStayTogetherPacedOrNot) {
 // reflex reads as eye motion in the world and velocity takes detail away on noise; with the
 // recorded head the eyes hold their world points and velocity is owed far less.
 TEST(RunCli, RealViveTraceWithItsHeadLeavesLessToVelocity) {
-  const auto file = std::filesystem::path(GAZELOD_SOURCE_DIR) / ".." / "shared" / "data" / "gaze" /
-                    "htc_vive_pro_eye_unity_log.csv";
-  if (!std::filesystem::is_regular_file(file)) GAZELOD_SKIP_OR_FAIL("no " << file << " (../shared/data/gaze, evaluation data)");
+  const auto file =
+      std::filesystem::path(GAZELOD_SOURCE_DIR) / ".." / "shared" / "data" / "gaze" / "htc_vive_pro_eye_unity_log.csv";
+  if (!std::filesystem::is_regular_file(file))
+    GAZELOD_SKIP_OR_FAIL("no " << file << " (../shared/data/gaze, evaluation data)");
   use_simulated_runtime("");
   const auto dir = scratch_dir();
   double velocity_share[2] = {0.0, 0.0};
@@ -304,7 +316,8 @@ TEST(RunCli, RealViveTraceWithItsHeadLeavesLessToVelocity) {
     const CliResult r = run_cli({"run", "--frames", "1200", "--no-render", "--quiet", "--trace", file.string(),
                                  "--trace-head", heads[i], "--out", out.string()});
     ASSERT_EQ(r.rc, 0) << r.err;
-    velocity_share[i] = nlohmann::json::parse(read_text(out / "summary.json")).at("shares").at("velocity").get<double>();
+    velocity_share[i] =
+        nlohmann::json::parse(read_text(out / "summary.json")).at("shares").at("velocity").get<double>();
   }
   std::printf("velocity's share of the reduction: %.4f with the recorded head, %.4f with the scenario's\n",
               velocity_share[0], velocity_share[1]);
@@ -321,7 +334,8 @@ TEST(RunCli, AReportThatCannotBeWrittenLeavesNoPartialFile) {
   const CliResult r = run_cli({"run", "--frames", "20", "--no-render", "--quiet", "--out", (dir / "out").string()});
   EXPECT_EQ(r.rc, 1);
   EXPECT_NE(r.err.find("cannot write '" + (dir / "out" / "frames.csv").string() + "': is a directory"),
-            std::string::npos) << r.err;
+            std::string::npos)
+      << r.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "out" / "summary.json"));
   for (const auto& e : std::filesystem::directory_iterator(dir / "out"))
     EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
@@ -337,8 +351,8 @@ TEST(RunCli, EveryLevelIsReportedUpTo255) {
     "scene": {"generators": [{"type": "random_field", "count": 30, "min_m": [-5, -1, -400],
       "max_m": [5, 1, -300], "radius_min_m": 0.05, "radius_max_m": 0.1, "lod_count": 12,
       "triangles": 40000, "triangle_ratio": 2}]}})";
-  const CliResult r = run_cli({"run", "--scenario", scenario.string(), "--no-render", "--quiet",
-                               "--out", (dir / "out").string()});
+  const CliResult r =
+      run_cli({"run", "--scenario", scenario.string(), "--no-render", "--quiet", "--out", (dir / "out").string()});
   ASSERT_EQ(r.rc, 0) << r.err;
   const auto hist = nlohmann::json::parse(read_text(dir / "out" / "summary.json")).at("lod_histogram");
   ASSERT_GT(hist.size(), 8u) << hist.dump();
@@ -400,8 +414,10 @@ TEST(RunCli, BudgetKeepsThePredictedFrameTimeUnderTheBudget) {
   int planned_under = 0;
   for (const auto& [pred, drawn] : rows) {
     EXPECT_GT(pred, 0.0);
-    if (pred <= budget_ms + 1e-9) ++planned_under;
-    else EXPECT_EQ(drawn, fewest) << "a frame predicted over budget must already be the coarsest";
+    if (pred <= budget_ms + 1e-9)
+      ++planned_under;
+    else
+      EXPECT_EQ(drawn, fewest) << "a frame predicted over budget must already be the coarsest";
   }
   EXPECT_GT(planned_under, 0);
 }
@@ -410,7 +426,8 @@ TEST(RunCli, BadInputsAreClearErrors) {
   use_simulated_runtime("");
   const auto dir = scratch_dir();
   const auto bad = dir / "bad.json";
-  std::ofstream(bad) << R"({"version": 1, "display": "quest3", "effects": [{"type": "head_turn", "rate_deg_s": 900, "duration_s": 1}]})";
+  std::ofstream(bad)
+      << R"({"version": 1, "display": "quest3", "effects": [{"type": "head_turn", "rate_deg_s": 900, "duration_s": 1}]})";
   CliResult r = run_cli({"run", "--scenario", bad.string(), "--out", (dir / "o").string()});
   EXPECT_NE(r.rc, 0);
   EXPECT_NE(r.err.find("effects[0]"), std::string::npos) << r.err;

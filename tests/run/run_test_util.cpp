@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "run_test_util.hpp"
 
 #include "apps/gazelod/command.hpp"
@@ -22,8 +23,10 @@ std::filesystem::path scratch_dir() {
 void use_simulated_runtime(const std::string& scenario_file) {
   ::setenv("XR_RUNTIME_JSON", GAZELOD_XR_RUNTIME_JSON, 1);
   ::setenv("GAZELOD_SIM_PACED", "0", 1);
-  if (scenario_file.empty()) ::unsetenv("GAZELOD_SIM_SCENARIO");
-  else ::setenv("GAZELOD_SIM_SCENARIO", scenario_file.c_str(), 1);
+  if (scenario_file.empty())
+    ::unsetenv("GAZELOD_SIM_SCENARIO");
+  else
+    ::setenv("GAZELOD_SIM_SCENARIO", scenario_file.c_str(), 1);
   ::unsetenv("GAZELOD_SIM_DURATION_S");
 }
 

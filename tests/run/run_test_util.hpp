@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Shared by the end-to-end tests: a scratch folder, the simulated runtime's environment, and
 // `gazelod` invoked in-process.
 #pragma once
@@ -15,7 +16,6 @@ std::filesystem::path scratch_dir();
 
 // Points the loader at the simulated runtime (unpaced) and at `scenario_file` ("" = default).
 void use_simulated_runtime(const std::string& scenario_file);
-
 
 std::string read_text(const std::filesystem::path& file);
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The plugin over the simulated runtime, checked against the simulator's own gaze: the object
 // under the gaze gets the finest LOD the acuity requires, and after a saccade the old fovea's
 // objects drop and the new fovea's rise within one frame of the sample that shows the landing.
@@ -40,7 +41,8 @@ glm::dvec3 dir_from_yaw_pitch(double yaw_deg, double pitch_deg) {
 }
 
 std::string scenario_json() {
-  const double diameter_deg = 2.0 * std::atan2(kRadiusM, std::sqrt(kDistanceM * kDistanceM - kRadiusM * kRadiusM)) / kRad;
+  const double diameter_deg =
+      2.0 * std::atan2(kRadiusM, std::sqrt(kDistanceM * kDistanceM - kRadiusM * kRadiusM)) / kRad;
   nlohmann::json objects = nlohmann::json::array();
   int n = 0;
   for (int yaw = -33; yaw <= 33; yaw += 3)
@@ -49,10 +51,14 @@ std::string scenario_json() {
       nlohmann::json lods = nlohmann::json::array();
       const double cpd[4] = {0.0, 40.0, 25.0, 15.0};
       for (int k = 0; k < 4; ++k)
-        lods.push_back({{"triangles", 4000 >> (2 * k)}, {"vertices", 2000 >> (2 * k)},
-                        {"detail_kind", "removed_cycles_per_diameter"}, {"detail", cpd[k] * diameter_deg}});
-      objects.push_back({{"name", "o" + std::to_string(n++)}, {"position_m", {p.x, p.y, p.z}},
-                         {"radius_m", kRadiusM}, {"lods", lods}});
+        lods.push_back({{"triangles", 4000 >> (2 * k)},
+                        {"vertices", 2000 >> (2 * k)},
+                        {"detail_kind", "removed_cycles_per_diameter"},
+                        {"detail", cpd[k] * diameter_deg}});
+      objects.push_back({{"name", "o" + std::to_string(n++)},
+                         {"position_m", {p.x, p.y, p.z}},
+                         {"radius_m", kRadiusM},
+                         {"lods", lods}});
     }
   nlohmann::json j = {
       {"version", 1},
@@ -61,8 +67,13 @@ std::string scenario_json() {
       {"duration_s", 30},
       {"seed", 3},
       {"scene", {{"objects", objects}}},
-      {"effects", {{{"type", "saccades"}, {"amplitude_min_deg", 18}, {"amplitude_max_deg", 20},
-                    {"range_deg", 25}, {"fixation_min_ms", 200}, {"fixation_max_ms", 300}}}}};
+      {"effects",
+       {{{"type", "saccades"},
+         {"amplitude_min_deg", 18},
+         {"amplitude_max_deg", 20},
+         {"range_deg", 25},
+         {"fixation_min_ms", 200},
+         {"fixation_max_ms", 300}}}}};
   return j.dump();
 }
 
@@ -83,7 +94,8 @@ TEST(PluginSaccade, FoveaFollowsTheGazeWithinOneFrame) {
   xr_host::XrApp app(true);
   ASSERT_TRUE(app.eye_gaze_enabled());
   PluginConfig cfg;
-  auto plugin = LodPlugin::create(xrGetInstanceProcAddr, app.instance(), app.system(), app.session(), app.local_space(), cfg);
+  auto plugin =
+      LodPlugin::create(xrGetInstanceProcAddr, app.instance(), app.system(), app.session(), app.local_space(), cfg);
   std::vector<glm::dvec3> centers;
   for (const sim::SceneObject& o : simulator.scenario().objects) {
     plugin->add_object({o.position_m, o.radius_m, o.velocity_m_s, o.lods, o.importance});

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `gazelod bake` then `gazelod run --scene`: LOD comes from the baked chains.
 #include "run_test_util.hpp"
 
@@ -64,8 +65,8 @@ TEST(RunScene, RenderedFrameDrawsTheBakedTriangles) {
     "frame_rate_hz": 90, "seed": 1, "scene": {"objects": []}, "effects": []})";
 
   use_simulated_runtime("");
-  r = run_cli({"run", "--scene", baked, "--scene-placement", "file", "--scenario", scenario, "--frames", "3",
-               "--out", (dir / "run").string(), "--quiet"});
+  r = run_cli({"run", "--scene", baked, "--scene-placement", "file", "--scenario", scenario, "--frames", "3", "--out",
+               (dir / "run").string(), "--quiet"});
   ASSERT_EQ(r.rc, 0) << r.err;
   const render::RgbaImage img = render::read_png(dir / "run" / "frame.png");
   ASSERT_GT(img.width, 0u);
@@ -79,7 +80,9 @@ TEST(RunScene, RenderedFrameDrawsTheBakedTriangles) {
         const glm::vec3 c = img.rgb(x, y);
         // The level tints are saturated; the background and the circle's white (and their
         // blend at the dots' edges) are grey.
-        if (glm::length(c - render::background_colour()) < 0.05f || std::max({c.r, c.g, c.b}) - std::min({c.r, c.g, c.b}) < 0.15f) continue;
+        if (glm::length(c - render::background_colour()) < 0.05f ||
+            std::max({c.r, c.g, c.b}) - std::min({c.r, c.g, c.b}) < 0.15f)
+          continue;
         ++covered;
         x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
       }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Ctrl-C or SIGTERM during `gazelod run` (the program, as a user runs it): the run stops at a
 // frame boundary, ends the session, writes the report of the frames done marked interrupted,
 // commits --decisions, leaves no temporary file, and exits 128 + the signal.
@@ -26,8 +27,8 @@ namespace {
 int run_and_signal(const std::filesystem::path& out, int signal) {
   const std::string program = std::string(GAZELOD_BINARY_DIR) + "/apps/gazelod/gazelod";
   const std::string out_dir = out.string(), decisions = (out / "decisions.csv").string();
-  std::vector<std::string> args = {program, "run", "--frames", "1000000", "--no-render", "--quiet",
-                                   "--out", out_dir, "--decisions", decisions};
+  std::vector<std::string> args = {program,   "run",   "--frames", "1000000",     "--no-render",
+                                   "--quiet", "--out", out_dir,    "--decisions", decisions};
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);

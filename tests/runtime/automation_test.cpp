@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // XR_EXT_conformance_automation through the loader: a test switches a controller on, presses
 // a button, places its grip pose and overrides the gaze pose; the action system reports them
 // after the next xrSyncActions, and the interaction profile changes are announced there.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Runs an OpenXR program against the simulated runtime with the Khronos core validation layer
 # and checks what it did:
 #   exit 0 from the program, its log shows XR_SESSION_STATE_FOCUSED and later

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Error paths get the specification's codes: calls in the wrong session state, invalid or
 // destroyed handles, unsupported extensions, form factors, view configurations and paths.
 // Handle checks are also exercised on the runtime directly (dlopen + negotiation), since the
@@ -155,7 +156,8 @@ TEST(RuntimeErrors, UnsupportedExtensionsFormFactorsAndViews) {
   sb.suggestedBindings = &b;
   EXPECT_EQ(xrSuggestInteractionProfileBindings(instance, &sb), XR_ERROR_PATH_UNSUPPORTED);
   // A known profile with a path it does not have.
-  ASSERT_EQ(xrStringToPath(instance, "/interaction_profiles/khr/simple_controller", &sb.interactionProfile), XR_SUCCESS);
+  ASSERT_EQ(xrStringToPath(instance, "/interaction_profiles/khr/simple_controller", &sb.interactionProfile),
+            XR_SUCCESS);
   ASSERT_EQ(xrStringToPath(instance, "/user/hand/left/input/trigger/value", &b.binding), XR_SUCCESS);
   EXPECT_EQ(xrSuggestInteractionProfileBindings(instance, &sb), XR_ERROR_PATH_UNSUPPORTED);
   ASSERT_EQ(xrStringToPath(instance, "/user/hand/left/input/grip/pose", &b.binding), XR_SUCCESS);
@@ -179,20 +181,20 @@ TEST(RuntimeErrors, UnsupportedExtensionsFormFactorsAndViews) {
   EXPECT_EQ(xrGetSystem(instance, &sys, &system), XR_ERROR_FORM_FACTOR_UNSUPPORTED);
   system = get_system(instance);
   uint32_t count = 0;
-  EXPECT_EQ(xrEnumerateViewConfigurationViews(instance, system, XR_VIEW_CONFIGURATION_TYPE_PRIMARY_MONO, 0, &count,
-                                              nullptr),
-            XR_ERROR_VIEW_CONFIGURATION_TYPE_UNSUPPORTED);
-  EXPECT_EQ(xrEnumerateEnvironmentBlendModes(instance, system, XR_VIEW_CONFIGURATION_TYPE_PRIMARY_MONO, 0, &count,
-                                             nullptr),
-            XR_ERROR_VIEW_CONFIGURATION_TYPE_UNSUPPORTED);
+  EXPECT_EQ(
+      xrEnumerateViewConfigurationViews(instance, system, XR_VIEW_CONFIGURATION_TYPE_PRIMARY_MONO, 0, &count, nullptr),
+      XR_ERROR_VIEW_CONFIGURATION_TYPE_UNSUPPORTED);
+  EXPECT_EQ(
+      xrEnumerateEnvironmentBlendModes(instance, system, XR_VIEW_CONFIGURATION_TYPE_PRIMARY_MONO, 0, &count, nullptr),
+      XR_ERROR_VIEW_CONFIGURATION_TYPE_UNSUPPORTED);
   EXPECT_EQ(xrEnumerateViewConfigurationViews(instance, system, XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO, 0, &count,
                                               nullptr),
             XR_SUCCESS);
   EXPECT_EQ(count, 2u);
   XrViewConfigurationView one{XR_TYPE_VIEW_CONFIGURATION_VIEW};
-  EXPECT_EQ(xrEnumerateViewConfigurationViews(instance, system, XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO, 1, &count,
-                                              &one),
-            XR_ERROR_SIZE_INSUFFICIENT);
+  EXPECT_EQ(
+      xrEnumerateViewConfigurationViews(instance, system, XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO, 1, &count, &one),
+      XR_ERROR_SIZE_INSUFFICIENT);
   // A session needs a graphics binding unless XR_MND_headless is enabled.
   XrSessionCreateInfo si{XR_TYPE_SESSION_CREATE_INFO};
   si.systemId = system;
@@ -322,8 +324,13 @@ TEST(RuntimeErrors, InvalidAndDestroyedHandlesDirect) {
   using Negotiate = XrResult (*)(const xrrt::XrNegotiateLoaderInfo*, xrrt::XrNegotiateRuntimeRequest*);
   auto negotiate = reinterpret_cast<Negotiate>(dlsym(rt.lib, "xrNegotiateLoaderRuntimeInterface"));
   ASSERT_NE(negotiate, nullptr);
-  xrrt::XrNegotiateLoaderInfo li{xrrt::XR_LOADER_INTERFACE_STRUCT_LOADER_INFO, 1, sizeof(li), 1, 1,
-                                 XR_MAKE_VERSION(1, 0, 0), XR_MAKE_VERSION(1, 0xffff, 0xffff)};
+  xrrt::XrNegotiateLoaderInfo li{xrrt::XR_LOADER_INTERFACE_STRUCT_LOADER_INFO,
+                                 1,
+                                 sizeof(li),
+                                 1,
+                                 1,
+                                 XR_MAKE_VERSION(1, 0, 0),
+                                 XR_MAKE_VERSION(1, 0xffff, 0xffff)};
   xrrt::XrNegotiateRuntimeRequest rr{xrrt::XR_LOADER_INTERFACE_STRUCT_RUNTIME_REQUEST, 1, sizeof(rr), 0, 0, nullptr};
   ASSERT_EQ(negotiate(&li, &rr), XR_SUCCESS);
   rt.gipa = rr.getInstanceProcAddr;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Eye gaze and head motion located through the Khronos loader match the simulator: the gaze
 // action space (XR_EXT_eye_gaze_interaction) against Simulator::tracker_at at the same time,
 // within 1e-4 rad, with the true sample time; VIEW's angular velocity against head_at.
@@ -25,8 +26,12 @@ double angle_between(const glm::dvec3& a, const glm::dvec3& b) {
   return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
 }
 
-glm::dquat to_glm(const XrQuaternionf& q) { return glm::dquat(q.w, q.x, q.y, q.z); }
-glm::dvec3 to_glm(const XrVector3f& v) { return glm::dvec3(v.x, v.y, v.z); }
+glm::dquat to_glm(const XrQuaternionf& q) {
+  return glm::dquat(q.w, q.x, q.y, q.z);
+}
+glm::dvec3 to_glm(const XrVector3f& v) {
+  return glm::dvec3(v.x, v.y, v.z);
+}
 
 struct GazeRig {
   HeadlessSession hs;
@@ -114,7 +119,8 @@ TEST(RuntimeGaze, GazeThroughLoaderMatchesSimulatorTracker) {
         continue;
       }
       const XrSpaceLocationFlags all = XR_SPACE_LOCATION_ORIENTATION_VALID_BIT | XR_SPACE_LOCATION_POSITION_VALID_BIT |
-                                       XR_SPACE_LOCATION_ORIENTATION_TRACKED_BIT | XR_SPACE_LOCATION_POSITION_TRACKED_BIT;
+                                       XR_SPACE_LOCATION_ORIENTATION_TRACKED_BIT |
+                                       XR_SPACE_LOCATION_POSITION_TRACKED_BIT;
       ASSERT_EQ(loc.locationFlags, all);
       // The pose's -Z axis is the gaze direction (head space, since the base is VIEW).
       const glm::dvec3 dir = to_glm(loc.pose.orientation) * glm::dvec3(0, 0, -1);
@@ -201,8 +207,8 @@ TEST(RuntimeHead, ReportedAngularVelocityAgreesWithReportedPoses) {
     if (dq.w < 0) dq = -dq;
     const glm::dvec3 axis_sin(dq.x, dq.y, dq.z);
     const double half = std::atan2(glm::length(axis_sin), dq.w);
-    const glm::dvec3 w_fd = glm::length(axis_sin) > 0 ? axis_sin / glm::length(axis_sin) * (2.0 * half / (2e-9 * kStep))
-                                                      : glm::dvec3(0.0);
+    const glm::dvec3 w_fd =
+        glm::length(axis_sin) > 0 ? axis_sin / glm::length(axis_sin) * (2.0 * half / (2e-9 * kStep)) : glm::dvec3(0.0);
     // Float poses and the finite difference limit the agreement (~1e-7 / 2 ms).
     EXPECT_LT(glm::length(w_fd - to_glm(vel.angularVelocity)), 2e-2) << "t_ns=" << t - kTimeBaseNs;
   }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The runtime reads scenarios with the same parser as `gazelod scenario validate`: a scenario
 // past the limits (sim/scene_json.hpp) fails xrCreateInstance with
 // XR_ERROR_INITIALIZATION_FAILED and the parser's message on stderr, quickly and without
@@ -60,7 +61,10 @@ TEST(RuntimeLimits, ScenarioPastTheLimitsFailsInstanceCreationWithTheMessage) {
   nlohmann::json j = nlohmann::json::parse(sim::default_scenario_json());
   nlohmann::json gens = nlohmann::json::array();
   for (int i = 0; i < 50; ++i)
-    gens.push_back({{"type", "random_field"}, {"count", 1'000'000}, {"lod_count", 16}, {"name_prefix", std::string("g").append(std::to_string(i))}});
+    gens.push_back({{"type", "random_field"},
+                    {"count", 1'000'000},
+                    {"lod_count", 16},
+                    {"name_prefix", std::string("g").append(std::to_string(i))}});
   j["scene"] = {{"generators", gens}};
   const std::string path = std::string(GAZELOD_BINARY_DIR) + "/tests/runtime/limits_bomb.json";
   std::ofstream(path) << j.dump();

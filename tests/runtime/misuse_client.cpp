@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A deliberately faulty OpenXR client for the negative control of check_xr_run.sh: it runs a
 // correct headless session (FOCUSED ... EXITING, frames submitted) but makes one invalid call
 // (an XrSpaceLocation with the wrong structure type) that the core validation layer must
@@ -11,14 +12,22 @@ namespace {
 
 const char* state_name(XrSessionState s) {
   switch (s) {
-    case XR_SESSION_STATE_IDLE: return "XR_SESSION_STATE_IDLE";
-    case XR_SESSION_STATE_READY: return "XR_SESSION_STATE_READY";
-    case XR_SESSION_STATE_SYNCHRONIZED: return "XR_SESSION_STATE_SYNCHRONIZED";
-    case XR_SESSION_STATE_VISIBLE: return "XR_SESSION_STATE_VISIBLE";
-    case XR_SESSION_STATE_FOCUSED: return "XR_SESSION_STATE_FOCUSED";
-    case XR_SESSION_STATE_STOPPING: return "XR_SESSION_STATE_STOPPING";
-    case XR_SESSION_STATE_EXITING: return "XR_SESSION_STATE_EXITING";
-    default: return "other";
+    case XR_SESSION_STATE_IDLE:
+      return "XR_SESSION_STATE_IDLE";
+    case XR_SESSION_STATE_READY:
+      return "XR_SESSION_STATE_READY";
+    case XR_SESSION_STATE_SYNCHRONIZED:
+      return "XR_SESSION_STATE_SYNCHRONIZED";
+    case XR_SESSION_STATE_VISIBLE:
+      return "XR_SESSION_STATE_VISIBLE";
+    case XR_SESSION_STATE_FOCUSED:
+      return "XR_SESSION_STATE_FOCUSED";
+    case XR_SESSION_STATE_STOPPING:
+      return "XR_SESSION_STATE_STOPPING";
+    case XR_SESSION_STATE_EXITING:
+      return "XR_SESSION_STATE_EXITING";
+    default:
+      return "other";
   }
 }
 

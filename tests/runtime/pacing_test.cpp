@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Paced frame loop: xrWaitFrame sleeps to the display refresh, predicted display times lie on
 // the refresh grid and in the future of CLOCK_MONOTONIC (XR_KHR_convert_timespec_time).
 // Lower bounds on elapsed time only: a slow machine cannot make it fail.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The scenario's gaze-delivery quirks (docs/runtime.md, "Gaze quirks"): a
 // runtime that never delivers, one that reports sample time 0, one that echoes the requested
 // time, and a system without eye gaze; and bad scenarios / variables refused at
@@ -109,8 +110,7 @@ TEST(RuntimeQuirks, SampleTimeZero) {
 }
 
 TEST(RuntimeQuirks, SampleTimeIsRequestTime) {
-  const Gaze g =
-      read_gaze(scenario_with_runtime("quirk_request", {{"gaze_delivery", "sample_time_is_request_time"}}));
+  const Gaze g = read_gaze(scenario_with_runtime("quirk_request", {{"gaze_delivery", "sample_time_is_request_time"}}));
   EXPECT_NE(g.location.locationFlags, 0u);
   EXPECT_EQ(g.sample_time.time, g.query);
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Unit tests of the runtime's pure parts: the path grammar and table, interaction profile
 // bindings, the simulated clock and the gaze orientation of a direction.
 #include "sim/runtime/interaction_profiles.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // XR_GAZELOD_simulator_state through the loader: frame count, time base, last predicted time
 // and the scenario's end, as the runtime's side channel reports them.
 #include "sim/runtime/simulator_state_ext.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Rules of the OpenXR 1.0 specification that Khronos's conformance suite (CTS 1.1.41) found the
 // runtime breaking, each pinned here so that it holds without the CTS: queued events of a
 // destroyed session, headless frames with layers they cannot show, strict binding paths and the core
@@ -108,9 +109,8 @@ TEST(RuntimeSpecRules, HeadlessFramesAcceptLayersTheyCannotShow) {
   projection.viewCount = 0;  // no views at all
   XrCompositionLayerQuad quad{XR_TYPE_COMPOSITION_LAYER_QUAD};
   quad.space = projection.space;  // and a null swapchain
-  const XrCompositionLayerBaseHeader* layers[] = {
-      reinterpret_cast<const XrCompositionLayerBaseHeader*>(&projection),
-      reinterpret_cast<const XrCompositionLayerBaseHeader*>(&quad)};
+  const XrCompositionLayerBaseHeader* layers[] = {reinterpret_cast<const XrCompositionLayerBaseHeader*>(&projection),
+                                                  reinterpret_cast<const XrCompositionLayerBaseHeader*>(&quad)};
   XrFrameEndInfo end{XR_TYPE_FRAME_END_INFO};
   end.displayTime = fs.predictedDisplayTime;
   end.environmentBlendMode = XR_ENVIRONMENT_BLEND_MODE_OPAQUE;
@@ -141,13 +141,15 @@ TEST(RuntimeSpecRules, CoreProfilesAndStrictBindingPaths) {
                     {{v, path(inst, "/user/gamepad/input/thumbstick_left")},
                      {h, path(inst, "/user/gamepad/output/haptic_right_trigger")}}),
             XR_SUCCESS);
-  EXPECT_EQ(suggest(inst, "/interaction_profiles/oculus/go_controller", {{b, path(inst, "/user/hand/left/input/back/click")}}),
+  EXPECT_EQ(suggest(inst, "/interaction_profiles/oculus/go_controller",
+                    {{b, path(inst, "/user/hand/left/input/back/click")}}),
             XR_SUCCESS);
   // An identifier without its component is a binding; "input" alone or a path past a component is not.
   const char* simple = "/interaction_profiles/khr/simple_controller";
   EXPECT_EQ(suggest(inst, simple, {{b, path(inst, "/user/hand/left/input/select")}}), XR_SUCCESS);
-  for (const char* bad : {"/user/hand/right/input", "/user/hand/right/output", "/user/hand/right/input/select/click/invalid",
-                          "/user/hand/left/input_bad/menu/click", "/user/head/input/select/click"})
+  for (const char* bad :
+       {"/user/hand/right/input", "/user/hand/right/output", "/user/hand/right/input/select/click/invalid",
+        "/user/hand/left/input_bad/menu/click", "/user/head/input/select/click"})
     EXPECT_EQ(suggest(inst, simple, {{b, path(inst, bad)}}), XR_ERROR_PATH_UNSUPPORTED) << bad;
   // /user/eyes_ext is a user path only with XR_EXT_eye_gaze_interaction enabled.
   XrActionCreateInfo eyes_action{XR_TYPE_ACTION_CREATE_INFO};

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // XR_KHR_vulkan_enable2 on lavapipe: Vulkan instance and device created through the runtime,
 // a session with a Vulkan binding, swapchains of real VkImages and the acquire / wait /
 // release and xrEndFrame layer rules.
@@ -49,14 +50,14 @@ struct VulkanRig {
     xci.pfnGetInstanceProcAddr = &vkGetInstanceProcAddr;
     xci.vulkanCreateInfo = &ici;
     VkResult vr = VK_ERROR_UNKNOWN;
-    XRRT_ASSERT_XR(proc<PFN_xrCreateVulkanInstanceKHR>(instance, "xrCreateVulkanInstanceKHR")(instance, &xci,
-                                                                                               &vk_instance, &vr));
+    XRRT_ASSERT_XR(
+        proc<PFN_xrCreateVulkanInstanceKHR>(instance, "xrCreateVulkanInstanceKHR")(instance, &xci, &vk_instance, &vr));
     ASSERT_EQ(vr, VK_SUCCESS);
     XrVulkanGraphicsDeviceGetInfoKHR gi{XR_TYPE_VULKAN_GRAPHICS_DEVICE_GET_INFO_KHR};
     gi.systemId = system;
     gi.vulkanInstance = vk_instance;
-    XRRT_ASSERT_XR(proc<PFN_xrGetVulkanGraphicsDevice2KHR>(instance, "xrGetVulkanGraphicsDevice2KHR")(instance, &gi,
-                                                                                                     &physical));
+    XRRT_ASSERT_XR(
+        proc<PFN_xrGetVulkanGraphicsDevice2KHR>(instance, "xrGetVulkanGraphicsDevice2KHR")(instance, &gi, &physical));
     std::uint32_t nq = 0;
     vkGetPhysicalDeviceQueueFamilyProperties(physical, &nq, nullptr);
     std::vector<VkQueueFamilyProperties> qs(nq);
@@ -76,7 +77,8 @@ struct VulkanRig {
     xdi.pfnGetInstanceProcAddr = &vkGetInstanceProcAddr;
     xdi.vulkanPhysicalDevice = physical;
     xdi.vulkanCreateInfo = &dci;
-    XRRT_ASSERT_XR(proc<PFN_xrCreateVulkanDeviceKHR>(instance, "xrCreateVulkanDeviceKHR")(instance, &xdi, &device, &vr));
+    XRRT_ASSERT_XR(
+        proc<PFN_xrCreateVulkanDeviceKHR>(instance, "xrCreateVulkanDeviceKHR")(instance, &xdi, &device, &vr));
     ASSERT_EQ(vr, VK_SUCCESS);
 
     XrGraphicsBindingVulkan2KHR binding{XR_TYPE_GRAPHICS_BINDING_VULKAN2_KHR};

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Loader-side helpers for the runtime tests (see xr_client.hpp).
 #include "tests/runtime/xr_client.hpp"
 
@@ -15,8 +16,10 @@ void use_runtime(double duration_s, bool paced, const std::string& scenario_file
   setenv("XR_RUNTIME_JSON", GAZELOD_XR_RUNTIME_JSON, 1);
   setenv("GAZELOD_SIM_DURATION_S", std::to_string(duration_s).c_str(), 1);
   setenv("GAZELOD_SIM_PACED", paced ? "1" : "0", 1);
-  if (scenario_file.empty()) unsetenv("GAZELOD_SIM_SCENARIO");
-  else setenv("GAZELOD_SIM_SCENARIO", scenario_file.c_str(), 1);
+  if (scenario_file.empty())
+    unsetenv("GAZELOD_SIM_SCENARIO");
+  else
+    setenv("GAZELOD_SIM_SCENARIO", scenario_file.c_str(), 1);
 }
 
 XrPath path(XrInstance instance, const char* s) {
@@ -99,4 +102,6 @@ void HeadlessSession::destroy() {
 // Under LeakSanitizer: the Debian OpenXR loader 1.0.20 does not free about 1.3 kB that
 // xrCreateInstance allocates (inside libopenxr_loader.so, after xrDestroyInstance returned
 // XR_SUCCESS). Suppress leaks whose stack lies in the loader only; the runtime's are reported.
-extern "C" const char* __lsan_default_suppressions() { return "leak:libopenxr_loader.so\n"; }
+extern "C" const char* __lsan_default_suppressions() {
+  return "leak:libopenxr_loader.so\n";
+}

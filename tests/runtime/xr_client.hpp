@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Helpers for tests that drive the simulated runtime through the Khronos loader: environment
 // set-up (XR_RUNTIME_JSON, scenario overrides), instance / headless session creation, event
 // pumping and extension function lookup.
@@ -43,7 +44,9 @@ struct HeadlessSession {
   void create(const std::vector<const char*>& extensions);  // creates, does not begin
   void begin();                                             // begins, pumps to FOCUSED
   XrSpace reference_space(XrReferenceSpaceType type) const;
-  void pump() { for (XrSessionState s : drain_states(instance)) states.push_back(s); }
+  void pump() {
+    for (XrSessionState s : drain_states(instance)) states.push_back(s);
+  }
   void destroy();
 };
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Same seed, same stream, bit for bit, whatever the order of queries; a different seed gives
 // a different stream.
 #include "sim/simulator.hpp"
@@ -35,7 +36,9 @@ bool same_bits(const gaze::GazeSample& a, const gaze::GazeSample& b) {
          a.valid == b.valid && same_bits(a.confidence, b.confidence);
 }
 
-Scenario all_effects() { return load_scenario_file(std::string(GAZELOD_SOURCE_DIR) + "/sim/scenarios/all_effects.json"); }
+Scenario all_effects() {
+  return load_scenario_file(std::string(GAZELOD_SOURCE_DIR) + "/sim/scenarios/all_effects.json");
+}
 
 TEST(Determinism, ShuffledQueriesGiveIdenticalBits) {
   Simulator a(all_effects()), b(all_effects());
@@ -98,7 +101,8 @@ TEST(Determinism, QueriesBeforeTheKeptScheduleRepeatThemselves) {
     tracker.push_back(a.tracker_at(t));
     eye.push_back(a.eye_truth_at(t));
   }
-  for (std::int64_t t = 0; t < 7'200'000'000'000; t += 600'000'000'000) b.true_gaze_at(t);  // far past the kept segments
+  for (std::int64_t t = 0; t < 7'200'000'000'000; t += 600'000'000'000)
+    b.true_gaze_at(t);  // far past the kept segments
   b.true_gaze_at(7'199'000'000'000);
   for (std::size_t i = 0; i < early.size(); ++i) {
     EXPECT_TRUE(same_bits(b.true_gaze_at(early[i]), truth[i])) << early[i];

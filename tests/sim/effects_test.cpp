@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Each effect's measurable property, measured from the simulator's output (not its internals):
 // the still scenario, head sweeps and turns, the saccadic main sequence, pursuit gain, tracker
 // latency, rate, noise, dropouts, blinks, calibration offset and drift, object motion.
@@ -17,7 +18,9 @@ using namespace test;
 constexpr double kPi = 3.14159265358979323846;
 constexpr std::int64_t kMs = 1'000'000;
 
-glm::dvec3 forward_of(const HeadState& h) { return h.orientation * glm::dvec3(0, 0, -1); }
+glm::dvec3 forward_of(const HeadState& h) {
+  return h.orientation * glm::dvec3(0, 0, -1);
+}
 
 TEST(Effects, NoEffectsMeansStillHeadAndCentredGaze) {
   Simulator sim = make_sim(base_scenario());
@@ -42,8 +45,11 @@ TEST(Effects, NoEffectsMeansStillHeadAndCentredGaze) {
 }
 
 TEST(Effects, HeadSweepReachesItsAmplitudeAndReportsItsTrueAngularVelocity) {
-  Simulator sim = make_sim(base_scenario({{{"type", "head_sweep"}, {"yaw_amplitude_deg", 30}, {"yaw_period_s", 4},
-                                           {"pitch_amplitude_deg", 10}, {"pitch_period_s", 2}}}));
+  Simulator sim = make_sim(base_scenario({{{"type", "head_sweep"},
+                                           {"yaw_amplitude_deg", 30},
+                                           {"yaw_period_s", 4},
+                                           {"pitch_amplitude_deg", 10},
+                                           {"pitch_period_s", 2}}}));
   // Quarter of the yaw period: yaw at +30 deg (turned left), pitch back at 0.
   const glm::dvec3 f = forward_of(sim.head_at(1000 * kMs));
   EXPECT_NEAR(yaw_deg(f), 30.0, 1e-9);
@@ -64,8 +70,8 @@ TEST(Effects, HeadSweepReachesItsAmplitudeAndReportsItsTrueAngularVelocity) {
 }
 
 TEST(Effects, HeadTurnHoldsItsRateUpTo300DegPerSecondThenStops) {
-  Simulator sim = make_sim(base_scenario(
-      {{{"type", "head_turn"}, {"rate_deg_s", -300}, {"start_s", 1.0}, {"duration_s", 0.25}}}));
+  Simulator sim =
+      make_sim(base_scenario({{{"type", "head_turn"}, {"rate_deg_s", -300}, {"start_s", 1.0}, {"duration_s", 0.25}}}));
   EXPECT_NEAR(yaw_deg(forward_of(sim.head_at(1000 * kMs))), 0.0, 1e-9);
   EXPECT_NEAR(yaw_deg(forward_of(sim.head_at(1100 * kMs))), -30.0, 1e-9);
   EXPECT_NEAR(yaw_deg(forward_of(sim.head_at(1250 * kMs))), -75.0, 1e-9);
@@ -109,8 +115,12 @@ std::vector<Saccade> find_saccades(Simulator& sim, std::int64_t from_ns, std::in
 }
 
 TEST(Effects, SaccadesFollowTheMainSequence) {
-  Simulator sim = make_sim(base_scenario({{{"type", "saccades"}, {"amplitude_min_deg", 1}, {"amplitude_max_deg", 40},
-                                           {"range_deg", 30}, {"fixation_min_ms", 100}, {"fixation_max_ms", 300}}}));
+  Simulator sim = make_sim(base_scenario({{{"type", "saccades"},
+                                           {"amplitude_min_deg", 1},
+                                           {"amplitude_max_deg", 40},
+                                           {"range_deg", 30},
+                                           {"fixation_min_ms", 100},
+                                           {"fixation_max_ms", 300}}}));
   const std::vector<Saccade> s = find_saccades(sim, 0, 20'000 * kMs);
   ASSERT_GT(s.size(), 40u);
   double max_amp = 0.0, max_peak = 0.0;
@@ -137,8 +147,8 @@ TEST(Effects, SaccadesFollowTheMainSequence) {
 
 TEST(Effects, SmoothPursuitFollowsTheTargetWithItsGain) {
   // Target 5 m ahead moving right at 0.5 m/s; still head; gain 0.8; catch-up every 0.5 s.
-  Simulator sim = make_sim(base_scenario({{{"type", "smooth_pursuit"}, {"object", "target"}, {"gain", 0.8},
-                                           {"catch_up_interval_s", 0.5}}}));
+  Simulator sim = make_sim(
+      base_scenario({{{"type", "smooth_pursuit"}, {"object", "target"}, {"gain", 0.8}, {"catch_up_interval_s", 0.5}}}));
   auto target_yaw = [&](std::int64_t t) {
     const glm::dvec3 p = sim.objects_at(t)[0].position_m;
     return std::atan2(-p.x, -p.z) * 180.0 / kPi;
@@ -229,8 +239,8 @@ TEST(Effects, BlinksComeAtTheirRateAndLastTheirDuration) {
 }
 
 TEST(Effects, CalibrationOffsetAndDrift) {
-  Simulator sim = make_sim(base_scenario({{{"type", "calibration_offset"}, {"yaw_deg", 2.0}, {"pitch_deg", -1.0},
-                                           {"drift_yaw_deg_per_min", 1.0}}}));
+  Simulator sim = make_sim(base_scenario(
+      {{{"type", "calibration_offset"}, {"yaw_deg", 2.0}, {"pitch_deg", -1.0}, {"drift_yaw_deg_per_min", 1.0}}}));
   EXPECT_NEAR(yaw_deg(sim.tracker_at(0).direction), 2.0, 1e-9);
   EXPECT_NEAR(pitch_deg(sim.tracker_at(0).direction), -1.0, 1e-9);
   EXPECT_NEAR(yaw_deg(sim.tracker_at(60'000 * kMs).direction), 3.0, 1e-9);
@@ -239,8 +249,8 @@ TEST(Effects, CalibrationOffsetAndDrift) {
 }
 
 TEST(Effects, ObjectMotionOscillatesOnlyItsObject) {
-  nlohmann::json j = base_scenario({{{"type", "object_motion"}, {"object", "target"}, {"amplitude_m", {0, 0.5, 0}},
-                                     {"frequency_hz", 0.25}}});
+  nlohmann::json j = base_scenario(
+      {{{"type", "object_motion"}, {"object", "target"}, {"amplitude_m", {0, 0.5, 0}}, {"frequency_hz", 0.25}}});
   j["scene"]["objects"].push_back({{"name", "other"}, {"position_m", {1, 1, -3}}, {"lods", {{{"triangles", 1}}}}});
   Simulator sim = make_sim(j);
   const std::span<const ObjectState> o = sim.objects_at(1000 * kMs);  // a quarter period
@@ -248,7 +258,8 @@ TEST(Effects, ObjectMotionOscillatesOnlyItsObject) {
   EXPECT_NEAR(o[0].position_m.x, 0.5, 1e-12) << "its own velocity still applies";
   EXPECT_EQ(o[1].position_m, glm::dvec3(1, 1, -3));
   // Velocity = derivative of position.
-  const double y0 = sim.objects_at(2000 * kMs - 1000)[0].position_m.y, y1 = sim.objects_at(2000 * kMs + 1000)[0].position_m.y;
+  const double y0 = sim.objects_at(2000 * kMs - 1000)[0].position_m.y,
+               y1 = sim.objects_at(2000 * kMs + 1000)[0].position_m.y;
   EXPECT_NEAR(sim.objects_at(2000 * kMs)[0].velocity_m_s.y, (y1 - y0) / 2e-6, 1e-6);
   EXPECT_NEAR(sim.objects_at(2000 * kMs)[0].velocity_m_s.y, -0.5 * 2 * kPi * 0.25, 1e-9);
 }

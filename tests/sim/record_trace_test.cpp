@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Recording a scenario as a gazelod trace and reading it back (gaze/trace_reader.hpp); and
 // head_track replaying a recorded head: a round trip through the trace format.
 #include "gaze/trace_error.hpp"
@@ -62,8 +63,11 @@ TEST(RecordTrace, OneRowPerTrackerSampleWithTheHeadAtThatTime) {
 }
 
 TEST(RecordTrace, HeadTrackReplaysARecordedHead) {
-  nlohmann::json j = base_scenario({{{"type", "head_sweep"}, {"yaw_amplitude_deg", 30}, {"yaw_period_s", 3},
-                                     {"pitch_amplitude_deg", 10}, {"pitch_period_s", 2}}});
+  nlohmann::json j = base_scenario({{{"type", "head_sweep"},
+                                     {"yaw_amplitude_deg", 30},
+                                     {"yaw_period_s", 3},
+                                     {"pitch_amplitude_deg", 10},
+                                     {"pitch_period_s", 2}}});
   j["duration_s"] = 3;
   j["frame_rate_hz"] = 500;  // dense rows, so interpolation error is small
   Simulator original = make_sim(j);
@@ -98,12 +102,14 @@ TEST(RecordTrace, HeadTrackRelativeTurnsTheFirstHeadingForwardAndKeepsTheMotion)
   {
     std::ofstream out(path);
     out.precision(17);
-    out << "# gazelod-trace 1\nt_ns,gaze_x,gaze_y,gaze_z,valid,head_qw,head_qx,head_qy,head_qz,head_px,head_py,head_pz\n";
+    out << "# gazelod-trace "
+           "1\nt_ns,gaze_x,gaze_y,gaze_z,valid,head_qw,head_qx,head_qy,head_qz,head_px,head_py,head_pz\n";
     out << "5000000000,0,0,-1,1," << q0.w << "," << q0.x << "," << q0.y << "," << q0.z << ",3,1.7,-2\n";
     out << "6000000000,0,0,-1,1," << q1.w << "," << q1.x << "," << q1.y << "," << q1.z << ",3,1.7,-3\n";
   }
   const glm::dvec3 home = make_sim(base_scenario()).head_at(0).position_m;
-  Simulator sim = make_sim(base_scenario({{{"type", "head_track"}, {"file", path}, {"relative", true}, {"start_s", 0.5}}}));
+  Simulator sim =
+      make_sim(base_scenario({{{"type", "head_track"}, {"file", path}, {"relative", true}, {"start_s", 0.5}}}));
   const auto heading_deg = [&](const glm::dquat& q) {
     const glm::dvec3 f = q * forward;
     return std::atan2(-f.x, -f.z) / deg;

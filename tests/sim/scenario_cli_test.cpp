@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `gazelod scenario validate | print | record`: exit codes and messages.
 #include "tests/cli_run.hpp"
 #include "apps/gazelod/command.hpp"
@@ -33,7 +34,8 @@ TEST(ScenarioCli, ValidateReportsTheScenarioOrItsError) {
   EXPECT_THAT(r.out, HasSubstr("ok"));
   EXPECT_THAT(r.out, HasSubstr("tracker_latency"));
   const std::string bad = std::string(GAZELOD_BINARY_DIR) + "/tests/sim/cli_bad.json";
-  std::ofstream(bad) << R"({"version": 1, "display": "questpro", "effects": [{"type": "head_sweep"}, {"type": "nod"}]})";
+  std::ofstream(bad)
+      << R"({"version": 1, "display": "questpro", "effects": [{"type": "head_sweep"}, {"type": "nod"}]})";
   r = run_cli({"scenario", "validate", bad});
   EXPECT_EQ(r.rc, 2);
   EXPECT_THAT(r.err, HasSubstr(bad + ": effects[1].type: unknown effect \"nod\""));
@@ -71,7 +73,8 @@ TEST(ScenarioCli, ValidateRefusesWhatRunRefusesWithExit2) {
     return run_cli({"scenario", "validate", bad});
   };
   auto scenario = [] {
-    return nlohmann::json{{"version", 1}, {"display", "questpro"},
+    return nlohmann::json{{"version", 1},
+                          {"display", "questpro"},
                           {"scene", {{"objects", {{{"name", "a"}, {"lods", {{{"triangles", 100}}}}}}}}}};
   };
   struct Case {
@@ -80,27 +83,39 @@ TEST(ScenarioCli, ValidateRefusesWhatRunRefusesWithExit2) {
     std::string expected;
   };
   const std::vector<Case> cases = {
-      {"256 levels", [](nlohmann::json& j) {
+      {"256 levels",
+       [](nlohmann::json& j) {
          auto& lods = j["scene"]["objects"][0]["lods"];
          for (int k = 1; k < 256; ++k) lods.push_back({{"detail", 1000.0 / k}});
-       }, ": scene.objects[0].lods: a chain needs 1 to 255 levels, got 256"},
-      {"non-monotone", [](nlohmann::json& j) {
+       },
+       ": scene.objects[0].lods: a chain needs 1 to 255 levels, got 256"},
+      {"non-monotone",
+       [](nlohmann::json& j) {
          j["scene"]["objects"][0]["lods"] = {{{"detail", 0}}, {{"detail", 2}}, {{"detail", 3}}};
-       }, ": scene.objects[0].lods[2]: must remove no finer detail than level 1"},
-      {"geometric error 0", [](nlohmann::json& j) {
+       },
+       ": scene.objects[0].lods[2]: must remove no finer detail than level 1"},
+      {"geometric error 0",
+       [](nlohmann::json& j) {
          j["scene"]["objects"][0]["lods"] = {{{"detail_kind", "geometric_error_m"}},
                                              {{"detail_kind", "geometric_error_m"}, {"detail", 0}}};
-       }, ": scene.objects[0].lods[1]: detail must be finite and > 0, got 0"},
-      {"one view", [](nlohmann::json& j) {
+       },
+       ": scene.objects[0].lods[1]: detail must be finite and > 0, got 0"},
+      {"one view",
+       [](nlohmann::json& j) {
          j["display"] = {{"preset", "questpro"}, {"views", 1}};
-       }, ": display.views: must be 2"},
+       },
+       ": display.views: must be 2"},
       {"shorter than a frame", [](nlohmann::json& j) { j["duration_s"] = 0.002; },
        ": duration_s: must be at least one frame (1 / 90 Hz = 0.0111111 s), got 0.002"},
-      {"memory bomb", [](nlohmann::json& j) {
+      {"memory bomb",
+       [](nlohmann::json& j) {
          for (int i = 0; i < 50; ++i)
-           j["scene"]["generators"].push_back({{"type", "random_field"}, {"count", 1'000'000}, {"lod_count", 16},
+           j["scene"]["generators"].push_back({{"type", "random_field"},
+                                               {"count", 1'000'000},
+                                               {"lod_count", 16},
                                                {"name_prefix", std::string("g").append(std::to_string(i))}});
-       }, ": scene.generators[0].count: must be <= 999999 objects"},
+       },
+       ": scene.generators[0].count: must be <= 999999 objects"},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.what);

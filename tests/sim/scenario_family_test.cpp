@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The scenario family (sim/scenario_family.hpp): every seed gives a scenario the loader
 // accepts, the same text for the same seed, and the family spans the ranges it promises.
 #include "sim/scenario_family.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The limits on a scenario as a whole (sim/scene_json.hpp, docs/hardening.md "Scenario
 // limits") and the checks that `gazelod run`, the plugin's registration and the simulated
 // runtime make, all refused while parsing with the JSON path: a memory bomb of generators, a
@@ -32,7 +33,9 @@ std::string error_of(const std::string& text) {
   }
   return "";
 }
-std::string error_of(const nlohmann::json& j) { return error_of(j.dump()); }
+std::string error_of(const nlohmann::json& j) {
+  return error_of(j.dump());
+}
 
 long peak_rss_kib() {
   rusage u{};
@@ -48,13 +51,15 @@ TEST(ScenarioLimits, ManyLargeGeneratorsAreRefusedBeforeAnythingIsAllocated) {
   // The report's file: 50 generators of 1e6 objects and 16 levels each (~1.5 KB of JSON).
   nlohmann::json j = base_scenario();
   nlohmann::json gens = nlohmann::json::array();
-  for (int i = 0; i < 50; ++i) gens.push_back(field(1'000'000, 16, std::string("g").append(std::to_string(i)).append("_")));
+  for (int i = 0; i < 50; ++i)
+    gens.push_back(field(1'000'000, 16, std::string("g").append(std::to_string(i)).append("_")));
   j["scene"] = {{"generators", gens}};
   const long before = peak_rss_kib();
   const auto t0 = std::chrono::steady_clock::now();
   const std::string msg = error_of(j);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  EXPECT_THAT(msg, HasSubstr("bad.json: scene.generators[0].count: must keep the LOD levels in all <= 4000000 (0 before)"));
+  EXPECT_THAT(msg,
+              HasSubstr("bad.json: scene.generators[0].count: must keep the LOD levels in all <= 4000000 (0 before)"));
   EXPECT_THAT(msg, HasSubstr("got 1000000 x 16 = 16000000 levels"));
   EXPECT_LT(seconds, 1.0);
   EXPECT_LT(peak_rss_kib() - before, 64 * 1024) << "the objects were made before the limit was checked";
@@ -86,12 +91,14 @@ TEST(ScenarioLimits, TheChainChecksOfThePluginWithTheirPath) {
               HasSubstr("bad.json: scene.objects[0].lods: a chain needs 1 to 255 levels, got 256"));
   many.erase(many.size() - 1);
   EXPECT_EQ(error_of(with_lods(many)), "") << "255 levels are fine";
-  EXPECT_THAT(error_of(with_lods({{{"triangles", 100}}, {{"triangles", 50}, {"detail", 4}}, {{"triangles", 20}, {"detail", 9}}})),
+  EXPECT_THAT(error_of(with_lods(
+                  {{{"triangles", 100}}, {{"triangles", 50}, {"detail", 4}}, {{"triangles", 20}, {"detail", 9}}})),
               HasSubstr("scene.objects[0].lods[2]: must remove no finer detail than level 1"));
   EXPECT_THAT(error_of(with_lods({{{"triangles", 100}, {"detail_kind", "geometric_error_m"}},
                                   {{"triangles", 50}, {"detail_kind", "geometric_error_m"}, {"detail", 0}}})),
               HasSubstr("scene.objects[0].lods[1]: detail must be finite and > 0, got 0"));
-  EXPECT_THAT(error_of(with_lods({{{"triangles", 100}}, {{"triangles", 50}, {"detail_kind", "geometric_error_m"}, {"detail", 1}}})),
+  EXPECT_THAT(error_of(with_lods(
+                  {{{"triangles", 100}}, {{"triangles", 50}, {"detail_kind", "geometric_error_m"}, {"detail", 1}}})),
               HasSubstr("scene.objects[0].lods[1]: detail kind differs from level 0"));
   EXPECT_THAT(error_of(with_lods({{{"triangles", 100}, {"detail_kind", "geometric_error_m"}},
                                   {{"triangles", 50}, {"detail_kind", "geometric_error_m"}, {"detail", 1e-31}}})),
@@ -114,7 +121,8 @@ TEST(ScenarioLimits, DisplaysNeedTwoViewsAndDescribedFovLimits) {
   j["display"] = {{"preset", "desktop"}, {"views", 2}};
   EXPECT_EQ(error_of(j), "") << "a desktop preset made stereo";
   // The described-FOV rule of lod::validate_described_view, also in `gazelod thresholds`.
-  j["display"] = {{"width_px", 100}, {"height_px", 100},
+  j["display"] = {{"width_px", 100},
+                  {"height_px", 100},
                   {"fov_deg", {{"left", -89.9}, {"right", 89.9}, {"up", 30}, {"down", -30}}}};
   EXPECT_THAT(error_of(j), HasSubstr("display.fov_deg: horizontal FOV must be in [0.001, 179] deg, got 179.8"));
   j["display"] = {{"width_px", 100}, {"height_px", 100}, {"fov_h_deg", 179}, {"fov_v_deg", 0.001}};
@@ -128,7 +136,8 @@ TEST(ScenarioLimits, DurationOfAtLeastOneFrame) {
   nlohmann::json j = base_scenario();
   j["frame_rate_hz"] = 90;
   j["duration_s"] = 0.005;
-  EXPECT_THAT(error_of(j), HasSubstr("bad.json: duration_s: must be at least one frame (1 / 90 Hz = 0.0111111 s), got 0.005"));
+  EXPECT_THAT(error_of(j),
+              HasSubstr("bad.json: duration_s: must be at least one frame (1 / 90 Hz = 0.0111111 s), got 0.005"));
   j["duration_s"] = 0.0112;
   EXPECT_EQ(error_of(j), "");
   // The range message as the scenario README writes it.
@@ -176,9 +185,7 @@ TEST(ScenarioLimits, FilesThatAreNotScenarios) {
 TEST(ScenarioLimits, HeadTrackTracesCountAgainstMemory) {
   // A sparse file: big on paper, no disk used.
   const std::string path = std::string(GAZELOD_BINARY_DIR) + "/tests/sim/limits_huge_head.csv";
-  {
-    std::ofstream(path) << "t_ns,gaze_x,gaze_y,gaze_z,head_qw,head_qx,head_qy,head_qz\n";
-  }
+  { std::ofstream(path) << "t_ns,gaze_x,gaze_y,gaze_z,head_qw,head_qx,head_qy,head_qz\n"; }
   std::filesystem::resize_file(path, std::uintmax_t{1} << 29);  // 512 MiB: 2 GiB estimated
   nlohmann::json j = base_scenario({{{"type", "head_track"}, {"file", path}}});
   EXPECT_THAT(error_of(j), HasSubstr("bad.json: effects[0].file: must take at most"));

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Scenario loading: the default, explicit displays and scenes, and every error path naming
 // its JSON path and source.
 #include "sim/simulator.hpp"
@@ -57,14 +58,22 @@ TEST(ScenarioParse, DefaultScenarioIsAnEyeTrackedHmdWithAFieldOfFourLodObjects) 
 TEST(ScenarioParse, GeneratedFieldLiesInsideItsBoxAndFollowsTheSeed) {
   nlohmann::json j = base_scenario();
   j["scene"] = {{"generators",
-                 {{{"type", "random_field"}, {"count", 50}, {"min_m", {-1, -2, -30}}, {"max_m", {1, 2, -10}},
-                   {"radius_min_m", 0.1}, {"radius_max_m", 0.2}, {"forward_speed_m_s", 2.0}}}}};
+                 {{{"type", "random_field"},
+                   {"count", 50},
+                   {"min_m", {-1, -2, -30}},
+                   {"max_m", {1, 2, -10}},
+                   {"radius_min_m", 0.1},
+                   {"radius_max_m", 0.2},
+                   {"forward_speed_m_s", 2.0}}}}};
   const Scenario a = load_scenario_json(j.dump(), "a");
   ASSERT_EQ(a.objects.size(), 50u);
   for (const SceneObject& o : a.objects) {
-    EXPECT_GE(o.position_m.x, -1.0); EXPECT_LE(o.position_m.x, 1.0);
-    EXPECT_GE(o.position_m.z, -30.0); EXPECT_LE(o.position_m.z, -10.0);
-    EXPECT_GE(o.radius_m, 0.1); EXPECT_LE(o.radius_m, 0.2);
+    EXPECT_GE(o.position_m.x, -1.0);
+    EXPECT_LE(o.position_m.x, 1.0);
+    EXPECT_GE(o.position_m.z, -30.0);
+    EXPECT_LE(o.position_m.z, -10.0);
+    EXPECT_GE(o.radius_m, 0.1);
+    EXPECT_LE(o.radius_m, 0.2);
   }
   EXPECT_EQ(a.head_path.velocity_m_s, glm::dvec3(0, 0, -2.0));
   j["seed"] = 43;
@@ -74,8 +83,8 @@ TEST(ScenarioParse, GeneratedFieldLiesInsideItsBoxAndFollowsTheSeed) {
 
 TEST(ScenarioParse, ExplicitDisplayInDegrees) {
   nlohmann::json j = base_scenario();
-  j["display"] = {{"width_px", 1000}, {"height_px", 800}, {"views", 2},
-                  {"fov_deg", {{"left", -45}, {"right", 40}, {"up", 30}, {"down", -35}}},
+  j["display"] = {{"width_px", 1000}, {"height_px", 800},
+                  {"views", 2},       {"fov_deg", {{"left", -45}, {"right", 40}, {"up", 30}, {"down", -35}}},
                   {"refresh_hz", 60}, {"eye_tracking_hz", 250}};
   j.erase("duration_s");
   const Scenario sc = load_scenario_json(j.dump(), "d");
@@ -127,59 +136,201 @@ struct ErrorCase {
 };
 
 const ErrorCase kErrors[] = {
-    {"unknown effect", [] { return base_scenario({{{"type", "head_sweep"}}, {{"type", "tracker_noise"}, {"std_deg", 1}}, {{"type", "wobble"}}}); },
+    {"unknown effect",
+     [] {
+       return base_scenario(
+           {{{"type", "head_sweep"}}, {{"type", "tracker_noise"}, {"std_deg", 1}}, {{"type", "wobble"}}});
+     },
      "bad.json: effects[2].type: unknown effect \"wobble\""},
-    {"unknown effect key", [] { return base_scenario({{{"type", "head_sweep"}, {"amplitude_deg", 3}}}); },
+    {"unknown effect key",
+     [] {
+       return base_scenario({{{"type", "head_sweep"}, {"amplitude_deg", 3}}});
+     },
      "bad.json: effects[0].amplitude_deg: unknown key"},
-    {"out of range", [] { return base_scenario({{{"type", "tracker_noise"}, {"std_deg", 1}}, {{"type", "head_turn"}, {"rate_deg_s", 400}, {"duration_s", 1}}}); },
+    {"out of range",
+     [] {
+       return base_scenario({{{"type", "tracker_noise"}, {"std_deg", 1}},
+                             {{"type", "head_turn"}, {"rate_deg_s", 400}, {"duration_s", 1}}});
+     },
      "effects[1].rate_deg_s: must be in [-300, 300], got 400"},
-    {"type mismatch", [] { return base_scenario({{{"type", "tracker_noise"}, {"std_deg", "big"}}}); },
+    {"type mismatch",
+     [] {
+       return base_scenario({{{"type", "tracker_noise"}, {"std_deg", "big"}}});
+     },
      "effects[0].std_deg: expected a number, got string"},
-    {"missing parameter", [] { return base_scenario({{{"type", "tracker_latency"}}}); },
+    {"missing parameter",
+     [] {
+       return base_scenario({{{"type", "tracker_latency"}}});
+     },
      "effects[0].latency_ms: missing"},
-    {"effect without type", [] { return base_scenario({{{"latency_ms", 3}}}); }, "effects[0].type: missing"},
+    {"effect without type",
+     [] {
+       return base_scenario({{{"latency_ms", 3}}});
+     },
+     "effects[0].type: missing"},
     {"effect not an object", [] { return base_scenario({3}); }, "effects[0]: expected an object, got number"},
-    {"unknown pursuit object", [] { return base_scenario({{{"type", "smooth_pursuit"}, {"object", "ghost"}}}); },
+    {"unknown pursuit object",
+     [] {
+       return base_scenario({{{"type", "smooth_pursuit"}, {"object", "ghost"}}});
+     },
      "effects[0].object: no scene object named \"ghost\""},
-    {"end before start", [] { return base_scenario({{{"type", "saccades"}, {"start_s", 2}, {"end_s", 1}}}); },
+    {"end before start",
+     [] {
+       return base_scenario({{{"type", "saccades"}, {"start_s", 2}, {"end_s", 1}}});
+     },
      "effects[0].end_s: must be after start_s"},
-    {"blink longer than period", [] { return base_scenario({{{"type", "blinks"}, {"rate_per_min", 120}, {"duration_ms", 600}}}); },
+    {"blink longer than period",
+     [] {
+       return base_scenario({{{"type", "blinks"}, {"rate_per_min", 120}, {"duration_ms", 600}}});
+     },
      "effects[0].duration_ms"},
-    {"bad axis", [] { return base_scenario({{{"type", "head_turn"}, {"rate_deg_s", 10}, {"duration_s", 1}, {"axis", "roll"}}}); },
+    {"bad axis",
+     [] {
+       return base_scenario({{{"type", "head_turn"}, {"rate_deg_s", 10}, {"duration_s", 1}, {"axis", "roll"}}});
+     },
      "effects[0].axis: expected \"yaw\" or \"pitch\""},
-    {"effects not an array", [] { auto j = base_scenario(); j["effects"] = {{"type", "x"}}; return j; },
+    {"effects not an array",
+     [] {
+       auto j = base_scenario();
+       j["effects"] = {{"type", "x"}};
+       return j;
+     },
      "bad.json: effects: expected an array"},
-    {"missing version", [] { auto j = base_scenario(); j.erase("version"); return j; }, "bad.json: version: missing"},
-    {"wrong version", [] { auto j = base_scenario(); j["version"] = 2; return j; }, "version: unsupported version 2"},
-    {"unknown top-level key", [] { auto j = base_scenario(); j["durration_s"] = 3; return j; }, "bad.json: durration_s: unknown key"},
-    {"negative duration", [] { auto j = base_scenario(); j["duration_s"] = -1; return j; }, "duration_s: must be in"},
-    {"seed not an integer", [] { auto j = base_scenario(); j["seed"] = 1.5; return j; }, "seed: expected a non-negative integer"},
-    {"unknown preset", [] { auto j = base_scenario(); j["display"] = "rift9"; return j; }, "display: unknown display preset \"rift9\""},
-    {"display pixels missing", [] { auto j = base_scenario(); j["display"] = {{"height_px", 100}, {"fov_h_deg", 90}, {"fov_v_deg", 90}}; return j; },
+    {"missing version",
+     [] {
+       auto j = base_scenario();
+       j.erase("version");
+       return j;
+     },
+     "bad.json: version: missing"},
+    {"wrong version",
+     [] {
+       auto j = base_scenario();
+       j["version"] = 2;
+       return j;
+     },
+     "version: unsupported version 2"},
+    {"unknown top-level key",
+     [] {
+       auto j = base_scenario();
+       j["durration_s"] = 3;
+       return j;
+     },
+     "bad.json: durration_s: unknown key"},
+    {"negative duration",
+     [] {
+       auto j = base_scenario();
+       j["duration_s"] = -1;
+       return j;
+     },
+     "duration_s: must be in"},
+    {"seed not an integer",
+     [] {
+       auto j = base_scenario();
+       j["seed"] = 1.5;
+       return j;
+     },
+     "seed: expected a non-negative integer"},
+    {"unknown preset",
+     [] {
+       auto j = base_scenario();
+       j["display"] = "rift9";
+       return j;
+     },
+     "display: unknown display preset \"rift9\""},
+    {"display pixels missing",
+     [] {
+       auto j = base_scenario();
+       j["display"] = {{"height_px", 100}, {"fov_h_deg", 90}, {"fov_v_deg", 90}};
+       return j;
+     },
      "display.width_px: missing"},
-    {"display fov inverted", [] { auto j = base_scenario(); j["display"] = {{"width_px", 100}, {"height_px", 100}, {"fov_deg", {{"left", 40}, {"right", -40}, {"up", 30}, {"down", -30}}}}; return j; },
+    {"display fov inverted",
+     [] {
+       auto j = base_scenario();
+       j["display"] = {{"width_px", 100},
+                       {"height_px", 100},
+                       {"fov_deg", {{"left", 40}, {"right", -40}, {"up", 30}, {"down", -30}}}};
+       return j;
+     },
      "display: view 0: horizontal FOV"},
-    {"display fov out of range", [] { auto j = base_scenario(); j["display"] = {{"width_px", 100}, {"height_px", 100}, {"fov_deg", {{"left", -95}, {"right", 40}, {"up", 30}, {"down", -30}}}}; return j; },
+    {"display fov out of range",
+     [] {
+       auto j = base_scenario();
+       j["display"] = {{"width_px", 100},
+                       {"height_px", 100},
+                       {"fov_deg", {{"left", -95}, {"right", 40}, {"up", 30}, {"down", -30}}}};
+       return j;
+     },
      "display.fov_deg.left: must be in [-90, 90]"},
-    {"lod detail negative", [] { auto j = base_scenario(); j["scene"]["objects"][0]["lods"] = {{{"triangles", 10}}, {{"triangles", 5}, {"detail", -2}}}; return j; },
+    {"lod detail negative",
+     [] {
+       auto j = base_scenario();
+       j["scene"]["objects"][0]["lods"] = {{{"triangles", 10}}, {{"triangles", 5}, {"detail", -2}}};
+       return j;
+     },
      "scene.objects[0].lods[1].detail: must be in"},
-    {"lod detail kind", [] { auto j = base_scenario(); j["scene"]["objects"][0]["lods"][0]["detail_kind"] = "pixels"; return j; },
+    {"lod detail kind",
+     [] {
+       auto j = base_scenario();
+       j["scene"]["objects"][0]["lods"][0]["detail_kind"] = "pixels";
+       return j;
+     },
      "scene.objects[0].lods[0].detail_kind"},
-    {"object position not a vector", [] { auto j = base_scenario(); j["scene"]["objects"][0]["position_m"] = {1, 2}; return j; },
+    {"object position not a vector",
+     [] {
+       auto j = base_scenario();
+       j["scene"]["objects"][0]["position_m"] = {1, 2};
+       return j;
+     },
      "scene.objects[0].position_m: expected [x, y, z]"},
-    {"object position element", [] { auto j = base_scenario(); j["scene"]["objects"][0]["position_m"] = {1, "a", 2}; return j; },
+    {"object position element",
+     [] {
+       auto j = base_scenario();
+       j["scene"]["objects"][0]["position_m"] = {1, "a", 2};
+       return j;
+     },
      "scene.objects[0].position_m[1]: expected a number, got string"},
-    {"duplicate object names", [] { auto j = base_scenario(); j["scene"]["objects"].push_back(j["scene"]["objects"][0]); return j; },
+    {"duplicate object names",
+     [] {
+       auto j = base_scenario();
+       j["scene"]["objects"].push_back(j["scene"]["objects"][0]);
+       return j;
+     },
      "two objects are named \"target\""},
-    {"unknown generator", [] { auto j = base_scenario(); j["scene"]["generators"] = {{{"type", "forest"}}}; return j; },
+    {"unknown generator",
+     [] {
+       auto j = base_scenario();
+       j["scene"]["generators"] = {{{"type", "forest"}}};
+       return j;
+     },
      "scene.generators[0].type: unknown generator \"forest\""},
-    {"generator box inverted", [] { auto j = base_scenario(); j["scene"]["generators"] = {{{"type", "random_field"}, {"min_m", {0, 0, 0}}, {"max_m", {1, -1, 1}}}}; return j; },
+    {"generator box inverted",
+     [] {
+       auto j = base_scenario();
+       j["scene"]["generators"] = {{{"type", "random_field"}, {"min_m", {0, 0, 0}}, {"max_m", {1, -1, 1}}}};
+       return j;
+     },
      "scene.generators[0].max_m"},
-    {"unknown gaze delivery", [] { auto j = base_scenario(); j["runtime"] = {{"gaze_delivery", "sometimes"}}; return j; },
+    {"unknown gaze delivery",
+     [] {
+       auto j = base_scenario();
+       j["runtime"] = {{"gaze_delivery", "sometimes"}};
+       return j;
+     },
      "runtime.gaze_delivery: unknown \"sometimes\""},
-    {"runtime flag type", [] { auto j = base_scenario(); j["runtime"] = {{"paced", 1}}; return j; },
+    {"runtime flag type",
+     [] {
+       auto j = base_scenario();
+       j["runtime"] = {{"paced", 1}};
+       return j;
+     },
      "runtime.paced: expected true or false, got number"},
-    {"top level not an object", [] { return nlohmann::json::array({1, 2}); }, "bad.json: (top level): expected an object"},
+    {"top level not an object",
+     [] {
+       return nlohmann::json::array({1, 2});
+     },
+     "bad.json: (top level): expected an object"},
 };
 
 TEST(ScenarioParse, EveryErrorNamesItsJsonPath) {
@@ -211,7 +362,8 @@ TEST(ScenarioParse, KeyGivenTwiceIsRefusedWithItsPath) {
   }
   try {
     (void)load_scenario_json(R"({"version": 1, "display": "questpro", "effects": [{"type": "saccades"},
-                                {"type": "blinks", "rate_per_min": 5, "rate_per_min": 50}]})", "s.json");
+                                {"type": "blinks", "rate_per_min": 5, "rate_per_min": 50}]})",
+                             "s.json");
     FAIL() << "no error";
   } catch (const ScenarioError& e) {
     EXPECT_THAT(e.what(), HasSubstr("s.json: effects[1].rate_per_min: the key appears twice"));
@@ -221,7 +373,8 @@ TEST(ScenarioParse, KeyGivenTwiceIsRefusedWithItsPath) {
 TEST(ScenarioParse, FileErrors) {
   EXPECT_THROW((void)load_scenario_file("/nonexistent/dir/none.json"), ScenarioError);
   const std::string path = std::string(GAZELOD_BINARY_DIR) + "/tests/sim/parse_test_bad.json";
-  std::ofstream(path) << R"({"version": 1, "display": "questpro", "effects": [{"type": "blinks", "rate_per_min": -1}]})";
+  std::ofstream(path)
+      << R"({"version": 1, "display": "questpro", "effects": [{"type": "blinks", "rate_per_min": -1}]})";
   try {
     (void)load_scenario_file(path);
     FAIL() << "no error";

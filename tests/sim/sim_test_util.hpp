@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Helpers for the simulator tests: a small scenario with the given effects and objects.
 #pragma once
 
@@ -28,7 +29,9 @@ inline nlohmann::json base_scenario(nlohmann::json effects = nlohmann::json::arr
           {"effects", effects}};
 }
 
-inline Simulator make_sim(const nlohmann::json& j) { return Simulator(load_scenario_json(j.dump(), "test.json")); }
+inline Simulator make_sim(const nlohmann::json& j) {
+  return Simulator(load_scenario_json(j.dump(), "test.json"));
+}
 
 inline double angle_deg(const glm::dvec3& a, const glm::dvec3& b) {
   return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b)) * 180.0 / 3.14159265358979323846;
@@ -36,7 +39,9 @@ inline double angle_deg(const glm::dvec3& a, const glm::dvec3& b) {
 
 // Yaw (about +Y, positive left) and pitch of a direction, degrees: written out here rather
 // than taken from sim/angles.hpp, so the tests check the convention independently.
-inline double yaw_deg(const glm::dvec3& d) { return std::atan2(-d.x, -d.z) * 180.0 / 3.14159265358979323846; }
+inline double yaw_deg(const glm::dvec3& d) {
+  return std::atan2(-d.x, -d.z) * 180.0 / 3.14159265358979323846;
+}
 inline double pitch_deg(const glm::dvec3& d) {
   return std::atan2(d.y, std::hypot(d.x, d.z)) * 180.0 / 3.14159265358979323846;
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The vor effect, measured from the simulator's output: fixations held on a world point while
 // the head moves (gain 1), half of it at gain 0.5, saccades landing where the saccades effect
 // puts them, a continuous gaze, the ground truth of its saccades, quick phases that keep the eye
@@ -22,9 +23,15 @@ constexpr std::int64_t kStep = 100'000;  // 0.1 ms
 
 const glm::dvec3 kForward{0, 0, -1};
 
-glm::dvec3 eye(Simulator& sim, std::int64_t t) { return sim.true_gaze_at(t).direction; }
-glm::dvec3 world_gaze(Simulator& sim, std::int64_t t) { return sim.head_at(t).orientation * eye(sim, t); }
-double head_yaw_deg(Simulator& sim, std::int64_t t) { return yaw_deg(sim.head_at(t).orientation * kForward); }
+glm::dvec3 eye(Simulator& sim, std::int64_t t) {
+  return sim.true_gaze_at(t).direction;
+}
+glm::dvec3 world_gaze(Simulator& sim, std::int64_t t) {
+  return sim.head_at(t).orientation * eye(sim, t);
+}
+double head_yaw_deg(Simulator& sim, std::int64_t t) {
+  return yaw_deg(sim.head_at(t).orientation * kForward);
+}
 // The angle of the head's rotation from t0 to t1.
 double head_turned_deg(Simulator& sim, std::int64_t t0, std::int64_t t1) {
   const glm::dquat d = glm::conjugate(sim.head_at(t1).orientation) * sim.head_at(t0).orientation;
@@ -32,12 +39,15 @@ double head_turned_deg(Simulator& sim, std::int64_t t0, std::int64_t t1) {
 }
 
 nlohmann::json saccades(double fix_min_ms = 250, double fix_max_ms = 600, double range_deg = 10) {
-  return {{"type", "saccades"}, {"fixation_min_ms", fix_min_ms}, {"fixation_max_ms", fix_max_ms},
-          {"amplitude_min_deg", 2}, {"amplitude_max_deg", 15}, {"range_deg", range_deg}};
+  return {{"type", "saccades"},     {"fixation_min_ms", fix_min_ms}, {"fixation_max_ms", fix_max_ms},
+          {"amplitude_min_deg", 2}, {"amplitude_max_deg", 15},       {"range_deg", range_deg}};
 }
 nlohmann::json sweep(double pitch_deg = 8) {
-  return {{"type", "head_sweep"}, {"yaw_amplitude_deg", 20}, {"yaw_period_s", 4},
-          {"pitch_amplitude_deg", pitch_deg}, {"pitch_period_s", 3}};
+  return {{"type", "head_sweep"},
+          {"yaw_amplitude_deg", 20},
+          {"yaw_period_s", 4},
+          {"pitch_amplitude_deg", pitch_deg},
+          {"pitch_period_s", 3}};
 }
 
 // Intervals [a, b) in which the eye does not move at all (fixations of the saccades effect),
@@ -192,8 +202,8 @@ TEST(Vor, QuickPhasesKeepTheEyeInTheOculomotorRange) {
     // A 240 deg turn during long fixations: the counter-rotation cannot follow it all.
     nlohmann::json vor = {{"type", "vor"}};
     if (range != 45.0) vor["range_deg"] = range;
-    Simulator sim = make_sim(base_scenario({{{"type", "head_turn"}, {"rate_deg_s", 60}, {"start_s", 0.5}, {"duration_s", 4}},
-                                            saccades(3000, 5000), vor}));
+    Simulator sim = make_sim(base_scenario(
+        {{{"type", "head_turn"}, {"rate_deg_s", 60}, {"start_s", 0.5}, {"duration_s", 4}}, saccades(3000, 5000), vor}));
     double max_ecc = 0.0, max_speed = 0.0;
     int quick_phases = 0;
     bool fast = false;
@@ -244,7 +254,9 @@ TEST(Vor, RefusesBadParameters) {
   EXPECT_THROW(make_sim(base_scenario({saccades(), {{"type", "vor"}, {"start_s", 3}, {"end_s", 2}}})), ScenarioError);
 }
 
-bool same_bits(const glm::dvec3& a, const glm::dvec3& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+bool same_bits(const glm::dvec3& a, const glm::dvec3& b) {
+  return std::memcmp(&a, &b, sizeof a) == 0;
+}
 
 TEST(Vor, SameSeedSameBitsInAnyQueryOrder) {
   // The default scenario lists vor (with head sweeps, a fast turn and a pursuit).
@@ -273,7 +285,8 @@ TEST(Vor, SameSeedSameBitsInAnyQueryOrder) {
   j["effects"] = effects;
   Simulator novor(load_scenario_json(j.dump(), "novor"));
   double differs = 0.0;
-  for (std::size_t i = 0; i < times.size(); ++i) differs = std::max(differs, angle_deg(novor.true_gaze_at(times[i]).direction, truth[i]));
+  for (std::size_t i = 0; i < times.size(); ++i)
+    differs = std::max(differs, angle_deg(novor.true_gaze_at(times[i]).direction, truth[i]));
   EXPECT_GT(differs, 1.0);
 }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // gazelod_soak: the plugin's frame loop for a long unpaced, headless session against the
 // simulated OpenXR runtime (XR_MND_headless: no Vulkan), measuring resident memory as it goes.
 // Per frame, as an application would: xrPollEvent, xrWaitFrame, xrBeginFrame, the scenario's
@@ -55,22 +56,28 @@ Options parse(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--help" || a == "-h") {
-      std::printf("%s  --frames N          frames to run (default 324000: one hour at 90 Hz)\n"
-                  "  --scenario FILE     scenario JSON (default: the embedded one)\n"
-                  "  --samples K         RSS samples (default 40)\n"
-                  "  --max-growth-kib G  RSS growth after the first tenth that fails the run (default 1024)\n",
-                  kUsage);
+      std::printf(
+          "%s  --frames N          frames to run (default 324000: one hour at 90 Hz)\n"
+          "  --scenario FILE     scenario JSON (default: the embedded one)\n"
+          "  --samples K         RSS samples (default 40)\n"
+          "  --max-growth-kib G  RSS growth after the first tenth that fails the run (default 1024)\n",
+          kUsage);
       std::exit(0);
     }
     if (a != "--frames" && a != "--scenario" && a != "--samples" && a != "--max-growth-kib")
       usage("unknown option " + a);
     if (i + 1 >= argc) usage(a + ": missing value");
     const char* v = argv[++i];
-    if (a == "--frames") o.frames = parse_int("--frames", v, 1, 100'000'000);
-    else if (a == "--scenario") o.scenario = v;
-    else if (a == "--samples") o.samples = static_cast<int>(parse_int("--samples", v, 2, 10000));
-    else if (a == "--max-growth-kib") o.max_growth_kib = parse_int("--max-growth-kib", v, 0, 1LL << 40);
-    else usage("unknown option " + a);
+    if (a == "--frames")
+      o.frames = parse_int("--frames", v, 1, 100'000'000);
+    else if (a == "--scenario")
+      o.scenario = v;
+    else if (a == "--samples")
+      o.samples = static_cast<int>(parse_int("--samples", v, 2, 10000));
+    else if (a == "--max-growth-kib")
+      o.max_growth_kib = parse_int("--max-growth-kib", v, 0, 1LL << 40);
+    else
+      usage("unknown option " + a);
   }
   return o;
 }
@@ -127,8 +134,8 @@ void open_headless(Xr& xr) {
 }
 
 int soak(const Options& opt) {
-  const std::string text = opt.scenario.empty() ? std::string(gazelod::sim::default_scenario_json())
-                                                : read_file(opt.scenario);
+  const std::string text =
+      opt.scenario.empty() ? std::string(gazelod::sim::default_scenario_json()) : read_file(opt.scenario);
   gazelod::sim::Simulator simulator(
       gazelod::sim::load_scenario_json(text, opt.scenario.empty() ? "<default>" : opt.scenario));
   const auto& scenario = simulator.scenario();
@@ -153,8 +160,8 @@ int soak(const Options& opt) {
     d.importance = o.importance;
     plugin->add_object(d);
   }
-  std::printf("soak: %lld frames at %.6g Hz (%.1f simulated s), %zu objects, unpaced, headless\n",
-              opt.frames, rate_hz, static_cast<double>(opt.frames) / rate_hz, scenario.objects.size());
+  std::printf("soak: %lld frames at %.6g Hz (%.1f simulated s), %zu objects, unpaced, headless\n", opt.frames, rate_hz,
+              static_cast<double>(opt.frames) / rate_hz, scenario.objects.size());
 
   const long long every = std::max(1LL, opt.frames / opt.samples);
   std::vector<long long> rss;
@@ -221,12 +228,13 @@ int soak(const Options& opt) {
   const long long base = rss[warm - 1];
   const long long peak = *std::max_element(rss.begin() + static_cast<std::ptrdiff_t>(warm - 1), rss.end());
   const long long growth = peak - base;
-  std::printf("soak: %s frames=%lld wall=%.1f s (%.0f frames/s) rss_after_warmup=%lld KiB "
-              "rss_final=%lld KiB rss_peak=%lld KiB growth=%lld KiB (limit %lld) mean_lod=%.3f\n",
-              growth <= opt.max_growth_kib ? "PASS" : "FAIL", done_frames, wall_s,
-              static_cast<double>(done_frames) / wall_s, base, rss.back(), peak, growth,
-              opt.max_growth_kib,
-              static_cast<double>(coarse) / static_cast<double>(done_frames * std::max<std::size_t>(1, plugin->object_count())));
+  std::printf(
+      "soak: %s frames=%lld wall=%.1f s (%.0f frames/s) rss_after_warmup=%lld KiB "
+      "rss_final=%lld KiB rss_peak=%lld KiB growth=%lld KiB (limit %lld) mean_lod=%.3f\n",
+      growth <= opt.max_growth_kib ? "PASS" : "FAIL", done_frames, wall_s, static_cast<double>(done_frames) / wall_s,
+      base, rss.back(), peak, growth, opt.max_growth_kib,
+      static_cast<double>(coarse) /
+          static_cast<double>(done_frames * std::max<std::size_t>(1, plugin->object_count())));
   return growth <= opt.max_growth_kib ? 0 : 1;
 }
 

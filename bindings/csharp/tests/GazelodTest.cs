@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // GazelodTest.cs: the C# bindings (bindings/csharp/Gazelod.cs) against libgazelod, as an engine
 // would use them. A console program:
 //   mono gazelod_csharp_test.exe <struct sizes file> <gazelod.h> [--skip-openxr]

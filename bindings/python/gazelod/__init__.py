@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """gazelod for Python: gaze traces, their classification, the perceptual core on numpy arrays,
 the C ABI's data-mode plugin frame by frame, and the main job (`run`) and HMD comparison.
 

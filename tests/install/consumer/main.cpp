@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // gazelod_consumer: an OpenXR application built against an INSTALLED gazelod (find_package or
 // pkg-config), run by tests/install/install_test.sh. Headless (XR_MND_headless, no graphics)
 // on whatever runtime XR_RUNTIME_JSON names, which must be set: the test points it at the
@@ -84,14 +85,24 @@ gzl_object_desc object_desc() {
 struct Vec {
   double x, y, z;
 };
-Vec add(Vec a, Vec b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-Vec scale(Vec a, double s) { return {a.x * s, a.y * s, a.z * s}; }
-Vec cross(Vec a, Vec b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
-Vec normalize(Vec a) { return scale(a, 1.0 / std::sqrt(a.x * a.x + a.y * a.y + a.z * a.z)); }
-gzl_vec3 to_gzl(Vec a) { return {a.x, a.y, a.z}; }
+Vec add(Vec a, Vec b) {
+  return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
+Vec scale(Vec a, double s) {
+  return {a.x * s, a.y * s, a.z * s};
+}
+Vec cross(Vec a, Vec b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+Vec normalize(Vec a) {
+  return scale(a, 1.0 / std::sqrt(a.x * a.x + a.y * a.y + a.z * a.z));
+}
+gzl_vec3 to_gzl(Vec a) {
+  return {a.x, a.y, a.z};
+}
 
 constexpr int kLevels = 4;
-constexpr int kFrames = 240;       // frames with objects placed around the gaze
+constexpr int kFrames = 240;  // frames with objects placed around the gaze
 constexpr double kPi = 3.14159265358979323846;
 
 int run() {
@@ -163,7 +174,8 @@ int run() {
     plugin.levels(3, ids, levels);
     const gzl_frame_info info_now = plugin.frame_info();
     for (std::size_t i = 0; i < 3; ++i) {
-      if (levels[i] >= kLevels && bad++ < 5) std::printf("consumer: FAIL object %zu: level %d of %d\n", i, levels[i], kLevels);
+      if (levels[i] >= kLevels && bad++ < 5)
+        std::printf("consumer: FAIL object %zu: level %d of %d\n", i, levels[i], kLevels);
     }
     if (!asked_exit) {  // the decisions checked: the last frame before the session winds down
       for (std::size_t i = 0; i < 3; ++i) last[i] = levels[i];
@@ -174,7 +186,8 @@ int run() {
       if (have_gaze) ++placed_frames;
       have_gaze = true;
       eye = {info_now.eye_position_base_m.x, info_now.eye_position_base_m.y, info_now.eye_position_base_m.z};
-      gaze = normalize(Vec{info_now.gaze_direction_base.x, info_now.gaze_direction_base.y, info_now.gaze_direction_base.z});
+      gaze = normalize(
+          Vec{info_now.gaze_direction_base.x, info_now.gaze_direction_base.y, info_now.gaze_direction_base.z});
     }
     XrFrameEndInfo end{XR_TYPE_FRAME_END_INFO};
     end.displayTime = fs.predictedDisplayTime;

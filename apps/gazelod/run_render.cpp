@@ -3,6 +3,7 @@
 
 #include "gaze/atomic_file.hpp"
 #include "lod/angles.hpp"
+#include "render/lod_key.hpp"
 #include "render/camera.hpp"
 #include "render/foveal_marker.hpp"
 #include "render/png_io.hpp"
@@ -174,9 +175,11 @@ void RunRenderer::render_eye(std::size_t eye, std::uint32_t image_index, const X
   r.draw(image_index, eye_view, items_);
 }
 
-void RunRenderer::save_png(std::size_t eye, std::uint32_t image_index, const std::filesystem::path& file) {
+void RunRenderer::save_png(std::size_t eye, std::uint32_t image_index, const std::filesystem::path& file,
+                           std::uint32_t levels) {
   // Atomically, like the run's other files: a full disk leaves no cut frame.png.
-  const std::vector<unsigned char> png = render::encode_png(renderer(eye).read_back(image_index));
+  const std::vector<unsigned char> png =
+      render::encode_png(render::with_lod_key(renderer(eye).read_back(image_index), levels));
   gaze::write_file_atomic(file.string(), std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
 }
 

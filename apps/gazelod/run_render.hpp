@@ -53,7 +53,8 @@ class RunRenderer {
 
   // The image last drawn by render_eye as a PNG; call before releasing it. Throws
   // render::RenderError naming the file.
-  void save_png(std::size_t eye, std::uint32_t image_index, const std::filesystem::path& file);
+  // With a colour key under the frame for levels 0 .. levels - 1 (render/lod_key.hpp).
+  void save_png(std::size_t eye, std::uint32_t image_index, const std::filesystem::path& file, std::uint32_t levels);
 
   // The debug view's foveal circle (render/foveal_marker.hpp) around the gaze, in white;
   // on by default.

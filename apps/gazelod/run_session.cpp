@@ -15,6 +15,7 @@
 #include "apps/gazelod/run_report.hpp"
 #include "apps/gazelod/run_scenario.hpp"
 #include "apps/xr_host/xr_app.hpp"
+#include "render/lod_palette.hpp"
 #include "sim/simulator.hpp"
 
 #include <glm/geometric.hpp>
@@ -224,6 +225,9 @@ int run_session(const RunOptions& opt, Io io) {
     for (std::size_t i : plain)
       baked_of_plain.push_back(i < prepared.baked->objects.size() ? &prepared.baked->objects[i] : nullptr);
   if (opt.render) renderer.emplace(*app, chains, clusters.empty() ? nullptr : &clusters, baked_of_plain);
+  // frame.png's colour key: every level an object has, or every tint when cluster depths are drawn.
+  std::uint32_t key_levels = clusters.empty() ? 1u : static_cast<std::uint32_t>(render::kLodPaletteSize);
+  for (const auto& c : chains) key_levels = std::max(key_levels, static_cast<std::uint32_t>(c.size()));
 
   const double rate = scenario.frame_rate_hz > 0 ? scenario.frame_rate_hz : 90.0;
   const std::int64_t planned =
@@ -344,7 +348,7 @@ int run_session(const RunOptions& opt, Io io) {
           const std::uint32_t index = app->acquire(eye);
           renderer->render_eye(eye, index, views[eye], positions, radii, d, diag, cluster_motion.shift_m());
           if (save && eye == 0) {
-            renderer->save_png(eye, index, opt.out_dir / "frame.png");
+            renderer->save_png(eye, index, opt.out_dir / "frame.png", key_levels);
             png_saved = true;
           }
           app->release(eye);

@@ -11,6 +11,7 @@
 #include "apps/gazelod/run_session.hpp"
 #include "bake/baked_scene.hpp"
 #include "render/lod_palette.hpp"
+#include "render/lod_key.hpp"
 #include "render/png_io.hpp"
 #include "tests/bake/test_meshes.hpp"
 
@@ -196,7 +197,7 @@ TEST_F(ClusterRun, RenderedFrameShowsTheClusters) {
                                scenario_, "--out", out.string(), "--quiet"});
   ASSERT_EQ(r.rc, 0) << r.err;
   EXPECT_NE(r.out.find("frame.png"), std::string::npos) << r.out;
-  const render::RgbaImage img = render::read_png(out / "frame.png");
+  const render::RgbaImage img = render::without_lod_key(render::read_png(out / "frame.png"));
   ASSERT_GT(img.width, 0u);
   // The wall fills much of the view ahead: many pixels are not background.
   std::size_t wall = 0;
@@ -268,7 +269,7 @@ TEST_F(ClusterRun, FramePngTintsEachDrawnDepth) {
   std::set<int> allowed{0};  // the stretched copy, a plain object at its one level, where it is in view
   for (const auto& [tint, n] : triangles_by_tint) allowed.insert(static_cast<int>(tint));
 
-  const render::RgbaImage img = render::read_png(out / "frame.png");
+  const render::RgbaImage img = render::without_lod_key(render::read_png(out / "frame.png"));
   ASSERT_GT(img.width, 0u);
   std::map<int, std::size_t> pixels_by_tint;
   std::size_t sampled = 0;
@@ -464,7 +465,7 @@ TEST_F(ClusterRun, ObjectMotionMovesTheClusterMesh) {
   // Rendered: the wall, 12 m ahead at the start, covers far less of the frame once it has
   // receded (frame 150 against frame 0 of the same run).
   const auto covered = [&](const std::filesystem::path& png) {
-    const render::RgbaImage img = render::read_png(png);
+    const render::RgbaImage img = render::without_lod_key(render::read_png(png));
     std::size_t n = 0;
     for (std::uint32_t y = 0; y < img.height; y += 4)
       for (std::uint32_t x = 0; x < img.width; x += 4)

@@ -3,6 +3,7 @@
 // with its generated objects written out), and record what a scenario simulates as a gazelod
 // gaze trace.
 #include "apps/gazelod/command.hpp"
+#include "auxiliary/text.hpp"
 #include "gaze/atomic_file.hpp"
 #include "sim/record_trace.hpp"
 #include "sim/scenario_family.hpp"
@@ -37,7 +38,8 @@ int run_validate(const Options& o, Io io) {
   const sim::Scenario sc = load(o);
   io.out << (o.use_default ? std::string("<embedded default scenario>") : o.file) << ": ok: \"" << sc.name
          << "\", display " << sc.display.name << " (" << sc.display.label << "), " << sc.duration_s << " s at "
-         << sc.frame_rate_hz << " Hz, seed " << sc.seed << ", " << sc.objects.size() << " objects, effects:";
+         << sc.frame_rate_hz << " Hz, seed " << sc.seed << ", " << aux::counted(sc.objects.size(), "object", "objects")
+         << ", effects:";
   if (sc.effects.empty()) io.out << " none (still head, centred gaze)";
   for (const sim::EffectSpec& e : sc.effects) io.out << " " << e.type;
   io.out << "\n";

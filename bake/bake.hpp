@@ -4,7 +4,7 @@
 // -> gltf_pack + msft_lod_writer -> glb_write. With options.profile_viewpoints 6 or 18 each
 // chain is also rendered (Reddy 3.3, profile_render.hpp) and the figure stored beside the
 // geometric one. `gazelod bake --clusters` (a cluster hierarchy per primitive instead of a
-// chain per node) is bake/cluster_bake.hpp.
+// chain per node) is bake/cluster/cluster_bake.hpp.
 #pragma once
 
 #include "bake/gltf_load.hpp"

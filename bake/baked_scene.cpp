@@ -3,7 +3,7 @@
 #include "bake/baked_scene.hpp"
 
 #include "bake/bake_error.hpp"
-#include "bake/cluster_lod_gltf.hpp"
+#include "bake/cluster/cluster_lod_gltf.hpp"
 #include "bake/gltf_load.hpp"
 #include "bake/mesh_extract.hpp"
 #include "bake/node_world.hpp"

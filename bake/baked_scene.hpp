@@ -5,7 +5,7 @@
 // every mesh primitive's cluster hierarchy (GAZELOD_cluster_lod, bake --clusters).
 #pragma once
 
-#include "lod/cluster_hierarchy.hpp"
+#include "lod/cluster/cluster_hierarchy.hpp"
 #include "lod/lod_chain.hpp"
 
 #include <glm/mat4x4.hpp>
@@ -39,7 +39,7 @@ struct BakedObject {
   std::vector<BakedLevelMesh> level_meshes;
 };
 
-// One primitive's cluster hierarchy (bake/cluster_lod_gltf.hpp): cluster c is the triangle
+// One primitive's cluster hierarchy (bake/cluster/cluster_lod_gltf.hpp): cluster c is the triangle
 // list indices[first_index[c] .. + index_count[c]) into the primitive's own vertices; bounds
 // and errors in the mesh's own space (not the node's world space), as are the primitive's
 // positions (x, y, z per vertex, vertex_count vertices) the indices point into.

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Point-to-surface distance for the errors of the cluster hierarchy (bake/cluster_build.hpp) and
+// Point-to-surface distance for the errors of the cluster hierarchy (bake/cluster/cluster_build.hpp) and
 // of the LOD chain (bake/simplify_chain.hpp): the triangles of one simplified group or level in a
 // uniform grid of cubic cells, about one triangle's area
 // per cell face, searched ring by ring outward from the query point's cell with cells farther

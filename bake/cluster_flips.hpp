@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Folds left by a group's simplification (bake/cluster_build.hpp, step 4). meshoptimizer 0.18's
+// Folds left by a group's simplification (bake/cluster/cluster_build.hpp, step 4). meshoptimizer 0.18's
 // flip check misses some collapses on flat-shaded, panelled geometry: simplifying one city block
 // (14,538 triangles of walls and roofs) to half with meshopt_simplify alone leaves 32 triangles
 // facing against the wall or roof they lie in, overlapping a neighbour and leaving a hole

@@ -119,7 +119,7 @@ PrimitiveChain simplify_chain(std::span<const float> pos, std::span<const std::u
     level.indices.assign(dst.begin(), dst.begin() + static_cast<std::ptrdiff_t>(n));
     meshopt_optimizeVertexCache(level.indices.data(), level.indices.data(), n, vcount);
     level.vertices = count_vertices(level.indices, vcount);
-    // The error measured against the source, as the cluster hierarchy's (bake/cluster_build.hpp):
+    // The error measured against the source, as the cluster hierarchy's (bake/cluster/cluster_build.hpp):
     // meshopt's estimate (`err`) is a quadric mean that falls several times below the largest
     // distance. A coarser level is never reported as more accurate than a finer one.
     // And at least the width of any triangle meshopt folded over (bake/cluster_flips.hpp): the

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Cluster hierarchy build (bake/cluster_build.hpp) throughput in input triangles per second on
+// Cluster hierarchy build (bake/cluster/cluster_build.hpp) throughput in input triangles per second on
 // a generated terrain of 1,002,528 triangles (708 x 708 quads over 100 m, four octaves of
 // sines up to 4 m). Baseline in the same process, registered first: one meshopt_simplify of the
 // whole mesh to half its triangles. Counters: triangles_per_s = input triangles / wall time;
@@ -9,7 +9,7 @@
 // milliseconds per phase of the last iteration (ClusterBuildResult::Phases); folded = the
 // folds left (ClusterBuildResult::folded_triangles). The build runs with 1 thread and with all
 // cores (threads 0), and with all cores without fold retries (fold_retries 0: their cost).
-#include "bake/cluster_build.hpp"
+#include "bake/cluster/cluster_build.hpp"
 #include "tests/bake/test_meshes.hpp"
 
 #include <benchmark/benchmark.h>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// ns per cluster for select_clusters (lod/cluster_select.hpp) at 10k..1M clusters, beside
+// ns per cluster for select_clusters (lod/cluster/cluster_select.hpp) at 10k..1M clusters, beside
 // select_lods per object at the same count in the same run (the baseline: bench/lod's scene,
 // chains of 4 levels, a quarter of the objects moving).
 // Clusters: terrain tiles around the viewer, each a quadtree hierarchy (a leaf cluster per
@@ -17,8 +17,8 @@
 // ns_per_object at the same count (run first); drawn_pct = clusters in the cut;
 // visible_parent_pct = clusters whose parent error is visible (about the share of records
 // the size screen cannot decide).
-#include "lod/cluster_select.hpp"
-#include "lod/cluster_select_store.hpp"
+#include "lod/cluster/cluster_select.hpp"
+#include "lod/cluster/cluster_select_store.hpp"
 #include "lod/select.hpp"
 
 #include <benchmark/benchmark.h>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// How tight the cluster hierarchy's errors are (bake/cluster_build.hpp), on the generated terrain
+// How tight the cluster hierarchy's errors are (bake/cluster/cluster_build.hpp), on the generated terrain
 // of `gazelod scene generate terrain` (bake/terrain_mesh.hpp, default options: 1,002,528
 // triangles, +Y up). For each level of the plain simplification chain (bake/simplify_chain.hpp)
 // the uniform cut of the hierarchy at the chain's error t (clusters with self error <= t <
@@ -17,7 +17,7 @@
 // Rows: t = each chain level's meshopt error, then t = each chain level's true error. Then per
 // depth: clusters, triangles, the mean stored self error and the mean vertical error.
 // Usage: bench_cluster_tightness [triangles] [threads]   (defaults 1000000, 2)
-#include "bake/cluster_build.hpp"
+#include "bake/cluster/cluster_build.hpp"
 #include "bake/cluster_distance.hpp"
 #include "bake/simplify_chain.hpp"
 #include "bake/terrain_mesh.hpp"

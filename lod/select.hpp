@@ -17,7 +17,7 @@
 // (small-angle: over-states the angle, so it errs towards keeping detail). The nearest point,
 // not the centre or the angular radius: a large object the viewer stands in or next to shows
 // its error at its near side (inside the sphere no level goes by size), as a cluster does
-// (lod/cluster_select.hpp).
+// (lod/cluster/cluster_select.hpp).
 // and may be used when f_k > A = s * min(G(v) M(E), xi). E is the nearest point's eccentricity
 // minus the tracker's error, v the retinal velocity (their scalar forms, the tests'
 // reference: tests/lod/reference_criteria.hpp). The vectorised kernels

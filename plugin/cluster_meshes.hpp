@@ -5,9 +5,9 @@
 // out as FrameDecisions::cluster_*. All allocation happens at registration.
 #pragma once
 
-#include "lod/cluster_select.hpp"
-#include "lod/cluster_select_store.hpp"
-#include "lod/cluster_switch_policy.hpp"
+#include "lod/cluster/cluster_select.hpp"
+#include "lod/cluster/cluster_select_store.hpp"
+#include "lod/cluster/cluster_switch_policy.hpp"
 #include "plugin/object_desc.hpp"
 
 #include <cstdint>

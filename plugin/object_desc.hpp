@@ -3,8 +3,8 @@
 // a cut of their cluster hierarchy. Plain data.
 #pragma once
 
-#include "lod/cluster_hierarchy.hpp"
-#include "lod/cluster_select_store.hpp"
+#include "lod/cluster/cluster_hierarchy.hpp"
+#include "lod/cluster/cluster_select_store.hpp"
 #include "lod/lod_chain.hpp"
 
 #include <glm/vec3.hpp>
@@ -22,7 +22,7 @@ struct ObjectDesc {
   double importance = 1.0;
 };
 
-// A mesh drawn as a cut of its cluster hierarchy (gazelod bake --clusters; lod/cluster_select.hpp):
+// A mesh drawn as a cut of its cluster hierarchy (gazelod bake --clusters; lod/cluster/cluster_select.hpp):
 // each cluster is drawn where its own simplification error is invisible and its parent's is
 // not, with Reddy's rule per cluster, so detail follows the fovea across one mesh.
 struct ClusterMeshDesc {

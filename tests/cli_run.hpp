@@ -2,7 +2,7 @@
 // Runs the gazelod program in-process (gazelod::cli::run) for the command-line tests.
 #pragma once
 
-#include "apps/gazelod/command.hpp"
+#include "apps/gazelod/commands/command.hpp"
 
 #include <sstream>
 #include <string>

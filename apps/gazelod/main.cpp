@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // gazelod: the command-line program. Every sub-command is a cmd_*.cpp in this folder.
-#include "apps/gazelod/command.hpp"
+#include "apps/gazelod/commands/command.hpp"
 
 #include <iostream>
 

@@ -2,7 +2,7 @@
 // The objects both sides of the peer benchmark select LODs for: Reddy 1998's test environment
 // (four LODs of 3928, 834, 254, 76 triangles; removed detail sqrt(triangles) / 2 cycles per
 // diameter), randomly placed ahead of a viewer on a 1280x1024, 43.6 x 33.4 deg display.
-// The same generator as `gazelod eval`'s layouts (apps/gazelod/eval_scenario.cpp), inlined so
+// The same generator as `gazelod eval`'s layouts (apps/gazelod/eval/scenario.cpp), inlined so
 // the benchmark needs only gazelod_lod.
 #pragma once
 

@@ -2,7 +2,7 @@
 // What a cluster cut's triangles cost on the offscreen device (lavapipe here), against the
 // part of a frame that does not scale with triangles. One process, one scene: the default
 // generated terrain (bake/terrain_mesh.hpp, 1,002,528 triangles), its cluster hierarchy
-// (bake/cluster_build.hpp) and a cut chosen by lod/cluster_select.hpp for a viewer standing on
+// (bake/cluster/cluster_build.hpp) and a cut chosen by lod/cluster/cluster_select.hpp for a viewer standing on
 // the terrain's path, with Reddy's global scale s bisected so that the cut holds about
 // kCutTriangles. A frame is both eyes of a Meta Quest Pro (1800 x 1920 each, 106 x 96 deg),
 // each eye its own renderer and image, as `gazelod run` draws them (GAZELOD_BENCH_EYE_DIVISOR:
@@ -31,10 +31,10 @@
 // earlier cases run first with the same readback arg; 0 otherwise.
 // BM_Interleaved draws the same cases one frame each in turn and prints medians, minima and
 // ratios: on a shared machine, the figures to quote.
-#include "bake/cluster_build.hpp"
+#include "bake/cluster/cluster_build.hpp"
 #include "bake/terrain_mesh.hpp"
-#include "lod/cluster_select.hpp"
-#include "lod/cluster_select_store.hpp"
+#include "lod/cluster/cluster_select.hpp"
+#include "lod/cluster/cluster_select_store.hpp"
 #include "render/camera.hpp"
 #include "render/device_context.hpp"
 #include "render/frame_renderer.hpp"

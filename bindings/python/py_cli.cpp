@@ -6,7 +6,7 @@
 // KeyboardInterrupt is raised in Python.
 #include "bindings/python/py_common.hpp"
 
-#include "apps/gazelod/command.hpp"
+#include "apps/gazelod/commands/command.hpp"
 
 #include <pybind11/stl.h>
 

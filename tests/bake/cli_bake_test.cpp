@@ -2,7 +2,7 @@
 // gazelod bake through gazelod::cli::run: exit codes, progress, summary, usage errors.
 #include "tests/cli_run.hpp"
 #include "bake/baked_scene.hpp"
-#include "apps/gazelod/command.hpp"
+#include "apps/gazelod/commands/command.hpp"
 #include "tests/bake/test_meshes.hpp"
 
 #include <gtest/gtest.h>

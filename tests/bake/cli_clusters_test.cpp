@@ -3,7 +3,7 @@
 // output form (second argument or -o), usage errors, exit codes.
 #include "tests/cli_run.hpp"
 #include "bake/baked_scene.hpp"
-#include "apps/gazelod/command.hpp"
+#include "apps/gazelod/commands/command.hpp"
 #include "tests/bake/test_meshes.hpp"
 
 #include <gtest/gtest.h>

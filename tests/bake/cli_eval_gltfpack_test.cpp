@@ -2,7 +2,7 @@
 // gazelod eval gltfpack through gazelod::cli::run: the bake's chain beside meshoptimizer's
 // gltfpack (Debian package gltfpack; the tests that run it skip, saying why, without it).
 #include "tests/cli_run.hpp"
-#include "apps/gazelod/command.hpp"
+#include "apps/gazelod/commands/command.hpp"
 #include "tests/bake/test_meshes.hpp"
 #include "tests/skip_or_fail.hpp"
 

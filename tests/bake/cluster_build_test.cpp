@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: Apache-2.0
-// build_cluster_hierarchy (bake/cluster_build.hpp): the hierarchy's invariants on a closed
+// build_cluster_hierarchy (bake/cluster/cluster_build.hpp): the hierarchy's invariants on a closed
 // sphere, an open grid and separate pieces; stored errors against the true distance from the
 // source; the nearest-triangle grid and the splitter it uses; small, empty and degenerate input;
 // bad input.
 #include "bake/bake_error.hpp"
 #include "bake/city_mesh.hpp"
-#include "bake/cluster_build.hpp"
+#include "bake/cluster/cluster_build.hpp"
 #include "bake/cluster_distance.hpp"
 #include "bake/cluster_flips.hpp"
-#include "bake/cluster_split.hpp"
+#include "bake/cluster/cluster_split.hpp"
 #include "bake/terrain_mesh.hpp"
 #include "tests/bake/cluster_invariants.hpp"
 #include "tests/bake/test_meshes.hpp"

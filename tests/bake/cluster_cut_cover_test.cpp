@@ -19,10 +19,10 @@
 // and fins must stay rare (at most one per 5000 drawn triangles; this walk has one pair, drawn
 // in 21 of its 30 cuts).
 #include "bake/baked_scene.hpp"
-#include "bake/cluster_bake.hpp"
+#include "bake/cluster/cluster_bake.hpp"
 #include "bake/terrain_mesh.hpp"
-#include "lod/cluster_select.hpp"
-#include "lod/cluster_select_store.hpp"
+#include "lod/cluster/cluster_select.hpp"
+#include "lod/cluster/cluster_select_store.hpp"
 #include "tests/bake/test_meshes.hpp"
 
 #include <gtest/gtest.h>

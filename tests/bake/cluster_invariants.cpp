@@ -2,8 +2,8 @@
 // The hierarchy invariants of cluster_invariants.hpp.
 #include "tests/bake/cluster_invariants.hpp"
 
-#include "bake/cluster_bake.hpp"
-#include "bake/cluster_sphere.hpp"
+#include "bake/cluster/cluster_bake.hpp"
+#include "bake/cluster/cluster_sphere.hpp"
 #include "bake/mesh_extract.hpp"
 
 #include <gtest/gtest.h>

@@ -4,7 +4,7 @@
 // build_cluster_hierarchy promises (cluster_build.hpp), as gtest expectations.
 #pragma once
 
-#include "bake/cluster_build.hpp"
+#include "bake/cluster/cluster_build.hpp"
 
 #include <tiny_gltf.h>
 

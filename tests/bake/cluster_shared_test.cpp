@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
-// Where separately baked primitives meet (bake/shared_positions.hpp) and what the cluster bake
+// Where separately baked primitives meet (bake/cluster/shared_positions.hpp) and what the cluster bake
 // does there: the meeting positions stay at every level, so neighbouring meshes drawn at
 // different levels still meet, while each mesh's free rim is simplified.
 #include "bake/baked_scene.hpp"
-#include "bake/cluster_bake.hpp"
+#include "bake/cluster/cluster_bake.hpp"
 #include "bake/generated_scene.hpp"
-#include "bake/shared_positions.hpp"
+#include "bake/cluster/shared_positions.hpp"
 #include "bake/terrain_mesh.hpp"
 #include "tests/bake/cluster_invariants.hpp"
 #include "tests/bake/test_meshes.hpp"

@@ -7,7 +7,7 @@
 #include "bake/bake.hpp"
 #include "bake/bake_error.hpp"
 #include "bake/baked_scene.hpp"
-#include "bake/cluster_bake.hpp"
+#include "bake/cluster/cluster_bake.hpp"
 #include "bake/gltf_load.hpp"
 #include "bake/mesh_extract.hpp"
 #include "tests/bake/cluster_invariants.hpp"

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Every bake error path gives a message naming the file and the place, and no output file.
 #include "bake/bake.hpp"
-#include "bake/cluster_bake.hpp"
+#include "bake/cluster/cluster_bake.hpp"
 #include "bake/bake_error.hpp"
 #include "tests/bake/test_meshes.hpp"
 

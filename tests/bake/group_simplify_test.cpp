@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
-// simplify_group_triangles (bake/group_simplify.hpp), one group's step on its own: the target
+// simplify_group_triangles (bake/cluster/group_simplify.hpp), one group's step on its own: the target
 // share, free collapses past it on flat panels, locks honoured, too small a group left alone,
 // and fold retries that never keep a wider fold.
 #include "bake/city_mesh.hpp"
-#include "bake/group_simplify.hpp"
+#include "bake/cluster/group_simplify.hpp"
 #include "bake/meshopt_lock.hpp"
 #include "tests/bake/test_meshes.hpp"
 

@@ -7,7 +7,7 @@
 #include "bake/profile_render.hpp"
 #include "bake/profile_spectrum.hpp"
 #include "bake/simplify_chain.hpp"
-#include "apps/gazelod/command.hpp"
+#include "apps/gazelod/commands/command.hpp"
 #include "render/frame_renderer.hpp"
 #include "render/mesh_library.hpp"
 #include "render/offscreen_target.hpp"

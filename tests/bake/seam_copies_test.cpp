@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 // A group stuck at attribute seams is simplified across them (ClusterBuildOptions::
 // stuck_across_seams), each new corner given back the copy of its position from its triangle's
-// side (bake/seam_copies.hpp).
-#include "bake/cluster_build.hpp"
-#include "bake/cluster_source.hpp"
-#include "bake/seam_copies.hpp"
+// side (bake/cluster/seam_copies.hpp).
+#include "bake/cluster/cluster_build.hpp"
+#include "bake/cluster/cluster_source.hpp"
+#include "bake/cluster/seam_copies.hpp"
 #include "tests/bake/cluster_invariants.hpp"
 #include "tests/bake/test_meshes.hpp"
 

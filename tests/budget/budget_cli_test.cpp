@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // The `gazelod budget` command: the contract's JSON output, exit codes and error messages.
-#include "apps/gazelod/command.hpp"
+#include "apps/gazelod/commands/command.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

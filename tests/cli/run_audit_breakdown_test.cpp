@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-// The audit's breakdown (apps/gazelod/run_audit_breakdown.hpp) on synthetic frames: the true
+// The audit's breakdown (apps/gazelod/run/audit_breakdown.hpp) on synthetic frames: the true
 // gaze state's seams, the object classes, the excess split between the switch policy and the
 // selection, visible and oracle switches, and the JSON round trip.
-#include "apps/gazelod/run_audit_breakdown.hpp"
+#include "apps/gazelod/run/audit_breakdown.hpp"
 
 #include "gaze/gaze_conditioner.hpp"
 #include "lod/criterion.hpp"

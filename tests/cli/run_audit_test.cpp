@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
-// The visibility audit's arithmetic (apps/gazelod/run_audit.hpp) on synthetic frames, its
+// The visibility audit's arithmetic (apps/gazelod/run/audit.hpp) on synthetic frames, its
 // report columns and plot, and the --decisions file (RFC 4180 names, atomic write).
-#include "apps/gazelod/run_audit.hpp"
-#include "apps/gazelod/run_report.hpp"
-#include "apps/gazelod/svg_plot.hpp"
+#include "apps/gazelod/run/audit.hpp"
+#include "apps/gazelod/run/report.hpp"
+#include "apps/gazelod/plots/svg_plot.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "apps/gazelod/run_report.hpp"
+#include "apps/gazelod/run/report.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Checks on the SVG plots gazelod writes, as a reader would make them at a glance: every tick
 // label a round number (at most three significant digits, k / M / G allowed), and no two texts
-// overlapping. Texts are boxes of 0.6 em a character (the plots' own estimate, plot_axis.hpp)
+// overlapping. Texts are boxes of 0.6 em a character (the plots' own estimate, plots/axis.hpp)
 // and one em high, turned by their rotate(); overlap is a separating-axis test on the turned
 // boxes.
 #pragma once

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "apps/gazelod/svg_plot.hpp"
+#include "apps/gazelod/plots/svg_plot.hpp"
 
-#include "apps/gazelod/compare_svg.hpp"
-#include "apps/gazelod/plot_axis.hpp"
+#include "apps/gazelod/compare/svg.hpp"
+#include "apps/gazelod/plots/axis.hpp"
 #include "tests/cli/svg_check.hpp"
 
 #include <gtest/gtest.h>

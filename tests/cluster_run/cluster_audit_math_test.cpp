@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
-// The per-cluster audit's pure parts (apps/gazelod/run_cluster_audit.hpp,
-// run_cluster_scene.hpp): counting leaves against the oracle, the run summary, and node
+// The per-cluster audit's pure parts (apps/gazelod/clusters/audit.hpp,
+// clusters/scene.hpp): counting leaves against the oracle, the run summary, and node
 // transforms as the plugin's poses.
-#include "apps/gazelod/run_cluster_audit.hpp"
-#include "apps/gazelod/run_cluster_scene.hpp"
+#include "apps/gazelod/clusters/audit.hpp"
+#include "apps/gazelod/clusters/scene.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
-// ClusterCover (apps/gazelod/run_cluster_cover.hpp) on hierarchies bake builds: the groups it
+// ClusterCover (apps/gazelod/clusters/cover.hpp) on hierarchies bake builds: the groups it
 // derives from record equality are the build's own groups, every threshold cut covers every
 // leaf exactly once with the cover a reference computes on the build's group links, broken cuts
 // are caught, and records that loop are refused.
-#include "apps/gazelod/run_cluster_cover.hpp"
+#include "apps/gazelod/clusters/cover.hpp"
 
-#include "bake/cluster_build.hpp"
+#include "bake/cluster/cluster_build.hpp"
 #include "tests/bake/test_meshes.hpp"
 
 #include <gtest/gtest.h>

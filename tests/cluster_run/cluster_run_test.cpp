@@ -7,8 +7,8 @@
 // bad placements are usage errors.
 #include "tests/run/run_test_util.hpp"
 
-#include "apps/gazelod/run_cluster_cover.hpp"
-#include "apps/gazelod/run_session.hpp"
+#include "apps/gazelod/clusters/cover.hpp"
+#include "apps/gazelod/run/session.hpp"
 #include "bake/baked_scene.hpp"
 #include "render/lod_palette.hpp"
 #include "render/lod_key.hpp"

@@ -2,8 +2,8 @@
 // gazelod compare end to end on the simulated runtime (headless), and its parsing of a run's
 // summary: the JSON contract, no criterion ever adding triangles, errors for bad input.
 #include "lod/display.hpp"
-#include "apps/gazelod/command.hpp"
-#include "apps/gazelod/compare_runs.hpp"
+#include "apps/gazelod/commands/command.hpp"
+#include "apps/gazelod/compare/runs.hpp"
 #include "tests/cli/svg_check.hpp"
 #include "tests/eval/eval_cli.hpp"
 

@@ -3,7 +3,7 @@
 // folder per test, and the simulated runtime unpaced.
 #pragma once
 
-#include "apps/gazelod/command.hpp"
+#include "apps/gazelod/commands/command.hpp"
 
 #include <gtest/gtest.h>
 

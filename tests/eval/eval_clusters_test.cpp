@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // gazelod eval clusters end to end on the simulated runtime (headless, a small generated
 // terrain, a few frames of the terrain walk): the three columns, files, and bad input.
-#include "apps/gazelod/command.hpp"
+#include "apps/gazelod/commands/command.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

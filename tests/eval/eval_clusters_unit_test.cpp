@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 // gazelod eval clusters' parts that need no run: the same-rule baseline's hierarchy
-// (eval_clusters_baseline.hpp) and the reading of a run's reports (eval_clusters_report.hpp),
+// (clusters/eval_baseline.hpp) and the reading of a run's reports (clusters/eval_report.hpp),
 // with errors naming the file and JSON path.
-#include "apps/gazelod/command.hpp"
-#include "apps/gazelod/eval_clusters_baseline.hpp"
-#include "apps/gazelod/eval_clusters_report.hpp"
-#include "lod/cluster_select_store.hpp"
+#include "apps/gazelod/commands/command.hpp"
+#include "apps/gazelod/clusters/eval_baseline.hpp"
+#include "apps/gazelod/clusters/eval_report.hpp"
+#include "lod/cluster/cluster_select_store.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

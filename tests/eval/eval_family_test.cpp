@@ -2,8 +2,8 @@
 // gazelod eval family end to end on the simulated runtime: the report's shape, determinism,
 // bad options, and the audit's distribution on held-out seeds (docs/evaluation.md, "Scenario
 // family"), which the defaults were not tuned on.
-#include "apps/gazelod/command.hpp"
-#include "apps/gazelod/eval_family.hpp"
+#include "apps/gazelod/commands/command.hpp"
+#include "apps/gazelod/eval/family.hpp"
 #include "tests/eval/eval_cli.hpp"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The Reddy 1998 scenarios `gazelod eval` writes: valid for the simulator, the paper's figures,
 // reproducible layouts.
-#include "apps/gazelod/eval_scenario.hpp"
+#include "apps/gazelod/eval/scenario.hpp"
 #include "sim/simulator.hpp"
 
 #include <glm/geometric.hpp>

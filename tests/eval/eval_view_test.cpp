@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The evaluation's helpers: the frustum test behind the "in view" figures, and the bar chart.
-#include "apps/gazelod/compare_svg.hpp"
-#include "apps/gazelod/eval_lod_map.hpp"
+#include "apps/gazelod/compare/svg.hpp"
+#include "apps/gazelod/eval/lod_map_frame.hpp"
 
 #include <glm/gtc/quaternion.hpp>
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The LOD-map thesis's policy: hand-computed scores, the published weights, colour salience,
 // the level mapping and its guards.
-#include "lod/lod_map.hpp"
+#include "apps/gazelod/eval/lod_map.hpp"
 
 #include <gtest/gtest.h>
 

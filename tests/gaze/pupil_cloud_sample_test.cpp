@@ -2,7 +2,7 @@
 // The real Pupil Invisible export in ../shared/data/gaze (not part of the repository; skipped
 // without it): it imports whole, its axes agree with its own scene pixels, and trace stats
 // reports the agreement with Pupil Cloud's fixations and blinks.
-#include "apps/gazelod/command.hpp"
+#include "apps/gazelod/commands/command.hpp"
 #include "gaze/trace_open.hpp"
 #include "tests/skip_or_fail.hpp"
 

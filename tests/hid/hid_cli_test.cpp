@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // gazelod hid list / record, run through the command registry against the fake hidapi.
-#include "apps/gazelod/command.hpp"
+#include "apps/gazelod/commands/command.hpp"
 #include "tests/hid/fake_hidapi.hpp"
 #include "tests/hid/report_bytes.hpp"
 

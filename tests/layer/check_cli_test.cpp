@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// `gazelod layer check` (apps/gazelod/cmd_layer.cpp): what the layer would do, through the
+// `gazelod layer check` (apps/gazelod/commands/layer.cpp): what the layer would do, through the
 // loader, on the simulated runtime with and without eye gaze, with a good and a bad source.
 #include "tests/cli_run.hpp"
 #include "tests/layer/layer_test_util.hpp"

@@ -84,7 +84,7 @@ TEST(LayerGazelodRun, DecisionsEqualThoseOfTheTraceAsExternalSource) {
   apply(off);
 }
 
-// The option the comparison needs (apps/gazelod/cmd_run.cpp): a finite number in [0.01, 20].
+// The option the comparison needs (apps/gazelod/commands/run.cpp): a finite number in [0.01, 20].
 TEST(LayerGazelodRun, GazeErrorOptionRefusesBadValues) {
   for (const char* bad : {"nan", "0", "25", "x"}) {
     const auto r = test::run_cli({"run", "--no-render", "--frames", "1", "--gaze-error-deg", bad});

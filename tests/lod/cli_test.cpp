@@ -2,7 +2,7 @@
 // gazelod thresholds and gazelod hmds through gazelod::cli::run.
 #include "tests/cli_run.hpp"
 #include "lod/acuity.hpp"
-#include "apps/gazelod/command.hpp"
+#include "apps/gazelod/commands/command.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

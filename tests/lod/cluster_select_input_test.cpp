@@ -2,8 +2,8 @@
 // Per-cluster selection at its seams (eye inside a sphere, gaze at a centre, errors 0 and +inf,
 // radius 0, the eye at a centre), with data validation refused and unvalidated bad data
 // harmless, and the instance transform / store.
-#include "lod/cluster_select.hpp"
-#include "lod/cluster_select_store.hpp"
+#include "lod/cluster/cluster_select.hpp"
+#include "lod/cluster/cluster_select_store.hpp"
 #include "tests/lod/cluster_test_hierarchy.hpp"
 #include "tests/lod/reference_cluster_select.hpp"
 

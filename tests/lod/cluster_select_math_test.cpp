@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// The float atan2 and log10 of the cluster kernel (lod/cluster_select_math.hpp) against libm,
-// within the bounds its slacks assume (lod/cluster_select_kernel.hpp).
-#include "lod/cluster_select_math.hpp"
+// The float atan2 and log10 of the cluster kernel (lod/cluster/cluster_select_math.hpp) against libm,
+// within the bounds its slacks assume (lod/cluster/cluster_select_kernel.hpp).
+#include "lod/cluster/cluster_select_math.hpp"
 
 #include <gtest/gtest.h>
 

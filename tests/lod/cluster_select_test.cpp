@@ -2,9 +2,9 @@
 // Per-cluster selection: the cut's consistency under random viewers on synthetic hierarchies,
 // the float kernel against the exact rule in double (never coarser, equal where robust),
 // equality with select_lods on a one-cluster-per-level chain, and monotonicity.
-#include "lod/cluster_select.hpp"
-#include "lod/cluster_select_kernel.hpp"
-#include "lod/cluster_select_store.hpp"
+#include "lod/cluster/cluster_select.hpp"
+#include "lod/cluster/cluster_select_kernel.hpp"
+#include "lod/cluster/cluster_select_store.hpp"
 #include "tests/lod/cluster_test_hierarchy.hpp"
 #include "tests/lod/reference_cluster_select.hpp"
 

@@ -2,9 +2,9 @@
 // The cluster switch policy: a held cut stays consistent after every step of a random gaze walk
 // and is never coarser than the perceptual cut; per record, coarsening waits for the hold (and
 // for suppression), refinement is immediate; reset and validation.
-#include "lod/cluster_select.hpp"
-#include "lod/cluster_select_store.hpp"
-#include "lod/cluster_switch_policy.hpp"
+#include "lod/cluster/cluster_select.hpp"
+#include "lod/cluster/cluster_select_store.hpp"
+#include "lod/cluster/cluster_switch_policy.hpp"
 #include "tests/lod/cluster_test_hierarchy.hpp"
 
 #include <glm/geometric.hpp>

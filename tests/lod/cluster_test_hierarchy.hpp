@@ -7,7 +7,7 @@
 // a cut over that tree.
 #pragma once
 
-#include "lod/cluster_hierarchy.hpp"
+#include "lod/cluster/cluster_hierarchy.hpp"
 
 #include <cstdint>
 #include <random>

@@ -3,7 +3,7 @@
 #include "tests/lod/reference_cluster_select.hpp"
 
 #include "lod/acuity.hpp"
-#include "lod/cluster_select_kernel.hpp"  // kNearFloorM
+#include "lod/cluster/cluster_select_kernel.hpp"  // kNearFloorM
 #include "tests/lod/reference_criteria.hpp"
 
 #include <glm/geometric.hpp>

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
-// The per-record rule of lod/cluster_select.hpp written directly in double with the exact
+// The per-record rule of lod/cluster/cluster_select.hpp written directly in double with the exact
 // scalar criteria (tests/lod/reference_criteria.hpp, lod/acuity.hpp): the reference the float
 // kernel is held against (it may keep finer, never coarser).
 #pragma once
 
-#include "lod/cluster_select.hpp"
+#include "lod/cluster/cluster_select.hpp"
 
 #include <glm/vec3.hpp>
 

@@ -103,7 +103,7 @@ def test_replayed_recording_on_two_hmds(tmp_path):
 
 def test_progress_is_called_with_increasing_counts():
     # `gazelod run` prints "frame N/TOTAL" at most once a second and at the last frame
-    # (apps/gazelod/run_session.cpp): 20000 frames take ~2 s here, so several calls.
+    # (apps/gazelod/run/session.cpp): 20000 frames take ~2 s here, so several calls.
     frames = 20000
     calls = []
     started = time.monotonic()
@@ -178,7 +178,7 @@ def test_ctrl_c_stops_a_long_run_cleanly(tmp_path):
     assert "Error" not in stderr, stderr[-2000:]
     assert stdout.split() == ["interrupted", "again", "20"], (stdout, stderr[-2000:])
     # No partial output: `gazelod run` stops at a frame boundary and writes the report of the
-    # frames done, whole and marked interrupted (apps/gazelod/run_signals.hpp), or none.
+    # frames done, whole and marked interrupted (apps/gazelod/run/signals.hpp), or none.
     left = {p.name for p in out.iterdir()} if out.exists() else set()
     assert not [n for n in left if ".tmp" in n], left
     assert left <= REPORT_FILES | {"scenario.json"}, left

@@ -10,7 +10,7 @@
 #include "run_test_util.hpp"
 
 #include "apps/xr_host/xr_app.hpp"
-#include "bake/cluster_build.hpp"
+#include "bake/cluster/cluster_build.hpp"
 #include "plugin/lod_plugin.hpp"
 #include "tests/bake/test_meshes.hpp"
 

@@ -4,7 +4,7 @@
 #include "run_test_util.hpp"
 #include "tests/cli/svg_check.hpp"
 #include "tests/skip_or_fail.hpp"
-#include "apps/gazelod/run_session.hpp"
+#include "apps/gazelod/run/session.hpp"
 #include "gaze/trace_writer.hpp"
 #include "lod/angles.hpp"
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "run_test_util.hpp"
 
-#include "apps/gazelod/command.hpp"
+#include "apps/gazelod/commands/command.hpp"
 
 #include <gtest/gtest.h>
 

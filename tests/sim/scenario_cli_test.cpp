@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // `gazelod scenario validate | print | record`: exit codes and messages.
 #include "tests/cli_run.hpp"
-#include "apps/gazelod/command.hpp"
+#include "apps/gazelod/commands/command.hpp"
 #include "sim/simulator.hpp"
 
 #include <nlohmann/json.hpp>

@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: Apache-2.0
+// gazelod eval family: the visibility audit over a seeded family of scenarios
+// (sim/scenario_family.hpp) instead of a few hand-made files. Each seed's scenario is run
+// headless in this process (run_session as a function, no report files) and its audit kept;
+// the report gives each figure's distribution over the seeds (median, 90th percentile, worst
+// and its seed) beside the targets, and one row per seed. Tuning and reporting use disjoint
+// seed ranges: the defaults were chosen on --seeds 1000-1039 and are reported on 2000-2099
+// (docs/evaluation.md, "Scenario family"). --set overrides a switch-policy or conditioner
+// setting for a tuning sweep.
+#pragma once
+
+#include "apps/gazelod/clusters/eval.hpp"
+#include "apps/gazelod/run/audit.hpp"
+#include "gaze/gaze_conditioner.hpp"
+#include "lod/switch_policy.hpp"
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace gazelod::cli {
+
+// The targets for every scenario (degraded share of fixation object-frames, drawn
+// triangles over the oracle's, switches per object-second outside suppression).
+inline constexpr double kTargetDegradedShare = 0.005;
+inline constexpr double kTargetTriangleRatio = 1.35;
+inline constexpr double kTargetSwitchesPerObjectS = 1.0;
+
+struct FamilyMember {
+  std::uint64_t seed = 0;
+  std::string summary;  // sim::FamilyScenario::summary
+  AuditSummary audit;
+};
+
+struct FamilySettings {
+  lod::SwitchPolicyConfig switching;
+  gaze::ConditionerConfig conditioning;
+  std::vector<std::string> changed;  // "switch.coarsen_hold_s=0.3", as given
+};
+
+// Applies one "name=value" (names: `gazelod eval family --list-settings`). Throws UsageError
+// for an unknown name or a value out of range.
+void apply_setting(const std::string& assignment, FamilySettings& settings);
+// The settings --set understands, one per line with its current (default) value.
+std::string settings_list(const FamilySettings& settings);
+
+// Runs seeds [first, first + count) with `settings`; progress gets one line per seed.
+std::vector<FamilyMember> run_family(std::uint64_t first, int count, double duration_s, const FamilySettings& settings,
+                                     const std::string& work_dir,
+                                     const std::function<void(const std::string&)>& progress);
+
+struct Spread {
+  double median = 0.0, p90 = 0.0, worst = 0.0;
+  std::uint64_t worst_seed = 0;
+  int within_target = 0;  // members at or under the target
+};
+// Distribution of `value` over the members (larger is worse).
+Spread spread(const std::vector<FamilyMember>& members, double (*value)(const AuditSummary&), double target);
+
+// The report (markdown) and its JSON twin.
+std::string family_markdown(const std::vector<FamilyMember>& members, const FamilySettings& settings,
+                            const std::string& command);
+std::string family_json(const std::vector<FamilyMember>& members, const FamilySettings& settings);
+
+// Adds `family` to the `eval` command.
+EvalSubcommand add_eval_family(CLI::App& eval);
+
+}  // namespace gazelod::cli

@@ -1,0 +1,190 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "apps/gazelod/run/render.hpp"
+
+#include "gaze/atomic_file.hpp"
+#include "lod/angles.hpp"
+#include "render/lod_key.hpp"
+#include "render/camera.hpp"
+#include "render/foveal_marker.hpp"
+#include "render/png_io.hpp"
+#include "render/render_error.hpp"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <utility>
+
+namespace gazelod::cli {
+namespace {
+
+render::EyeView to_eye_view(const XrView& v) {
+  render::EyeView e;
+  const XrQuaternionf& q = v.pose.orientation;
+  e.pose.orientation = glm::dquat(q.w, q.x, q.y, q.z);
+  e.pose.position_m = {v.pose.position.x, v.pose.position.y, v.pose.position.z};
+  e.fov = {v.fov.angleLeft, v.fov.angleRight, v.fov.angleUp, v.fov.angleDown};
+  return e;
+}
+
+// The mesh's positions posed into LOCAL space, then expressed in their own bounding sphere's
+// unit frame ((p - centre) / radius, what the renderer's DrawItem places).
+void unit_positions(const ClusterMesh& m, std::vector<glm::vec3>& unit, glm::dvec3& center_m, double& radius_m) {
+  const std::vector<float>& xyz = m.primitive->positions_xyz;
+  std::vector<glm::dvec3> world(xyz.size() / 3);
+  const glm::dquat rotation = glm::normalize(m.pose.rotation);
+  glm::dvec3 lo(0.0), hi(0.0);
+  for (std::size_t v = 0; v < world.size(); ++v) {
+    world[v] =
+        m.pose.translation_m + m.pose.scale * (rotation * glm::dvec3(xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]));
+    lo = v == 0 ? world[v] : glm::min(lo, world[v]);
+    hi = v == 0 ? world[v] : glm::max(hi, world[v]);
+  }
+  center_m = 0.5 * (lo + hi);
+  double r2 = 0.0;
+  for (const glm::dvec3& p : world) r2 = std::max(r2, glm::dot(p - center_m, p - center_m));
+  radius_m = r2 > 0.0 ? std::sqrt(r2) : 1.0;  // one point (or none): any radius places it
+  unit.resize(world.size());
+  for (std::size_t v = 0; v < world.size(); ++v) unit[v] = glm::vec3((world[v] - center_m) / radius_m);
+}
+
+// A baked level's positions posed by the object's world transform, in the unit frame of its
+// bounding sphere; its triangles turned over where the transform mirrors (the renderer's front
+// faces are counter-clockwise).
+void unit_level(const bake::BakedObject& o, const bake::BakedLevelMesh& level, std::vector<glm::vec3>& unit,
+                std::vector<std::uint32_t>& indices) {
+  const std::vector<float>& xyz = level.positions_xyz;
+  unit.resize(xyz.size() / 3);
+  for (std::size_t v = 0; v < unit.size(); ++v) {
+    const glm::dvec3 world(o.world * glm::dvec4(xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2], 1.0));
+    unit[v] = glm::vec3((world - o.center_m) / o.radius_m);
+  }
+  indices = level.indices;
+  if (glm::determinant(glm::dmat3(o.world)) < 0.0)
+    for (std::size_t t = 0; t + 2 < indices.size(); t += 3) std::swap(indices[t + 1], indices[t + 2]);
+}
+
+}  // namespace
+
+RunRenderer::RunRenderer(xr_host::XrApp& app, const std::vector<std::vector<lod::LodLevel>>& chains,
+                         const ClusterScene* clusters, std::span<const bake::BakedObject* const> baked) {
+  std::size_t max_items = 0;
+  mesh_ids_.reserve(chains.size());
+  std::vector<glm::vec3> unit;
+  std::vector<std::uint32_t> indices;
+  for (std::size_t i = 0; i < chains.size(); ++i) {
+    const bake::BakedObject* o = i < baked.size() ? baked[i] : nullptr;
+    const bool own =
+        o != nullptr && o->level_meshes.size() == chains[i].size() && o->radius_m > 0.0 && std::isfinite(o->radius_m);
+    std::vector<std::uint32_t> ids;
+    for (std::size_t l = 0; l < chains[i].size(); ++l) {
+      if (!own) {
+        ids.push_back(meshes_.add_sphere(chains[i][l].triangles));
+        continue;
+      }
+      unit_level(*o, o->level_meshes[l], unit, indices);
+      ids.push_back(meshes_.add_mesh(unit, indices));
+    }
+    mesh_ids_.push_back(std::move(ids));
+    ++max_items;
+  }
+  if (clusters != nullptr) {
+    for (std::size_t k = 0; k < clusters->meshes.size(); ++k) {
+      const ClusterMesh& m = clusters->meshes[k];
+      const lod::ClusterHierarchy& h = m.primitive->hierarchy;
+      glm::dvec3 center(0.0);
+      double radius = 1.0;
+      unit_positions(m, unit, center, radius);
+      ClusterDraw d;
+      d.center_m = glm::vec3(center);
+      d.radius_m = static_cast<float>(radius);
+      d.first_mesh = meshes_.add_cluster_mesh(unit, m.primitive->indices, h.first_index, h.index_count);
+      d.first_cluster = clusters->first_cluster[k];
+      d.depth = h.depth;
+      max_items += h.size();
+      clusters_.push_back(std::move(d));
+    }
+  }
+  marker_mesh_ = meshes_.add_sphere(80);
+  render::DeviceContext ctx;
+  ctx.instance = app.vk_instance();
+  ctx.physical = app.vk_physical_device();
+  ctx.device = app.vk_device();
+  ctx.queue_family = app.vk_queue_family();
+  ctx.queue = app.vk_queue();
+  ctx.multi_draw_indirect = app.vk_multi_draw_indirect();
+  meshes_.upload(ctx);
+  for (const xr_host::XrSwapchainView& sc : app.swapchains()) {
+    render::RenderTarget target;
+    target.images = sc.images;
+    target.format = static_cast<VkFormat>(sc.format);
+    target.width = static_cast<std::uint32_t>(sc.width);
+    target.height = static_cast<std::uint32_t>(sc.height);
+    eyes_.push_back(std::make_unique<render::FrameRenderer>(ctx, meshes_, std::move(target)));
+  }
+  items_.reserve(max_items + render::kFovealMarkerDots);
+}
+
+RunRenderer::~RunRenderer() = default;
+
+render::FrameRenderer& RunRenderer::renderer(std::size_t eye) const {
+  if (eye >= eyes_.size())
+    throw render::RenderError("run renderer: eye " + std::to_string(eye) + " out of range (" +
+                              std::to_string(eyes_.size()) + " swapchains)");
+  return *eyes_[eye];
+}
+
+void RunRenderer::render_eye(std::size_t eye, std::uint32_t image_index, const XrView& view,
+                             std::span<const glm::dvec3> positions_m, std::span<const double> radii_m,
+                             const FrameDecisions& decisions, const FrameDiagnostics& diagnostics,
+                             std::span<const glm::dvec3> cluster_shift_m) {
+  render::FrameRenderer& r = renderer(eye);
+  const std::size_t n = std::min({positions_m.size(), radii_m.size(), mesh_ids_.size(), decisions.lod.size()});
+  items_.clear();
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& ids = mesh_ids_[i];
+    if (ids.empty()) continue;  // an object without levels has nothing to draw
+    const std::size_t level = std::min<std::size_t>(decisions.lod[i], ids.size() - 1);
+    items_.push_back(
+        {glm::vec3(positions_m[i]), static_cast<float>(radii_m[i]), ids[level], static_cast<std::uint32_t>(level)});
+  }
+  for (std::size_t k = 0; k < clusters_.size(); ++k) {
+    const ClusterDraw& m = clusters_[k];
+    if (m.first_cluster >= decisions.cluster_drawn.size()) continue;  // not registered: nothing drawn
+    const std::span<const std::uint8_t> drawn = decisions.cluster_drawn.subspan(
+        m.first_cluster, std::min(m.depth.size(), decisions.cluster_drawn.size() - m.first_cluster));
+    const glm::vec3 center = k < cluster_shift_m.size() ? m.center_m + glm::vec3(cluster_shift_m[k]) : m.center_m;
+    for (std::size_t c = 0; c < drawn.size(); ++c)
+      if (drawn[c] != 0)
+        items_.push_back({center, m.radius_m, m.first_mesh + static_cast<std::uint32_t>(c), m.depth[c]});
+  }
+  const render::EyeView eye_view = to_eye_view(view);
+  if (foveal_circle_) {
+    // Around this eye's own position, so the circle sits on the gaze in each eye's image.
+    const std::size_t first = items_.size();
+    items_.resize(first + render::kFovealMarkerDots);
+    const std::size_t written = render::foveal_circle(eye_view.pose.position_m, diagnostics.foveal_cone.axis,
+                                                      diagnostics.foveal_cone.half_angle_rad * lod::kDegPerRad,
+                                                      marker_mesh_, std::span(items_).subspan(first));
+    items_.resize(first + written);
+  }
+  r.draw(image_index, eye_view, items_);
+}
+
+void RunRenderer::save_png(std::size_t eye, std::uint32_t image_index, const std::filesystem::path& file,
+                           std::uint32_t levels) {
+  // Atomically, like the run's other files: a full disk leaves no cut frame.png.
+  const std::vector<unsigned char> png =
+      render::encode_png(render::with_lod_key(renderer(eye).read_back(image_index), levels));
+  gaze::write_file_atomic(file.string(), std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
+}
+
+std::uint64_t RunRenderer::triangles_drawn(std::size_t eye) const {
+  return renderer(eye).triangles_last_frame();
+}
+
+}  // namespace gazelod::cli

@@ -1,0 +1,102 @@
+// SPDX-License-Identifier: Apache-2.0
+// The cluster switch policy (see cluster_switch_policy.hpp): one pass over the clusters, each
+// of its two records stepped by the same rule from its own state.
+#include "lod/cluster/cluster_switch_policy.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace gazelod::lod {
+namespace {
+
+std::string length_error(const char* function, const char* name, std::size_t got, std::size_t want) {
+  return std::string(function) + ": " + name + " has " + std::to_string(got) + " entries, expected " +
+         std::to_string(want);
+}
+
+std::string check_state(const char* function, const ClusterSwitchState& s, std::size_t n) {
+  if (s.record_held.size() != n) return length_error(function, "state.record_held", s.record_held.size(), n);
+  if (s.self_window_start_s.size() != n)
+    return length_error(function, "state.self_window_start_s", s.self_window_start_s.size(), n);
+  if (s.parent_window_start_s.size() != n)
+    return length_error(function, "state.parent_window_start_s", s.parent_window_start_s.size(), n);
+  return {};
+}
+
+// This frame's constants of the rule (switch_policy.cpp's, for one record instead of a level).
+struct Step {
+  bool timed;
+  double hold_s, deadline_s;
+  bool release_without_deadline;
+};
+
+// One record: returns whether it is held invisible after this frame; updates its window and
+// says why a perceptually invisible record is not yet held.
+bool step_record(const Step& st, double t_s, bool invisible, bool held, double& window_start_s, HoldReason& why) {
+  why = HoldReason::none;
+  if (!invisible) {  // visible: at once (refinement), any window closes
+    window_start_s = kNoSwitchWindow;
+    return false;
+  }
+  if (held) return true;  // stays invisible while it is
+  if (!st.timed) {        // no time passes: nothing opens, nothing is released
+    why = HoldReason::no_time;
+    return false;
+  }
+  double start = window_start_s;
+  if (!std::isfinite(start) || t_s < start) start = t_s;  // opens, or the clock went back
+  const double elapsed = t_s - start;
+  if (elapsed >= st.hold_s && (st.release_without_deadline || elapsed >= st.deadline_s)) {
+    window_start_s = kNoSwitchWindow;
+    return true;
+  }
+  window_start_s = start;
+  why = elapsed >= st.hold_s ? HoldReason::awaiting_suppression : HoldReason::hold_time;
+  return false;
+}
+
+}  // namespace
+
+std::string reset_cluster_switch_state(const ClusterSwitchState& state, std::span<const float> self_error_m,
+                                       std::span<const float> parent_error_m) {
+  const std::size_t n = self_error_m.size();
+  if (parent_error_m.size() != n)
+    return length_error("reset_cluster_switch_state", "parent_error_m", parent_error_m.size(), n);
+  if (std::string e = check_state("reset_cluster_switch_state", state, n); !e.empty()) return e;
+  for (std::size_t i = 0; i < n; ++i)
+    state.record_held[i] =
+        static_cast<std::uint8_t>((self_error_m[i] == 0.0f ? 1 : 0) | (parent_error_m[i] == 0.0f ? 2 : 0));
+  std::fill(state.self_window_start_s.begin(), state.self_window_start_s.end(), kNoSwitchWindow);
+  std::fill(state.parent_window_start_s.begin(), state.parent_window_start_s.end(), kNoSwitchWindow);
+  return {};
+}
+
+std::string apply_cluster_switch_policy(const SwitchPolicyConfig& config, double t_s, bool suppressed,
+                                        std::span<const std::uint8_t> record_invisible, const ClusterSwitchState& state,
+                                        std::span<std::uint8_t> drawn, std::span<std::uint8_t> held) {
+  const char* fn = "apply_cluster_switch_policy";
+  if (std::string e = validate_switch_config(config); !e.empty()) return std::string(fn) + ": " + e;
+  const std::size_t n = record_invisible.size();
+  if (std::string e = check_state(fn, state, n); !e.empty()) return e;
+  if (drawn.size() != n) return length_error(fn, "drawn", drawn.size(), n);
+  if (!held.empty() && held.size() != n) return length_error(fn, "held", held.size(), n);
+
+  // Inside suppression a change goes unseen, so the shorter hold applies there.
+  const Step st{std::isfinite(t_s),
+                suppressed && config.prefer_suppression ? std::min(config.coarsen_hold_s, config.suppressed_hold_s)
+                                                        : config.coarsen_hold_s,
+                config.coarsen_hold_s + config.max_deferral_s, !config.prefer_suppression || suppressed};
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint8_t bits = record_invisible[i], was = state.record_held[i];
+    HoldReason why_self = HoldReason::none, why_parent = HoldReason::none;
+    const bool self = step_record(st, t_s, (bits & 1) != 0, (was & 1) != 0, state.self_window_start_s[i], why_self);
+    const bool parent =
+        step_record(st, t_s, (bits & 2) != 0, (was & 2) != 0, state.parent_window_start_s[i], why_parent);
+    state.record_held[i] = static_cast<std::uint8_t>((self ? 1 : 0) | (parent ? 2 : 0));
+    drawn[i] = self && !parent ? 1 : 0;
+    if (!held.empty()) held[i] = static_cast<std::uint8_t>(why_parent != HoldReason::none ? why_parent : why_self);
+  }
+  return {};
+}
+
+}  // namespace gazelod::lod

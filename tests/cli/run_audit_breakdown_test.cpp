@@ -115,7 +115,7 @@ TEST(AuditBreakdown, ClassesExcessSplitAndSwitches) {
   EXPECT_EQ(first.gaze[static_cast<std::size_t>(TrueGaze::vor)].oracle_switches, 0);
 }
 
-TEST(AuditBreakdown, JsonRoundTripAndPathsInErrors) {
+TEST(AuditBreakdown, JsonNamesEveryGroupAndCell) {
   AuditBreakdown b;
   b.gaze[2].object_frames = 7;
   b.gaze[2].excess_held = 123;
@@ -124,21 +124,9 @@ TEST(AuditBreakdown, JsonRoundTripAndPathsInErrors) {
   b.criterion[4].oracle_switches = 9;
   const nlohmann::json j = breakdown_json(b);
   EXPECT_EQ(j.at("by_true_gaze").at("carried").at("object_frames").get<int>(), 7);
+  EXPECT_EQ(j.at("by_true_gaze").at("carried").at("excess_held_triangles").get<int>(), 123);
+  EXPECT_EQ(j.at("by_object").at("far_outside").at("visible_switches").get<int>(), 4);
   EXPECT_EQ(j.at("by_oracle_criterion").at("combined").at("oracle_switches").get<int>(), 9);
-  const AuditBreakdown back = breakdown_from_json(j);
-  EXPECT_EQ(breakdown_json(back), j);
-
-  nlohmann::json broken = j;
-  broken["by_object"]["far_outside"]["switches"] = "many";
-  try {
-    (void)breakdown_from_json(broken);
-    ADD_FAILURE() << "accepted a string count";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("by_object.far_outside.switches"), std::string::npos) << e.what();
-  }
-  broken = j;
-  broken.erase("by_plugin_estimate");
-  EXPECT_THROW((void)breakdown_from_json(broken), std::invalid_argument);
 }
 
 TEST(AuditBreakdown, PrintShowsOnlyCellsWithFrames) {

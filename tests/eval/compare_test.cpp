@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// gazelod compare end to end on the simulated runtime (headless), and its parsing of a run's
-// summary: the JSON contract, no criterion ever adding triangles, errors for bad input.
+// gazelod compare end to end on the simulated runtime (headless), and what it takes from a
+// run: the JSON contract, no criterion ever adding triangles, errors for bad input.
 #include "lod/display.hpp"
 #include "apps/gazelod/commands/command.hpp"
 #include "apps/gazelod/compare/runs.hpp"
@@ -112,89 +112,49 @@ TEST(Compare, UnknownHmdIsAnErrorNamingIt) {
   EXPECT_FALSE(std::filesystem::exists(dir / "questpro")) << "no run before every name is checked";
 }
 
-TEST(Compare, SummaryMissingAFieldNamesItsPath) {
-  nlohmann::json s = {{"frames", 10},
-                      {"criteria", "size,eccentricity,velocity"},
-                      {"criteria_sets", {{"none", {{"triangles", 100}, {"average_lod", 0.0}}}}}};
-  try {
-    comparison_from_summary("questpro", s, "x/summary.json");
-    FAIL() << "expected an error";
-  } catch (const UsageError& e) {
-    EXPECT_NE(std::string(e.what()).find("x/summary.json: criteria_sets.size"), std::string::npos) << e.what();
-  }
-}
-
-TEST(Compare, SharesFromHandMadeSummary) {
+TEST(Compare, SharesHaveOneDefinition) {
   // none 1000, size 400, size+ecc 300, size+vel 350, all 250: reduction 750;
   // size (1000-400)/750 = 0.8, eccentricity (350-250)/750, velocity (300-250)/750.
-  const auto set = [](int t, double l) { return nlohmann::json{{"triangles", t}, {"average_lod", l}}; };
-  nlohmann::json s = {{"frames", 10},
-                      {"criteria", "size,eccentricity,velocity"},
-                      {"criteria_sets",
-                       {{"none", set(1000, 0)},
-                        {"size", set(400, 1)},
-                        {"size+eccentricity", set(300, 1.2)},
-                        {"size+velocity", set(350, 1.1)},
-                        {"drawn", set(250, 1.5)}}},
-                      {"lod_map", set(500, 1.0)}};
-  const HmdComparison c = comparison_from_summary("iglasses", s, "hand");
-  EXPECT_NEAR(c.share_size, 0.8, 1e-12);
-  EXPECT_NEAR(c.share_eccentricity, 100.0 / 750.0, 1e-12);
-  EXPECT_NEAR(c.share_velocity, 50.0 / 750.0, 1e-12);
-  EXPECT_NEAR(c.share_interaction, 0.0, 1e-12);
-  EXPECT_EQ(c.sets[4].triangles, 250u);
-  EXPECT_EQ(c.lod_map.triangles, 500u);
-  EXPECT_FALSE(c.audit.available) << "a summary without an audit";
+  const ReductionShares s = reduction_shares({1000, 400, 300, 350, 250});
+  EXPECT_NEAR(s.size, 0.8, 1e-12);
+  EXPECT_NEAR(s.eccentricity, 100.0 / 750.0, 1e-12);
+  EXPECT_NEAR(s.velocity, 50.0 / 750.0, 1e-12);
+  EXPECT_NEAR(s.interaction, 0.0, 1e-12);
+  // Together the criteria remove more than the sum of each last: the interaction is the rest.
+  const ReductionShares t = reduction_shares({1000, 600, 500, 550, 250});
+  EXPECT_NEAR(t.interaction, 1.0 - (400.0 + 300.0 + 250.0) / 750.0, 1e-12);
+  // Nothing reduced (or more drawn than full detail): every share 0, never a division by 0.
+  const ReductionShares none = reduction_shares({500, 500, 500, 500, 500});
+  EXPECT_EQ(none.size, 0.0);
+  EXPECT_EQ(none.interaction, 0.0);
+  EXPECT_EQ(reduction_shares({500, 400, 400, 400, 600}).size, 0.0);
 }
 
-TEST(Compare, AuditIsReadBackFromTheSummary) {
-  const auto set = [](int t, double l) { return nlohmann::json{{"triangles", t}, {"average_lod", l}}; };
-  nlohmann::json s = {{"frames", 10},
-                      {"criteria", "size,eccentricity,velocity"},
-                      {"criteria_sets",
-                       {{"none", set(1000, 0)},
-                        {"size", set(400, 1)},
-                        {"size+eccentricity", set(300, 1.2)},
-                        {"size+velocity", set(350, 1.1)},
-                        {"drawn", set(250, 1.5)}}},
-                      {"lod_map", set(500, 1.0)}};
-  AuditSummary a;
-  a.available = true;
-  a.frames = 10;
-  a.suppressed_frames = 2;
-  a.object_frames = 80;
-  a.degraded = 4;
-  a.degraded_share = 0.05;
-  a.excess_mean = 1.25;
-  a.excess_max = 2;
-  a.drawn_triangles = 250;
-  a.oracle_triangles = 500;
-  a.triangle_ratio = 0.5;
-  a.switches_fixation = {3, 0.9, 3.0 / 0.9};
-  a.switches_suppressed = {5, 0.2, 25.0};
-  a.pursuit_frames = 6;
-  a.pursuit_degraded = 3;
-  a.pursuit_degraded_share = 0.5;
-  s["audit"] = audit_json(a);
-  const HmdComparison c = comparison_from_summary("questpro", s, "hand");
-  ASSERT_TRUE(c.audit.available);
-  EXPECT_EQ(c.audit.degraded, 4);
-  EXPECT_EQ(c.audit.excess_max, 2u);
-  EXPECT_DOUBLE_EQ(c.audit.switches_suppressed.per_object_s, 25.0);
-  EXPECT_EQ(audit_json(c.audit), audit_json(a)) << "the compare document carries the run's audit unchanged";
-
-  s["audit"] = {{"available", false}, {"reason", "no ground truth: not the simulated runtime"}};
-  const HmdComparison off = comparison_from_summary("questpro", s, "hand");
-  EXPECT_FALSE(off.audit.available);
-  EXPECT_EQ(off.audit.reason, "no ground truth: not the simulated runtime");
-
-  s["audit"] = {{"available", true}, {"frames", 3}};
-  try {
-    comparison_from_summary("questpro", s, "x/summary.json");
-    FAIL() << "expected an error";
-  } catch (const UsageError& e) {
-    EXPECT_NE(std::string(e.what()).find("x/summary.json: audit.suppression_window"), std::string::npos) << e.what();
-  }
+TEST(Compare, ComparisonCarriesTheRunsSetsSharesAndAudit) {
+  RunSummary run;
+  run.frames = 10;
+  run.set_none = {1000, 0.0};
+  run.set_size = {400, 1.0};
+  run.set_size_eccentricity = {300, 1.2};
+  run.set_size_velocity = {350, 1.1};
+  run.set_drawn = {250, 1.5};
+  run.set_lod_map = {500, 1.0};
+  run.shares = reduction_shares({1000, 400, 300, 350, 260});
+  run.audit.available = true;
+  run.audit.degraded = 4;
+  run.audit.excess_max = 2;
+  run.audit.switches_suppressed = {5, 0.2, 25.0};
+  const HmdComparison c = comparison_from_run("iglasses", run);
+  EXPECT_EQ(c.frames, 10);
+  EXPECT_EQ(c.sets[0].triangles, 1000u);
+  EXPECT_EQ(c.sets[4].triangles, 250u);
+  EXPECT_DOUBLE_EQ(c.sets[2].average_lod, 1.2);
+  EXPECT_EQ(c.lod_map.triangles, 500u);
+  EXPECT_DOUBLE_EQ(c.shares.size, run.shares.size) << "the run's own shares, not a second computation";
+  EXPECT_DOUBLE_EQ(c.shares.interaction, run.shares.interaction);
+  EXPECT_EQ(audit_json(c.audit), audit_json(run.audit)) << "the compare document carries the run's audit unchanged";
+  EXPECT_GT(c.xi_cpd, 0.0);
+  EXPECT_THROW((void)comparison_from_run("no-such-hmd", run), UsageError);
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // gazelod eval clusters' parts that need no run: the same-rule baseline's hierarchy
-// (clusters/eval_baseline.hpp) and the reading of a run's reports (clusters/eval_report.hpp),
-// with errors naming the file and JSON path.
+// (clusters/eval_baseline.hpp) and one side's figures from a run (clusters/eval_report.hpp),
+// with errors saying what is missing.
 #include "apps/gazelod/commands/command.hpp"
 #include "apps/gazelod/clusters/eval_baseline.hpp"
 #include "apps/gazelod/clusters/eval_report.hpp"
@@ -17,13 +17,6 @@ namespace gazelod::cli {
 namespace {
 
 #define EXPECT_HAS(msg, part) EXPECT_NE(std::string(msg).find(part), std::string::npos) << (msg)
-
-std::filesystem::path scratch(const std::string& name) {
-  const auto dir = std::filesystem::path(GAZELOD_BINARY_DIR) / "test-scratch" / ("eval_clusters." + name);
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
-}
 
 TEST(EvalClustersBaseline, ChainBecomesOneClusterPerLevel) {
   const std::vector<float> xyz = {0, 0, 0, 2, 0, 0, 0, 2, 0, 2, 2, 0};
@@ -45,21 +38,21 @@ TEST(EvalClustersBaseline, ChainBecomesOneClusterPerLevel) {
   EXPECT_EQ(lod::validate_cluster_hierarchy(h, indices.size()), "");
 }
 
-TEST(EvalClustersReport, ReadsASideAndNamesWhatIsMissing) {
-  const auto dir = scratch("read");
-  nlohmann::json audit = {
-      {"available", true},
-      {"triangles_in_view",
-       {{"drawn_over_oracle", 1.25},
-        {"drawn", 120},
-        {"oracle", 96},
-        {"oracle_by_criterion_alone", {{"size", 300}, {"eccentricity", 200}, {"velocity", 500}}}}},
-      {"visible_degradations", {{"object_frames", 40}, {"leaf_frames", 400}, {"share", 0.01}}},
-      {"switches", {{"outside_suppression", {{"per_object_second", 0.5}, {"per_leaf_second", 0.7}}}}}};
-  nlohmann::json j = {{"frames", 2}, {"triangles_drawn", 300}, {"triangles_full", 1000}, {"audit", audit}};
-  std::ofstream(dir / "summary.json") << j.dump();
-  std::ofstream(dir / "frames.csv") << "frame,t_s,triangles_drawn,cluster_triangles_drawn\n0,0,100,10\n1,0.1,200,30\n";
-  const ClusterEvalSide s = read_cluster_eval_side(dir, false);
+TEST(EvalClustersReport, ASideFromARunAndWhatIsMissing) {
+  RunSummary run;
+  run.frames = 2;
+  run.triangles_drawn = 300;
+  run.triangles_full = 1000;
+  run.audit.available = true;
+  run.audit.triangle_ratio = 1.25;
+  run.audit.drawn_triangles = 120;
+  run.audit.object_frames = 40;
+  run.audit.degraded_share = 0.01;
+  run.audit.switches_fixation.per_object_s = 0.5;
+  std::vector<FrameRecord> frames(2);
+  frames[0].t_s = 0.0, frames[0].triangles_drawn = 100, frames[0].cluster_triangles_drawn = 10;
+  frames[1].t_s = 0.1, frames[1].triangles_drawn = 200, frames[1].cluster_triangles_drawn = 30;
+  const ClusterEvalSide s = cluster_eval_side(run, frames, false, "run-a");
   EXPECT_EQ(s.frames, 2);
   EXPECT_DOUBLE_EQ(s.triangles_per_frame, 150.0);
   EXPECT_DOUBLE_EQ(s.full_triangles_per_frame, 500.0);
@@ -68,40 +61,45 @@ TEST(EvalClustersReport, ReadsASideAndNamesWhatIsMissing) {
   EXPECT_EQ(s.audit_unit_frames, 40);
   EXPECT_DOUBLE_EQ(s.switches_per_unit_s, 0.5);
   EXPECT_EQ(s.triangles, (std::vector<double>{100, 200}));
-  // A run without cluster figures: the cluster side says so.
+  EXPECT_EQ(s.t_s, (std::vector<double>{0.0, 0.1}));
+  // A run without cluster meshes: the cluster side says so.
   try {
-    read_cluster_eval_side(dir, true);
+    (void)cluster_eval_side(run, frames, true, "run-a");
     FAIL() << "no cluster figures accepted";
   } catch (const UsageError& e) {
-    EXPECT_HAS(e.what(), "no cluster figures");
+    EXPECT_HAS(e.what(), "run-a: no cluster figures");
   }
-  j["clusters"] = {{"triangles_drawn", 60}, {"triangles_full", 1000}, {"audit", audit}};
-  std::ofstream(dir / "summary.json") << j.dump();
-  const ClusterEvalSide k = read_cluster_eval_side(dir, true);
+  run.clusters.meshes = 1;
+  run.clusters.triangles_drawn = 60;
+  run.clusters.triangles_full = 1000;
+  ClusterAuditSummary& a = run.clusters.audit;
+  // Cluster meshes without an audit (no ground truth): said, not read as zeros.
+  try {
+    (void)cluster_eval_side(run, frames, true, "run-a");
+    FAIL() << "an unaudited run accepted";
+  } catch (const UsageError& e) {
+    EXPECT_HAS(e.what(), "run-a: the cluster meshes' visibility audit is not available");
+  }
+  a.available = true;
+  a.leaf_frames = 400;
+  a.switches_per_leaf_s_fixation = 0.7;
+  a.oracle_triangles = 96;
+  a.oracle_size_only_triangles = 300;
+  a.oracle_eccentricity_only_triangles = 200;
+  a.oracle_velocity_only_triangles = 500;
+  const ClusterEvalSide k = cluster_eval_side(run, frames, true, "run-a");
   EXPECT_EQ(k.audit_unit_frames, 400);
   EXPECT_DOUBLE_EQ(k.triangles_per_frame, 30.0);
+  EXPECT_DOUBLE_EQ(k.switches_per_unit_s, 0.7);
   EXPECT_EQ(k.triangles, (std::vector<double>{10, 30}));
   EXPECT_DOUBLE_EQ(k.oracle_in_view_per_frame, 48.0);
   EXPECT_DOUBLE_EQ(k.oracle_size_only_per_frame, 150.0);
   EXPECT_DOUBLE_EQ(k.oracle_eccentricity_only_per_frame, 100.0);
   EXPECT_DOUBLE_EQ(k.oracle_velocity_only_per_frame, 250.0);
   EXPECT_DOUBLE_EQ(s.oracle_size_only_per_frame, 0.0) << "the per-object side has no per-criterion oracle";
-  // A missing field, a bad cell: the path and the line.
-  j["clusters"]["audit"].erase("switches");
-  std::ofstream(dir / "summary.json") << j.dump();
-  try {
-    read_cluster_eval_side(dir, true);
-    FAIL();
-  } catch (const UsageError& e) {
-    EXPECT_HAS(e.what(), "summary.json: /clusters/audit/switches/outside_suppression/per_leaf_second: missing");
-  }
-  std::ofstream(dir / "frames.csv") << "frame,t_s,triangles_drawn\n0,0,100\n1,x,200\n";
-  try {
-    read_cluster_eval_side(dir, false);
-    FAIL();
-  } catch (const UsageError& e) {
-    EXPECT_HAS(e.what(), "frames.csv:3: column 2: 'x' is not a number");
-  }
+  // No frames: an error, not a division by zero.
+  run.frames = 0;
+  EXPECT_THROW((void)cluster_eval_side(run, {}, false, "run-a"), UsageError);
 }
 
 TEST(EvalClustersReport, TableTargetAndJson) {

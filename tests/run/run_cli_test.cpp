@@ -79,6 +79,28 @@ TEST(RunCli, DefaultScenario120FramesWritesAConsistentReport) {
   EXPECT_NE(r.out.find("triangles"), std::string::npos) << r.out;
 }
 
+// The LOD-map thesis's policy is an evaluation aid: a plain run does not compute it, --lod-map
+// (what eval and compare ask for) adds it, and what is drawn does not change.
+TEST(RunCli, LodMapOnlyWhenAskedAndDrawsNothing) {
+  use_simulated_runtime("");
+  const auto dir = scratch_dir();
+  const CliResult plain =
+      run_cli({"run", "--frames", "60", "--no-render", "--out", (dir / "plain").string(), "--quiet"});
+  ASSERT_EQ(plain.rc, 0) << plain.err;
+  const CliResult map =
+      run_cli({"run", "--frames", "60", "--no-render", "--lod-map", "--out", (dir / "map").string(), "--quiet"});
+  ASSERT_EQ(map.rc, 0) << map.err;
+  const auto a = nlohmann::json::parse(read_text(dir / "plain" / "summary.json"));
+  const auto b = nlohmann::json::parse(read_text(dir / "map" / "summary.json"));
+  EXPECT_FALSE(a.contains("lod_map"));
+  EXPECT_FALSE(a.at("in_view").contains("lod_map"));
+  ASSERT_TRUE(b.contains("lod_map"));
+  EXPECT_GT(b.at("lod_map").at("triangles").get<double>(), 0.0);
+  EXPECT_TRUE(b.at("in_view").contains("lod_map"));
+  EXPECT_EQ(a.at("triangles_drawn"), b.at("triangles_drawn"));
+  EXPECT_EQ(a.at("shares"), b.at("shares"));
+}
+
 // Outputs that would collide or lie: --decisions naming a report file is refused before the
 // session; a --capture-frame past the last frame saves no frame.png and does not list one.
 TEST(RunCli, DecisionsCannotReplaceTheReportAndNoPhantomFramePng) {

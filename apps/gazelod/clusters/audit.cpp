@@ -3,7 +3,7 @@
 
 #include "auxiliary/text.hpp"
 
-#include "apps/gazelod/eval/lod_map_frame.hpp"
+#include "apps/gazelod/run/in_view.hpp"
 #include "lod/cluster/cluster_select.hpp"
 
 #include <nlohmann/json.hpp>

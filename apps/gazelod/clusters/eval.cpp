@@ -4,6 +4,8 @@
 #include "apps/gazelod/clusters/eval_baseline.hpp"
 #include "apps/gazelod/clusters/eval_report.hpp"
 #include "apps/gazelod/eval/work.hpp"
+#include "apps/gazelod/run/report.hpp"
+#include "apps/gazelod/run/session.hpp"
 
 #include <unistd.h>
 
@@ -119,22 +121,30 @@ int run_eval_clusters(const ClusterEvalFlags& flags, const CLI::App& app, Io io)
   bake_chain_as_clusters(source, glbs[1]);
   step({"bake", "--clusters", source, "-o", glbs[2]});
 
-  auto run_args = [&](const std::string& glb, const fs::path& dir, bool render) {
-    std::vector<std::string> a{"run",        "--scene",      glb,     "--scene-placement", "file",
-                               "--scenario", flags.scenario, "--out", dir.string(),        "--quiet"};
-    if (!flags.hmd.empty()) a.insert(a.end(), {"--hmd", flags.hmd});
+  // The runs are function calls (run_for_summary); each keeps its report in the work folder.
+  auto run_column = [&](std::size_t i, const fs::path& dir, bool render) {
+    RunOptions o;
+    o.scene_path = glbs[i];
+    o.scene_placement = "file";
+    o.scenario_path = flags.scenario;
+    o.out_dir = dir;
+    o.hmd = flags.hmd;
     if (render)
-      a.insert(a.end(), {"--frames", std::to_string(flags.render_frames)});
+      o.frames = flags.render_frames;
     else if (flags.frames > 0)
-      a.insert(a.end(), {"--frames", std::to_string(flags.frames)});
-    if (!render) a.push_back("--no-render");
-    return a;
+      o.frames = flags.frames;
+    o.render = render;
+    std::vector<FrameRecord> records;
+    o.frames_result = &records;
+    progress("run " + glbs[i] + (render ? " (rendered)" : "") + " -> " + dir.string());
+    const RunSummary summary = run_for_summary(o, "the run of " + glbs[i]);
+    return std::pair{summary, std::move(records)};
   };
   for (std::size_t i = 0; i < 3; ++i) {
     ClusterEvalColumn& c = report.columns[i];
-    step(run_args(glbs[i], w / dirs[i], false));
+    const auto [summary, records] = run_column(i, w / dirs[i], false);
     try {
-      c.side = read_cluster_eval_side(w / dirs[i], c.clusters);
+      c.side = cluster_eval_side(summary, records, c.clusters, glbs[i]);
       progress(c.title +
                fmt(": %.0f triangles per frame (%.2f%% of full detail)", c.side->triangles_per_frame,
                    100.0 * c.side->triangles_per_frame / std::max(1.0, c.side->full_triangles_per_frame)) +
@@ -155,9 +165,9 @@ int run_eval_clusters(const ClusterEvalFlags& flags, const CLI::App& app, Io io)
         ClusterEvalColumn& c = report.columns[i];
         if (!c.side) continue;
         const fs::path dir = w / (dirs[i] + "-rendered-" + std::to_string(round + 1));
-        step(run_args(glbs[i], dir, true));
-        c.frame_ms_rounds.push_back(read_mean_frame_ms(dir));
-        c.rendered_triangles = read_cluster_eval_side(dir, c.clusters).triangles_per_frame;
+        const auto [summary, records] = run_column(i, dir, true);
+        c.frame_ms_rounds.push_back(summary.mean_frame_ms);
+        c.rendered_triangles = cluster_eval_side(summary, records, c.clusters, glbs[i]).triangles_per_frame;
         progress(c.title + " rendered, round " + std::to_string(round + 1) +
                  fmt(": mean frame %.1f ms, %.0f triangles per frame", c.frame_ms_rounds.back(), c.rendered_triangles));
       }

@@ -27,61 +27,6 @@ std::string fmt(const char* format, double v) {
   return s;
 }
 
-nlohmann::json parse_file(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw UsageError(path.string() + ": cannot read (the run wrote no report)", 1);
-  try {
-    return nlohmann::json::parse(in);
-  } catch (const nlohmann::json::exception& e) {
-    throw UsageError(path.string() + ": " + e.what(), 1);
-  }
-}
-
-// The number at a JSON pointer ("/audit/visible_degradations/share"), finite.
-double number_at(const nlohmann::json& j, const std::string& pointer, const std::string& source) {
-  const nlohmann::json::json_pointer p(pointer);
-  if (!j.contains(p)) throw UsageError(source + ": " + pointer + ": missing", 1);
-  const nlohmann::json& v = j.at(p);
-  if (!v.is_number() || !std::isfinite(v.get<double>()))
-    throw UsageError(source + ": " + pointer + ": not a finite number", 1);
-  return v.get<double>();
-}
-
-// frames.csv's t_s and one triangle column, one value per frame.
-void read_frames_csv(const std::filesystem::path& path, const std::string& column, ClusterEvalSide& side) {
-  std::ifstream in(path);
-  if (!in) throw UsageError(path.string() + ": cannot read", 1);
-  std::string line;
-  if (!std::getline(in, line)) throw UsageError(path.string() + ":1: empty file", 1);
-  int t_col = -1, tri_col = -1, col = 0;
-  std::istringstream header(line);
-  for (std::string name; std::getline(header, name, ','); ++col) {
-    if (name == "t_s") t_col = col;
-    if (name == column) tri_col = col;
-  }
-  if (t_col < 0 || tri_col < 0)
-    throw UsageError(path.string() + ":1: no column '" + (t_col < 0 ? std::string("t_s") : column) + "'", 1);
-  for (std::size_t number = 2; std::getline(in, line); ++number) {
-    std::istringstream row(line);
-    double t = NAN, tri = NAN;
-    col = 0;
-    for (std::string cell; std::getline(row, cell, ','); ++col) {
-      if (col != t_col && col != tri_col) continue;
-      char* end = nullptr;
-      const double v = std::strtod(cell.c_str(), &end);
-      if (cell.empty() || end != cell.c_str() + cell.size() || !std::isfinite(v))
-        throw UsageError(path.string() + ":" + std::to_string(number) + ": column " + std::to_string(col + 1) + ": '" +
-                             cell + "' is not a number",
-                         1);
-      (col == t_col ? t : tri) = v;
-    }
-    if (!std::isfinite(t) || !std::isfinite(tri))
-      throw UsageError(path.string() + ":" + std::to_string(number) + ": too few columns", 1);
-    side.t_s.push_back(t);
-    side.triangles.push_back(tri);
-  }
-}
-
 nlohmann::json side_json(const ClusterEvalSide& s) {
   return {{"frames", s.frames},
           {"triangles_per_frame", s.triangles_per_frame},
@@ -116,48 +61,50 @@ std::vector<double> binned(const std::vector<double>& v, std::size_t points) {
 
 }  // namespace
 
-ClusterEvalSide read_cluster_eval_side(const std::filesystem::path& dir, bool clusters) {
-  const auto path = dir / "summary.json";
-  const nlohmann::json j = parse_file(path);
-  const std::string src = path.string();
+ClusterEvalSide cluster_eval_side(const RunSummary& run, const std::vector<FrameRecord>& frames, bool clusters,
+                                  const std::string& source) {
   ClusterEvalSide s;
-  s.frames = static_cast<std::int64_t>(number_at(j, "/frames", src));
-  if (s.frames <= 0) throw UsageError(src + ": /frames: no frames", 1);
-  const double frames = static_cast<double>(s.frames);
-  if (clusters && !(j.contains("clusters") && j["clusters"].is_object()))
-    throw UsageError(src +
-                         ": no cluster figures (no \"clusters\" object): this gazelod run did not draw cluster "
-                         "cuts (it needs `gazelod run --scene F --scene-placement file` with cluster meshes)",
+  s.frames = run.frames;
+  if (s.frames <= 0) throw UsageError(source + ": the run had no frames", 1);
+  const double n = static_cast<double>(s.frames);
+  if (clusters && run.clusters.meshes == 0)
+    throw UsageError(source +
+                         ": no cluster figures: this run drew no cluster cuts (it needs a scene with cluster "
+                         "meshes, placed by the file)",
                      1);
-  const std::string root = clusters ? "/clusters" : "";
-  s.triangles_per_frame = number_at(j, root + "/triangles_drawn", src) / frames;
-  s.full_triangles_per_frame = number_at(j, root + "/triangles_full", src) / frames;
-  const std::string audit = root + "/audit";
-  if (!j.contains(nlohmann::json::json_pointer(audit + "/available")) ||
-      !j.at(nlohmann::json::json_pointer(audit + "/available")).is_boolean() ||
-      !j.at(nlohmann::json::json_pointer(audit + "/available")).get<bool>())
-    throw UsageError(src + ": " + audit + ": the visibility audit is not available", 1);
-  s.drawn_over_oracle = number_at(j, audit + "/triangles_in_view/drawn_over_oracle", src);
-  s.in_view_triangles_per_frame = number_at(j, audit + "/triangles_in_view/drawn", src) / frames;
-  const std::string unit = clusters ? "leaf" : "object";
-  s.audit_unit_frames =
-      static_cast<std::int64_t>(number_at(j, audit + "/visible_degradations/" + unit + "_frames", src));
-  s.degraded_share = number_at(j, audit + "/visible_degradations/share", src);
-  s.switches_per_unit_s = number_at(j, audit + "/switches/outside_suppression/per_" + unit + "_second", src);
+  const auto per_frame = [n](auto v) { return static_cast<double>(v) / n; };
   if (clusters) {
-    const std::string t = audit + "/triangles_in_view/";
-    s.oracle_in_view_per_frame = number_at(j, t + "oracle", src) / frames;
-    s.oracle_size_only_per_frame = number_at(j, t + "oracle_by_criterion_alone/size", src) / frames;
-    s.oracle_eccentricity_only_per_frame = number_at(j, t + "oracle_by_criterion_alone/eccentricity", src) / frames;
-    s.oracle_velocity_only_per_frame = number_at(j, t + "oracle_by_criterion_alone/velocity", src) / frames;
+    const ClusterAuditSummary& a = run.clusters.audit;
+    if (!a.available) throw UsageError(source + ": the cluster meshes' visibility audit is not available", 1);
+    s.triangles_per_frame = per_frame(run.clusters.triangles_drawn);
+    s.full_triangles_per_frame = per_frame(run.clusters.triangles_full);
+    s.drawn_over_oracle = a.triangle_ratio;
+    s.in_view_triangles_per_frame = per_frame(a.drawn_triangles);
+    s.audit_unit_frames = a.leaf_frames;
+    s.degraded_share = a.degraded_share;
+    s.switches_per_unit_s = a.switches_per_leaf_s_fixation;
+    s.oracle_in_view_per_frame = per_frame(a.oracle_triangles);
+    s.oracle_size_only_per_frame = per_frame(a.oracle_size_only_triangles);
+    s.oracle_eccentricity_only_per_frame = per_frame(a.oracle_eccentricity_only_triangles);
+    s.oracle_velocity_only_per_frame = per_frame(a.oracle_velocity_only_triangles);
+  } else {
+    const AuditSummary& a = run.audit;
+    if (!a.available) throw UsageError(source + ": the visibility audit is not available: " + a.reason, 1);
+    s.triangles_per_frame = per_frame(run.triangles_drawn);
+    s.full_triangles_per_frame = per_frame(run.triangles_full);
+    s.drawn_over_oracle = a.triangle_ratio;
+    s.in_view_triangles_per_frame = per_frame(a.drawn_triangles);
+    s.audit_unit_frames = a.object_frames;
+    s.degraded_share = a.degraded_share;
+    s.switches_per_unit_s = a.switches_fixation.per_object_s;
   }
-  read_frames_csv(dir / "frames.csv", clusters ? "cluster_triangles_drawn" : "triangles_drawn", s);
+  s.t_s.reserve(frames.size());
+  s.triangles.reserve(frames.size());
+  for (const FrameRecord& f : frames) {
+    s.t_s.push_back(f.t_s);
+    s.triangles.push_back(static_cast<double>(clusters ? f.cluster_triangles_drawn : f.triangles_drawn));
+  }
   return s;
-}
-
-double read_mean_frame_ms(const std::filesystem::path& dir) {
-  const auto path = dir / "summary.json";
-  return number_at(parse_file(path), "/frame_time_ms/mean", path.string());
 }
 
 double median_of(std::vector<double> v) {

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 // `gazelod eval clusters`' figures and output (the experiment: clusters/eval.hpp): one side
-// (per-object LOD or cluster LOD) read back from its `gazelod run` reports, and the side-by-side
+// (per-object LOD or cluster LOD) from its run's summary and frames, and the side-by-side
 // table (markdown), clusters.json and clusters.svg (triangles per frame of both).
 #pragma once
+
+#include "apps/gazelod/run/report.hpp"
 
 #include <nlohmann/json_fwd.hpp>
 
@@ -37,17 +39,14 @@ struct ClusterEvalSide {
   // true gaze, on the run's display).
   double oracle_in_view_per_frame = 0.0, oracle_size_only_per_frame = 0.0, oracle_eccentricity_only_per_frame = 0.0,
          oracle_velocity_only_per_frame = 0.0;
-  std::vector<double> t_s, triangles;  // per frame (frames.csv)
+  std::vector<double> t_s, triangles;  // per frame
 };
 
-// Reads DIR/summary.json and DIR/frames.csv of `gazelod run`. clusters: the figures of the run's
-// cluster meshes (summary.json "clusters"); else its objects'. Throws UsageError naming the
-// file and JSON path (or file:line) of what is missing or malformed; for clusters, a run that
-// reports no cluster figures is an error saying so.
-ClusterEvalSide read_cluster_eval_side(const std::filesystem::path& dir, bool clusters);
-
-// Mean frame time (ms) from DIR/summary.json of a rendered run.
-double read_mean_frame_ms(const std::filesystem::path& dir);
+// The figures of one run (its summary and per-frame records). clusters: the figures of the
+// run's cluster meshes; else its objects'. Throws UsageError naming `source` when the run has
+// no frames, no audit, or (for clusters) no cluster meshes.
+ClusterEvalSide cluster_eval_side(const RunSummary& run, const std::vector<FrameRecord>& frames, bool clusters,
+                                  const std::string& source);
 
 // The median (the mean of the middle two for an even count; 0 for none).
 double median_of(std::vector<double> values);

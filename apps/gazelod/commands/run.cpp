@@ -14,37 +14,6 @@
 namespace gazelod::cli {
 namespace {
 
-EnabledCriteria parse_criteria(const std::string& text) {
-  EnabledCriteria c{false, false, false};
-  if (text.empty())
-    throw UsageError("--criteria: empty (use all, none or a comma list of size, eccentricity, velocity)");
-  if (text == "none") return c;
-  if (text == "all") return EnabledCriteria{};
-  // getline drops a trailing empty item ("size,"): split by hand so it is seen.
-  std::vector<std::string> items(1);
-  for (char ch : text) {
-    if (ch == ',')
-      items.emplace_back();
-    else
-      items.back().push_back(ch);
-  }
-  for (const std::string& item : items) {
-    bool* flag = item == "size"           ? &c.size
-                 : item == "eccentricity" ? &c.eccentricity
-                 : item == "velocity"     ? &c.velocity
-                                          : nullptr;
-    if (flag && *flag) throw UsageError("--criteria: '" + item + "' twice in '" + text + "'");
-    if (flag)
-      *flag = true;
-    else if (item.empty())
-      throw UsageError("--criteria: an empty item in '" + text + "'");
-    else
-      throw UsageError("--criteria: unknown criterion '" + item +
-                       "' (use all, none or a comma list of size, eccentricity, velocity)");
-  }
-  return c;
-}
-
 const Registrar reg(
     "run", "Run an OpenXR session with gaze-contingent LOD and write a report", [](CLI::App& app) -> Action {
       auto opt = std::make_shared<RunOptions>();
@@ -89,6 +58,9 @@ const Registrar reg(
       app.add_flag(
           "--breakdown", opt->breakdown,
           "Print where the audit's figures come from: by true gaze state, object class and the oracle's criterion");
+      app.add_flag("--lod-map", opt->lod_map,
+                   "Also evaluate the LOD-map thesis's policy each frame (summary.json \"lod_map\"; nothing it picks "
+                   "is drawn)");
       app.add_option("--decisions", opt->decisions_path,
                      "Write the drawn level of every object in every frame to this CSV (frame,t_ns,<object>...)");
       app.add_option("--cluster-decisions", opt->cluster_decisions_path,

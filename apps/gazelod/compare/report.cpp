@@ -35,10 +35,10 @@ nlohmann::json compare_json(const std::vector<HmdComparison>& results) {
                     {"runs", runs},
                     {"lod_map", set_json(c.lod_map, c.frames)},
                     {"shares",
-                     {{"size", c.share_size},
-                      {"eccentricity", c.share_eccentricity},
-                      {"velocity", c.share_velocity},
-                      {"interaction", c.share_interaction}}},
+                     {{"size", c.shares.size},
+                      {"eccentricity", c.shares.eccentricity},
+                      {"velocity", c.shares.velocity},
+                      {"interaction", c.shares.interaction}}},
                     {"audit", audit_json(c.audit)}});
   }
   return {{"hmds", hmds}};
@@ -64,9 +64,9 @@ void print_compare_table(const std::vector<HmdComparison>& results, std::ostream
     };
     for (std::size_t i = 0; i < kCriteriaSets.size(); ++i) row(kCriteriaSets[i], c.sets[i]);
     row("lod map (thesis)", c.lod_map);
-    std::snprintf(line, sizeof line,
-                  "reduction owed to: size %.1f%%, eccentricity %.1f%%, velocity %.1f%%, interaction %.1f%%\n",
-                  100 * c.share_size, 100 * c.share_eccentricity, 100 * c.share_velocity, 100 * c.share_interaction);
+    std::snprintf(
+        line, sizeof line, "reduction owed to: size %.1f%%, eccentricity %.1f%%, velocity %.1f%%, interaction %.1f%%\n",
+        100 * c.shares.size, 100 * c.shares.eccentricity, 100 * c.shares.velocity, 100 * c.shares.interaction);
     out << line;
     print_audit(c.audit, out, breakdown);
   }

@@ -1,14 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
 // `gazelod compare`'s data: for one HMD, one headless `gazelod run` with every criterion on
 // (the plugin's breakdown also selects with size only, size+eccentricity and size+velocity
-// each frame), read back from its summary.json into the five criteria sets, the LOD-map
+// each frame), called as a function; its summary gives the five criteria sets, the LOD-map
 // thesis's policy, the shares of the reduction and the display's figures.
 #pragma once
 
 #include "apps/gazelod/commands/command.hpp"
 #include "apps/gazelod/run/audit.hpp"
-
-#include <nlohmann/json_fwd.hpp>
+#include "apps/gazelod/run/report.hpp"
 
 #include <array>
 #include <cstdint>
@@ -35,10 +34,9 @@ struct HmdComparison {
   std::int64_t frames = 0;
   std::array<SetResult, kCriteriaSets.size()> sets{};  // indexed like kCriteriaSets
   SetResult lod_map;                                   // the LOD-map thesis's policy, same frames
-  // Shares of the total reduction (none -> all three criteria), as in run/report.hpp.
-  double share_size = 0.0, share_eccentricity = 0.0, share_velocity = 0.0, share_interaction = 0.0;
-  // The run's visibility audit (summary.json "audit"); not available without ground truth or
-  // in a summary from a gazelod without the audit.
+  // Shares of the reduction (none -> all three criteria): the run's own (run/shares.hpp).
+  ReductionShares shares;
+  // The run's visibility audit; not available without ground truth.
   AuditSummary audit;
 };
 
@@ -54,13 +52,11 @@ struct CompareOptions {
 // Throws UsageError when `hmd` is not a display preset.
 void check_hmd(const std::string& hmd);
 
-// Fills the figures of `hmd` (a preset), the sets and the audit from a run's summary.json.
-// Throws UsageError naming `source` and the JSON path of a missing or mistyped field (a
-// missing "audit" object only marks the audit unavailable).
-HmdComparison comparison_from_summary(const std::string& hmd, const nlohmann::json& summary, const std::string& source);
+// The figures of `hmd` (a preset) and of its run. Throws UsageError when `hmd` is not a preset.
+HmdComparison comparison_from_run(const std::string& hmd, const RunSummary& run);
 
-// Runs `gazelod run` in this process for `hmd`, its report in out_dir / hmd. Throws
-// UsageError with the run's own message when it fails.
+// Runs the session in this process for `hmd` (run_for_summary), its report in out_dir / hmd.
+// Throws UsageError with the run's own message when it fails.
 HmdComparison run_comparison(const std::string& hmd, const CompareOptions& options);
 
 }  // namespace gazelod::cli

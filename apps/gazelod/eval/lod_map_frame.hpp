@@ -9,6 +9,7 @@
 #include "lod/lod_chain.hpp"
 #include "lod/display.hpp"
 #include "apps/gazelod/eval/lod_map.hpp"
+#include "apps/gazelod/run/in_view.hpp"
 #include "plugin/lod_plugin.hpp"
 #include "sim/simulator.hpp"
 
@@ -28,33 +29,6 @@ struct LodMapFrame {
   std::uint64_t lod_sum = 0;         // sum of the chosen levels (average = lod_sum / objects)
   std::vector<std::uint8_t> levels;  // per object
 };
-
-// The sets an evaluation reports, in this order in InViewFrame's arrays.
-enum EvalSet : std::size_t { kSetNone, kSetSize, kSetSizeEcc, kSetSizeVel, kSetDrawn, kSetLodMap, kEvalSets };
-
-// Sums over the objects whose bounding sphere overlaps the view frustum (the display's first
-// view, from the head pose): what a renderer with frustum culling (Reddy 1998's Performer)
-// draws, and the objects Reddy 1998's average LOD is about.
-struct InViewFrame {
-  std::int64_t objects = 0;
-  std::array<std::uint64_t, kEvalSets> triangles{};
-  std::array<std::uint64_t, kEvalSets> lod_sum{};
-};
-
-// Whether a sphere (world) overlaps the frustum of `fov` seen from `eye` with orientation
-// `head` (world from head; OpenXR axes: -Z forward, +X right, +Y up). A sphere around the eye
-// is in view. Angles via atan2.
-bool sphere_in_view(const glm::dvec3& center_m, double radius_m, const glm::dvec3& eye_m, const glm::dquat& head,
-                    const lod::FovRad& fov);
-
-InViewFrame in_view_frame(const std::vector<std::vector<lod::LodLevel>>& chains,
-                          std::span<const sim::ObjectState> objects, std::span<const double> radii,
-                          const FrameDecisions& decisions, const FrameDiagnostics& d,
-                          std::span<const std::uint8_t> lod_map_levels, const glm::dvec3& eye_m, const glm::dquat& head,
-                          const lod::FovRad& fov);
-
-// Sum of the levels in `lods` (0 for an empty span).
-std::uint64_t lod_sum(std::span<const std::uint8_t> lods);
 
 // The map's choice for one frame. `objects` and `radii` are indexed like `chains`;
 // `eye_velocity_m_s` is the head's translation (the simulator's truth). Objects the

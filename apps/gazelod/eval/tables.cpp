@@ -60,8 +60,8 @@ void figure6_table(const std::vector<Figure6Row>& rows, std::ostream& md) {
   for (const Figure6Row& r : rows)
     md << "| " << r.objects << " | " << f("%.1f", r.all.objects_in_view) << " | " << f("%.3f", r.all.lod_drawn) << " | "
        << f("%.3f", r.no_size.lod_drawn) << " | " << f("%.3f", r.all.lod_size) << " | "
-       << f("%.1f%%", 100 * ecc_vel_share_of_lod(r)) << " | " << f("%.1f%%", 100 * r.all.share_size) << " | "
-       << f("%.1f%%", 100 * r.all.share_eccentricity) << " | " << f("%.1f%%", 100 * r.all.share_velocity) << " | "
+       << f("%.1f%%", 100 * ecc_vel_share_of_lod(r)) << " | " << f("%.1f%%", 100 * r.all.shares.size) << " | "
+       << f("%.1f%%", 100 * r.all.shares.eccentricity) << " | " << f("%.1f%%", 100 * r.all.shares.velocity) << " | "
        << f("%.3f", r.all.lod_map) << " |\n";
 }
 
@@ -72,12 +72,11 @@ void head_turn_table(const std::vector<HeadTurnRow>& rows, std::ostream& md) {
         "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const HeadTurnRow& r : rows) {
     const EvalRun& a = r.all;
-    const double interaction = 1.0 - a.share_size - a.share_eccentricity - a.share_velocity;
     md << "| " << f("%.0f", r.rate_deg_s) << " | " << f("%.1f", a.objects_in_view) << " | " << f("%.3f", a.lod_drawn)
        << " | " << f("%.3f", a.lod_size) << " | " << f("%.3f", a.lod_size_ecc) << " | " << f("%.3f", a.lod_size_vel)
        << " | " << f("%.1f%%", 100 * ratio(a.triangles_per_frame, a.full_triangles_per_frame)) << " | "
-       << f("%.1f%%", 100 * a.share_size) << " | " << f("%.1f%%", 100 * a.share_eccentricity) << " | "
-       << f("%.1f%%", 100 * a.share_velocity) << " | " << f("%.1f%%", 100 * interaction) << " | "
+       << f("%.1f%%", 100 * a.shares.size) << " | " << f("%.1f%%", 100 * a.shares.eccentricity) << " | "
+       << f("%.1f%%", 100 * a.shares.velocity) << " | " << f("%.1f%%", 100 * a.shares.interaction) << " | "
        << f("%.3f", a.lod_map) << " | " << f("%.1f%%", 100 * ratio(a.triangles_map, a.full_triangles_per_frame))
        << " |\n";
   }
@@ -126,9 +125,9 @@ void write_eval_plots(const std::vector<Figure5Row>& f5, const std::vector<Figur
     c.series = {{"size", "#2ca02c", {}}, {"eccentricity", "#1f77b4", {}}, {"velocity", "#ff7f0e", {}}};
     for (const HeadTurnRow& r : turns) {
       c.groups.push_back(f("%.0f deg/s", r.rate_deg_s));
-      c.series[0].values.push_back(100 * r.all.share_size);
-      c.series[1].values.push_back(100 * r.all.share_eccentricity);
-      c.series[2].values.push_back(100 * r.all.share_velocity);
+      c.series[0].values.push_back(100 * r.all.shares.size);
+      c.series[1].values.push_back(100 * r.all.shares.eccentricity);
+      c.series[2].values.push_back(100 * r.all.shares.velocity);
     }
     write_file(dir / "head_turns.svg", [&](std::ostream& o) { write_bar_chart(c, o); });
   }

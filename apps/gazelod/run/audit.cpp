@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "apps/gazelod/run/audit.hpp"
 
-#include "apps/gazelod/eval/lod_map_frame.hpp"
+#include "apps/gazelod/run/in_view.hpp"
 #include "lod/angles.hpp"
 #include "lod/select.hpp"
 

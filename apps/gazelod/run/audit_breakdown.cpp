@@ -40,46 +40,11 @@ nlohmann::json cell_json(const BreakdownCell& c) {
           {"object_seconds", c.object_s}};
 }
 
-template <class T>
-T field(const nlohmann::json& j, const char* key, const std::string& path) {
-  if (!j.is_object() || !j.contains(key) || !j.at(key).is_number())
-    throw std::invalid_argument(path + key + ": missing or not a number");
-  const double v = j.at(key).get<double>();
-  if (!(v >= 0.0)) throw std::invalid_argument(path + key + ": must be >= 0");
-  return static_cast<T>(v);
-}
-
-BreakdownCell cell_from(const nlohmann::json& j, const std::string& path) {
-  BreakdownCell c;
-  c.object_frames = field<std::int64_t>(j, "object_frames", path);
-  c.degraded = field<std::int64_t>(j, "degraded", path);
-  c.drawn_triangles = field<std::uint64_t>(j, "drawn_triangles", path);
-  c.oracle_triangles = field<std::uint64_t>(j, "oracle_triangles", path);
-  c.excess_held = field<std::uint64_t>(j, "excess_held_triangles", path);
-  c.excess_selected = field<std::uint64_t>(j, "excess_selected_triangles", path);
-  c.switches = field<std::int64_t>(j, "switches", path);
-  c.visible_switches = field<std::int64_t>(j, "visible_switches", path);
-  c.oracle_switches = field<std::int64_t>(j, "oracle_switches", path);
-  c.object_s = field<double>(j, "object_seconds", path);
-  return c;
-}
-
 template <std::size_t N>
 nlohmann::json group_json(const std::array<BreakdownCell, N>& cells, auto name_of) {
   nlohmann::json g = nlohmann::json::object();
   for (std::size_t i = 0; i < N; ++i) g[name_of(i)] = cell_json(cells[i]);
   return g;
-}
-
-template <std::size_t N>
-void group_from(const nlohmann::json& j, const char* key, std::array<BreakdownCell, N>& cells, auto name_of) {
-  if (!j.contains(key) || !j.at(key).is_object()) throw std::invalid_argument(std::string(key) + ": missing");
-  const nlohmann::json& g = j.at(key);
-  for (std::size_t i = 0; i < N; ++i) {
-    const std::string name = name_of(i);
-    if (!g.contains(name)) throw std::invalid_argument(std::string(key) + "." + name + ": missing");
-    cells[i] = cell_from(g.at(name), std::string(key) + "." + name + ".");
-  }
 }
 
 const char* criterion_name(std::size_t i) {
@@ -166,16 +131,6 @@ nlohmann::json breakdown_json(const AuditBreakdown& b) {
           {"by_object", group_json(b.objects, [](std::size_t i) { return kClassNames[i]; })},
           {"by_plugin_estimate", group_json(b.estimate, estimate_name)},
           {"by_oracle_criterion", group_json(b.criterion, criterion_name)}};
-}
-
-AuditBreakdown breakdown_from_json(const nlohmann::json& j) {
-  AuditBreakdown b;
-  if (!j.is_object()) throw std::invalid_argument("not an object");
-  group_from(j, "by_true_gaze", b.gaze, [](std::size_t i) { return kGazeNames[i]; });
-  group_from(j, "by_object", b.objects, [](std::size_t i) { return kClassNames[i]; });
-  group_from(j, "by_plugin_estimate", b.estimate, estimate_name);
-  group_from(j, "by_oracle_criterion", b.criterion, criterion_name);
-  return b;
 }
 
 void print_breakdown(const AuditBreakdown& b, std::ostream& out) {

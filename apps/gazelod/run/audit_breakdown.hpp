@@ -93,8 +93,6 @@ inline bool switch_visible(std::uint8_t a, std::uint8_t b, std::uint8_t oracle) 
 // {"by_true_gaze": {"fixation": {...}, ...}, "by_object": {...}, "by_plugin_estimate": {...},
 //  "by_oracle_criterion": {...}}.
 nlohmann::json breakdown_json(const AuditBreakdown& b);
-// Reads breakdown_json's output back; throws std::invalid_argument naming the JSON path.
-AuditBreakdown breakdown_from_json(const nlohmann::json& j);
 // The terminal table: one row per non-empty cell.
 void print_breakdown(const AuditBreakdown& b, std::ostream& out);
 

@@ -48,7 +48,7 @@ RunSummary summarize(const std::vector<FrameRecord>& frames, double budget_ms) {
   }
   std::vector<double> ms;
   ms.reserve(frames.size());
-  double r_size = 0, r_se = 0, r_sv = 0, r_all = 0;
+  double perceptual = 0.0;
   std::uint64_t lods_drawn = 0, lods_size = 0, lods_se = 0, lods_sv = 0, lods_map = 0;
   double object_frames = 0.0, view_object_frames = 0.0;
   std::array<std::uint64_t, 6> view_lods{};
@@ -59,13 +59,9 @@ RunSummary summarize(const std::vector<FrameRecord>& frames, double budget_ms) {
     s.triangles_drawn += f.triangles_drawn;
     s.triangles_full += f.triangles_full;
     for (int i = 0; i < kMaxReportedLods; ++i) s.lod_histogram[i] += f.lod_histogram[i];
-    const double full = static_cast<double>(f.triangles_full);
     // The shares compare like with like: every criteria set as the perceptual choice of the
     // frame (before the switch policy and the budget, which apply to the drawn set only).
-    r_all += full - static_cast<double>(f.triangles_perceptual);
-    r_size += full - static_cast<double>(f.triangles_size_only);
-    r_se += full - static_cast<double>(f.triangles_size_eccentricity);
-    r_sv += full - static_cast<double>(f.triangles_size_velocity);
+    perceptual += static_cast<double>(f.triangles_perceptual);
     s.set_size.triangles += f.triangles_size_only;
     s.set_size_eccentricity.triangles += f.triangles_size_eccentricity;
     s.set_size_velocity.triangles += f.triangles_size_velocity;
@@ -106,10 +102,14 @@ RunSummary summarize(const std::vector<FrameRecord>& frames, double budget_ms) {
   for (std::size_t k = 0; k < s.in_view.size(); ++k)
     s.in_view[k].average_lod = safe_ratio(static_cast<double>(view_lods[k]), view_object_frames);
   s.objects_in_view_mean = view_object_frames / n;
-  s.shares.size = safe_ratio(r_size, r_all);
-  s.shares.eccentricity = safe_ratio(r_all - r_sv, r_all);
-  s.shares.velocity = safe_ratio(r_all - r_se, r_all);
-  s.shares.interaction = r_all > 0.0 ? 1.0 - s.shares.size - s.shares.eccentricity - s.shares.velocity : 0.0;
+  const auto as_double = [](std::uint64_t v) { return static_cast<double>(v); };
+  s.shares = reduction_shares({as_double(s.set_none.triangles), as_double(s.set_size.triangles),
+                               as_double(s.set_size_eccentricity.triangles), as_double(s.set_size_velocity.triangles),
+                               perceptual});
+  // in_view: none, size, size+eccentricity, size+velocity, drawn (FrameRecord::in_view_triangles).
+  s.in_view_shares = reduction_shares({as_double(s.in_view[0].triangles), as_double(s.in_view[1].triangles),
+                                       as_double(s.in_view[2].triangles), as_double(s.in_view[3].triangles),
+                                       as_double(s.in_view[4].triangles)});
   std::vector<AuditFrame> audits;
   std::vector<ClusterAuditFrame> cluster_audits;
   audits.reserve(frames.size());
@@ -222,10 +222,12 @@ void write_report_files(const std::filesystem::path& dir, const RunInfo& info, c
                         {"size+eccentricity", set_json(s.set_size_eccentricity)},
                         {"size+velocity", set_json(s.set_size_velocity)},
                         {"drawn", set_json(s.set_drawn)}};
-  j["lod_map"] = set_json(s.set_lod_map);
+  // The LOD-map thesis's policy only when the run evaluated it (RunOptions::lod_map).
+  if (s.lod_map_evaluated) j["lod_map"] = set_json(s.set_lod_map);
   j["in_view"] = {{"objects_per_frame", s.objects_in_view_mean}};
   static const char* view_names[] = {"none", "size", "size+eccentricity", "size+velocity", "drawn", "lod_map"};
-  for (std::size_t k = 0; k < s.in_view.size(); ++k) j["in_view"][view_names[k]] = set_json(s.in_view[k]);
+  for (std::size_t k = 0; k < s.in_view.size(); ++k)
+    if (k + 1 < s.in_view.size() || s.lod_map_evaluated) j["in_view"][view_names[k]] = set_json(s.in_view[k]);
   j["gaze_valid_frames"] = s.gaze_valid_frames;
   j["saccades"] = s.saccades;
   j["gaze_bad_samples"] = s.gaze_bad_samples;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "apps/gazelod/run/audit.hpp"
+#include "apps/gazelod/run/shares.hpp"
 #include "apps/gazelod/clusters/audit.hpp"
 #include "apps/gazelod/plots/svg_plot.hpp"
 
@@ -79,17 +80,6 @@ struct RunInfo {
   double budget_ms = 0.0;
 };
 
-// Shares of the triangle reduction owed to each criterion, over the whole run:
-// size = R(size) / R(all); eccentricity = (R(all) - R(size+velocity)) / R(all);
-// velocity = (R(all) - R(size+eccentricity)) / R(all); the rest is their interaction. Every R
-// is of the perceptual choice (before the switch policy and the budget).
-struct ReductionShares {
-  double size = 0.0;
-  double eccentricity = 0.0;
-  double velocity = 0.0;
-  double interaction = 0.0;
-};
-
 // One criteria set over a run: triangles summed over frames (per eye) and the mean level
 // over every object of every frame.
 struct SetTotals {
@@ -107,6 +97,7 @@ struct RunSummary {
   std::uint64_t triangles_drawn = 0;  // summed over frames, per eye
   std::uint64_t triangles_full = 0;
   std::array<std::uint64_t, kMaxReportedLods> lod_histogram{};
+  // Of the perceptual choice over every object (run/shares.hpp).
   ReductionShares shares;
   std::int64_t frames_over_budget = 0;
   std::int64_t gaze_valid_frames = 0;
@@ -119,6 +110,12 @@ struct RunSummary {
   // Over the objects in view only (FrameRecord::in_view_*), same order; average_lod per
   // object in view.
   std::array<SetTotals, 6> in_view{};
+  // Of what was drawn in view (the Reddy 1998 tables' definition: his renderer counted the
+  // objects in view, as drawn).
+  ReductionShares in_view_shares;
+  // Whether the LOD-map thesis's policy was evaluated beside the plugin (RunOptions::lod_map);
+  // its sets are zero otherwise and the reports leave them out.
+  bool lod_map_evaluated = false;
   double objects_in_view_mean = 0.0;
   // summarize() sums the frames' audits; a caller without ground truth sets audit.reason.
   AuditSummary audit;

@@ -11,10 +11,12 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace gazelod::cli {
 
-struct RunSummary;  // run/report.hpp
+struct RunSummary;   // run/report.hpp
+struct FrameRecord;  // run/report.hpp
 
 struct RunOptions {
   std::int64_t frames = 0;    // 0: the scenario's whole duration
@@ -36,11 +38,14 @@ struct RunOptions {
   // (relative to its first pose) in place of the scenario's head effects, so the replayed
   // eye-in-head gaze and the head it was recorded with stay together. false: the scenario's head.
   bool trace_head = true;
-  bool hid_gaze = false;               // the first HID eye tracker (usage page 0x12) as the gaze source
-  std::int64_t capture_frame = -1;     // frame saved as PNG in out_dir (-1: the middle one)
-  bool quiet = false;                  // no progress lines
-  bool audit = true;                   // the visibility audit against the simulator's truth (run/audit.hpp)
-  bool breakdown = false;              // print the audit's breakdown (run/audit_breakdown.hpp)
+  bool hid_gaze = false;            // the first HID eye tracker (usage page 0x12) as the gaze source
+  std::int64_t capture_frame = -1;  // frame saved as PNG in out_dir (-1: the middle one)
+  bool quiet = false;               // no progress lines
+  bool audit = true;                // the visibility audit against the simulator's truth (run/audit.hpp)
+  bool breakdown = false;           // print the audit's breakdown (run/audit_breakdown.hpp)
+  // Evaluate the LOD-map thesis's policy (eval/lod_map.hpp) beside the plugin each frame, for
+  // the reports' comparison (eval, compare); nothing it picks is drawn.
+  bool lod_map = false;
   std::string decisions_path;          // "" = none; else the drawn levels per frame (DecisionsFile, run/report.hpp)
   std::string cluster_decisions_path;  // "" = none; else the drawn cut per frame (clusters/decisions.hpp)
   // Callers that run sessions as a function (gazelod eval family): the switch policy and the
@@ -51,12 +56,21 @@ struct RunOptions {
   std::optional<gaze::ConditionerConfig> conditioning;
   bool write_reports = true;
   RunSummary* result = nullptr;
+  std::vector<FrameRecord>* frames_result = nullptr;  // when set: receives the per-frame records
   // Tests only (no option): called with each counted frame's decisions and diagnostics, after
   // the frame is drawn; the spans are valid during the call.
   std::function<void(const FrameDecisions&, const FrameDiagnostics&)> frame_observer;
 };
 
+// --criteria: "all", "none" or a comma list of size, eccentricity, velocity. Throws UsageError.
+EnabledCriteria parse_criteria(const std::string& text);
+
 // Returns the process exit status; throws UsageError for bad options or input.
 int run_session(const RunOptions& options, Io io);
+
+// A session run as a function, for eval and compare: quiet, its summary returned (and its
+// report files written when options.write_reports). Throws UsageError "<what> failed (exit N):
+// <the run's own message>" when it does not end with status 0.
+RunSummary run_for_summary(RunOptions options, const std::string& what);
 
 }  // namespace gazelod::cli

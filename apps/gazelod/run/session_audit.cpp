@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "apps/gazelod/run/session_audit.hpp"
+
+#include "apps/gazelod/commands/command.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace gazelod::cli {
+
+SessionAudit::SessionAudit(const sim::Scenario& scenario, const EnabledCriteria& criteria,
+                           std::vector<std::size_t> plain, const std::vector<std::vector<lod::LodLevel>>& chains,
+                           const ClusterScene& clusters)
+    : scenario_(scenario),
+      criteria_(criteria),
+      plain_(std::move(plain)),
+      plugin_id_(scenario.objects.size(), -1),
+      chains_(chains),
+      clusters_(clusters),
+      previous_lod_(chains.size(), 0),
+      previous_oracle_(chains.size(), 0) {
+  for (std::size_t k = 0; k < plain_.size(); ++k)
+    if (plain_[k] < plugin_id_.size()) plugin_id_[plain_[k]] = static_cast<int>(k);
+}
+
+void SessionAudit::start(bool ground_truth, bool audit) {
+  ground_truth_ = ground_truth;
+  if (ground_truth && audit) oracle_.emplace(scenario_, criteria_, plain_);
+  try {
+    if (oracle_ && !clusters_.empty()) cluster_oracle_.emplace(clusters_);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--scene: ") + e.what());
+  }
+}
+
+void SessionAudit::set_cluster_pose(std::size_t mesh, const lod::InstanceTransform& pose,
+                                    const glm::dvec3& velocity_m_s) {
+  if (cluster_oracle_) cluster_oracle_->set_pose(mesh, pose, velocity_m_s);
+}
+
+void SessionAudit::frame(sim::Simulator& simulator, std::int64_t t_ns, double t_s, const FrameDecisions& d,
+                         const FrameDiagnostics& diag, const sim::HeadState& head, FrameRecord& r) {
+  const bool first = first_frame_;
+  first_frame_ = false;
+  if (oracle_ && oracle_->evaluate(simulator, t_ns, diag.xi_cpd).empty()) {
+    AuditFrameInput in;
+    in.chains = &chains_;
+    in.drawn = d.lod;
+    if (!first) in.previous = previous_lod_, in.previous_oracle = previous_oracle_;
+    in.oracle = oracle_->levels();
+    in.in_view = oracle_->in_view();
+    in.suppressed = oracle_->suppressed();
+    // The truth names a scenario object; the audit counts plugin objects (-1: a cluster mesh).
+    const int pursued = oracle_->truth().pursuit_object;
+    const bool known = pursued >= 0 && static_cast<std::size_t>(pursued) < plugin_id_.size();
+    in.pursuit_object = known ? plugin_id_[static_cast<std::size_t>(pursued)] : -1;
+    in.frame_s = first ? 0.0 : t_s - previous_t_s_;
+    r.audit = audit_frame(in);
+    BreakdownFrameInput b;
+    b.chains = &chains_;
+    b.drawn = d.lod;
+    b.previous = in.previous;
+    b.perceptual = diag.lod_perceptual;
+    b.oracle = in.oracle;
+    b.previous_oracle = in.previous_oracle;
+    b.oracle_limited_by = oracle_->limited_by();
+    b.in_view = in.in_view;
+    b.eccentricity_deg = oracle_->eccentricity_deg();
+    b.distance_m = oracle_->distance_m();
+    b.gaze = oracle_->true_gaze();
+    b.estimate = static_cast<std::uint8_t>(diag.eye_motion);
+    b.frame_s = in.frame_s;
+    add_breakdown_frame(b, breakdown_);
+    std::copy_n(in.oracle.begin(), std::min(in.oracle.size(), previous_oracle_.size()), previous_oracle_.begin());
+    if (cluster_oracle_)
+      r.cluster_audit =
+          cluster_oracle_->audit(oracle_->viewer(), head.position_m, head.orientation, scenario_.display.views[0].fov,
+                                 d.cluster_drawn, oracle_->suppressed(), in.frame_s);
+  }
+  std::copy_n(d.lod.begin(), std::min(d.lod.size(), previous_lod_.size()), previous_lod_.begin());
+  previous_t_s_ = t_s;
+}
+
+void SessionAudit::finish(RunSummary& summary, const std::string& no_truth_reason) const {
+  if (summary.audit.available) summary.audit.breakdown = breakdown_;
+  if (!oracle_) {
+    summary.audit = AuditSummary{};
+    summary.audit.reason = no_truth_reason;
+  }
+}
+
+}  // namespace gazelod::cli

@@ -2,6 +2,7 @@
 // The visibility audit's arithmetic (apps/gazelod/run/audit.hpp) on synthetic frames, its
 // report columns and plot, and the --decisions file (RFC 4180 names, atomic write).
 #include "apps/gazelod/run/audit.hpp"
+#include "apps/gazelod/run/decisions_file.hpp"
 #include "apps/gazelod/run/report.hpp"
 #include "apps/gazelod/plots/svg_plot.hpp"
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "apps/gazelod/clusters/decisions.hpp"
 
+#include "apps/gazelod/run/decisions_file.hpp"
 #include "apps/gazelod/run/report.hpp"
 #include "lod/criterion.hpp"
 #include "lod/switch_policy.hpp"

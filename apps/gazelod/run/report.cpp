@@ -10,17 +10,11 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <fstream>
 #include <stdexcept>
-
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 namespace gazelod::cli {
 namespace {
@@ -367,90 +361,6 @@ Plot audit_plot(const RunInfo& info, const AuditSummary& s, const std::vector<Fr
   }
   plot.span_legend = "suppression window";
   return plot;
-}
-
-std::string csv_field(std::string_view text) {
-  if (text.find_first_of(",\"\r\n") == std::string_view::npos) return std::string(text);
-  std::string r = "\"";
-  for (char c : text) {
-    if (c == '"') r += '"';
-    r += c;
-  }
-  r += '"';
-  return r;
-}
-
-DecisionsFile::DecisionsFile(const std::filesystem::path& file, std::span<const std::string> object_names)
-    : file_(file) {
-  const std::filesystem::path dir = file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
-  std::string pattern = (dir / ("." + file.filename().string() + ".tmp-XXXXXX")).string();
-  const int fd = ::mkstemp(pattern.data());
-  if (fd < 0) fail("cannot create a temporary file in " + dir.string(), errno);
-  temp_ = pattern;
-  const mode_t mask = ::umask(0);  // mkstemp makes 0600; the file gets the usual permissions
-  ::umask(mask);
-  ::fchmod(fd, 0666 & ~mask);
-  f_ = ::fdopen(fd, "w");
-  if (f_ == nullptr) {
-    const int e = errno;
-    ::close(fd);
-    fail("cannot open " + temp_.string(), e);
-  }
-  row_ = "frame,t_ns";
-  for (const std::string& name : object_names) {
-    row_ += ',';
-    row_ += csv_field(name);
-  }
-  row_ += '\n';
-  if (std::fwrite(row_.data(), 1, row_.size(), f_) != row_.size()) fail("error while writing " + temp_.string(), errno);
-  row_.clear();
-  row_.reserve(48 + 4 * object_names.size());  // frame, t_ns and up to 3 digits a level: no growth per row
-}
-
-DecisionsFile::~DecisionsFile() {
-  if (committed_) return;
-  if (f_ != nullptr) std::fclose(f_);
-  if (!temp_.empty()) ::unlink(temp_.c_str());
-}
-
-void DecisionsFile::fail(const std::string& what, int error) {
-  if (f_ != nullptr) std::fclose(f_);
-  f_ = nullptr;
-  if (!temp_.empty()) ::unlink(temp_.c_str());
-  temp_.clear();
-  throw std::runtime_error("--decisions " + file_.string() + ": " + what + ": " + std::strerror(error));
-}
-
-void DecisionsFile::write(std::int64_t frame, std::int64_t t_ns, std::span<const std::uint8_t> levels) {
-  if (f_ == nullptr) throw std::runtime_error("--decisions " + file_.string() + ": written after commit");
-  char buf[24];
-  row_.clear();
-  const auto add = [&](std::int64_t v) {
-    const auto r = std::to_chars(buf, buf + sizeof buf, v);
-    row_.append(buf, r.ptr);
-  };
-  add(frame);
-  row_ += ',';
-  add(t_ns);
-  for (std::uint8_t l : levels) {
-    row_ += ',';
-    add(l);
-  }
-  row_ += '\n';
-  errno = 0;
-  if (std::fwrite(row_.data(), 1, row_.size(), f_) != row_.size())
-    fail("error while writing " + temp_.string(), errno != 0 ? errno : EIO);
-}
-
-void DecisionsFile::commit() {
-  if (f_ == nullptr) throw std::runtime_error("--decisions " + file_.string() + ": committed twice");
-  if (std::fflush(f_) != 0) fail("error while writing " + temp_.string(), errno);
-  if (::fsync(::fileno(f_)) != 0) fail("error while writing " + temp_.string(), errno);
-  const int closed = std::fclose(f_);
-  f_ = nullptr;
-  if (closed != 0) fail("error while closing " + temp_.string(), errno);
-  if (::rename(temp_.c_str(), file_.c_str()) != 0) fail("cannot rename " + temp_.string() + " to it", errno);
-  committed_ = true;
 }
 
 }  // namespace gazelod::cli

@@ -137,33 +137,4 @@ void write_report_files(const std::filesystem::path& dir, const RunInfo& info, c
 // the oracle's cut, largest excess depth, leaves not covered exactly once, switches, triangles).
 Plot audit_plot(const RunInfo& info, const AuditSummary& s, const std::vector<FrameRecord>& frames);
 
-// One CSV field as RFC 4180 wants it: quoted (quotes doubled) when it holds a comma, a quote,
-// CR or LF; as is otherwise.
-std::string csv_field(std::string_view text);
-
-// `gazelod run --decisions FILE`: the drawn level of every object in every frame, as CSV
-//   frame,t_ns,<object name>,...     (names quoted per RFC 4180 where needed)
-//   0,11111111,2,3,...               (t_ns: predicted display time, ns from the scenario's start)
-// written atomically: rows go to a temporary file in FILE's folder, renamed to FILE by
-// commit(); without commit() (an error, an exception) the temporary file is removed and FILE is
-// left as it was. Errors throw std::runtime_error with the file and the system's reason.
-class DecisionsFile {
- public:
-  DecisionsFile(const std::filesystem::path& file, std::span<const std::string> object_names);
-  ~DecisionsFile();
-  DecisionsFile(const DecisionsFile&) = delete;
-  DecisionsFile& operator=(const DecisionsFile&) = delete;
-
-  void write(std::int64_t frame, std::int64_t t_ns, std::span<const std::uint8_t> levels);
-  void commit();
-  const std::filesystem::path& path() const { return file_; }
-
- private:
-  [[noreturn]] void fail(const std::string& what, int error);
-  std::filesystem::path file_, temp_;
-  std::FILE* f_ = nullptr;
-  std::string row_;
-  bool committed_ = false;
-};
-
 }  // namespace gazelod::cli

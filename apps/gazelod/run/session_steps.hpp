@@ -7,6 +7,7 @@
 #include "apps/gazelod/clusters/decisions.hpp"
 #include "apps/gazelod/clusters/scene.hpp"
 #include "apps/gazelod/run/render.hpp"
+#include "apps/gazelod/run/decisions_file.hpp"
 #include "apps/gazelod/run/report.hpp"
 #include "apps/gazelod/run/scenario.hpp"
 #include "apps/gazelod/run/session.hpp"

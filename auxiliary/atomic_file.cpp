@@ -2,7 +2,7 @@
 // Atomic output files (see atomic_file.hpp): a file-descriptor stream buffer that keeps the
 // errno of the first failed write, a temporary created with O_EXCL beside the destination,
 // fsync + close + rename on commit.
-#include "gaze/atomic_file.hpp"
+#include "auxiliary/atomic_file.hpp"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -15,7 +15,7 @@
 #include <cstring>
 #include <streambuf>
 
-namespace gazelod::gaze {
+namespace gazelod::aux {
 namespace {
 
 class FdBuf final : public std::streambuf {
@@ -187,4 +187,4 @@ void write_file_atomic(const std::string& path, std::string_view bytes) {
   f.commit();
 }
 
-}  // namespace gazelod::gaze
+}  // namespace gazelod::aux

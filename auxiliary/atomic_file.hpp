@@ -18,7 +18,7 @@
 #include <string>
 #include <string_view>
 
-namespace gazelod::gaze {
+namespace gazelod::aux {
 
 // "cannot write 'PATH': No space left on device" (what(), with the reason), and both parts.
 class WriteError : public std::runtime_error {
@@ -67,4 +67,4 @@ class AtomicFile {
 // The whole file at once, atomically. Throws WriteError.
 void write_file_atomic(const std::string& path, std::string_view bytes);
 
-}  // namespace gazelod::gaze
+}  // namespace gazelod::aux

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "auxiliary/json_strict.hpp"
 
+#include "auxiliary/json_path.hpp"
+
 #include <cstddef>
 #include <set>
 #include <vector>
@@ -21,9 +23,9 @@ std::string path_of(const std::vector<Open>& open) {
   for (const Open& o : open) {
     if (o.object) {
       if (o.key.empty()) continue;  // no key read yet in this object
-      p += (p.empty() ? "" : ".") + o.key;
+      p = json_member_path(p, o.key);
     } else {
-      p += "[" + std::to_string(o.index) + "]";
+      p = json_element_path(p, o.index);
     }
   }
   return p;

@@ -1,14 +1,15 @@
 // SPDX-License-Identifier: Apache-2.0
-// Counter-based randomness for the simulator: every random number is a pure function of
-// (seed, effect index, counter), so a stream does not depend on the order of queries
-// (splitmix64 finaliser, Steele et al. 2014; Box-Muller for Gaussians).
+// Seeded, counter-based randomness (the simulator's effects, generated scenes and meshes):
+// every random number is a pure function of (seed, stream, counter), so a stream does not
+// depend on the order of queries and the same seed gives the same numbers (splitmix64
+// finaliser, Steele et al. 2014; Box-Muller for Gaussians).
 #pragma once
 
 #include <cmath>
 #include <cstdint>
 #include <numbers>
 
-namespace gazelod::sim {
+namespace gazelod::aux {
 
 // splitmix64's output function: a bijective 64-bit mix with good avalanche.
 constexpr std::uint64_t mix64(std::uint64_t z) {
@@ -44,4 +45,4 @@ struct CounterRng {
   }
 };
 
-}  // namespace gazelod::sim
+}  // namespace gazelod::aux

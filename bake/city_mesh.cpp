@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "bake/city_mesh.hpp"
 
+#include "auxiliary/random.hpp"
 #include "bake/terrain_mesh.hpp"  // kMaxGeneratedTriangles
-#include "sim/random.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -65,7 +65,7 @@ GeneratedMesh make_block(const CityOptions& o, int bx, int bz) {
   const double pitch = o.block_m + o.street_m;
   const double bx0 = bx * pitch + 0.5 * o.street_m, bz0 = bz * pitch + 0.5 * o.street_m;
   const double lot = 0.5 * o.block_m;
-  const sim::CounterRng rng{o.seed, sim::mix64(static_cast<std::uint64_t>(static_cast<std::int64_t>(bx)) * 0x10001ULL) ^
+  const aux::CounterRng rng{o.seed, aux::mix64(static_cast<std::uint64_t>(static_cast<std::int64_t>(bx)) * 0x10001ULL) ^
                                         static_cast<std::uint64_t>(static_cast<std::int64_t>(bz))};
   for (std::uint64_t k = 0; k < 4; ++k) {
     const double lx = bx0 + lot * static_cast<double>(k % 2), lz = bz0 + lot * static_cast<double>(k / 2);

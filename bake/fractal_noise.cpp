@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "bake/fractal_noise.hpp"
 
-#include "sim/random.hpp"
+#include "auxiliary/random.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -22,7 +22,7 @@ constexpr double kGradY[8] = {0.0, 0.0, 1.0, -1.0, kDiag, kDiag, -kDiag, -kDiag}
 
 double corner(std::int64_t ix, std::int64_t iy, double dx, double dy, std::uint64_t seed, std::uint64_t stream) {
   const std::uint64_t h =
-      sim::mix64(sim::hash3(seed, stream, static_cast<std::uint64_t>(ix)) ^ static_cast<std::uint64_t>(iy));
+      aux::mix64(aux::hash3(seed, stream, static_cast<std::uint64_t>(ix)) ^ static_cast<std::uint64_t>(iy));
   const std::size_t g = static_cast<std::size_t>(h >> 61);  // top 3 bits: 0..7
   return kGradX[g] * dx + kGradY[g] * dy;
 }

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Rendering the chain from the view sphere and reducing the differences (profile_render.hpp).
 #include "bake/profile_render.hpp"
-#include "lod/angles.hpp"
+#include "auxiliary/angles.hpp"
 
 #include "bake/profile_spectrum.hpp"
 #include "render/camera.hpp"
@@ -23,7 +23,7 @@ namespace gazelod::bake {
 namespace {
 
 double deg_to_rad(double d) {
-  return d * lod::kRadPerDeg;
+  return d * aux::kRadPerDeg;
 }
 
 // Eye on the view sphere at `dir` * distance, looking at the origin, +y up (+z when looking

@@ -203,7 +203,8 @@ void BM_SelectClusters(benchmark::State& state) {
   std::size_t in_cut = 0, parent_visible = 0;
   for (auto d : drawn) in_cut += d;
   std::vector<std::uint8_t> bits(n);
-  select_clusters(vw, cs, {drawn, why, {}, {}, {}, bits});
+  if (const std::string err = select_clusters(vw, cs, {drawn, why, {}, {}, {}, bits}); !err.empty())
+    state.SkipWithError(err.c_str());
   for (auto b : bits) parent_visible += (b & 2) == 0;
   state.counters["clusters"] = double(n);
   state.counters["records"] = double(records);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "budget/budget_instance.hpp"
 
+#include "auxiliary/json_path.hpp"
 #include "auxiliary/json_strict.hpp"
 
 #include "budget/mckp_hierarchy.hpp"
@@ -18,7 +19,7 @@ namespace {
 using nlohmann::json;
 
 [[noreturn]] void fail(const std::string& where, const std::string& path, const std::string& why) {
-  throw InstanceError(where + ": " + path + ": " + why);
+  throw InstanceError(aux::json_error_line(where, path, why));
 }
 
 double number(const json& v, const std::string& where, const std::string& path, bool non_negative) {
@@ -38,11 +39,12 @@ std::uint32_t index(const json& v, std::size_t bound, const std::string& where, 
 
 budget::MckpItem item(const json& v, const std::string& where, const std::string& path) {
   if (!v.is_object()) fail(where, path, "must be an object {\"profit\": p, \"cost\": w}");
-  for (auto it = v.begin(); it != v.end(); ++it)
-    if (it.key() != "profit" && it.key() != "cost") fail(where, path + "." + it.key(), "unknown key");
-  if (!v.contains("profit")) fail(where, path + ".profit", "missing");
-  if (!v.contains("cost")) fail(where, path + ".cost", "missing");
-  return {number(v["profit"], where, path + ".profit", true), number(v["cost"], where, path + ".cost", true)};
+  if (const std::string* key = aux::first_unknown_key(v, {"profit", "cost"}))
+    fail(where, aux::json_member_path(path, *key), "unknown key");
+  const std::string profit = aux::json_member_path(path, "profit"), cost = aux::json_member_path(path, "cost");
+  if (!v.contains("profit")) fail(where, profit, "missing");
+  if (!v.contains("cost")) fail(where, cost, "missing");
+  return {number(v["profit"], where, profit, true), number(v["cost"], where, cost, true)};
 }
 
 // The largest profit and cost any answer can add up to: the sum over subsets (and groups'
@@ -72,10 +74,10 @@ void check_sums(const budget::MckpInstance& inst, const std::string& where) {
 }  // namespace
 
 budget::MckpInstance parse_budget_instance(const json& doc, const std::string& where) {
-  if (!doc.is_object()) fail(where, "(top level)", "must be an object with \"capacity\" and \"subsets\"");
-  for (auto it = doc.begin(); it != doc.end(); ++it)
-    if (it.key() != "capacity" && it.key() != "subsets" && it.key() != "groups")
-      fail(where, it.key(), "unknown key (expected capacity, subsets, groups)");
+  if (!doc.is_object())
+    fail(where, std::string(aux::kJsonTopLevel), "must be an object with \"capacity\" and \"subsets\"");
+  if (const std::string* key = aux::first_unknown_key(doc, {"capacity", "subsets", "groups"}))
+    fail(where, *key, "unknown key (expected capacity, subsets, groups)");
   if (!doc.contains("capacity")) fail(where, "capacity", "missing");
   if (!doc.contains("subsets")) fail(where, "subsets", "missing");
   budget::MckpInstance inst;
@@ -85,11 +87,11 @@ budget::MckpInstance parse_budget_instance(const json& doc, const std::string& w
   if (subsets.size() >= std::numeric_limits<std::uint32_t>::max() / 2) fail(where, "subsets", "too many");
   std::vector<budget::MckpItem> items;
   for (std::size_t k = 0; k < subsets.size(); ++k) {
-    const std::string path = "subsets[" + std::to_string(k) + "]";
+    const std::string path = aux::json_element_path("subsets", k);
     const json& s = subsets[k];
     if (!s.is_array() || s.empty()) fail(where, path, "must be a non-empty array of items");
     items.clear();
-    for (std::size_t j = 0; j < s.size(); ++j) items.push_back(item(s[j], where, path + "[" + std::to_string(j) + "]"));
+    for (std::size_t j = 0; j < s.size(); ++j) items.push_back(item(s[j], where, aux::json_element_path(path, j)));
     inst.add_subset(items);
   }
   if (inst.items.size() >= std::numeric_limits<std::uint32_t>::max() / 2) fail(where, "subsets", "too many items");
@@ -97,18 +99,18 @@ budget::MckpInstance parse_budget_instance(const json& doc, const std::string& w
     const json& groups = doc["groups"];
     if (!groups.is_array()) fail(where, "groups", "must be an array of groups");
     for (std::size_t g = 0; g < groups.size(); ++g) {
-      const std::string path = "groups[" + std::to_string(g) + "]";
+      const std::string path = aux::json_element_path("groups", g);
       const json& gj = groups[g];
       if (!gj.is_object()) fail(where, path, "must be an object {\"subsets\", \"groups\", \"impostors\"}");
       budget::MckpGroup grp;
       for (auto it = gj.begin(); it != gj.end(); ++it) {
         const std::string key = it.key();
-        const std::string kp = path + "." + key;
+        const std::string kp = aux::json_member_path(path, key);
         if (key != "subsets" && key != "groups" && key != "impostors")
           fail(where, kp, "unknown key (expected subsets, groups, impostors)");
         if (!it->is_array()) fail(where, kp, "must be an array");
         for (std::size_t a = 0; a < it->size(); ++a) {
-          const std::string ap = kp + "[" + std::to_string(a) + "]";
+          const std::string ap = aux::json_element_path(kp, a);
           if (key == "subsets")
             grp.subsets.push_back(index((*it)[a], inst.subset_count(), where, ap, "a subset"));
           else if (key == "groups")

@@ -46,7 +46,7 @@ class CostModelRls {
   // Frame overhead included. Starts a frame's features; add objects with add_object().
   FrameCostFeatures begin_frame() const;
   // Feeds one measured frame; ignores non-finite or negative measurements (returns false).
-  bool update(const FrameCostFeatures& frame, double measured_s);
+  [[nodiscard]] bool update(const FrameCostFeatures& frame, double measured_s);
 
  private:
   CostCoefficients coeff_;         // clamped to >= 0, what predictions use

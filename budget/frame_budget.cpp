@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace gazelod::budget {
 namespace {
@@ -20,13 +21,37 @@ double clean(double v, double lo, double hi, double fallback) {
   return std::isfinite(v) ? std::clamp(v, lo, hi) : fallback;
 }
 
+const FrameBudgetOptions& checked_options(const FrameBudgetOptions& options) {
+  if (std::string e = validate_frame_budget_options(options); !e.empty())
+    throw std::invalid_argument("frame budget: " + e);
+  return options;
+}
+
 }  // namespace
+
+std::string validate_frame_budget_options(const FrameBudgetOptions& o) {
+  const CostCoefficients& p = o.prior;
+  if (!std::isfinite(p.c0_s)) return "prior.c0_s must be finite, got " + std::to_string(p.c0_s);
+  const std::pair<const char*, double> per_primitive[] = {{"prior.c1_s_per_tri", p.c1_s_per_tri},
+                                                          {"prior.c2_s_per_vert", p.c2_s_per_vert},
+                                                          {"prior.c3_s_per_px", p.c3_s_per_px}};
+  for (const auto& [name, v] : per_primitive)
+    if (!(std::isfinite(v) && v >= 0.0))
+      return std::string(name) + " must be finite and >= 0, got " + std::to_string(v);
+  if (!(o.forgetting >= 0.5 && o.forgetting <= 1.0))
+    return "forgetting must be in [0.5, 1], got " + std::to_string(o.forgetting);
+  if (!(o.headroom >= 0.0 && o.headroom <= 0.9))
+    return "headroom must be in [0, 0.9], got " + std::to_string(o.headroom);
+  if (o.solve_time_limit && o.solve_time_limit->count() <= 0)
+    return "solve_time_limit must be > 0 when set, got " + std::to_string(o.solve_time_limit->count()) + " ns";
+  return {};
+}
 
 FrameBudget::FrameBudget(std::vector<std::vector<lod::LodLevel>> chains, double budget_ms,
                          const FrameBudgetOptions& options)
     : chains_(std::move(chains)),
       budget_ms_(checked_budget(budget_ms)),
-      options_(options),
+      options_(checked_options(options)),
       rls_(options.prior, options.forgetting) {
   for (std::size_t k = 0; k < chains_.size(); ++k) {
     const std::size_t m = chains_[k].size();
@@ -74,21 +99,21 @@ FrameBudget::MsCoefficients FrameBudget::ms_coefficients() const {
   return {1e3 * c.c1_s_per_tri, 1e3 * c.c2_s_per_vert, 1e3 * c.c3_s_per_px};
 }
 
-bool FrameBudget::choose(std::span<const std::uint8_t> perceptual_lod, std::span<const BudgetObjectView> view,
-                         std::span<std::uint8_t> out_lod) {
+std::string FrameBudget::choose(std::span<const std::uint8_t> perceptual_lod, std::span<const BudgetObjectView> view,
+                                std::span<std::uint8_t> out_lod) {
   const std::size_t n = chains_.size();
   if (perceptual_lod.size() != n || view.size() != n || out_lod.size() != n)
-    throw std::invalid_argument("frame budget: choose() needs " + std::to_string(n) + " objects in every span, got " +
-                                std::to_string(perceptual_lod.size()) + " perceptual levels, " +
-                                std::to_string(view.size()) + " views, " + std::to_string(out_lod.size()) + " outputs");
+    return "frame budget: choose() needs " + std::to_string(n) + " objects in every span, got " +
+           std::to_string(perceptual_lod.size()) + " perceptual levels, " + std::to_string(view.size()) + " views, " +
+           std::to_string(out_lod.size()) + " outputs";
   for (std::size_t k = 0; k < n; ++k)
     if (perceptual_lod[k] >= level_first_[k + 1] - level_first_[k])
-      throw std::invalid_argument("frame budget: perceptual_lod[" + std::to_string(k) +
-                                  "] = " + std::to_string(perceptual_lod[k]) + " but object " + std::to_string(k) +
-                                  " has " + std::to_string(chains_[k].size()) + " levels");
+      return "frame budget: perceptual_lod[" + std::to_string(k) + "] = " + std::to_string(perceptual_lod[k]) +
+             " but object " + std::to_string(k) + " has " + std::to_string(chains_[k].size()) + " levels";
 
   const double overhead_ms = 1e3 * rls_.coefficients().c0_s;
-  const double capacity = budget_ms_ * (1.0 - clean(options_.headroom, 0.0, 0.9, 0.0)) - overhead_ms;
+  // headroom passed validate_frame_budget_options at construction: in [0, 0.9].
+  const double capacity = budget_ms_ * (1.0 - options_.headroom) - overhead_ms;
   frame_.capacity = capacity;
   // A level finer than the perceptual one buys nothing visible: it keeps the perceptual level's
   // benefit and costs more than the whole budget, so no solver can afford it (it must stay a
@@ -143,7 +168,7 @@ bool FrameBudget::choose(std::span<const std::uint8_t> perceptual_lod, std::span
   }
   predicted_ms_ = overhead_ms + cost_ms;
   have_frame_ = true;
-  return !infeasible_;
+  return {};
 }
 
 bool FrameBudget::observe(double measured_frame_ms) {

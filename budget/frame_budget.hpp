@@ -21,30 +21,33 @@
 
 #include <cstdint>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace gazelod::budget {
 
 class FrameBudget {
  public:
-  // chains[k]: object k's levels, level 0 the finest (lod/lod_chain.hpp). Throws
-  // std::invalid_argument naming the object when a chain is empty or has more than 255 levels,
-  // or when budget_ms is not a positive finite number.
+  // chains[k]: object k's levels, level 0 the finest (lod/lod_chain.hpp). Construction is the
+  // registration: it throws std::invalid_argument naming the object when a chain is empty or has
+  // more than 255 levels, when budget_ms is not a positive finite number, or with
+  // validate_frame_budget_options' reason. What passes here cannot make choose() fail.
   FrameBudget(std::vector<std::vector<lod::LodLevel>> chains, double budget_ms, const FrameBudgetOptions& options = {});
 
   // One frame. perceptual_lod[k]: the finest level worth drawing (0 = full detail);
   // out_lod[k] receives the chosen level, never finer (smaller) than perceptual_lod[k].
-  // The prediction stays under budget_ms * (1 - headroom). Returns false when even the coarsest
-  // levels are predicted over that: out_lod is then the
-  // coarsest level of every object (the cheapest frame there is) and infeasible() says so.
-  // Throws std::invalid_argument when a span's size is not the object count or a perceptual
-  // level is past the end of its chain (naming the object).
-  bool choose(std::span<const std::uint8_t> perceptual_lod, std::span<const BudgetObjectView> view,
-              std::span<std::uint8_t> out_lod);
+  // The prediction stays under budget_ms * (1 - headroom). When even the coarsest levels are
+  // predicted over that, out_lod is the coarsest level of every object (the cheapest frame
+  // there is) and infeasible() says so: an outcome, not an error. Returns "" when out_lod was
+  // written, else why the inputs were refused (a span's size is not the object count, or a
+  // perceptual level is past the end of its chain, naming the object), writing nothing. Never
+  // throws: this runs every frame (docs/error-policy.md).
+  [[nodiscard]] std::string choose(std::span<const std::uint8_t> perceptual_lod, std::span<const BudgetObjectView> view,
+                                   std::span<std::uint8_t> out_lod);
 
   // Feeds the measured time of the frame last chosen (ms); updates the cost fit. Non-finite or
   // negative times are ignored (returns false), as is a call before any choose().
-  bool observe(double measured_frame_ms);
+  [[nodiscard]] bool observe(double measured_frame_ms);
 
   double predicted_ms() const { return predicted_ms_; }                // of the last choose()
   bool infeasible() const { return infeasible_; }                      // of the last choose()

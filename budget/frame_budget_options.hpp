@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstdint>
 #include <optional>
+#include <string>
 
 namespace gazelod::budget {
 
@@ -47,5 +48,10 @@ struct FrameBudgetOptions {
   // error keeps most measured frames under the budget. 0: plan right up to the budget.
   double headroom = 0.0;
 };
+
+// "" when the options are usable, else the first bad one by name with its value: prior
+// coefficients finite (C1..C3 >= 0), forgetting in [0.5, 1] (CostModelRls's range), headroom
+// in [0, 0.9], a set solve_time_limit > 0. FrameBudget's constructor refuses what this refuses.
+[[nodiscard]] std::string validate_frame_budget_options(const FrameBudgetOptions& options);
 
 }  // namespace gazelod::budget

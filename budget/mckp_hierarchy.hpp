@@ -36,7 +36,7 @@ struct HmckpTree {
 // Empty when `instance.groups` is a forest over valid subset and group indices (each subset
 // and group in at most one group); else what is wrong, naming the group ("groups[2].subsets[1]:
 // subset 7 is already in groups[0]").
-std::string check_hierarchy(const MckpInstance& instance);
+[[nodiscard]] std::string check_hierarchy(const MckpInstance& instance);
 
 // Builds the tree: each subset's kept items (kept/kept_offsets as from reduce_ip_dominated,
 // or every item in cost order) chained coarse to fine, each group's impostors chained before

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "gaze/csv_cursor.hpp"
 
+#include "auxiliary/time.hpp"
+
 #include <charconv>
 #include <cmath>
 #include <system_error>
@@ -183,9 +185,9 @@ void SkipReport::add(const TraceIssue& issue) {
 }
 
 std::optional<std::int64_t> seconds_to_ns(double t_s) {
-  // |t| < 9.2e9 s keeps t * 1e9 inside int64.
+  // |t| < 9.2e9 s keeps t * 1e9 inside int64; a time beyond is an error in a trace, not clamped.
   if (!std::isfinite(t_s) || std::fabs(t_s) > 9.0e9) return std::nullopt;
-  return static_cast<std::int64_t>(std::llround(t_s * 1e9));
+  return aux::ns_from_seconds(t_s);
 }
 
 }  // namespace gazelod::gaze

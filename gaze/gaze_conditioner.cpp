@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "gaze/gaze_conditioner.hpp"
 
-#include "gaze/angles.hpp"
+#include "auxiliary/time.hpp"
+#include "auxiliary/angles.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
@@ -9,17 +10,19 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
+#include <utility>
 
 namespace gazelod::gaze {
 namespace {
 
-constexpr double kSPerNs = 1e-9;
 constexpr std::size_t kMinVelocitySamples = 3;  // a slope from fewer is a two-sample difference
 constexpr std::size_t kMinPursuitSamples = 5;   // residuals need a few degrees of freedom
 constexpr double kNoiseTau_s = 2.0;             // averaging time of the long-run noise level
 // The carried test's window: most fixations are shorter (Rayner 1998); a long one is judged on
 // its latest second, so a head that stops moving is noticed.
-constexpr std::int64_t kCarriedWindowNs = 1'000'000'000;
+constexpr std::int64_t kCarriedWindowNs = aux::ns_from_seconds(1.0);
 
 bool finite3(const glm::dvec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
@@ -59,36 +62,10 @@ double ema_alpha(double dt_s, double tau_s) {
   return 1.0 - std::exp(-dt_s / tau_s);
 }
 
-ConditionerConfig sanitized(ConditionerConfig c) {
-  const ConditionerConfig d;
-  auto pos = [](double v, double def) { return std::isfinite(v) && v > 0.0 ? v : def; };
-  auto nonneg = [](double v, double def) { return std::isfinite(v) && v >= 0.0 ? v : def; };
-  auto pos_ns = [](std::int64_t v, std::int64_t def) { return v > 0 ? v : def; };
-  auto nonneg_ns = [](std::int64_t v, std::int64_t def) { return v >= 0 ? v : def; };
-  c.accuracy_deg = nonneg(c.accuracy_deg, d.accuracy_deg);
-  c.precision_deg = nonneg(c.precision_deg, d.precision_deg);
-  c.saccade_threshold_deg_s = pos(c.saccade_threshold_deg_s, d.saccade_threshold_deg_s);
-  c.velocity_window_ns = pos_ns(c.velocity_window_ns, d.velocity_window_ns);
-  c.dispersion_window_ns = pos_ns(c.dispersion_window_ns, d.dispersion_window_ns);
-  c.dispersion_threshold_deg = pos(c.dispersion_threshold_deg, d.dispersion_threshold_deg);
-  c.pursuit_significance = nonneg(c.pursuit_significance, d.pursuit_significance);
-  c.saccade_significance = nonneg(c.saccade_significance, d.saccade_significance);
-  c.carried_evidence = nonneg(c.carried_evidence, d.carried_evidence);
-  c.pursuit_exit_fraction = std::isfinite(c.pursuit_exit_fraction) && c.pursuit_exit_fraction >= 0.0
-                                ? std::min(c.pursuit_exit_fraction, 1.0)
-                                : d.pursuit_exit_fraction;
-  c.max_gap_ns = pos_ns(c.max_gap_ns, d.max_gap_ns);
-  c.fixation_smoothing_tau_ns = nonneg_ns(c.fixation_smoothing_tau_ns, d.fixation_smoothing_tau_ns);
-  c.pursuit_velocity_tau_ns = nonneg_ns(c.pursuit_velocity_tau_ns, d.pursuit_velocity_tau_ns);
-  c.prediction_horizon_max_ns = nonneg_ns(c.prediction_horizon_max_ns, d.prediction_horizon_max_ns);
-  c.post_saccade_suppression_ns = nonneg_ns(c.post_saccade_suppression_ns, d.post_saccade_suppression_ns);
-  c.max_saccade_ns = nonneg_ns(c.max_saccade_ns, d.max_saccade_ns);
-  c.loss_hold_max_ns = nonneg_ns(c.loss_hold_max_ns, d.loss_hold_max_ns);
-  c.age_growth_deg_s = nonneg(c.age_growth_deg_s, d.age_growth_deg_s);
-  c.velocity_error_fraction = nonneg(c.velocity_error_fraction, d.velocity_error_fraction);
-  c.max_uncertainty_deg = pos(c.max_uncertainty_deg, d.max_uncertainty_deg);
-  c.max_uncertainty_deg = std::max(c.max_uncertainty_deg, c.accuracy_deg);
-  c.max_sample_lead_ns = pos_ns(c.max_sample_lead_ns, d.max_sample_lead_ns);
+// The constructor's check: a bad setting is refused with its name and value, never replaced
+// by a default (docs/error-policy.md).
+ConditionerConfig checked(ConditionerConfig c) {
+  if (std::string e = validate_conditioner_config(c); !e.empty()) throw std::invalid_argument("gaze conditioner: " + e);
   return c;
 }
 
@@ -144,13 +121,13 @@ GazeConditioner::Fit GazeConditioner::fit_newest(std::size_t count) const noexce
   if (count == 0) return f;
   const Entry& last = newest(0);
   f.ref = last.world;
-  tangent_basis(f.ref, f.e1, f.e2);
+  aux::tangent_basis(f.ref, f.e1, f.e2);
   if (count < 2) return f;
   double st = 0, sx = 0, sy = 0, stt = 0, stx = 0, sty = 0, sxx = 0, syy = 0;
   for (std::size_t i = 0; i < count; ++i) {
     const Entry& e = newest(i);
-    const double t = static_cast<double>(e.t_ns - last.t_ns) * kSPerNs;
-    const glm::dvec2 a = angular_offset_rad(e.world, f.ref, f.e1, f.e2);
+    const double t = aux::seconds_from_ns(e.t_ns - last.t_ns);
+    const glm::dvec2 a = aux::angular_offset_rad(e.world, f.ref, f.e1, f.e2);
     st += t;
     sx += a.x;
     sy += a.y;
@@ -169,7 +146,7 @@ GazeConditioner::Fit GazeConditioner::fit_newest(std::size_t count) const noexce
   f.ctt = ctt;
   f.slope = {ctx / ctt, cty / ctt};
   f.at_newest = {mx - f.slope.x * mt, my - f.slope.y * mt};
-  f.span_s = static_cast<double>(last.t_ns - newest(count - 1).t_ns) * kSPerNs;
+  f.span_s = aux::seconds_from_ns(last.t_ns - newest(count - 1).t_ns);
   if (count > 2) {
     const double rss = std::max(0.0, cxx - f.slope.x * ctx) + std::max(0.0, cyy - f.slope.y * cty);
     f.resid_var = std::max(0.0, rss / (2.0 * (n - 2.0)));
@@ -185,15 +162,15 @@ GazeConditioner::Fit GazeConditioner::fit_newest(std::size_t count) const noexce
 }
 
 GazeConditioner::GazeConditioner(ConditionerConfig config)
-    : config_(sanitized(config)),
-      noise_var_(0.5 * (config_.precision_deg * kRadPerDeg) * (config_.precision_deg * kRadPerDeg)) {}
+    : config_(checked(std::move(config))),
+      noise_var_(0.5 * (config_.precision_deg * aux::kRadPerDeg) * (config_.precision_deg * aux::kRadPerDeg)) {}
 
 void GazeConditioner::reset() noexcept {
   const std::int64_t bad = bad_samples_;
   const bool have_display = have_display_;
   const std::int64_t display = last_display_t_ns_;
   const ConditionerConfig config = config_;
-  *this = GazeConditioner(config);
+  *this = GazeConditioner(config);  // config_ passed the constructor's check: cannot throw here
   bad_samples_ = bad;
   have_display_ = have_display;
   last_display_t_ns_ = display;
@@ -253,10 +230,10 @@ double GazeConditioner::carried_evidence(std::size_t m, glm::dvec3& head_mean) c
     for (std::size_t i = 0; i < m; ++i) sum += pick(newest(i));
     if (!normalized_dir(sum, mean)) return std::numeric_limits<double>::infinity();
     glm::dvec3 e1, e2;
-    tangent_basis(mean, e1, e2);
+    aux::tangent_basis(mean, e1, e2);
     glm::dvec2 s(0.0), ss(0.0);
     for (std::size_t i = 0; i < m; ++i) {
-      const glm::dvec2 a = angular_offset_rad(pick(newest(i)), mean, e1, e2);
+      const glm::dvec2 a = aux::angular_offset_rad(pick(newest(i)), mean, e1, e2);
       s += a;
       ss += a * a;
     }
@@ -282,7 +259,7 @@ void GazeConditioner::push_valid(std::int64_t t_ns, const glm::dvec3& world, con
     omega_world_ = glm::dvec3(0.0);
     carried_ = carried_prior_ = false;
   }
-  const double dt_s = segment_count_ > 0 ? static_cast<double>(sat_sub(t_ns, newest(0).t_ns)) * kSPerNs : 0.0;
+  const double dt_s = segment_count_ > 0 ? aux::seconds_from_ns(sat_sub(t_ns, newest(0).t_ns)) : 0.0;
   ring_[head_] = Entry{t_ns, world, head};
   head_ = (head_ + 1) % kCapacity;
   segment_count_ = std::min(segment_count_ + 1, kCapacity);
@@ -310,11 +287,11 @@ void GazeConditioner::push_valid(std::int64_t t_ns, const glm::dvec3& world, con
     const glm::dvec3 u = glm::cross(omega_world_, fv.ref);  // pursuit tangent velocity at ref
     rel -= glm::dvec2(glm::dot(u, fv.e1), glm::dot(u, fv.e2));
   }
-  const double v_deg_s = std::hypot(rel.x, rel.y) * kDegPerRad;
+  const double v_deg_s = std::hypot(rel.x, rel.y) * aux::kDegPerRad;
   // A fit over much less than the window (a young segment at a high rate) is too noisy.
-  const double v_window_s = static_cast<double>(config_.velocity_window_ns) * kSPerNs;
+  const double v_window_s = aux::seconds_from_ns(config_.velocity_window_ns);
   // The fitted speed's standard error per axis under the long-run noise level.
-  const double v_se_deg_s = fv.ctt > 0.0 ? std::sqrt(noise_var_ / fv.ctt) * kDegPerRad : 0.0;
+  const double v_se_deg_s = fv.ctt > 0.0 ? std::sqrt(noise_var_ / fv.ctt) * aux::kDegPerRad : 0.0;
   const double v_threshold = std::max(config_.saccade_threshold_deg_s, config_.saccade_significance * v_se_deg_s);
   if (fv.ok && fv.n >= kMinVelocitySamples && fv.span_s >= 0.5 * v_window_s && v_deg_s > v_threshold) {
     if (prev == EyeMotion::fixation) carried_prior_ = carried_;  // the next fixation starts so
@@ -329,7 +306,7 @@ void GazeConditioner::push_valid(std::int64_t t_ns, const glm::dvec3& world, con
       est_world_ = fv.direction();
       have_estimate_ = true;
       motion_ = EyeMotion::pursuit;
-      speed_deg_s_ = glm::length(omega_world_) * kDegPerRad;
+      speed_deg_s_ = glm::length(omega_world_) * aux::kDegPerRad;
       fixation_n_ = 0.0;
       phase_count_ = fv.n;  // the pursuit's phase: the samples of this fit
       return;
@@ -338,7 +315,7 @@ void GazeConditioner::push_valid(std::int64_t t_ns, const glm::dvec3& world, con
     have_estimate_ = true;
     motion_ = EyeMotion::saccade;  // est_world_ (the estimate before the saccade) is held
     omega_world_ = glm::dvec3(0.0);
-    speed_deg_s_ = fv.speed_rad_s() * kDegPerRad;
+    speed_deg_s_ = fv.speed_rad_s() * aux::kDegPerRad;
     have_saccade_ = true;
     saccade_last_t_ns_ = t_ns;
     phase_count_ = 0;  // the next phase begins after the saccade
@@ -358,7 +335,7 @@ void GazeConditioner::push_valid(std::int64_t t_ns, const glm::dvec3& world, con
   const double se = fd.ok && fd.ctt > 0.0 ? std::sqrt(std::max(fd.resid_var, noise_var_) / fd.ctt)
                                           : std::numeric_limits<double>::infinity();
   const bool pursuit = fd.ok && fd.n >= kMinPursuitSamples && fd.span_s >= v_window_s &&
-                       speed * fd.span_s * kDegPerRad >= f * config_.dispersion_threshold_deg &&
+                       speed * fd.span_s * aux::kDegPerRad >= f * config_.dispersion_threshold_deg &&
                        speed > f * config_.pursuit_significance * se;
   if (pursuit) {
     carried_ = false;
@@ -366,13 +343,13 @@ void GazeConditioner::push_valid(std::int64_t t_ns, const glm::dvec3& world, con
     if (prev != EyeMotion::pursuit) {
       omega_world_ = om;
     } else {
-      const double a = ema_alpha(dt_s, static_cast<double>(config_.pursuit_velocity_tau_ns) * kSPerNs);
+      const double a = ema_alpha(dt_s, aux::seconds_from_ns(config_.pursuit_velocity_tau_ns));
       omega_world_ += a * (om - omega_world_);
     }
     if (!finite3(omega_world_)) omega_world_ = glm::dvec3(0.0);
     est_world_ = fd.direction();
     motion_ = EyeMotion::pursuit;
-    speed_deg_s_ = glm::length(omega_world_) * kDegPerRad;
+    speed_deg_s_ = glm::length(omega_world_) * aux::kDegPerRad;
     fixation_n_ = 0.0;
   } else {
     if (prev != EyeMotion::fixation) {
@@ -386,10 +363,10 @@ void GazeConditioner::push_valid(std::int64_t t_ns, const glm::dvec3& world, con
       }
     } else {
       fixation_n_ += 1.0;
-      const double a = std::max(1.0 / fixation_n_,
-                                ema_alpha(dt_s, static_cast<double>(config_.fixation_smoothing_tau_ns) * kSPerNs));
+      const double a =
+          std::max(1.0 / fixation_n_, ema_alpha(dt_s, aux::seconds_from_ns(config_.fixation_smoothing_tau_ns)));
       glm::dvec3 next;
-      if (normalized_dir(slerp_direction(est_world_, world, std::clamp(a, 0.0, 1.0)), next)) est_world_ = next;
+      if (normalized_dir(aux::slerp_direction(est_world_, world, std::clamp(a, 0.0, 1.0)), next)) est_world_ = next;
     }
     // Still in the head rather than in the world (the eyes carried by a moving head)? The
     // evidence grows with the phase, so it is taken over the whole fixation (up to
@@ -438,8 +415,8 @@ ConditionedGaze GazeConditioner::at(std::int64_t display_t_ns, const glm::dquat&
 
   g.sample_t_ns = last_valid_t_ns_;
   const std::int64_t age_ns = sat_sub(display_t_ns, last_valid_t_ns_);
-  const double h_s = static_cast<double>(std::max<std::int64_t>(0, age_ns)) * kSPerNs;
-  const double cap_s = static_cast<double>(config_.prediction_horizon_max_ns) * kSPerNs;
+  const double h_s = aux::seconds_from_ns(std::max<std::int64_t>(0, age_ns));
+  const double cap_s = aux::seconds_from_ns(config_.prediction_horizon_max_ns);
   glm::dvec3 dir = est_world_;
   double speed_term_deg = 0.0;
   switch (motion_) {
@@ -461,7 +438,7 @@ ConditionedGaze GazeConditioner::at(std::int64_t display_t_ns, const glm::dquat&
         dir = last_raw_world_;
         speed_term_deg = speed_deg_s_ * h_s;
       } else {
-        speed_term_deg = angle_between_rad(est_world_, last_raw_world_) * kDegPerRad + speed_deg_s_ * h_s;
+        speed_term_deg = aux::angle_between_rad(est_world_, last_raw_world_) * aux::kDegPerRad + speed_deg_s_ * h_s;
       }
       break;
     case EyeMotion::fixation:

@@ -44,6 +44,7 @@
 // whatever the input.
 #pragma once
 
+#include "auxiliary/time.hpp"
 #include "gaze/gaze_sample.hpp"
 
 #include <glm/gtc/quaternion.hpp>
@@ -52,6 +53,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <string>
 
 namespace gazelod::gaze {
 
@@ -171,8 +173,14 @@ struct ConditionerConfig {
   double max_uncertainty_deg = 50.0;
   // A sample stamped this far after the latest display time asked for is refused as bad (a
   // corrupt clock would otherwise make every later sample look backwards).
-  std::int64_t max_sample_lead_ns = 1'000'000'000;
+  std::int64_t max_sample_lead_ns = aux::ns_from_seconds(1.0);
 };
+
+// "" when every setting is usable, else the first bad one (in declaration order) by name, with
+// its value and the rule: "pursuit_exit_fraction must be in [0, 1], got 1.5". Times and
+// thresholds must be finite and >= 0 (windows, thresholds, the gap and the lead > 0),
+// max_uncertainty_deg >= accuracy_deg.
+[[nodiscard]] std::string validate_conditioner_config(const ConditionerConfig& config);
 
 struct ConditionedGaze {
   bool valid = false;  // false: no usable gaze (never seen, lost too long, or all input bad)
@@ -195,6 +203,8 @@ class GazeConditioner {
  public:
   static constexpr std::size_t kCapacity = 256;
 
+  // Throws std::invalid_argument with validate_conditioner_config's reason for a bad setting
+  // (construction is where configuration is refused; nothing is replaced by a default).
   explicit GazeConditioner(ConditionerConfig config = {});
   // The newest sample of the source and the head's world orientation (head-to-world) at the
   // sample's time. A sample with the same t_ns as the previous one is a repeat and ignored;

@@ -1,15 +1,16 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "gaze/gaze_events.hpp"
 
-#include "gaze/angles.hpp"
+#include "auxiliary/angles.hpp"
 
 namespace gazelod::gaze {
 
 EventTracker::Finished EventTracker::close() {
   Finished f;
   if (run_ == GazeLabel::saccade) {
-    f.saccade = SaccadeEvent{first_.sample.t_ns, last_.sample.t_ns,
-                             angle_between_rad(first_.sample.direction, last_.sample.direction) * kDegPerRad, peak_};
+    f.saccade =
+        SaccadeEvent{first_.sample.t_ns, last_.sample.t_ns,
+                     aux::angle_between_rad(first_.sample.direction, last_.sample.direction) * aux::kDegPerRad, peak_};
   } else if (run_ == GazeLabel::fixation && last_.sample.t_ns - first_.sample.t_ns >= options_.min_fixation_ns) {
     f.fixation = FixationEvent{first_.sample.t_ns, last_.sample.t_ns};
   }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "gaze/import_gazebasevr.hpp"
 
+#include "auxiliary/time.hpp"
 #include "gaze/trace_reader.hpp"
 
 #include <cmath>
@@ -28,7 +29,7 @@ void GazeBaseVrReader::parse_row(TraceRecord& out) {
   if (c.fields().size() != fields_)
     c.fail(0, "row has " + std::to_string(c.fields().size()) + " fields, header has " + std::to_string(fields_));
   const double n_ms = c.number(n_, "n");
-  const auto t_ns = seconds_to_ns(n_ms * 1e-3);
+  const auto t_ns = seconds_to_ns(aux::seconds_from_ms(n_ms));
   if (!t_ns) c.fail(c.fields()[n_].column, "n: out of range");
   out.gaze.t_ns = *t_ns;
   const auto x = c.number_or_missing(x_, "x");

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "gaze/import_sranipal.hpp"
 
-#include "gaze/angles.hpp"
+#include "auxiliary/angles.hpp"
 
 #include <glm/geometric.hpp>
 
@@ -37,7 +37,7 @@ std::optional<std::int64_t> dotnet_ticks_to_unix_ns(std::int64_t ticks) {
 }
 
 glm::dquat unity_euler_deg_to_openxr(const glm::dvec3& euler_deg) {
-  const auto about = [](double deg, const glm::dvec3& axis) { return glm::angleAxis(deg * kRadPerDeg, axis); };
+  const auto about = [](double deg, const glm::dvec3& axis) { return glm::angleAxis(deg * aux::kRadPerDeg, axis); };
   // Unity applies z first, then x, then y (each about the world's axes).
   const glm::dquat unity =
       about(euler_deg.y, {0, 1, 0}) * about(euler_deg.x, {1, 0, 0}) * about(euler_deg.z, {0, 0, 1});

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "gaze/ivt_classifier.hpp"
 
-#include "gaze/angles.hpp"
+#include "auxiliary/time.hpp"
+#include "auxiliary/angles.hpp"
 
 #include <cmath>
 
@@ -40,13 +41,13 @@ void IvtClassifier::emit_front(std::vector<LabeledSample>& out) {
     if (hi - lo + 1 >= 2 * k) {
       glm::dvec3 e1, e2;
       const glm::dvec3 cd = glm::normalize(c.direction);
-      tangent_basis(cd, e1, e2);
+      aux::tangent_basis(cd, e1, e2);
       // Least-squares slope of each angular component against time (seconds from centre).
       double st = 0, sx = 0, sy = 0, stt = 0, stx = 0, sty = 0;
       const double n = static_cast<double>(hi - lo + 1);
       for (std::size_t j = lo; j <= hi; ++j) {
-        const double t = static_cast<double>(window_[j].t_ns - c.t_ns) * 1e-9;
-        const glm::dvec2 a = angular_offset_rad(window_[j].direction, cd, e1, e2);
+        const double t = aux::seconds_from_ns(window_[j].t_ns - c.t_ns);
+        const glm::dvec2 a = aux::angular_offset_rad(window_[j].direction, cd, e1, e2);
         st += t;
         sx += a.x;
         sy += a.y;
@@ -57,7 +58,7 @@ void IvtClassifier::emit_front(std::vector<LabeledSample>& out) {
       const double denom = n * stt - st * st;
       if (denom > 1e-18) {  // not all at the same time stamp
         const double vx = (n * stx - st * sx) / denom, vy = (n * sty - st * sy) / denom;
-        ls.velocity_deg_s = std::hypot(vx, vy) * kDegPerRad;
+        ls.velocity_deg_s = std::hypot(vx, vy) * aux::kDegPerRad;
         ls.label = ls.velocity_deg_s > options_.saccade_threshold_deg_s ? GazeLabel::saccade : GazeLabel::fixation;
       }
     }

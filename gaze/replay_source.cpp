@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "gaze/replay_source.hpp"
 
-#include "gaze/angles.hpp"
+#include "auxiliary/time.hpp"
+#include "auxiliary/angles.hpp"
 
 #include <glm/gtc/quaternion.hpp>
 
@@ -71,7 +72,7 @@ std::optional<GazeSample> ReplaySource::sample_at(std::int64_t t_ns) {
       const double f = static_cast<double>(t - a.t_ns) / static_cast<double>(span);
       GazeSample s = a;
       s.t_ns = t_ns;
-      s.direction = slerp_direction(glm::normalize(a.direction), glm::normalize(b.direction), f);
+      s.direction = aux::slerp_direction(glm::normalize(a.direction), glm::normalize(b.direction), f);
       s.origin_m = a.origin_m + (b.origin_m - a.origin_m) * f;
       s.confidence = std::min(a.confidence, b.confidence);
       status_ = "ok";
@@ -89,7 +90,7 @@ std::optional<GazeSample> ReplaySource::sample_at(std::int64_t t_ns) {
       return s;
     }
   }
-  status_ = "no valid gaze within " + std::to_string(options_.hold_max_ns / 1'000'000) + " ms";
+  status_ = "no valid gaze within " + std::to_string(aux::whole_ms_from_ns(options_.hold_max_ns)) + " ms";
   return std::nullopt;
 }
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "gaze/trace_reader.hpp"
 
-#include "gaze/angles.hpp"
+#include "auxiliary/yaw_pitch.hpp"
 #include "gaze/trace_format.hpp"
 
 #include <glm/geometric.hpp>
@@ -37,9 +37,8 @@ int parse_version(const CsvCursor& c) {
 
 }  // namespace
 
-glm::dvec3 direction_from_yaw_pitch_deg(double yaw_deg, double pitch_deg) {
-  const double y = yaw_deg * kRadPerDeg, p = pitch_deg * kRadPerDeg;
-  return {std::cos(p) * std::sin(y), std::sin(p), -std::cos(p) * std::cos(y)};
+glm::dvec3 direction_from_yaw_pitch_deg(double yaw_right_deg, double pitch_up_deg) {
+  return aux::direction_from(aux::yaw_pitch_from_yaw_right_deg(yaw_right_deg, pitch_up_deg));
 }
 
 TraceReader::TraceReader(std::istream& in, std::string file, ReadOptions options)

@@ -38,7 +38,9 @@ class TraceReader : public CsvRecordStream {
   int version_ = 0;  // 0 = no version line (hand-written file)
 };
 
-// Direction in head space (OpenXR axes) from yaw (positive = right) and pitch (positive = up).
-glm::dvec3 direction_from_yaw_pitch_deg(double yaw_deg, double pitch_deg);
+// Direction in head space (OpenXR axes) from the trace format's gaze_yaw_deg (positive = right,
+// the opposite of auxiliary/yaw_pitch.hpp's convention) and gaze_pitch_deg (positive = up); also
+// the GazeBaseVR and Pupil Cloud importers' angles, which the format shares.
+glm::dvec3 direction_from_yaw_pitch_deg(double yaw_right_deg, double pitch_up_deg);
 
 }  // namespace gazelod::gaze

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "gaze/trace_stats.hpp"
 
+#include "auxiliary/time.hpp"
 #include "gaze/import_pupil_cloud.hpp"
 
 #include <glm/geometric.hpp>
@@ -143,7 +144,7 @@ TraceStats compute_trace_stats(RecordStream& stream, IvtOptions ivt, EventOption
   classifier.finish(labeled);
   drain();
   take(tracker.finish());
-  st.duration_s = static_cast<double>(st.last_ns - st.first_ns) * 1e-9;
+  st.duration_s = aux::seconds_from_ns(st.last_ns - st.first_ns);
   if (st.samples >= 2 && st.duration_s > 0.0) st.rate_hz = static_cast<double>(st.samples - 1) / st.duration_s;
   if (st.samples > 0) st.invalid_fraction = static_cast<double>(st.invalid) / static_cast<double>(st.samples);
   if (st.saccades > 0) st.mean_saccade_amplitude_deg = amplitude_sum / static_cast<double>(st.saccades);

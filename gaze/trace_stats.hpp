@@ -68,7 +68,8 @@ struct TraceClassification {
 };
 
 // Reads `stream` to its end (TraceError propagates in strict mode). `conditioner`: the I-VDT
-// settings for the agreement (the plugin's defaults). `classification`: also filled when given.
+// settings for the agreement (the plugin's defaults; settings validate_conditioner_config refuses
+// throw std::invalid_argument before reading). `classification`: also filled when given.
 TraceStats compute_trace_stats(RecordStream& stream, IvtOptions ivt = {}, EventOptions events = {},
                                ConditionerConfig conditioner = {}, TraceClassification* classification = nullptr);
 

@@ -3,6 +3,7 @@
 // std::to_chars' shortest round-trip form, so reading them back yields the same doubles.
 #include "gaze/trace_writer.hpp"
 
+#include "auxiliary/time.hpp"
 #include "gaze/trace_format.hpp"
 
 #include <array>
@@ -58,7 +59,7 @@ void TraceWriter::write(const TraceRecord& record) {
   if (options_.time_in_ns) {
     append_number(line, g.t_ns);
   } else {
-    append_number(line, static_cast<double>(g.t_ns) * 1e-9);
+    append_number(line, aux::seconds_from_ns(g.t_ns));
   }
   for (double v : {g.direction.x, g.direction.y, g.direction.z, g.origin_m.x, g.origin_m.y, g.origin_m.z}) {
     line += ',';
@@ -83,7 +84,7 @@ void TraceWriter::write(const TraceRecord& record) {
   out_ << line;
 }
 
-TraceFileWriter::TraceFileWriter(const std::string& path, TraceWriterOptions options, AtomicFileFaults faults)
+TraceFileWriter::TraceFileWriter(const std::string& path, TraceWriterOptions options, aux::AtomicFileFaults faults)
     : file_(path, faults), writer_(file_.stream(), options) {}
 
 }  // namespace gazelod::gaze

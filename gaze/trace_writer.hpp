@@ -3,7 +3,7 @@
 // README). The reader (trace_reader.hpp) reads back exactly what this writes.
 #pragma once
 
-#include "gaze/atomic_file.hpp"
+#include "auxiliary/atomic_file.hpp"
 #include "gaze/gaze_sample.hpp"
 
 #include <ostream>
@@ -28,17 +28,17 @@ class TraceWriter {
   TraceWriterOptions options_;
 };
 
-// A trace file written atomically (gaze/atomic_file.hpp): rows go to a temporary file in the
+// A trace file written atomically (auxiliary/atomic_file.hpp): rows go to a temporary file in the
 // destination's folder; commit() renames it over `path`. Without commit() (an error while
-// reading the input, say) nothing is left behind. Throws WriteError with the system's reason.
+// reading the input, say) nothing is left behind. Throws aux::WriteError with the system's reason.
 class TraceFileWriter {
  public:
-  explicit TraceFileWriter(const std::string& path, TraceWriterOptions options = {}, AtomicFileFaults faults = {});
+  explicit TraceFileWriter(const std::string& path, TraceWriterOptions options = {}, aux::AtomicFileFaults faults = {});
   void write(const TraceRecord& record) { writer_.write(record); }
   void commit() { file_.commit(); }
 
  private:
-  AtomicFile file_;
+  aux::AtomicFile file_;
   TraceWriter writer_;
 };
 

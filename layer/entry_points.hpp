@@ -5,7 +5,8 @@
 // gaze spaces (gaze_space.cpp).
 #pragma once
 
-#include "layer/loader_negotiation.hpp"
+#include "layer/xr_headers.hpp"
+#include "xr/loader_negotiation.hpp"
 
 namespace gazelod::layer {
 
@@ -13,7 +14,7 @@ namespace gazelod::layer {
 XrResult GetInstanceProcAddr(XrInstance instance, const char* name, PFN_xrVoidFunction* function);
 
 // instance.cpp
-XrResult CreateApiLayerInstance(const XrInstanceCreateInfo* info, const XrApiLayerCreateInfo* layer_info,
+XrResult CreateApiLayerInstance(const XrInstanceCreateInfo* info, const xr::XrApiLayerCreateInfo* layer_info,
                                 XrInstance* instance);
 XrResult EnumerateInstanceExtensionProperties(const char* layerName, uint32_t capacity, uint32_t* count,
                                               XrExtensionProperties* props);

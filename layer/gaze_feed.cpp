@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "layer/gaze_feed.hpp"
 
+#include "auxiliary/time.hpp"
 #include "gaze/hid/enumerate.hpp"
 #include "gaze/hid/hid_gaze_source.hpp"
 #include "gaze/replay_source.hpp"
@@ -23,7 +24,7 @@ TraceFeed::TraceFeed(std::string path, std::vector<gaze::TraceRecord> records, s
 
 std::string TraceFeed::describe() const {
   std::ostringstream s;
-  s << "trace " << path_ << " (" << samples_ << " samples over " << static_cast<double>(span_ns_) * 1e-9
+  s << "trace " << path_ << " (" << samples_ << " samples over " << aux::seconds_from_ns(span_ns_)
     << " s, replayed from the session's first frame)";
   return s.str();
 }

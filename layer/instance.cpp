@@ -9,6 +9,7 @@
 #include "layer/layer_state.hpp"
 
 #include "gaze/trace_error.hpp"
+#include "xr/eye_gaze_paths.hpp"
 
 #include <algorithm>
 #include <cstring>
@@ -81,23 +82,23 @@ XrPath to_path(const EmulatedInstance& e, const char* s) {
 
 }  // namespace
 
-XrResult CreateApiLayerInstance(const XrInstanceCreateInfo* info, const XrApiLayerCreateInfo* layer_info,
+XrResult CreateApiLayerInstance(const XrInstanceCreateInfo* info, const xr::XrApiLayerCreateInfo* layer_info,
                                 XrInstance* instance) {
   return guarded(XR_ERROR_INITIALIZATION_FAILED, [&]() -> XrResult {
     if (info == nullptr || instance == nullptr || layer_info == nullptr ||
-        layer_info->structType != XR_LOADER_INTERFACE_STRUCT_API_LAYER_CREATE_INFO ||
-        layer_info->structVersion < kApiLayerCreateInfoStructVersion ||
-        layer_info->structSize < sizeof(XrApiLayerCreateInfo) || layer_info->nextInfo == nullptr)
+        layer_info->structType != xr::XR_LOADER_INTERFACE_STRUCT_API_LAYER_CREATE_INFO ||
+        layer_info->structVersion < xr::kApiLayerCreateInfoStructVersion ||
+        layer_info->structSize < sizeof(xr::XrApiLayerCreateInfo) || layer_info->nextInfo == nullptr)
       return XR_ERROR_INITIALIZATION_FAILED;
-    const XrApiLayerNextInfo* next_info = layer_info->nextInfo;
-    if (next_info->structType != XR_LOADER_INTERFACE_STRUCT_API_LAYER_NEXT_INFO ||
-        next_info->structVersion < kApiLayerNextInfoStructVersion ||
-        next_info->structSize < sizeof(XrApiLayerNextInfo) || next_info->nextGetInstanceProcAddr == nullptr ||
+    const xr::XrApiLayerNextInfo* next_info = layer_info->nextInfo;
+    if (next_info->structType != xr::XR_LOADER_INTERFACE_STRUCT_API_LAYER_NEXT_INFO ||
+        next_info->structVersion < xr::kApiLayerNextInfoStructVersion ||
+        next_info->structSize < sizeof(xr::XrApiLayerNextInfo) || next_info->nextGetInstanceProcAddr == nullptr ||
         next_info->nextCreateApiLayerInstance == nullptr || std::strcmp(next_info->layerName, kLayerName) != 0)
       return XR_ERROR_INITIALIZATION_FAILED;
     if (info->enabledExtensionCount > 0 && info->enabledExtensionNames == nullptr) return XR_ERROR_VALIDATION_FAILURE;
     const PFN_xrGetInstanceProcAddr next_gipa = next_info->nextGetInstanceProcAddr;
-    XrApiLayerCreateInfo chained = *layer_info;
+    xr::XrApiLayerCreateInfo chained = *layer_info;
     chained.nextInfo = next_info->next;
 
     DecisionInputs in;
@@ -161,7 +162,7 @@ XrResult CreateApiLayerInstance(const XrInstanceCreateInfo* info, const XrApiLay
       *instance = XR_NULL_HANDLE;
       return XR_ERROR_INITIALIZATION_FAILED;
     }
-    e->paths = {to_path(*e, kEyesUserPath), to_path(*e, kGazePosePath), to_path(*e, kEyeGazeProfile)};
+    e->paths = {to_path(*e, xr::kEyesUserPath), to_path(*e, xr::kGazePosePath), to_path(*e, xr::kEyeGazeProfile)};
     e->tracker_in_head = Pose{config.tracker_orientation, config.tracker_position_m};
     std::string note;
     if (in.config_error.empty()) in.source_error = open_source(config, *e, in.source, note);

@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "layer/layer_config.hpp"
 
+#include "auxiliary/json_path.hpp"
 #include "auxiliary/json_strict.hpp"
+#include "auxiliary/time.hpp"
+#include "auxiliary/yaw_pitch.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -12,7 +15,6 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
-#include <numbers>
 #include <sstream>
 
 namespace gazelod::layer {
@@ -26,7 +28,7 @@ struct Bad {
 };
 
 [[noreturn]] void bad(const std::string& file, const std::string& path, const std::string& what) {
-  throw Bad{file + ": " + path + ": " + what};
+  throw Bad{aux::json_error_line(file, path, what)};
 }
 
 std::string shown(const json& v) {
@@ -52,42 +54,34 @@ std::vector<double> numbers(const std::string& file, const std::string& path, co
     bad(file, path, "must be an array of " + std::to_string(n) + " numbers, got " + shown(v));
   std::vector<double> out;
   for (std::size_t i = 0; i < n; ++i)
-    out.push_back(number_in(file, path + "[" + std::to_string(i) + "]", v[i], lo, hi, lo_open));
+    out.push_back(number_in(file, aux::json_element_path(path, i), v[i], lo, hi, lo_open));
   return out;
 }
 
 void only_keys(const std::string& file, const std::string& path, const json& obj,
-               std::initializer_list<const char*> known) {
-  for (auto it = obj.begin(); it != obj.end(); ++it) {
-    bool ok = false;
-    for (const char* k : known) ok = ok || it.key() == k;
-    if (ok) continue;
-    std::string list;
-    for (const char* k : known) list += (list.empty() ? "" : ", ") + std::string(k);
-    bad(file, path.empty() ? it.key() : path + "." + it.key(), "unknown key (known: " + list + ")");
-  }
+               std::initializer_list<std::string_view> known) {
+  if (const std::string* key = aux::first_unknown_key(obj, known))
+    bad(file, aux::json_member_path(path, *key), "unknown key (known: " + aux::joined_keys(known) + ")");
 }
 
-// Yaw positive to the right, pitch positive up, roll positive clockwise as the wearer sees it;
-// applied in that order (as gaze_yaw_deg / gaze_pitch_deg in traces).
-glm::dquat orientation_from_deg(double yaw_deg, double pitch_deg, double roll_deg) {
-  const double k = std::numbers::pi / 180.0;
-  const glm::dquat yaw = glm::angleAxis(-yaw_deg * k, glm::dvec3(0.0, 1.0, 0.0));
-  const glm::dquat pitch = glm::angleAxis(pitch_deg * k, glm::dvec3(1.0, 0.0, 0.0));
-  const glm::dquat roll = glm::angleAxis(-roll_deg * k, glm::dvec3(0.0, 0.0, -1.0));
-  return glm::normalize(yaw * pitch * roll);
+// The file's rotation_deg: yaw positive to the right, pitch positive up (as gaze_yaw_deg /
+// gaze_pitch_deg in traces, converted by the one function for that), roll positive clockwise
+// as the wearer sees it; applied in that order.
+glm::dquat orientation_from_deg(double yaw_right_deg, double pitch_up_deg, double roll_cw_deg) {
+  const glm::dquat yaw_pitch = aux::rotation_from(aux::yaw_pitch_from_yaw_right_deg(yaw_right_deg, pitch_up_deg));
+  const glm::dquat roll = glm::angleAxis(-roll_cw_deg * aux::kRadPerDeg, glm::dvec3(0.0, 0.0, -1.0));
+  return glm::normalize(yaw_pitch * roll);
 }
 
 void apply(const json& j, const std::string& file, LayerConfig& c) {
-  if (!j.is_object()) bad(file, "(top level)", "must be a JSON object, got " + shown(j));
+  if (!j.is_object()) bad(file, std::string(aux::kJsonTopLevel), "must be a JSON object, got " + shown(j));
   only_keys(file, "", j, {"override", "freshness_ms", "trace_format", "head_offset", "hid"});
   if (j.contains("override")) {
     if (!j["override"].is_boolean()) bad(file, "override", "must be true or false, got " + shown(j["override"]));
     c.override_runtime = j["override"].get<bool>();
   }
   if (j.contains("freshness_ms"))
-    c.freshness_ns = static_cast<std::int64_t>(
-        std::llround(number_in(file, "freshness_ms", j["freshness_ms"], 0.0, 10000.0, true) * 1e6));
+    c.freshness_ns = aux::ns_from_ms(number_in(file, "freshness_ms", j["freshness_ms"], 0.0, 10000.0, true));
   if (j.contains("trace_format")) {
     const json& f = j["trace_format"];
     const auto parsed = f.is_string() ? gaze::parse_trace_format(f.get<std::string>()) : std::nullopt;

@@ -56,7 +56,7 @@ PFN_xrVoidFunction own(std::string_view name) {
   if (name == "xrDestroyInstance")
     return reinterpret_cast<PFN_xrVoidFunction>(static_cast<PFN_xrDestroyInstance>(&DestroyInstance));
   if (name == "xrCreateApiLayerInstance")
-    return reinterpret_cast<PFN_xrVoidFunction>(static_cast<PFN_xrCreateApiLayerInstance>(&CreateApiLayerInstance));
+    return reinterpret_cast<PFN_xrVoidFunction>(static_cast<xr::PFN_xrCreateApiLayerInstance>(&CreateApiLayerInstance));
   return nullptr;
 }
 
@@ -97,9 +97,10 @@ XrResult GetInstanceProcAddr(XrInstance instance, const char* name, PFN_xrVoidFu
 
 // The only exported symbol (hidden visibility and a version script hide the rest).
 extern "C" __attribute__((visibility("default"))) XrResult xrNegotiateLoaderApiLayerInterface(
-    const gazelod::layer::XrNegotiateLoaderInfo* loaderInfo, const char* layerName,
-    gazelod::layer::XrNegotiateApiLayerRequest* apiLayerRequest) {
+    const gazelod::xr::XrNegotiateLoaderInfo* loaderInfo, const char* layerName,
+    gazelod::xr::XrNegotiateApiLayerRequest* apiLayerRequest) {
   using namespace gazelod::layer;
+  using namespace gazelod::xr;
   if (loaderInfo == nullptr || apiLayerRequest == nullptr ||
       loaderInfo->structType != XR_LOADER_INTERFACE_STRUCT_LOADER_INFO ||
       loaderInfo->structVersion != kLoaderInfoStructVersion ||

@@ -8,9 +8,6 @@
 
 #include "gaze/gaze_sample.hpp"
 
-#include <glm/geometric.hpp>
-
-#include <cmath>
 #include <optional>
 
 namespace gazelod::layer {
@@ -21,10 +18,8 @@ using namespace gazelod::xr;
 // The sample as a pose in the tracker's frame (-Z along the gaze, no roll); nullopt for an
 // invalid or degenerate sample (no NaN reaches a pose).
 inline std::optional<Pose> eye_pose(const gaze::GazeSample& s) {
-  const double len = glm::length(s.direction);
-  if (!s.valid || !std::isfinite(len) || !(len > 1e-9)) return std::nullopt;
-  if (!std::isfinite(s.origin_m.x) || !std::isfinite(s.origin_m.y) || !std::isfinite(s.origin_m.z)) return std::nullopt;
-  return Pose{gaze_orientation(s.direction / len), s.origin_m};
+  if (!s.valid) return std::nullopt;
+  return gaze_ray_pose(s.direction, s.origin_m);
 }
 
 }  // namespace gazelod::layer

@@ -22,8 +22,5 @@ namespace gazelod::layer {
 inline constexpr const char* kLayerName = GAZELOD_LAYER_NAME;
 inline constexpr const char* kLayerEnableEnv = GAZELOD_LAYER_ENABLE_ENV;
 inline constexpr const char* kLayerDisableEnv = GAZELOD_LAYER_DISABLE_ENV;
-inline constexpr const char* kEyesUserPath = "/user/eyes_ext";
-inline constexpr const char* kGazePosePath = "/user/eyes_ext/input/gaze_ext/pose";
-inline constexpr const char* kEyeGazeProfile = "/interaction_profiles/ext/eye_gaze_interaction";
 
 }  // namespace gazelod::layer

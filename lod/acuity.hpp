@@ -51,6 +51,6 @@ double velocity_threshold_dps(double freq_cpd, double ecc_deg = 0.0);
 // Empty when the inputs are physically meaningful, else a message naming the bad value:
 // velocity >= 0 (inf allowed: acuity 0), eccentricity in [0, 180], xi > 0 finite,
 // scale in (0, 1].
-std::string validate_acuity_inputs(double vel_dps, double ecc_deg, double xi_cpd, double scale);
+[[nodiscard]] std::string validate_acuity_inputs(double vel_dps, double ecc_deg, double xi_cpd, double scale);
 
 }  // namespace gazelod::lod

@@ -2,7 +2,7 @@
 // Foveal cone construction (see cone.hpp).
 #include "lod/cone.hpp"
 
-#include "lod/angles.hpp"
+#include "auxiliary/angles.hpp"
 
 #include <glm/geometric.hpp>
 
@@ -18,7 +18,7 @@ Cone make_foveal_cone(const glm::dvec3& eye_m, const glm::dvec3& gaze_dir, doubl
   c.axis = glm::normalize(gaze_dir);
   double a = half_angle_deg + tracker_error_deg;
   if (std::isnan(a)) a = 180.0;
-  c.half_angle_rad = std::clamp(a, 0.0, 180.0) * kRadPerDeg;
+  c.half_angle_rad = std::clamp(a, 0.0, 180.0) * aux::kRadPerDeg;
   return c;
 }
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // xi per view and per display (Reddy 1998 equation 4) and display validation.
-#include "lod/angles.hpp"
+#include "auxiliary/angles.hpp"
 #include "lod/display.hpp"
 
 #include <algorithm>
@@ -17,25 +17,25 @@ double half_cycles_per_deg(int pixels, double fov_deg) {
   return static_cast<double>(pixels) / (2.0 * fov_deg);
 }
 
-std::string check_angle(const char* name, double rad) {
+[[nodiscard]] std::string check_angle(const char* name, double rad) {
   std::ostringstream m;
   if (!std::isfinite(rad) || std::abs(rad) >= std::numbers::pi / 2)
-    m << name << " must be a finite angle in (-90, 90) deg, got " << rad * kDegPerRad << " deg";
+    m << name << " must be a finite angle in (-90, 90) deg, got " << rad * aux::kDegPerRad << " deg";
   return m.str();
 }
 
 }  // namespace
 
 double fov_h_deg(const ViewSpec& view) {
-  return (view.fov.angle_right_rad - view.fov.angle_left_rad) * kDegPerRad;
+  return (view.fov.angle_right_rad - view.fov.angle_left_rad) * aux::kDegPerRad;
 }
 double fov_v_deg(const ViewSpec& view) {
-  return (view.fov.angle_up_rad - view.fov.angle_down_rad) * kDegPerRad;
+  return (view.fov.angle_up_rad - view.fov.angle_down_rad) * aux::kDegPerRad;
 }
 
 FovRad symmetric_fov(double h_deg, double v_deg) {
-  const double h = h_deg / kDegPerRad / 2.0;
-  const double v = v_deg / kDegPerRad / 2.0;
+  const double h = h_deg / aux::kDegPerRad / 2.0;
+  const double v = v_deg / aux::kDegPerRad / 2.0;
   return FovRad{-h, h, v, -v};
 }
 

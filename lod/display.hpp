@@ -58,15 +58,15 @@ double fov_h_deg(const ViewSpec& view);
 double fov_v_deg(const ViewSpec& view);
 FovRad symmetric_fov(double fov_h_deg, double fov_v_deg);
 double xi_center_cpd(const DisplaySpec& display);
-std::string validate_view(const ViewSpec& view);
-std::string validate_display(const DisplaySpec& display);
+[[nodiscard]] std::string validate_view(const ViewSpec& view);
+[[nodiscard]] std::string validate_display(const DisplaySpec& display);
 
 // A field of view a user describes (a scenario's display, `gazelod thresholds --fov`): each
 // axis in [kMinFovDeg, kMaxFovDeg] degrees, so xi stays finite and meaningful (at most
 // 1e6 px / (2 * 0.001 deg) = 5e8 c/deg). validate_view's (0, 180) is for what a runtime reports.
 inline constexpr double kMinFovDeg = 1e-3, kMaxFovDeg = 179.0;
 // validate_view, then each FOV axis in [kMinFovDeg, kMaxFovDeg]; "" when valid.
-std::string validate_described_view(const ViewSpec& view);
+[[nodiscard]] std::string validate_described_view(const ViewSpec& view);
 
 const DisplaySpec* find_display_preset(std::string_view name);
 std::span<const DisplaySpec> display_presets();

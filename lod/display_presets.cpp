@@ -4,7 +4,7 @@
 // source string says. Figures marked "assumed" are not published; they are placeholders the
 // caller may override (the runtime's xrLocateViews FOV always wins in the plugin).
 #include "lod/display.hpp"
-#include "lod/angles.hpp"
+#include "auxiliary/angles.hpp"
 
 #include <array>
 #include <cmath>
@@ -30,7 +30,7 @@ DisplaySpec make(const char* name, const char* label, int w, int h, double fov_h
 
 // 40 x 30 cm screen seen from 40 cm: FOV = 2 atan(half size / distance) (Reddy 1995, footnote 3).
 double desktop_fov_deg(double size_cm) {
-  return 2.0 * std::atan(size_cm / 2.0 / 40.0) * kDegPerRad;
+  return 2.0 * std::atan(size_cm / 2.0 / 40.0) * aux::kDegPerRad;
 }
 
 const std::array<DisplaySpec, 10>& presets() {

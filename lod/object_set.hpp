@@ -45,7 +45,7 @@ inline constexpr double kMinLevelWeight = 1e-30, kMaxLevelWeight = 1e30;
 
 // "" when the set is consistent (span sizes, finite non-negative numbers, chains in range
 // and ordered), else a message naming the first bad object and field.
-std::string validate_objects(const ObjectSet& objects);
+[[nodiscard]] std::string validate_objects(const ObjectSet& objects);
 
 // Levels a chain may have (ObjectSet::lod_count is a uint8).
 inline constexpr std::size_t kMaxChainLevels = 255;
@@ -53,7 +53,7 @@ inline constexpr std::size_t kMaxChainLevels = 255;
 // "" for a valid chain: 1..255 levels, one kind, detail finite and > 0 from level 1 on with a
 // weight in [kMinLevelWeight, kMaxLevelWeight], removed cycles non-increasing / geometric
 // error non-decreasing towards coarser levels.
-std::string validate_chain(std::span<const LodLevel> levels);
+[[nodiscard]] std::string validate_chain(std::span<const LodLevel> levels);
 
 // The same check, for readers that name the bad level themselves (a scenario's JSON path):
 // nullopt for a valid chain, else the level at fault (levels.size() when the count is wrong)
@@ -62,7 +62,7 @@ struct ChainProblem {
   std::size_t level = 0;
   std::string message;
 };
-std::optional<ChainProblem> find_chain_problem(std::span<const LodLevel> levels);
+[[nodiscard]] std::optional<ChainProblem> find_chain_problem(std::span<const LodLevel> levels);
 
 // Owns the arrays behind an ObjectSet. add() throws std::invalid_argument with the reason.
 class ObjectStore {

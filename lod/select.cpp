@@ -5,7 +5,7 @@
 // the levels each criterion allows and writes the decisions; both phases are vectorised
 // (AVX2 / AVX-512 where the CPU has them). This file validates, drives the blocks and handles
 // the rare objects the vector path leaves out. bench/lod/bench_select.cpp measures it.
-#include "lod/angles.hpp"
+#include "auxiliary/angles.hpp"
 #include "lod/select.hpp"
 
 #include "lod/acuity.hpp"
@@ -129,7 +129,7 @@ FrameConstants prepare_frame(const Viewer& v) {
   f.gaze_omega = v.head_angular_velocity_rad_s + v.gaze_angular_velocity_in_head_rad_s;
   f.xi_cpd = v.xi_cpd;
   f.scale = v.scale;
-  f.tracker_error_rad = v.tracker_error_deg / kDegPerRad;
+  f.tracker_error_rad = v.tracker_error_deg / aux::kDegPerRad;
   f.acuity_static_cpd = v.scale * std::min(kAcuityMaxCpd, v.xi_cpd);
   f.use_size = v.use_size;
   f.use_eccentricity = v.use_eccentricity;

@@ -63,7 +63,7 @@ struct Viewer {
 };
 
 // "" when valid, else which field and why.
-std::string validate_viewer(const Viewer& viewer);
+[[nodiscard]] std::string validate_viewer(const Viewer& viewer);
 
 struct Decisions {
   std::span<std::uint8_t> lod;
@@ -86,6 +86,6 @@ struct FrameConstants {
 };
 FrameConstants prepare_frame(const Viewer& viewer);  // viewer must be valid
 
-std::string select_lods(const Viewer& viewer, const ObjectSet& objects, const Decisions& out);
+[[nodiscard]] std::string select_lods(const Viewer& viewer, const ObjectSet& objects, const Decisions& out);
 
 }  // namespace gazelod::lod

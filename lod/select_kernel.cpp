@@ -10,7 +10,7 @@
 //     own): one reciprocal 1 / d^2 is reused, d and v stay squared, the eccentricity
 //     phi - alpha is a single atan2 of the rotated (cos, sin) pair, and the levels compare
 //     squares against A^2 p^2 instead of dividing.
-#include "lod/angles.hpp"
+#include "auxiliary/angles.hpp"
 #include "lod/select_kernel.hpp"
 
 #include "lod/acuity.hpp"
@@ -90,7 +90,7 @@ template <bool kDiagnostics, bool kUseSize>
     const double cp = gx * c_x + gy * c_y + gz * c_z;
     const double sin_e = sp * h - cp * r, cos_e = cp * h + sp * r;
     const double ecc_rad = sin_e >= 0.0 ? fast::atan2_with_norm(sin_e, cos_e, d2) - err : 0.0;
-    const double ecc_deg = (!inside & (ecc_rad > 0.0)) ? ecc_rad * kDegPerRad : 0.0;
+    const double ecc_deg = (!inside & (ecc_rad > 0.0)) ? ecc_rad * aux::kDegPerRad : 0.0;
 
     // Retinal velocity: w = c x (v_obj - v_eye) / d^2 - w_gaze, speed^2 = |w x c|^2 / d^2
     // (squared: G needs only its log, and the comparisons work on v^2; no sqrt).
@@ -100,7 +100,7 @@ template <bool kDiagnostics, bool kUseSize>
     const double wy = (c_z * rx - c_x * rz) * inv_d2 - oy;
     const double wz = (c_x * ry - c_y * rx) * inv_d2 - oz;
     const double tx = wy * c_z - wz * c_y, ty = wz * c_x - wx * c_z, tz = wx * c_y - wy * c_x;
-    const double vel2_raw = (tx * tx + ty * ty + tz * tz) * inv_d2 * (kDegPerRad * kDegPerRad);
+    const double vel2_raw = (tx * tx + ty * ty + tz * tz) * inv_d2 * (aux::kDegPerRad * aux::kDegPerRad);
     // d = 0 or overflow gives NaN: 0 keeps detail (as the scalar criteria do at r = 0).
     const double vel2 = vel2_raw >= 0.0 ? vel2_raw : 0.0;
     // The level's detail seen from the sphere's nearest point (lod/lod_chain.hpp): its size per
@@ -111,7 +111,7 @@ template <bool kDiagnostics, bool kUseSize>
     const double size_per_weight = out.kind_error[i] > 0.5 ? 1.0 : r;
     out.ecc_deg[i] = ecc_deg;
     out.vel2_dps2[i] = vel2;
-    out.alpha_deg[i] = alpha * kDegPerRad;
+    out.alpha_deg[i] = alpha * aux::kDegPerRad;
     out.near_ratio_sq[i] = (size_per_weight * size_per_weight) / (d_near * d_near);
     out.invalid[i] = ok ? 0.0 : 1.0;
   }

@@ -3,24 +3,21 @@
 // own state entry and this frame's perceptual level.
 #include "lod/switch_policy.hpp"
 
+#include "lod/switch_hold.hpp"
+
 #include <algorithm>
 #include <cmath>
 
 namespace gazelod::lod {
 namespace {
 
-std::string length_error(const char* function, const char* name, std::size_t got, std::size_t want) {
-  return std::string(function) + ": " + name + " has " + std::to_string(got) + " entries, expected " +
-         std::to_string(want);
-}
-
 // "" when every span of state has n entries.
-std::string check_state(const char* function, const SwitchState& state, std::size_t n) {
-  if (state.drawn.size() != n) return length_error(function, "state.drawn", state.drawn.size(), n);
+[[nodiscard]] std::string check_state(const char* function, const SwitchState& state, std::size_t n) {
+  if (state.drawn.size() != n) return switch_length_error(function, "state.drawn", state.drawn.size(), n);
   if (state.finest_allowed.size() != n)
-    return length_error(function, "state.finest_allowed", state.finest_allowed.size(), n);
+    return switch_length_error(function, "state.finest_allowed", state.finest_allowed.size(), n);
   if (state.window_start_s.size() != n)
-    return length_error(function, "state.window_start_s", state.window_start_s.size(), n);
+    return switch_length_error(function, "state.window_start_s", state.window_start_s.size(), n);
   return {};
 }
 
@@ -56,15 +53,9 @@ std::string apply_switch_policy(const SwitchPolicyConfig& config, double t_s, bo
   if (std::string err = validate_switch_config(config); !err.empty()) return "apply_switch_policy: " + err;
   const std::size_t n = perceptual.size();
   if (std::string err = check_state("apply_switch_policy", state, n); !err.empty()) return err;
-  if (!held.empty() && held.size() != n) return length_error("apply_switch_policy", "held", held.size(), n);
+  if (!held.empty() && held.size() != n) return switch_length_error("apply_switch_policy", "held", held.size(), n);
 
-  const bool timed = std::isfinite(t_s);
-  // Inside suppression a change goes unseen, so a shorter hold suffices there.
-  const double hold = suppressed && config.prefer_suppression
-                          ? std::min(config.coarsen_hold_s, config.suppressed_hold_s)
-                          : config.coarsen_hold_s;
-  const double deadline = config.coarsen_hold_s + config.max_deferral_s;  // finite or +inf
-  const bool release_without_deadline = !config.prefer_suppression || suppressed;
+  const SwitchHold st = switch_hold(config, t_s, suppressed);
 
   for (std::size_t i = 0; i < n; ++i) {
     const std::uint8_t p = perceptual[i];
@@ -82,15 +73,15 @@ std::string apply_switch_policy(const SwitchPolicyConfig& config, double t_s, bo
       std::uint8_t finest = state.finest_allowed[i];
       const bool open = std::isfinite(start) && finest > d;
       if (open) finest = std::min(finest, p);
-      if (!timed) {
+      if (!st.timed) {
         why = HoldReason::no_time;
         if (open) state.finest_allowed[i] = finest;
       } else {
         if (!open || t_s < start) start = t_s, finest = p;
         const double elapsed = t_s - start;  // both finite: no NaN (at worst +inf)
         why = HoldReason::hold_time;
-        if (elapsed >= hold) {
-          if (release_without_deadline || elapsed >= deadline) {
+        if (elapsed >= st.hold_s) {
+          if (st.release_without_deadline || elapsed >= st.deadline_s) {
             d = finest;  // > drawn: every level since the window opened was coarser
             state.drawn[i] = d;
             if (p > d) {

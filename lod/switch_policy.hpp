@@ -78,7 +78,7 @@ struct SwitchPolicyConfig {
 };
 
 // "" when valid (both times finite and >= 0), else which field and why.
-std::string validate_switch_config(const SwitchPolicyConfig& config);
+[[nodiscard]] std::string validate_switch_config(const SwitchPolicyConfig& config);
 
 // No window open (window_start_s); any non-finite value reads the same.
 inline constexpr double kNoSwitchWindow = std::numeric_limits<double>::quiet_NaN();
@@ -97,12 +97,12 @@ struct SwitchState {
 // message, writing nothing. A non-finite t_s: refinement still happens and an open window
 // still takes this frame's level into its finest, but no window opens and nothing coarsens.
 // t_s before an open window's start (the clock went back) restarts that window at t_s.
-std::string apply_switch_policy(const SwitchPolicyConfig& config, double t_s, bool suppressed,
-                                std::span<const std::uint8_t> perceptual, const SwitchState& state,
-                                std::span<std::uint8_t> held);
+[[nodiscard]] std::string apply_switch_policy(const SwitchPolicyConfig& config, double t_s, bool suppressed,
+                                              std::span<const std::uint8_t> perceptual, const SwitchState& state,
+                                              std::span<std::uint8_t> held);
 
 // Every object: draw `level`, no window open (registration, reset). Returns "" or, for spans
 // of different lengths, a message, writing nothing.
-std::string reset_switch_state(const SwitchState& state, std::uint8_t level = 0);
+[[nodiscard]] std::string reset_switch_state(const SwitchState& state, std::uint8_t level = 0);
 
 }  // namespace gazelod::lod

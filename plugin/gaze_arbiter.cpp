@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "plugin/gaze_arbiter.hpp"
 
+#include "auxiliary/time.hpp"
+
 #include <cmath>
 
 namespace gazelod::plugin {
@@ -17,7 +19,7 @@ std::optional<gaze::GazeSample> usable(std::optional<gaze::GazeSample> s) {
 }
 
 std::string seconds(std::int64_t ns) {
-  return std::to_string(static_cast<double>(ns) * 1e-9).substr(0, 5) + " s";
+  return std::to_string(aux::seconds_from_ns(ns)).substr(0, 5) + " s";
 }
 
 }  // namespace

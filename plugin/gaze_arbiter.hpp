@@ -4,6 +4,7 @@
 // A runtime that advertises gaze but never delivers it loses trust after a timeout.
 #pragma once
 
+#include "auxiliary/time.hpp"
 #include "gaze/gaze_source.hpp"
 #include "plugin/gaze_source_kind.hpp"
 
@@ -18,7 +19,7 @@ struct ArbiterConfig {
   // session became focused (from the first update when the application reports no session
   // states) before it is distrusted for the rest of the session (ns). Gaps after it has
   // delivered (blinks, lost tracking) fall back only while they last.
-  std::int64_t silence_timeout_ns = 1'000'000'000;
+  std::int64_t silence_timeout_ns = aux::ns_from_seconds(1.0);
   // A source that has delivered and now marks its samples invalid (a blink, a short loss)
   // stays the source this long after its last usable sample: the invalid samples go to the
   // conditioner, which holds its estimate as suppressed (blink suppression) rather than the

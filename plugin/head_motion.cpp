@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "plugin/head_motion.hpp"
 
+#include "auxiliary/time.hpp"
+
 #include <glm/geometric.hpp>
 #include <glm/vec4.hpp>
 
@@ -68,7 +70,7 @@ HeadMotion HeadTracker::finish(std::int64_t time, HeadMotion m, bool angular_giv
             std::isfinite(m.position_m.z);
   if (!m.valid) return HeadMotion{};
 
-  const double dt_s = have_previous_ ? static_cast<double>(time - previous_time_) * 1e-9 : 0.0;
+  const double dt_s = have_previous_ ? aux::seconds_from_ns(time - previous_time_) : 0.0;
   if (!angular_given && have_previous_)
     m.angular_velocity_rad_s = angular_velocity_from_poses(previous_orientation_, m.orientation, dt_s);
   if (!linear_given && have_previous_ && dt_s > 0.0) m.linear_velocity_m_s = (m.position_m - previous_position_) / dt_s;

@@ -3,8 +3,8 @@
 // selection, the switch policy, the budget and the cluster cut, from one frame's inputs.
 #include "plugin/lod_core.hpp"
 
+#include "auxiliary/time.hpp"
 #include "lod/acuity.hpp"
-#include "lod/angles.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -13,7 +13,18 @@
 
 namespace gazelod::plugin {
 
-LodCore::LodCore(PluginConfig config) : config_(std::move(config)) {
+namespace {
+
+// Configuration is refused here, once, with the reason (docs/error-policy.md): what passes
+// cannot make a frame fail (the switch policy's config, the budget's options and budget_ms).
+PluginConfig checked(PluginConfig config) {
+  if (std::string e = validate_plugin_config(config); !e.empty()) throw std::invalid_argument("gazelod: config: " + e);
+  return config;
+}
+
+}  // namespace
+
+LodCore::LodCore(PluginConfig config) : config_(checked(std::move(config))) {
   gaze::ConditionerConfig cc = config_.conditioning;
   cc.accuracy_deg = config_.openxr_gaze_error_deg;
   primary_conditioner_ = gaze::GazeConditioner(cc);
@@ -37,7 +48,7 @@ void LodCore::set_primary(gaze::GazeSource* primary, GazeSourceKind kind, std::s
   primary_ = primary;
   primary_kind_ = kind;
   ArbiterConfig ac;
-  ac.silence_timeout_ns = static_cast<std::int64_t>(config_.gaze_silence_timeout_s * 1e9);
+  ac.silence_timeout_ns = aux::ns_from_seconds(config_.gaze_silence_timeout_s);
   ac.blink_bridge_ns = config_.conditioning.loss_hold_max_ns;
   ac.primary_kind = kind;
   ac.why_no_primary = std::move(why_none);
@@ -104,7 +115,9 @@ void LodCore::session_state(bool focused, std::int64_t t_ns) {
 }
 
 void LodCore::end_frame(double measured_frame_ms) {
-  if (budget_) budget_->observe(measured_frame_ms);
+  // A time that is no time (non-finite, negative) is left out of the cost fit: the fit keeps
+  // its coefficients, which is all a refused measurement can mean here.
+  if (budget_) (void)budget_->observe(measured_frame_ms);
 }
 
 int LodCore::max_view_height_px() const {
@@ -195,9 +208,11 @@ const FrameDecisions& LodCore::decide(const FrameInput& in) {
     std::fill(limited_.begin(), limited_.end(), static_cast<std::uint8_t>(lod::Criterion::invalid_input));
   }
   if (config_.compute_breakdown) {
+    // Ignored on purpose: these viewers are the one above with a criterion off, so they are
+    // refused only when it was, and that frame's refusal is already handled (diagnostics only).
     lod::Viewer se = v;
     se.use_velocity = false;
-    (void)lod::select_lods(se, store_.view(), breakdown_se_out_);  // refused: the same viewer was refused above
+    (void)lod::select_lods(se, store_.view(), breakdown_se_out_);
     lod::Viewer sv = v;
     sv.use_eccentricity = false;
     (void)lod::select_lods(sv, store_.view(), breakdown_sv_out_);
@@ -230,7 +245,7 @@ double LodCore::frame_seconds(std::int64_t t_ns) {
     have_t0_ = true;
     t0_ns_ = t_ns;
   }
-  return static_cast<double>(t_ns - t0_ns_) * 1e-9;
+  return aux::seconds_from_ns(t_ns - t0_ns_);
 }
 
 void LodCore::publish_clusters() {
@@ -254,7 +269,8 @@ void LodCore::apply_switch_policy(std::int64_t t_ns, bool suppressed) {
     }
   const lod::SwitchState state{switch_drawn_, switch_finest_, switch_window_s_};
   if (!lod::apply_switch_policy(config_.switching, t_s, suppressed, lod_, state, held_).empty()) {
-    // Refused (it validates sizes and the configuration): draw the perceptual choice.
+    // Cannot happen (the constructor checked the configuration, resize_outputs keeps the sizes
+    // equal); were it refused, draw the perceptual choice.
     std::copy(lod_.begin(), lod_.end(), switch_drawn_.begin());
     std::fill(held_.begin(), held_.end(), 0);
   }
@@ -272,6 +288,9 @@ void LodCore::apply_budget() {
   diag_.predicted_ms = 0.0;
   diag_.budget_infeasible = false;
   if (!(config_.budget_ms > 0.0) || store_.size() == 0) return;
+  // Built at the first frame after a registration (one rebuild for many add_object calls). It
+  // cannot throw: budget_ms and the options passed the constructor's check, every chain
+  // ObjectStore::add's (1 to 255 levels).
   if (!budget_) budget_ = std::make_unique<budget::FrameBudget>(chains_, config_.budget_ms, config_.budget);
   const double px_per_deg = 2.0 * xi_cpd_;  // xi = pixels / (2 * FOV)
   for (std::size_t i = 0; i < store_.size(); ++i) {
@@ -279,13 +298,14 @@ void LodCore::apply_budget() {
     budget_view_[i].size_px = std::isfinite(r_px) && enabled_[i] ? std::numbers::pi * r_px * r_px : 0.0;
     budget_view_[i].importance = std::clamp(importance_[i], 0.0, 1.0);
   }
-  try {
-    diag_.budget_infeasible = !budget_->choose(policy_lod(), budget_view_, budget_lod_);
-    diag_.predicted_ms = budget_->predicted_ms();
-  } catch (const std::exception&) {
-    // Inputs the solver refuses: draw the perceptual choice rather than guess.
+  if (!budget_->choose(policy_lod(), budget_view_, budget_lod_).empty()) {
+    // Cannot happen (every span has the store's size, every level comes from its own chain);
+    // were it refused, draw the perceptual choice rather than guess.
     std::copy(policy_lod().begin(), policy_lod().end(), budget_lod_.begin());
+    return;
   }
+  diag_.budget_infeasible = budget_->infeasible();
+  diag_.predicted_ms = budget_->predicted_ms();
 }
 
 // xi from the views' FOV and the resolution rendered: the finest view decides (an inset's

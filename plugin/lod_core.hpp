@@ -60,7 +60,8 @@ class LodCore {
   using SourceChanged = std::function<void(GazeSourceKind now, const std::string& why)>;
   using OrientationAt = std::function<std::optional<glm::dquat>(std::int64_t t_ns)>;
 
-  // Throws std::invalid_argument for an unknown hmd_override preset.
+  // Throws std::invalid_argument for a configuration validate_plugin_config refuses (its reason)
+  // or an unknown hmd_override preset. decide() then never throws for configuration.
   explicit LodCore(PluginConfig config);
   ~LodCore();
   LodCore(const LodCore&) = delete;

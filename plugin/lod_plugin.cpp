@@ -3,6 +3,7 @@
 // application's function pointers and hands them to the engine (plugin/lod_core.hpp).
 #include "plugin/lod_plugin.hpp"
 
+#include "auxiliary/time.hpp"
 #include "plugin/head_motion.hpp"
 #include "plugin/lod_core.hpp"
 #include "plugin/xr_check.hpp"
@@ -53,7 +54,7 @@ class LodPluginImpl final : public LodPlugin {
         base_(base),
         options_(options),
         core_(config),
-        pushed_(heads_, static_cast<std::int64_t>(config.max_pushed_sample_age_s * 1e9)) {
+        pushed_(heads_, aux::ns_from_seconds(config.max_pushed_sample_age_s)) {
     XrReferenceSpaceCreateInfo view_info{XR_TYPE_REFERENCE_SPACE_CREATE_INFO};
     view_info.referenceSpaceType = XR_REFERENCE_SPACE_TYPE_VIEW;
     view_info.poseInReferenceSpace.orientation.w = 1.0f;

@@ -3,6 +3,7 @@
 #include "plugin/openxr_gaze_source.hpp"
 
 #include "plugin/xr_check.hpp"
+#include "xr/eye_gaze_paths.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -36,6 +37,17 @@ bool system_supports_eye_gaze(const XrDispatch& xr, XrInstance instance, XrSyste
 OpenXrGazeSource::OpenXrGazeSource(const XrDispatch& xr, XrInstance instance, XrSession session, GazeInputMode mode,
                                    XrSpace gaze_space, XrAction gaze_action)
     : xr_(xr), instance_(instance), session_(session), mode_(mode) {
+  // A throwing constructor runs no destructor: what create() made before the failing call (the
+  // VIEW space, the action set) is released here.
+  try {
+    create(gaze_space, gaze_action);
+  } catch (...) {
+    release();
+    throw;
+  }
+}
+
+void OpenXrGazeSource::create(XrSpace gaze_space, XrAction gaze_action) {
   XrReferenceSpaceCreateInfo view_info{XR_TYPE_REFERENCE_SPACE_CREATE_INFO};
   view_info.referenceSpaceType = XR_REFERENCE_SPACE_TYPE_VIEW;
   view_info.poseInReferenceSpace.orientation.w = 1.0f;
@@ -57,9 +69,9 @@ OpenXrGazeSource::OpenXrGazeSource(const XrDispatch& xr, XrInstance instance, Xr
   check(xr_.create_action(action_set_, &action_info, &gaze_action_), "xrCreateAction");
   if (mode_ == GazeInputMode::merge_binding) return;
 
-  XrActionSuggestedBinding binding{gaze_action_, path(xr_, instance_, kEyeGazePoseBinding)};
+  XrActionSuggestedBinding binding{gaze_action_, path(xr_, instance_, xr::kGazePosePath)};
   XrInteractionProfileSuggestedBinding suggested{XR_TYPE_INTERACTION_PROFILE_SUGGESTED_BINDING};
-  suggested.interactionProfile = path(xr_, instance_, kEyeGazeProfile);
+  suggested.interactionProfile = path(xr_, instance_, xr::kEyeGazeProfile);
   suggested.countSuggestedBindings = 1;
   suggested.suggestedBindings = &binding;
   const XrResult r = xr_.suggest_interaction_profile_bindings(instance_, &suggested);
@@ -132,10 +144,10 @@ void OpenXrGazeSource::check_binding() {
   if (binding_lost_ || mode_ == GazeInputMode::app_space || ++inactive_calls_ != 10) return;
   XrInteractionProfileState profile{XR_TYPE_INTERACTION_PROFILE_STATE};
   XrPath eyes = XR_NULL_PATH;
-  if (XR_FAILED(xr_.string_to_path(instance_, "/user/eyes_ext", &eyes))) return;
+  if (XR_FAILED(xr_.string_to_path(instance_, xr::kEyesUserPath, &eyes))) return;
   if (XR_FAILED(xr_.get_current_interaction_profile(session_, eyes, &profile))) return;
   XrPath eye_profile = XR_NULL_PATH;
-  if (XR_FAILED(xr_.string_to_path(instance_, kEyeGazeProfile, &eye_profile)) ||
+  if (XR_FAILED(xr_.string_to_path(instance_, xr::kEyeGazeProfile, &eye_profile)) ||
       profile.interactionProfile != eye_profile)
     return;
   XrBoundSourcesForActionEnumerateInfo info{XR_TYPE_BOUND_SOURCES_FOR_ACTION_ENUMERATE_INFO};
@@ -144,7 +156,7 @@ void OpenXrGazeSource::check_binding() {
   if (XR_FAILED(xr_.enumerate_bound_sources_for_action(session_, &info, 0, &n, nullptr)) || n != 0) return;
   binding_lost_ = true;
   status_ = std::string("gazelod's eye-gaze binding was replaced by the application's own suggestion for ") +
-            kEyeGazeProfile +
+            xr::kEyeGazeProfile +
             "; merge gazelod's binding into that suggestion (GZL_GAZE_INPUT_MERGE_BINDING) or pass "
             "your gaze action space (GZL_GAZE_INPUT_APP_SPACE)";
 }

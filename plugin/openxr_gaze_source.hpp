@@ -20,9 +20,6 @@
 
 namespace gazelod::plugin {
 
-inline constexpr const char* kEyeGazeProfile = "/interaction_profiles/ext/eye_gaze_interaction";
-inline constexpr const char* kEyeGazePoseBinding = "/user/eyes_ext/input/gaze_ext/pose";
-
 // Whether the system advertises eye-gaze interaction (XrSystemEyeGazeInteractionPropertiesEXT).
 bool system_supports_eye_gaze(const XrDispatch& xr, XrInstance instance, XrSystemId system);
 
@@ -62,6 +59,7 @@ class OpenXrGazeSource final : public gaze::GazeSource {
   const std::string& sample_time_quality() const { return sample_time_quality_; }
 
  private:
+  void create(XrSpace gaze_space, XrAction gaze_action);  // the constructor's OpenXR calls
   void create_space();
   void check_binding();
 

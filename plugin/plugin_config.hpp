@@ -66,4 +66,9 @@ struct PluginConfig {
   budget::FrameBudgetOptions budget;
 };
 
+// "" when every setting is usable, else the first bad one by name with its value
+// ("conditioning.pursuit_exit_fraction must be in [0, 1], got 2"); nothing is replaced by a
+// default. LodCore's constructor (so every plugin create) refuses what this refuses.
+[[nodiscard]] std::string validate_plugin_config(const PluginConfig& config);
+
 }  // namespace gazelod

@@ -2,6 +2,8 @@
 // Pushed gaze samples and the frames' head orientations (plugin/pushed_gaze.hpp).
 #include "plugin/pushed_gaze.hpp"
 
+#include "auxiliary/time.hpp"
+
 #include <glm/geometric.hpp>
 
 #include <cmath>
@@ -86,7 +88,7 @@ PushResult PushedGazeSource::push(const PushedSample& in, std::string& why) {
   }
   if (have_frame_ && s.sample.t_ns > frame_t_ns_ + lead_ns_) {
     why = "gazelod: gaze sample at " + std::to_string(s.sample.t_ns) + " ns is more than " +
-          std::to_string(lead_ns_ / 1'000'000) + " ms after the last frame's display time (" +
+          std::to_string(aux::whole_ms_from_ns(lead_ns_)) + " ms after the last frame's display time (" +
           std::to_string(frame_t_ns_) + " ns); stamp samples on the frame loop's clock (XrTime in OpenXR mode)";
     return PushResult::in_future;
   }
@@ -125,7 +127,7 @@ std::optional<gaze::GazeSample> PushedGazeSource::sample_at(std::int64_t t_ns) {
     return s;
   }
   status_ = count_ == 0 ? "no sample pushed yet"
-                        : "no sample pushed in the last " + std::to_string(max_age_ns_ / 1'000'000) + " ms";
+                        : "no sample pushed in the last " + std::to_string(aux::whole_ms_from_ns(max_age_ns_)) + " ms";
   return std::nullopt;
 }
 

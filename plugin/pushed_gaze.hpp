@@ -4,6 +4,7 @@
 // head space and to know the head at the sample's time.
 #pragma once
 
+#include "auxiliary/time.hpp"
 #include "gaze/gaze_sample.hpp"
 #include "gaze/gaze_source.hpp"
 
@@ -37,13 +38,14 @@ struct PushedSample {
   glm::dquat head_orientation{1.0, 0.0, 0.0, 0.0};
 };
 
-enum class PushResult { ok, out_of_order, in_future, invalid };
+// [[nodiscard]]: a refused sample is the caller's to report (docs/error-policy.md).
+enum class [[nodiscard]] PushResult{ok, out_of_order, in_future, invalid};
 
 class PushedGazeSource final : public gaze::GazeSource {
  public:
   // max_age_ns: a frame uses the newest sample at most this old; lead_ns: how far past the last
   // frame's display time a sample may be stamped before it counts as from another clock.
-  PushedGazeSource(const HeadHistory& heads, std::int64_t max_age_ns, std::int64_t lead_ns = 1'000'000'000)
+  PushedGazeSource(const HeadHistory& heads, std::int64_t max_age_ns, std::int64_t lead_ns = aux::ns_from_seconds(1.0))
       : heads_(heads), max_age_ns_(max_age_ns), lead_ns_(lead_ns) {}
 
   // Checks and stores a sample; on refusal `why` says what is wrong ("gazelod: ..."), nothing

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "render/foveal_marker.hpp"
-#include "lod/angles.hpp"
+#include "auxiliary/angles.hpp"
 
 #include <glm/geometric.hpp>
 
@@ -19,8 +19,8 @@ std::size_t foveal_circle(const glm::dvec3& eye_m, const glm::dvec3& gaze_dir, d
   const glm::dvec3 helper = std::abs(g.y) < 0.9 ? glm::dvec3(0.0, 1.0, 0.0) : glm::dvec3(1.0, 0.0, 0.0);
   const glm::dvec3 u = glm::normalize(glm::cross(g, helper));
   const glm::dvec3 v = glm::cross(g, u);
-  const double r = std::clamp(radius_deg, 0.0, 89.0) * lod::kRadPerDeg;
-  const auto dot_radius = static_cast<float>(distance_m * std::tan(dot_deg * lod::kRadPerDeg));
+  const double r = std::clamp(radius_deg, 0.0, 89.0) * aux::kRadPerDeg;
+  const auto dot_radius = static_cast<float>(distance_m * std::tan(dot_deg * aux::kRadPerDeg));
   for (std::size_t i = 0; i < out.size(); ++i) {
     const double phi = 2.0 * std::numbers::pi * static_cast<double>(i) / static_cast<double>(out.size());
     const glm::dvec3 dir = std::cos(r) * g + std::sin(r) * (std::cos(phi) * u + std::sin(phi) * v);

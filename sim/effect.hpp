@@ -5,9 +5,9 @@
 // simulator keeps one list per stage, so an effect that a scenario does not list costs nothing.
 #pragma once
 
+#include "auxiliary/random.hpp"
 #include "gaze/gaze_sample.hpp"
 #include "sim/json_fields.hpp"
-#include "sim/random.hpp"
 #include "sim/simulator.hpp"
 
 #include <cstddef>
@@ -26,7 +26,7 @@ enum EffectStage : unsigned {
   kStageObjects = 1u << 4,        // object positions
 };
 
-// Head motion as the head effects build it (angles in the sim/angles.hpp convention).
+// Head motion as the head effects build it (angles in the auxiliary/yaw_pitch.hpp convention).
 struct HeadMotion {
   double yaw_rad = 0.0, pitch_rad = 0.0;
   double yaw_rate_rad_s = 0.0, pitch_rate_rad_s = 0.0;
@@ -75,7 +75,7 @@ class Effect {
 struct EffectInit {
   const Scenario& scenario;
   JsonFields& params;
-  CounterRng rng;
+  aux::CounterRng rng;
   const std::string& source;  // the scenario file (relative paths in parameters start there)
 };
 
@@ -92,8 +92,5 @@ struct TimeWindow {
   bool contains(std::int64_t t_ns) const { return t_ns >= start_ns && t_ns < end_ns; }
 };
 TimeWindow read_window(JsonFields& params);
-
-// Seconds to integer nanoseconds (rounded), for durations read from JSON.
-std::int64_t to_ns(double seconds);
 
 }  // namespace gazelod::sim

@@ -2,6 +2,8 @@
 // Effect names to makers. An explicit table rather than self-registering statics, which a
 // static library would drop at link time.
 #include "sim/effect.hpp"
+
+#include "auxiliary/time.hpp"
 #include "sim/effects/effects.hpp"
 
 #include <array>
@@ -45,16 +47,12 @@ std::span<const std::string_view> effect_names() {
   return kNames;
 }
 
-std::int64_t to_ns(double seconds) {
-  return static_cast<std::int64_t>(std::llround(seconds * 1e9));
-}
-
 TimeWindow read_window(JsonFields& params) {
   TimeWindow w;
-  w.start_ns = to_ns(params.number("start_s", 0.0, 0.0, 1e6));
+  w.start_ns = aux::ns_from_seconds(params.number("start_s", 0.0, 0.0, 1e6));
   if (params.has("end_s")) {
     const double end_s = params.number("end_s", 0.0, 0.0, 1e6);
-    w.end_ns = to_ns(end_s);
+    w.end_ns = aux::ns_from_seconds(end_s);
     if (w.end_ns <= w.start_ns) params.fail("end_s", "must be after start_s");
   }
   return w;
@@ -72,7 +70,7 @@ std::unique_ptr<Effect> make_effect(const EffectSpec& spec, const Scenario& scen
   (void)params.child("type");
   for (const Entry& e : kEffects) {
     if (e.name != spec.type) continue;
-    EffectInit init{scenario, params, CounterRng{scenario.seed, index + 1}, source};
+    EffectInit init{scenario, params, aux::CounterRng{scenario.seed, index + 1}, source};
     std::unique_ptr<Effect> effect = e.make(init);
     params.finish();
     return effect;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "sim/json_fields.hpp"
 
+#include "auxiliary/json_path.hpp"
 #include "sim/simulator.hpp"
 
 #include <cmath>
@@ -8,26 +9,17 @@
 
 namespace gazelod::sim {
 
-std::string json_type_name(const nlohmann::json& v) {
-  if (v.is_boolean()) return "boolean";
-  if (v.is_number()) return "number";
-  if (v.is_string()) return "string";
-  if (v.is_array()) return "array";
-  if (v.is_object()) return "object";
-  return "null";
-}
-
 void throw_at(const std::string& source, const std::string& path, const std::string& message) {
-  throw ScenarioError(source + ": " + (path.empty() ? std::string("(top level)") : path) + ": " + message);
+  throw ScenarioError(aux::json_error_line(source, path.empty() ? aux::kJsonTopLevel : path, message));
 }
 
 JsonFields::JsonFields(const nlohmann::json& object, std::string path, std::string source)
     : obj_(object), path_(std::move(path)), source_(std::move(source)) {
-  if (!obj_.is_object()) throw_at(source_, path_, "expected an object, got " + json_type_name(obj_));
+  if (!obj_.is_object()) throw_at(source_, path_, "expected an object, got " + aux::json_type_name(obj_));
 }
 
 std::string JsonFields::key_path(const std::string& key) const {
-  return path_.empty() ? key : path_ + "." + key;
+  return aux::json_member_path(path_, key);
 }
 
 bool JsonFields::has(const std::string& key) const {
@@ -85,7 +77,7 @@ std::string range_text(std::int64_t lo, std::int64_t hi) {
 double JsonFields::number(const std::string& key, double fallback, double lo, double hi) {
   const nlohmann::json* v = find(key);
   if (!v) return fallback;
-  if (!v->is_number()) fail(key, "expected a number, got " + json_type_name(*v));
+  if (!v->is_number()) fail(key, "expected a number, got " + aux::json_type_name(*v));
   const double x = v->get<double>();
   if (!std::isfinite(x) || x < lo || x > hi) {
     fail(key, "must be in " + range_text(lo, hi) + ", got " + format_number(x));
@@ -102,7 +94,7 @@ std::int64_t JsonFields::integer(const std::string& key, std::int64_t fallback, 
   const nlohmann::json* v = find(key);
   if (!v) return fallback;
   if (!v->is_number_integer())
-    fail(key, "expected an integer, got " + (v->is_number() ? v->dump() : json_type_name(*v)));
+    fail(key, "expected an integer, got " + (v->is_number() ? v->dump() : aux::json_type_name(*v)));
   if (v->is_number_unsigned() && v->get<std::uint64_t>() > static_cast<std::uint64_t>(hi))
     fail(key, "must be in " + range_text(lo, hi) + ", got " + v->dump());
   const std::int64_t x = v->get<std::int64_t>();
@@ -114,21 +106,21 @@ std::uint64_t JsonFields::unsigned_integer(const std::string& key, std::uint64_t
   const nlohmann::json* v = find(key);
   if (!v) return fallback;
   if (!v->is_number_unsigned())  // nlohmann keeps non-negative integers unsigned
-    fail(key, "expected a non-negative integer, got " + (v->is_number() ? v->dump() : json_type_name(*v)));
+    fail(key, "expected a non-negative integer, got " + (v->is_number() ? v->dump() : aux::json_type_name(*v)));
   return v->get<std::uint64_t>();
 }
 
 bool JsonFields::boolean(const std::string& key, bool fallback) {
   const nlohmann::json* v = find(key);
   if (!v) return fallback;
-  if (!v->is_boolean()) fail(key, "expected true or false, got " + json_type_name(*v));
+  if (!v->is_boolean()) fail(key, "expected true or false, got " + aux::json_type_name(*v));
   return v->get<bool>();
 }
 
 std::string JsonFields::string(const std::string& key, const std::string& fallback) {
   const nlohmann::json* v = find(key);
   if (!v) return fallback;
-  if (!v->is_string()) fail(key, "expected a string, got " + json_type_name(*v));
+  if (!v->is_string()) fail(key, "expected a string, got " + aux::json_type_name(*v));
   return v->get<std::string>();
 }
 
@@ -140,12 +132,12 @@ std::string JsonFields::required_string(const std::string& key) {
 glm::dvec3 JsonFields::vec3(const std::string& key, glm::dvec3 fallback, double lo, double hi) {
   const nlohmann::json* v = find(key);
   if (!v) return fallback;
-  if (!v->is_array() || v->size() != 3) fail(key, "expected [x, y, z], got " + json_type_name(*v));
+  if (!v->is_array() || v->size() != 3) fail(key, "expected [x, y, z], got " + aux::json_type_name(*v));
   glm::dvec3 out;
   for (int i = 0; i < 3; ++i) {
     const nlohmann::json& e = (*v)[static_cast<std::size_t>(i)];
-    const std::string p = key + "[" + std::to_string(i) + "]";
-    if (!e.is_number()) fail(p, "expected a number, got " + json_type_name(e));
+    const std::string p = aux::json_element_path(key, static_cast<std::size_t>(i));
+    if (!e.is_number()) fail(p, "expected a number, got " + aux::json_type_name(e));
     out[i] = e.get<double>();
     if (!std::isfinite(out[i]) || out[i] < lo || out[i] > hi) {
       fail(p, "must be in " + range_text(lo, hi) + ", got " + format_number(out[i]));

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // Reading one JSON object of a scenario with errors that name the source and the JSON path
-// ("scenario.json: effects[2].amplitude_deg: must be in [0, 90], got 120"). Every key must be
-// read or the object is refused by finish() (unknown keys are errors, not silently ignored).
+// ("scenario.json: effects[2].amplitude_deg: must be in [0, 90], got 120"; paths and the error
+// line as every reader writes them, auxiliary/json_path.hpp). Every key must be read or the
+// object is refused by finish() (unknown keys are errors, not silently ignored).
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -53,9 +54,6 @@ class JsonFields {
 // A number for messages, as the README writes limits: 6 significant digits, exponents
 // without "+" or leading zeros ("1e6", "1e-5", "0.001").
 std::string format_number(double x);
-
-// "number", "string", ... for messages.
-std::string json_type_name(const nlohmann::json& v);
 
 // Throws ScenarioError "<source>: <path>: <message>".
 [[noreturn]] void throw_at(const std::string& source, const std::string& path, const std::string& message);

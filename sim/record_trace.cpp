@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "sim/record_trace.hpp"
 
-#include "gaze/atomic_file.hpp"
+#include "auxiliary/atomic_file.hpp"
+#include "auxiliary/time.hpp"
 #include "gaze/trace_writer.hpp"
 
 #include <cmath>
@@ -11,14 +12,14 @@ namespace gazelod::sim {
 RecordStats record_trace(Simulator& sim, std::ostream& out, const RecordOptions& options) {
   const double step_hz = options.step_hz > 0.0 ? options.step_hz : sim.scenario().frame_rate_hz;
   const double duration_s = options.duration_s > 0.0 ? options.duration_s : sim.scenario().duration_s;
-  const auto end_ns = static_cast<std::int64_t>(std::llround(duration_s * 1e9));
+  const auto end_ns = aux::ns_from_seconds(duration_s);
   gaze::TraceWriter writer(out);
   RecordStats stats;
   bool any = false;
   std::int64_t last_ns = 0;
   for (std::int64_t k = 0;; ++k) {
     // Integer frame times from the index (no accumulated rounding).
-    const auto t_ns = static_cast<std::int64_t>(std::llround(static_cast<double>(k) * 1e9 / step_hz));
+    const auto t_ns = aux::ns_rounded(static_cast<double>(k) * static_cast<double>(aux::kNsPerSecond) / step_hz);
     if (t_ns >= end_ns) break;
     if (!options.true_gaze && t_ns < sim.first_tracker_sample_ns()) continue;  // nothing delivered yet
     const gaze::GazeSample g = options.true_gaze ? sim.true_gaze_at(t_ns) : sim.tracker_at(t_ns);
@@ -41,7 +42,7 @@ RecordStats record_trace(Simulator& sim, std::ostream& out, const RecordOptions&
 }
 
 RecordStats record_trace_file(Simulator& sim, const std::string& path, const RecordOptions& options) {
-  gaze::AtomicFile file(path);
+  aux::AtomicFile file(path);
   const RecordStats stats = record_trace(sim, file.stream(), options);
   file.commit();
   return stats;

@@ -25,8 +25,8 @@ struct RecordStats {
 
 RecordStats record_trace(Simulator& sim, std::ostream& out, const RecordOptions& options = {});
 
-// The same into a file, written atomically (gaze/atomic_file.hpp): a failure (full disk,
-// missing folder, a directory in the way) throws gaze::WriteError with the system's reason and
+// The same into a file, written atomically (auxiliary/atomic_file.hpp): a failure (full disk,
+// missing folder, a directory in the way) throws aux::WriteError with the system's reason and
 // leaves no file, partial or temporary, behind.
 RecordStats record_trace_file(Simulator& sim, const std::string& path, const RecordOptions& options = {});
 

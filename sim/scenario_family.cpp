@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "sim/scenario_family.hpp"
 
-#include "sim/random.hpp"
+#include "auxiliary/random.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -78,7 +78,7 @@ nlohmann::json lod_chain(double triangles, int levels, double ratio) {
 }  // namespace
 
 FamilyScenario family_scenario(std::uint64_t seed, double duration_s) {
-  const CounterRng r{seed, kFamilyStream};
+  const aux::CounterRng r{seed, kFamilyStream};
   const auto u = [&](Draw d, double lo, double hi) { return r.uniform(d, lo, hi); };
   const double T = duration_s > 0.0 ? duration_s : 20.0;
   char text[256];

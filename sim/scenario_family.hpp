@@ -12,7 +12,7 @@
 //   - an object field: near clutter, an open field or a deep one (counts, sizes, depths, LOD
 //     chains of 3-5 levels dropping 2-4x a level).
 // The result is scenario JSON (sim/scenarios/README.md) that load_scenario_json accepts for
-// every seed; the same seed gives the same text, bit for bit (sim/random.hpp).
+// every seed; the same seed gives the same text, bit for bit (auxiliary/random.hpp).
 #pragma once
 
 #include <cstdint>

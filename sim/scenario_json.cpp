@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 // Loading a scenario (format: version 1; see sim/scenarios/*.json and the README section
 // "Scenario files"). Every error names the source and the JSON path.
+#include "auxiliary/angles.hpp"
+#include "auxiliary/json_path.hpp"
 #include "auxiliary/json_strict.hpp"
-#include "sim/angles.hpp"
+#include "auxiliary/time.hpp"
 #include "sim/effect.hpp"
 #include "sim/json_fields.hpp"
 #include "sim/scene_json.hpp"
@@ -51,7 +53,7 @@ const lod::DisplaySpec& stereo_preset_or_fail(const std::string& name, JsonField
 
 lod::FovRad read_fov(JsonFields& f, const std::string& key, double scale) {
   JsonFields a(*f.child(key), f.key_path(key), f.source());
-  const double lim = 90.0 / (scale == 1.0 ? kDegPerRad : 1.0);  // 90 deg in the key's unit
+  const double lim = 90.0 / (scale == 1.0 ? aux::kDegPerRad : 1.0);  // 90 deg in the key's unit
   lod::FovRad fov;
   fov.angle_left_rad = a.required_number("left", -lim, lim) * scale;
   fov.angle_right_rad = a.required_number("right", -lim, lim) * scale;
@@ -89,7 +91,7 @@ lod::DisplaySpec read_display(const nlohmann::json& j, JsonFields& top) {
                                                    : "";
   if (fov_keys > 1) f.fail("", "give one of fov_deg, fov_rad or fov_h_deg + fov_v_deg");
   if (f.has("fov_deg"))
-    v.fov = read_fov(f, "fov_deg", kRadPerDeg);
+    v.fov = read_fov(f, "fov_deg", aux::kRadPerDeg);
   else if (f.has("fov_rad"))
     v.fov = read_fov(f, "fov_rad", 1.0);
   else if (f.has("fov_h_deg") || f.has("fov_v_deg"))
@@ -214,14 +216,14 @@ Scenario load_scenario_json(std::string_view json_text, std::string_view source_
   if (const nlohmann::json* scene = f.child("scene")) read_scene(*scene, f.key_path("scene"), source, sc, tally);
   if (const nlohmann::json* rt = f.child("runtime")) sc.runtime = read_runtime(*rt, f);
   if (const nlohmann::json* effects = f.child("effects")) {
-    if (!effects->is_array()) f.fail("effects", "expected an array, got " + json_type_name(*effects));
+    if (!effects->is_array()) f.fail("effects", "expected an array, got " + aux::json_type_name(*effects));
     if (effects->size() > kMaxEffects)
       f.fail("effects",
              "must have at most " + std::to_string(kMaxEffects) + " effects, got " + std::to_string(effects->size()));
     for (std::size_t i = 0; i < effects->size(); ++i) {
       const nlohmann::json& e = (*effects)[i];
       EffectSpec spec;
-      spec.json_path = "effects[" + std::to_string(i) + "]";
+      spec.json_path = aux::json_element_path("effects", i);
       JsonFields ef(e, spec.json_path, source);
       spec.type = ef.required_string("type");
       if (spec.type == "head_track") {  // its trace is loaded into memory: counted before it is read
@@ -245,10 +247,10 @@ Scenario load_scenario_json(std::string_view json_text, std::string_view source_
     const std::unique_ptr<Effect> effect = make_effect(sc.effects[i], sc, i, source);
     if (!(effect->stages() & kStageTrackerTiming)) continue;
     effect->apply_timing(timing);
-    if (static_cast<double>(timing.latency_ns) > kMaxTrackerLatencyMs * 1e6)
+    if (timing.latency_ns > aux::ns_from_ms(kMaxTrackerLatencyMs))
       throw_at(source, sc.effects[i].json_path,
                "the tracker latency of all effects together must be <= " + format_number(kMaxTrackerLatencyMs) +
-                   " ms, got " + format_number(static_cast<double>(timing.latency_ns) * 1e-6) + " ms with this one");
+                   " ms, got " + format_number(aux::ms_from_ns(timing.latency_ns)) + " ms with this one");
   }
   return sc;
 }

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "sim/scene_json.hpp"
 
+#include "auxiliary/json_path.hpp"
+#include "auxiliary/random.hpp"
 #include "lod/object_set.hpp"
-#include "sim/random.hpp"
 
 #include <cmath>
 #include <string_view>
@@ -40,7 +41,7 @@ void check_chain(const std::vector<lod::LodLevel>& levels, const std::string& lo
   const std::optional<lod::ChainProblem> p = lod::find_chain_problem(levels);
   if (!p) return;
   if (p->level >= levels.size()) throw_at(source, lods_path, p->message);
-  throw_at(source, lods_path + "[" + std::to_string(p->level) + "]", p->message);
+  throw_at(source, aux::json_element_path(lods_path, p->level), p->message);
 }
 
 // Adds `objects` objects of `levels_each` levels and `name_length`-byte names to the tally,
@@ -91,10 +92,11 @@ SceneObject read_object(const nlohmann::json& j, const std::string& path, const 
   o.importance = f.number("importance", 1.0, 0.0, 1e6);
   const nlohmann::json* lods = f.child("lods");
   if (!lods) f.fail("lods", "missing (a list of levels, level 0 = full detail)");
-  if (!lods->is_array() || lods->empty()) f.fail("lods", "expected a non-empty array, got " + json_type_name(*lods));
+  if (!lods->is_array() || lods->empty())
+    f.fail("lods", "expected a non-empty array, got " + aux::json_type_name(*lods));
   o.lods.reserve(lods->size());
   for (std::size_t i = 0; i < lods->size(); ++i)
-    o.lods.push_back(read_level((*lods)[i], f.key_path("lods") + "[" + std::to_string(i) + "]", source));
+    o.lods.push_back(read_level((*lods)[i], aux::json_element_path(f.key_path("lods"), i), source));
   f.finish();
   check_chain(o.lods, f.key_path("lods"), source);
   return o;
@@ -138,7 +140,7 @@ RandomField read_random_field(const nlohmann::json& j, const std::string& path, 
 
 void make_random_field(const RandomField& g, Scenario& sc) {
   sc.head_path.velocity_m_s = glm::dvec3(0.0, 0.0, -g.speed);  // OpenXR forward is -Z
-  const CounterRng rng{sc.seed, kGeneratorStream};
+  const aux::CounterRng rng{sc.seed, kGeneratorStream};
   const std::vector<lod::LodLevel> chain = make_lod_chain(g.triangles, g.levels, g.ratio);
   for (std::size_t i = 0; i < g.count; ++i) {
     SceneObject o;
@@ -189,19 +191,19 @@ void read_scene(const nlohmann::json& scene, const std::string& path, const std:
   // First everything is counted against the scenario's limits, then objects are made.
   const nlohmann::json* objs = f.child("objects");
   if (objs) {
-    if (!objs->is_array()) f.fail("objects", "expected an array, got " + json_type_name(*objs));
+    if (!objs->is_array()) f.fail("objects", "expected an array, got " + aux::json_type_name(*objs));
     if (objs->size() > kMaxObjects - tally.objects)
       f.fail("objects", "must hold at most " + count_text(kMaxObjects - tally.objects) +
                             " objects (a scenario has at most " + count_text(kMaxObjects) + " in all), got " +
                             count_text(objs->size()));
     for (std::size_t i = 0; i < objs->size(); ++i)
-      count_object((*objs)[i], f.key_path("objects") + "[" + std::to_string(i) + "]", source, i, tally);
+      count_object((*objs)[i], aux::json_element_path(f.key_path("objects"), i), source, i, tally);
   }
   std::vector<RandomField> fields;
   if (const nlohmann::json* gens = f.child("generators")) {
-    if (!gens->is_array()) f.fail("generators", "expected an array, got " + json_type_name(*gens));
+    if (!gens->is_array()) f.fail("generators", "expected an array, got " + aux::json_type_name(*gens));
     for (std::size_t i = 0; i < gens->size(); ++i) {
-      const std::string gp = f.key_path("generators") + "[" + std::to_string(i) + "]";
+      const std::string gp = aux::json_element_path(f.key_path("generators"), i);
       const nlohmann::json& g = (*gens)[i];
       JsonFields gf(g, gp, source);
       const std::string type = gf.required_string("type");
@@ -223,7 +225,7 @@ void read_scene(const nlohmann::json& scene, const std::string& path, const std:
   if (objs)
     for (std::size_t i = 0; i < objs->size(); ++i)
       sc.objects.push_back(
-          read_object((*objs)[i], f.key_path("objects") + "[" + std::to_string(i) + "]", source, sc.objects.size()));
+          read_object((*objs)[i], aux::json_element_path(f.key_path("objects"), i), source, sc.objects.size()));
   // A generator's forward speed sets the head path unless scene.head_path gives a velocity
   // (as before: the generator wrote it, then head_path read it with that as its default).
   const glm::dvec3 head_velocity = sc.head_path.velocity_m_s;

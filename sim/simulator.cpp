@@ -3,7 +3,8 @@
 // every query as a pure function of time (no state carried between queries).
 #include "sim/simulator.hpp"
 
-#include "sim/angles.hpp"
+#include "auxiliary/time.hpp"
+#include "auxiliary/yaw_pitch.hpp"
 #include "sim/effect.hpp"
 
 #include <cmath>
@@ -33,7 +34,7 @@ struct Simulator::Impl final : EffectContext {
   }
 
   HeadState head_at(std::int64_t t_ns) const override {
-    const double t_s = static_cast<double>(t_ns) * 1e-9;
+    const double t_s = aux::seconds_from_ns(t_ns);
     HeadMotion m;
     m.position_m = scenario.head_path.start_m + scenario.head_path.velocity_m_s * t_s;
     m.velocity_m_s = scenario.head_path.velocity_m_s;
@@ -45,7 +46,7 @@ struct Simulator::Impl final : EffectContext {
       return h;
     }
     for (const Effect* e : head) e->apply_head(t_ns, m);
-    h.orientation = rotation_from({m.yaw_rad, m.pitch_rad});
+    h.orientation = aux::rotation_from({m.yaw_rad, m.pitch_rad});
     // R = Ry(yaw) Rx(pitch): omega = yaw' Y + Ry(yaw) (pitch' X), in the world frame.
     const glm::dvec3 pitch_axis(std::cos(m.yaw_rad), 0.0, -std::sin(m.yaw_rad));
     h.angular_velocity_rad_s = m.yaw_rate_rad_s * glm::dvec3(0, 1, 0) + m.pitch_rate_rad_s * pitch_axis;
@@ -60,7 +61,7 @@ struct Simulator::Impl final : EffectContext {
 
   ObjectState object_at(std::size_t i, std::int64_t t_ns) const override {
     const SceneObject& so = scenario.objects[i];
-    ObjectState o{so.position_m + so.velocity_m_s * (static_cast<double>(t_ns) * 1e-9), so.velocity_m_s};
+    ObjectState o{so.position_m + so.velocity_m_s * aux::seconds_from_ns(t_ns), so.velocity_m_s};
     for (const Effect* e : objects) e->apply_object(i, t_ns, o);
     return o;
   }
@@ -122,7 +123,7 @@ EyeTruth Simulator::eye_truth_at(std::int64_t t_ns) {
 }
 
 std::int64_t Simulator::duration_ns() const {
-  return to_ns(impl_->scenario.duration_s);
+  return aux::ns_from_seconds(impl_->scenario.duration_s);
 }
 std::int64_t Simulator::first_tracker_sample_ns() const {
   return impl_->timing.latency_ns;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// Rigid poses in double precision (glm) and their conversion to and from XrPosef, and the gaze
-// orientation of a direction: yaw then pitch, so the pose's +X stays level (no roll), as
-// XR_EXT_eye_gaze_interaction poses are (+Y up, -Z forward). Shared by the simulated runtime
+// Rigid poses in double precision (glm) and their conversion to and from XrPosef, and the pose
+// of a gaze ray (-Z along the gaze, +X level: no roll, as XR_EXT_eye_gaze_interaction poses
+// are; the orientation is auxiliary/yaw_pitch.hpp's). Shared by the simulated runtime
 // (sim/runtime/) and the eye-gaze API layer (layer/): one definition of each.
 // Needs only <openxr/openxr.h>; include the caller's own OpenXR header set first when it enables
 // platform types.
@@ -9,10 +9,14 @@
 
 #include <openxr/openxr.h>
 
+#include "auxiliary/yaw_pitch.hpp"
+
+#include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>
 
 #include <cmath>
+#include <optional>
 
 namespace gazelod::xr {
 
@@ -51,11 +55,14 @@ inline bool is_unit_orientation(const XrPosef& p) {
   return std::isfinite(n) && std::abs(n - 1.0) < 1e-2;
 }
 
-// Orientation whose -Z axis points along `dir` (any length > 0), no roll.
-inline glm::dquat gaze_orientation(const glm::dvec3& dir) {
-  const double yaw = std::atan2(-dir.x, -dir.z);
-  const double pitch = std::atan2(dir.y, std::hypot(dir.x, dir.z));
-  return glm::normalize(glm::angleAxis(yaw, glm::dvec3(0, 1, 0)) * glm::angleAxis(pitch, glm::dvec3(1, 0, 0)));
+// A gaze ray as a pose in its tracker's frame: at origin_m, -Z along `direction` (any length),
+// no roll. nullopt for a direction that is NaN, infinite or shorter than 1e-9, or an origin
+// that is not finite: no NaN reaches a pose.
+inline std::optional<Pose> gaze_ray_pose(const glm::dvec3& direction, const glm::dvec3& origin_m) {
+  const double len = glm::length(direction);
+  if (!std::isfinite(len) || !(len > 1e-9)) return std::nullopt;
+  if (!std::isfinite(origin_m.x) || !std::isfinite(origin_m.y) || !std::isfinite(origin_m.z)) return std::nullopt;
+  return Pose{aux::orientation_along(direction / len), origin_m};
 }
 
 }  // namespace gazelod::xr

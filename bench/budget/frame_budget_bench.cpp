@@ -16,6 +16,7 @@
 #include <chrono>
 #include <cmath>
 #include <random>
+#include <string>
 #include <vector>
 
 namespace gazelod::budget::bench {
@@ -65,9 +66,16 @@ void BM_FrameBudget(benchmark::State& state) {
     }
     const double c0 = thread_cpu_s();
     const auto t0 = std::chrono::steady_clock::now();
-    budget.observe(measured_ms);  // last frame's time arrives, then this frame is chosen
-    infeasible += !budget.choose(perceptual, view, out);
+    // Last frame's time arrives, then this frame is chosen. Ignoring observe's answer is right:
+    // the first frame's -1 (no frame measured yet) is meant to be refused.
+    (void)budget.observe(measured_ms);
+    const std::string refused = budget.choose(perceptual, view, out);
     const auto t1 = std::chrono::steady_clock::now();
+    if (!refused.empty()) {
+      state.SkipWithError(refused.c_str());
+      break;
+    }
+    infeasible += budget.infeasible();
     state.SetIterationTime(thread_cpu_s() - c0);
     wall_s += std::chrono::duration<double>(t1 - t0).count();
     truncated += budget.truncated();

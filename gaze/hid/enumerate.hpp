@@ -23,7 +23,7 @@ std::vector<TrackerInfo> list_trackers();
 
 // "" when `path` is a hidraw character device (what hidapi's hidraw backend opens), else why
 // not: hidapi reads the device's udev parent and crashed on /dev/null or /dev/zero.
-std::string check_hidraw_path(const std::string& path);
+[[nodiscard]] std::string check_hidraw_path(const std::string& path);
 
 // hidapi's wide strings to UTF-8 (nullptr -> "").
 std::string to_utf8(const wchar_t* s);

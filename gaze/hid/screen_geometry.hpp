@@ -37,7 +37,7 @@ struct ScreenGeometry {
 };
 
 // "" when usable, else why not (zero or non-finite size).
-std::string validate(const ScreenGeometry& g);
+[[nodiscard]] std::string validate(const ScreenGeometry& g);
 
 // Direction (unit, head space = S), origin (cyclopean eye relative to the head position when
 // the report has one, else zero), validity and confidence (1 both eyes, 0.5 one eye). Not valid

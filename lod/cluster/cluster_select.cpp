@@ -5,7 +5,7 @@
 #include "lod/cluster/cluster_select.hpp"
 
 #include "lod/acuity.hpp"
-#include "lod/angles.hpp"
+#include "auxiliary/angles.hpp"
 #include "lod/cluster/cluster_select_kernel.hpp"
 
 #include <glm/geometric.hpp>
@@ -38,7 +38,7 @@ bool finite3(float x, float y, float z) {
 }
 
 // "" or the lengths' problem (select_clusters checks this per frame, validate_clusters too).
-std::string check_lengths(const ClusterSet& c) {
+[[nodiscard]] std::string check_lengths(const ClusterSet& c) {
   const std::size_t n = c.size(), m = c.mesh_count();
   for (std::span<const float> s :
        {c.self_center_x_m, c.self_center_y_m, c.self_center_z_m, c.self_radius_m, c.parent_center_x_m,
@@ -82,7 +82,7 @@ std::string check_lengths(const ClusterSet& c) {
 
 // "" or the first cluster whose record indices leave its mesh's range or name a record that
 // differs from its own fields (bit for bit: equal inputs are what makes the decisions equal).
-std::string record_index_problem(const ClusterSet& c) {
+[[nodiscard]] std::string record_index_problem(const ClusterSet& c) {
   const auto same = [](float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; };
   for (std::size_t k = 0; k < c.mesh_count(); ++k) {
     const std::size_t lo = c.mesh_first_record[k], hi = lo + c.mesh_record_count[k];
@@ -127,7 +127,7 @@ ClusterFrame make_cluster_frame(const Viewer& v) {
     f.gaze_omega_rad_s[k] = static_cast<float>(w[k]);
   }
   f.gaze_omega_norm_rad_s = round_up(glm::length(w) * (1.0 + 1e-6));
-  f.ecc_offset_rad = round_up(v.tracker_error_deg * kRadPerDeg + kEccentricitySlackRad);
+  f.ecc_offset_rad = round_up(v.tracker_error_deg * aux::kRadPerDeg + kEccentricitySlackRad);
   f.scale = round_up(v.scale);
   f.scale_xi_cpd = round_up(v.scale * v.xi_cpd);
   f.static_limit_cpd =
@@ -159,7 +159,7 @@ ClusterMeshFrame make_cluster_mesh_frame(const Viewer& v, const ClusterSet& c, s
 namespace {
 
 // The first problem of cluster i's records, or "" (the message is built only on failure).
-std::string record_problem(const ClusterSet& c, std::size_t i) {
+[[nodiscard]] std::string record_problem(const ClusterSet& c, std::size_t i) {
   const float se = c.self_error_m[i], pe = c.parent_error_m[i];
   const float sr = c.self_radius_m[i], pr = c.parent_radius_m[i];
   std::optional<std::ostringstream> m;  // built on failure only: a stream per cluster is slow

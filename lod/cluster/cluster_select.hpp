@@ -126,12 +126,13 @@ double finest_cluster_error_m(std::span<const float> self_error_m, std::span<con
 // mesh_finest_error_m as above; with distinct records, their ranges back to back over all of
 // them and every cluster's two indices inside its mesh's range, on records equal to its own. Linear time: run it at
 // registration, not per frame.
-std::string validate_clusters(const ClusterSet& clusters);
+[[nodiscard]] std::string validate_clusters(const ClusterSet& clusters);
 
 // One frame. Refuses an invalid Viewer, spans of the wrong length or mesh ranges that do not
 // tile the clusters with a message (outputs untouched). Data that validate_clusters would
 // refuse (not checked per frame) never yields NaN or a byte out of range: a cluster with a
 // non-finite or negative field is not drawn and gets Criterion::invalid_input.
-std::string select_clusters(const Viewer& viewer, const ClusterSet& clusters, const ClusterDecisions& out);
+[[nodiscard]] std::string select_clusters(const Viewer& viewer, const ClusterSet& clusters,
+                                          const ClusterDecisions& out);
 
 }  // namespace gazelod::lod

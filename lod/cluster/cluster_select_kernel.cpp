@@ -20,7 +20,7 @@
 #include "lod/cluster/cluster_select_kernel.hpp"
 
 #include "lod/acuity.hpp"
-#include "lod/angles.hpp"
+#include "auxiliary/angles.hpp"
 #include "lod/cluster/cluster_select_math.hpp"
 #include "lod/criterion.hpp"
 #include "lod/select_kernel.hpp"  // GAZELOD_IVDEP
@@ -32,7 +32,7 @@
 namespace gazelod::lod::detail {
 namespace {
 
-constexpr float kDegPerRadF = static_cast<float>(kDegPerRad);
+constexpr float kDegPerRadF = static_cast<float>(aux::kDegPerRad);
 constexpr float kD2Low = 1.0f - 0x1p-19f;    // |r|^2 lowered for "inside" and h
 constexpr float kNormLow = 1.0f - 0x1p-20f;  // the rotated pair's length over |r|^2
 constexpr float kSeamF = static_cast<float>(kVelocitySeamDps);

@@ -194,7 +194,7 @@ std::uint32_t ClusterStore::add_mesh(const ClusterHierarchy& local, const Instan
       record_count() + 2 * local.size() > std::numeric_limits<std::uint32_t>::max())
     throw std::invalid_argument("more clusters than a uint32 counts");
   ClusterHierarchy world;  // checked before the store grows, so a refusal leaves it unchanged
-  transform_hierarchy(local, pose, world);
+  if (std::string e = transform_hierarchy(local, pose, world); !e.empty()) throw std::invalid_argument(e);
   if (std::string e = validate_clusters(OneMesh(world).set); !e.empty())
     throw std::invalid_argument("in world space: " + e);
 

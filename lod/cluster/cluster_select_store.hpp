@@ -32,17 +32,18 @@ struct InstanceTransform {
 };
 
 // "" when finite, the rotation non-zero and the scale > 0, else which field.
-std::string validate_instance_transform(const InstanceTransform& xf);
+[[nodiscard]] std::string validate_instance_transform(const InstanceTransform& xf);
 
 // "" when one mesh's hierarchy (its own space) is consistent: validate_clusters on its records
 // as one static mesh, and first_index, index_count, depth one per cluster with each cluster's
 // triangles (index_count a multiple of 3) inside an index buffer of index_buffer_size.
-std::string validate_cluster_hierarchy(const ClusterHierarchy& hierarchy, std::size_t index_buffer_size);
+[[nodiscard]] std::string validate_cluster_hierarchy(const ClusterHierarchy& hierarchy, std::size_t index_buffer_size);
 
 // Applies xf to local's records into world (resized to local's size: no allocation once it
 // has that size; triangle ranges and depth copied). "" or why not (an invalid transform;
 // world untouched).
-std::string transform_hierarchy(const ClusterHierarchy& local, const InstanceTransform& xf, ClusterHierarchy& world);
+[[nodiscard]] std::string transform_hierarchy(const ClusterHierarchy& local, const InstanceTransform& xf,
+                                              ClusterHierarchy& world);
 
 // Owns the arrays behind a ClusterSet: meshes' clusters back to back in registration order,
 // with the set's distinct records (ClusterSet::record_*: records equal bit for bit in a mesh's

@@ -3,36 +3,28 @@
 // of its two records stepped by the same rule from its own state.
 #include "lod/cluster/cluster_switch_policy.hpp"
 
+#include "lod/switch_hold.hpp"
+
 #include <algorithm>
 #include <cmath>
 
 namespace gazelod::lod {
 namespace {
 
-std::string length_error(const char* function, const char* name, std::size_t got, std::size_t want) {
-  return std::string(function) + ": " + name + " has " + std::to_string(got) + " entries, expected " +
-         std::to_string(want);
-}
-
-std::string check_state(const char* function, const ClusterSwitchState& s, std::size_t n) {
-  if (s.record_held.size() != n) return length_error(function, "state.record_held", s.record_held.size(), n);
+// "" when every span of state has n entries.
+[[nodiscard]] std::string check_state(const char* function, const ClusterSwitchState& s, std::size_t n) {
+  if (s.record_held.size() != n) return switch_length_error(function, "state.record_held", s.record_held.size(), n);
   if (s.self_window_start_s.size() != n)
-    return length_error(function, "state.self_window_start_s", s.self_window_start_s.size(), n);
+    return switch_length_error(function, "state.self_window_start_s", s.self_window_start_s.size(), n);
   if (s.parent_window_start_s.size() != n)
-    return length_error(function, "state.parent_window_start_s", s.parent_window_start_s.size(), n);
+    return switch_length_error(function, "state.parent_window_start_s", s.parent_window_start_s.size(), n);
   return {};
 }
 
-// This frame's constants of the rule (switch_policy.cpp's, for one record instead of a level).
-struct Step {
-  bool timed;
-  double hold_s, deadline_s;
-  bool release_without_deadline;
-};
-
 // One record: returns whether it is held invisible after this frame; updates its window and
-// says why a perceptually invisible record is not yet held.
-bool step_record(const Step& st, double t_s, bool invisible, bool held, double& window_start_s, HoldReason& why) {
+// says why a perceptually invisible record is not yet held. The frame's constants are the
+// object policy's (lod/switch_hold.hpp), for one record instead of a level.
+bool step_record(const SwitchHold& st, double t_s, bool invisible, bool held, double& window_start_s, HoldReason& why) {
   why = HoldReason::none;
   if (!invisible) {  // visible: at once (refinement), any window closes
     window_start_s = kNoSwitchWindow;
@@ -61,7 +53,7 @@ std::string reset_cluster_switch_state(const ClusterSwitchState& state, std::spa
                                        std::span<const float> parent_error_m) {
   const std::size_t n = self_error_m.size();
   if (parent_error_m.size() != n)
-    return length_error("reset_cluster_switch_state", "parent_error_m", parent_error_m.size(), n);
+    return switch_length_error("reset_cluster_switch_state", "parent_error_m", parent_error_m.size(), n);
   if (std::string e = check_state("reset_cluster_switch_state", state, n); !e.empty()) return e;
   for (std::size_t i = 0; i < n; ++i)
     state.record_held[i] =
@@ -78,14 +70,10 @@ std::string apply_cluster_switch_policy(const SwitchPolicyConfig& config, double
   if (std::string e = validate_switch_config(config); !e.empty()) return std::string(fn) + ": " + e;
   const std::size_t n = record_invisible.size();
   if (std::string e = check_state(fn, state, n); !e.empty()) return e;
-  if (drawn.size() != n) return length_error(fn, "drawn", drawn.size(), n);
-  if (!held.empty() && held.size() != n) return length_error(fn, "held", held.size(), n);
+  if (drawn.size() != n) return switch_length_error(fn, "drawn", drawn.size(), n);
+  if (!held.empty() && held.size() != n) return switch_length_error(fn, "held", held.size(), n);
 
-  // Inside suppression a change goes unseen, so the shorter hold applies there.
-  const Step st{std::isfinite(t_s),
-                suppressed && config.prefer_suppression ? std::min(config.coarsen_hold_s, config.suppressed_hold_s)
-                                                        : config.coarsen_hold_s,
-                config.coarsen_hold_s + config.max_deferral_s, !config.prefer_suppression || suppressed};
+  const SwitchHold st = switch_hold(config, t_s, suppressed);
   for (std::size_t i = 0; i < n; ++i) {
     const std::uint8_t bits = record_invisible[i], was = state.record_held[i];
     HoldReason why_self = HoldReason::none, why_parent = HoldReason::none;

@@ -49,15 +49,17 @@ struct ClusterSwitchState {
 // The finest consistent cut: a record is held invisible exactly when its error is 0 (every
 // source cluster drawn, unless its parent's error is 0 too). Call at registration (or with
 // subspans for one mesh's clusters). "" or a length message, nothing written.
-std::string reset_cluster_switch_state(const ClusterSwitchState& state, std::span<const float> self_error_m,
-                                       std::span<const float> parent_error_m);
+[[nodiscard]] std::string reset_cluster_switch_state(const ClusterSwitchState& state,
+                                                     std::span<const float> self_error_m,
+                                                     std::span<const float> parent_error_m);
 
 // One frame. record_invisible: select_clusters' ClusterDecisions::record_invisible (bit 0 self,
 // bit 1 parent). Updates state, writes drawn (0/1) and held (HoldReason: of the parent record
 // when its coarsening waits, else of the self record's; none when neither waits). held may be
 // empty. Returns "" or, for an invalid config or spans of other lengths, a message.
-std::string apply_cluster_switch_policy(const SwitchPolicyConfig& config, double t_s, bool suppressed,
-                                        std::span<const std::uint8_t> record_invisible, const ClusterSwitchState& state,
-                                        std::span<std::uint8_t> drawn, std::span<std::uint8_t> held);
+[[nodiscard]] std::string apply_cluster_switch_policy(const SwitchPolicyConfig& config, double t_s, bool suppressed,
+                                                      std::span<const std::uint8_t> record_invisible,
+                                                      const ClusterSwitchState& state, std::span<std::uint8_t> drawn,
+                                                      std::span<std::uint8_t> held);
 
 }  // namespace gazelod::lod

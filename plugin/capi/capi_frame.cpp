@@ -4,6 +4,7 @@
 #include "plugin/capi/capi_convert.hpp"
 #include "plugin/capi/capi_errors.hpp"
 #include "plugin/capi/capi_publish.hpp"
+#include "xr/eye_gaze_paths.hpp"
 
 using namespace gazelod;
 using namespace gazelod::capi;
@@ -46,8 +47,8 @@ GZL_API gzl_result gzl_get_gaze_binding(gzl_plugin p, gzl_gaze_binding* b) {
                     "system with eye-gaze interaction (XR_EXT_eye_gaze_interaction enabled on the instance)"};
     b->action_set = to_handle(p->xr->action_set());
     b->action = to_handle(p->xr->gaze_action());
-    b->interaction_profile = plugin::kEyeGazeProfile;
-    b->binding_path = plugin::kEyeGazePoseBinding;
+    b->interaction_profile = xr::kEyeGazeProfile;
+    b->binding_path = xr::kGazePosePath;
     return GZL_SUCCESS;
   });
 }

@@ -4,6 +4,7 @@
 // locks that make every call safe from any thread. Internal to libgazelod.
 #pragma once
 
+#include "auxiliary/time.hpp"
 #include "gazelod/gazelod.h"
 #include "plugin/lod_core.hpp"
 #include "plugin/lod_plugin.hpp"
@@ -21,7 +22,7 @@ namespace gazelod::capi {
 // Data mode's front: the application gives head poses and views and pushes gaze samples.
 struct DataFront {
   explicit DataFront(const PluginConfig& config)
-      : core(config), pushed(heads, static_cast<std::int64_t>(config.max_pushed_sample_age_s * 1e9)) {
+      : core(config), pushed(heads, aux::ns_from_seconds(config.max_pushed_sample_age_s)) {
     core.set_primary(&pushed, GazeSourceKind::pushed, "");
     core.set_orientation_at([this](std::int64_t t_ns) -> std::optional<glm::dquat> {
       if (auto q = pushed.head_at_last_sample()) return q;

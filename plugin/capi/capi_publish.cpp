@@ -2,6 +2,7 @@
 // A decided frame, published for readers (plugin/capi/capi_publish.hpp).
 #include "plugin/capi/capi_publish.hpp"
 
+#include "auxiliary/angles.hpp"
 #include "lod/acuity.hpp"
 #include "plugin/capi/capi_convert.hpp"
 
@@ -12,7 +13,6 @@
 namespace gazelod::capi {
 namespace {
 
-constexpr double kDegPerRad = 180.0 / std::numbers::pi;
 constexpr double kHalfPi = std::numbers::pi / 2.0;
 
 // Normalised image coordinate of a tangent between two edge tangents.
@@ -41,7 +41,7 @@ gzl_foveal_cone cone_in_view(const glm::dvec3& gaze_base, const glm::dquat& head
   const lod::FovRad& f = view.fov;
   // Angles of the gaze about the view's y (left/right) and x (up/down) axes, from atan2.
   const double ax = std::atan2(d.x, -d.z), ay = std::atan2(d.y, -d.z);
-  const double a = c.half_angle_deg / kDegPerRad;
+  const double a = c.half_angle_deg / aux::kDegPerRad;
   if (d.z < 0.0) {
     c.center_u = along(std::tan(ax), std::tan(f.angle_left_rad), std::tan(f.angle_right_rad));
     c.center_v = along(std::tan(ay), std::tan(f.angle_up_rad), std::tan(f.angle_down_rad));

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // head_sweep: the head swings in yaw and pitch as sinusoids (a visual search / look-around).
 //   yaw(t) = A_yaw sin(2 pi (t - start) / T_yaw), likewise pitch; rates are the exact derivatives.
-#include "sim/angles.hpp"
+#include "auxiliary/angles.hpp"
+#include "auxiliary/time.hpp"
 #include "sim/effects/effects.hpp"
 
 namespace gazelod::sim::effects {
@@ -10,8 +11,8 @@ namespace {
 class HeadSweep final : public Effect {
  public:
   explicit HeadSweep(EffectInit& in) {
-    yaw_amp_rad_ = in.params.number("yaw_amplitude_deg", 0.0, 0.0, 180.0) * kRadPerDeg;
-    pitch_amp_rad_ = in.params.number("pitch_amplitude_deg", 0.0, 0.0, 90.0) * kRadPerDeg;
+    yaw_amp_rad_ = in.params.number("yaw_amplitude_deg", 0.0, 0.0, 180.0) * aux::kRadPerDeg;
+    pitch_amp_rad_ = in.params.number("pitch_amplitude_deg", 0.0, 0.0, 90.0) * aux::kRadPerDeg;
     const double yaw_period_s = in.params.number("yaw_period_s", 4.0, 0.05, 1e5);
     const double pitch_period_s = in.params.number("pitch_period_s", yaw_period_s, 0.05, 1e5);
     yaw_w_ = 2.0 * std::numbers::pi / yaw_period_s;
@@ -21,7 +22,7 @@ class HeadSweep final : public Effect {
   unsigned stages() const override { return kStageHead; }
   void apply_head(std::int64_t t_ns, HeadMotion& h) const override {
     if (!window_.contains(t_ns)) return;
-    const double t = static_cast<double>(t_ns - window_.start_ns) * 1e-9;
+    const double t = aux::seconds_from_ns(t_ns - window_.start_ns);
     h.yaw_rad += yaw_amp_rad_ * std::sin(yaw_w_ * t);
     h.yaw_rate_rad_s += yaw_amp_rad_ * yaw_w_ * std::cos(yaw_w_ * t);
     h.pitch_rad += pitch_amp_rad_ * std::sin(pitch_w_ * t);

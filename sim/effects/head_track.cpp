@@ -8,6 +8,8 @@
 // first pose: that pose's heading (its yaw about +Y) is turned to the scenario's forward and its
 // position to the scenario's head position; its pitch and roll stay, since gravity is the same
 // in both worlds. Other head effects add on top.
+#include "auxiliary/time.hpp"
+#include "auxiliary/yaw_pitch.hpp"
 #include "gaze/trace_error.hpp"
 #include "gaze/trace_open.hpp"
 #include "sim/effects/effects.hpp"
@@ -59,8 +61,8 @@ class HeadTrack final : public Effect {
     }
     if (t_ns_.empty()) in.params.fail("file", file + ": no valid head pose in the trace");
     // The first row, as a gaze replay of the same file counts it (ReplaySource).
-    const std::int64_t origin = has_offset ? static_cast<std::int64_t>(std::llround(offset_s * 1e9)) : *first_row_ns;
-    const std::int64_t start = to_ns(start_s);
+    const std::int64_t origin = has_offset ? aux::ns_from_seconds(offset_s) : *first_row_ns;
+    const std::int64_t start = aux::ns_from_seconds(start_s);
     for (std::int64_t& t : t_ns_)
       if (__builtin_sub_overflow(t, origin, &t) || __builtin_add_overflow(t, start, &t))
         in.params.fail("file", file + ": trace times beyond +-292 years of offset_s");
@@ -74,7 +76,7 @@ class HeadTrack final : public Effect {
     const double horizontal = std::hypot(forward.x, forward.z);
     // Looking straight up or down the heading is undefined: take the head's up instead.
     const glm::dvec3 ahead = horizontal > 1e-6 ? forward : q_.front() * glm::dvec3(0.0, 1.0, 0.0) * -forward.y;
-    const double yaw_rad = std::atan2(-ahead.x, -ahead.z);  // of the first pose, about +Y
+    const double yaw_rad = aux::yaw_pitch_of(ahead).yaw_rad;  // of the first pose, about +Y
     const glm::dquat undo = glm::angleAxis(-yaw_rad, glm::dvec3(0.0, 1.0, 0.0));
     const glm::dvec3 first = p_.front();
     for (std::size_t i = 0; i < q_.size(); ++i) {
@@ -96,7 +98,7 @@ class HeadTrack final : public Effect {
       return;
     }
     const std::size_t i = static_cast<std::size_t>(it - t_ns_.begin()) - 1;
-    const double dt_s = static_cast<double>(t_ns_[i + 1] - t_ns_[i]) * 1e-9;
+    const double dt_s = aux::seconds_from_ns(t_ns_[i + 1] - t_ns_[i]);
     const double f = static_cast<double>(t_ns - t_ns_[i]) / static_cast<double>(t_ns_[i + 1] - t_ns_[i]);
     glm::dquat b = q_[i + 1];
     if (glm::dot(q_[i], b) < 0.0) b = -b;  // the short way

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // object_motion: one named object (or "*" for all) gets an extra constant velocity and/or a
 // sinusoidal oscillation p += amplitude sin(2 pi f t), with the exact velocity.
+#include "auxiliary/time.hpp"
 #include "sim/effects/effects.hpp"
 
 #include <cmath>
@@ -22,7 +23,7 @@ class ObjectMotion final : public Effect {
   unsigned stages() const override { return kStageObjects; }
   void apply_object(std::size_t index, std::int64_t t_ns, ObjectState& o) const override {
     if (!all_ && index != index_) return;
-    const double t = static_cast<double>(t_ns) * 1e-9;
+    const double t = aux::seconds_from_ns(t_ns);
     o.position_m += velocity_m_s_ * t + amplitude_m_ * std::sin(w_ * t);
     o.velocity_m_s += velocity_m_s_ + amplitude_m_ * (w_ * std::cos(w_ * t));
   }

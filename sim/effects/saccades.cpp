@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 // saccades: fixations of random duration joined by saccades of random amplitude and direction
-// that follow the main sequence (sim/main_sequence.hpp). The whole schedule is drawn once, from
+// that follow the main sequence (gaze/main_sequence.hpp). The whole schedule is drawn once, from
 // (seed, effect, fixation index) in order, so any time can be asked for in any order.
-#include "sim/angles.hpp"
+#include "auxiliary/angles.hpp"
+#include "auxiliary/time.hpp"
+#include "auxiliary/yaw_pitch.hpp"
+#include "gaze/main_sequence.hpp"
 #include "sim/effects/effects.hpp"
-#include "sim/main_sequence.hpp"
 
 #include <algorithm>
 #include <deque>
@@ -27,10 +29,10 @@ class Saccades final : public Effect {
     fix_max_ms_ = in.params.number("fixation_max_ms", std::max(400.0, fix_min_ms_), fix_min_ms_, 1e5);
     amp_min_deg_ = in.params.number("amplitude_min_deg", 2.0, 0.0, 90.0);
     amp_max_deg_ = in.params.number("amplitude_max_deg", std::max(15.0, amp_min_deg_), amp_min_deg_, 90.0);
-    range_rad_ = in.params.number("range_deg", 20.0, 0.0, 60.0) * kRadPerDeg;
+    range_rad_ = in.params.number("range_deg", 20.0, 0.0, 60.0) * aux::kRadPerDeg;
     window_ = read_window(in.params);
     next_start_ns_ = window_.start_ns;
-    extend_to(std::min(window_.end_ns, window_.start_ns + to_ns(60.0)));
+    extend_to(std::min(window_.end_ns, window_.start_ns + aux::ns_from_seconds(60.0)));
   }
   unsigned stages() const override { return kStageGaze; }
   void apply_gaze(std::int64_t t_ns, const EffectContext&, glm::dvec3& dir) const override {
@@ -43,7 +45,7 @@ class Saccades final : public Effect {
     else {
       const double tau =
           static_cast<double>(t_ns - s.sac_start_ns) / static_cast<double>(s.sac_end_ns - s.sac_start_ns);
-      dir = glm::normalize(slerp_dir(s.from, s.to, saccade_progress(tau, s.ratio)));
+      dir = glm::normalize(aux::slerp_direction(s.from, s.to, gaze::main_sequence::progress(tau, s.ratio)));
     }
   }
   // In the window this effect owns the eye: in a saccade from sac_start to sac_end, and the
@@ -89,20 +91,21 @@ class Saccades final : public Effect {
       const std::uint64_t i = first_index_ + segments_.size();
       Segment s;
       s.fix_start_ns = next_start_ns_;
-      s.sac_start_ns = s.fix_start_ns + to_ns(rng_.uniform(4 * i, fix_min_ms_, fix_max_ms_) * 1e-3);
-      const double amp_rad = rng_.uniform(4 * i + 1, amp_min_deg_, amp_max_deg_) * kRadPerDeg;
+      s.sac_start_ns =
+          s.fix_start_ns + aux::ns_from_seconds(aux::seconds_from_ms(rng_.uniform(4 * i, fix_min_ms_, fix_max_ms_)));
+      const double amp_rad = rng_.uniform(4 * i + 1, amp_min_deg_, amp_max_deg_) * aux::kRadPerDeg;
       const double theta = rng_.uniform(4 * i + 2, 0.0, 2.0 * std::numbers::pi);
-      YawPitch next{cur_.yaw_rad + amp_rad * std::cos(theta), cur_.pitch_rad + amp_rad * std::sin(theta)};
+      aux::YawPitch next{cur_.yaw_rad + amp_rad * std::cos(theta), cur_.pitch_rad + amp_rad * std::sin(theta)};
       if (std::hypot(next.yaw_rad, next.pitch_rad) > range_rad_) {  // turn back towards the centre
         next = {cur_.yaw_rad - amp_rad * std::cos(theta), cur_.pitch_rad - amp_rad * std::sin(theta)};
         const double ecc = std::hypot(next.yaw_rad, next.pitch_rad);
         if (ecc > range_rad_ && ecc > 0.0) next = {next.yaw_rad * range_rad_ / ecc, next.pitch_rad * range_rad_ / ecc};
       }
-      s.from = direction_from(cur_);
-      s.to = direction_from(next);
-      const double amp_deg = angle_between_rad(s.from, s.to) * kDegPerRad;
-      s.ratio = saccade_velocity_ratio(amp_deg);
-      s.sac_end_ns = s.sac_start_ns + to_ns(saccade_duration_s(amp_deg));
+      s.from = aux::direction_from(cur_);
+      s.to = aux::direction_from(next);
+      const double amp_deg = aux::angle_between_rad(s.from, s.to) * aux::kDegPerRad;
+      s.ratio = gaze::main_sequence::velocity_ratio(amp_deg);
+      s.sac_end_ns = s.sac_start_ns + aux::ns_from_seconds(gaze::main_sequence::duration_s(amp_deg));
       segments_.push_back(s);
       if (segments_.size() > kKeptSegments) {
         segments_.pop_front();
@@ -113,13 +116,13 @@ class Saccades final : public Effect {
     }
   }
 
-  CounterRng rng_;
+  aux::CounterRng rng_;
   double fix_min_ms_ = 0, fix_max_ms_ = 0, amp_min_deg_ = 0, amp_max_deg_ = 0, range_rad_ = 0;
   TimeWindow window_;
   // Lazily extended schedule (the Simulator is not thread-safe; the runtime holds one lock).
   mutable std::deque<Segment> segments_;
   mutable std::uint64_t first_index_ = 0;  // schedule index of segments_.front()
-  mutable YawPitch cur_{};
+  mutable aux::YawPitch cur_{};
   mutable std::int64_t next_start_ns_ = 0;
 };
 

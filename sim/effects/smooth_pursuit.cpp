@@ -3,7 +3,8 @@
 // ~0.9 for slow targets and falls for fast ones). The lag that a gain below 1 builds up is
 // removed by a catch-up saccade every catch_up_interval_s: within an interval starting at ts,
 //   eye(t) = target(ts) + gain * (target(t) - target(ts))   (yaw / pitch in head space).
-#include "sim/angles.hpp"
+#include "auxiliary/time.hpp"
+#include "auxiliary/yaw_pitch.hpp"
 #include "sim/effects/effects.hpp"
 
 #include <algorithm>
@@ -17,18 +18,18 @@ class SmoothPursuit final : public Effect {
     const std::string name = in.params.required_string("object");
     index_ = object_index(in.scenario, in.params, "object", name);
     gain_ = in.params.number("gain", 0.9, 0.0, 1.5);
-    interval_ns_ = to_ns(in.params.number("catch_up_interval_s", 0.3, 0.01, 1e5));
+    interval_ns_ = aux::ns_from_seconds(in.params.number("catch_up_interval_s", 0.3, 0.01, 1e5));
     window_ = read_window(in.params);
   }
   unsigned stages() const override { return kStageGaze; }
   void apply_gaze(std::int64_t t_ns, const EffectContext& ctx, glm::dvec3& dir) const override {
     if (!window_.contains(t_ns)) return;
     const std::int64_t ts = window_.start_ns + (t_ns - window_.start_ns) / interval_ns_ * interval_ns_;
-    const YawPitch a = yaw_pitch_of(target_dir(ctx, ts));
-    const YawPitch b = yaw_pitch_of(target_dir(ctx, t_ns));
+    const aux::YawPitch a = aux::yaw_pitch_of(target_dir(ctx, ts));
+    const aux::YawPitch b = aux::yaw_pitch_of(target_dir(ctx, t_ns));
     double dyaw = b.yaw_rad - a.yaw_rad;
     dyaw = std::remainder(dyaw, 2.0 * std::numbers::pi);  // the short way round
-    dir = direction_from({a.yaw_rad + gain_ * dyaw, a.pitch_rad + gain_ * (b.pitch_rad - a.pitch_rad)});
+    dir = aux::direction_from({a.yaw_rad + gain_ * dyaw, a.pitch_rad + gain_ * (b.pitch_rad - a.pitch_rad)});
   }
   // In the window the eye pursues the object; the jump onto it at start_s and each catch-up
   // saccade (instantaneous here; none with gain 1) end a saccade. After the window the eye

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // tracker_latency: a sample taken at s reaches the application at s + latency_ms, so at time t
 // the newest sample is one taken at or before t - latency.
+#include "auxiliary/time.hpp"
 #include "sim/effects/effects.hpp"
 
 namespace gazelod::sim::effects {
@@ -9,7 +10,7 @@ namespace {
 class TrackerLatency final : public Effect {
  public:
   explicit TrackerLatency(EffectInit& in) {
-    latency_ns_ = to_ns(in.params.required_number("latency_ms", 0.0, 1000.0) * 1e-3);
+    latency_ns_ = aux::ns_from_seconds(aux::seconds_from_ms(in.params.required_number("latency_ms", 0.0, 1000.0)));
   }
   unsigned stages() const override { return kStageTrackerTiming; }
   void apply_timing(TrackerTiming& t) const override { t.latency_ns += latency_ns_; }

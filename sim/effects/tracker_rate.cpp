@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // tracker_rate: the tracker samples at rate_hz (samples at k / rate from time 0); between
 // samples the application sees the newest one. Default: the display preset's eye-tracking rate.
+#include "auxiliary/time.hpp"
 #include "sim/effects/effects.hpp"
 
 #include <algorithm>
@@ -16,7 +17,7 @@ class TrackerRate final : public Effect {
     if (!in.params.has("rate_hz") && !(preset_hz > 0.0))
       in.params.fail("rate_hz", "missing (the display has no eye-tracking rate to default to)");
     const double rate_hz = in.params.number("rate_hz", preset_hz, 1.0, 10000.0);
-    period_ns_ = std::max<std::int64_t>(1, std::llround(1e9 / rate_hz));
+    period_ns_ = std::max<std::int64_t>(1, aux::period_ns_from_hz(rate_hz));
   }
   unsigned stages() const override { return kStageTrackerTiming; }
   void apply_timing(TrackerTiming& t) const override { t.period_ns = period_ns_; }

@@ -15,7 +15,7 @@
 // can evaluate `in` at any time. Time from start_s is cut into 1 ms steps; a step over which
 // `in` moves faster than 1 deg/s starts a movement (the saccades effect's fixations are exactly
 // still), which lasts while it keeps moving. At its start the eye makes a main-sequence saccade
-// (sim/main_sequence.hpp) from where it is to where `in` lands relative to the head, so
+// (gaze/main_sequence.hpp) from where it is to where `in` lands relative to the head, so
 // saccades land where the effects before put them and, starting from a counter-rotated eye,
 // keep main-sequence durations and speeds; the counter-rotation restarts when the eye lands.
 // When the counter-rotated eye would leave the oculomotor range (range_deg from straight
@@ -26,9 +26,10 @@
 // The schedule (holds, saccades, quick phases) is worked out step by step in time order, as far
 // as the latest time asked for, like the saccades effect's: any order of queries gives the same
 // values bit for bit.
-#include "sim/angles.hpp"
+#include "auxiliary/angles.hpp"
+#include "auxiliary/time.hpp"
+#include "gaze/main_sequence.hpp"
 #include "sim/effects/effects.hpp"
-#include "sim/main_sequence.hpp"
 
 #include <algorithm>
 #include <climits>
@@ -38,10 +39,10 @@
 namespace gazelod::sim::effects {
 namespace {
 
-constexpr std::int64_t kStepNs = 1'000'000;                    // detection and range checks: 1 ms
-constexpr double kMovingRadPerStep = 1.0 * kRadPerDeg * 1e-3;  // 1 deg/s over one step
-constexpr std::int64_t kMaxMoveSteps = 250;                    // a longer movement is followed in 250 ms pieces
-constexpr double kRangeSlackRad = 1e-9;                        // rounding, not physiology
+constexpr std::int64_t kStepNs = aux::ns_from_ms(1.0);              // detection and range checks: 1 ms
+constexpr double kMovingRadPerStep = 1.0 * aux::kRadPerDeg * 1e-3;  // 1 deg/s over one step
+constexpr std::int64_t kMaxMoveSteps = 250;                         // a longer movement is followed in 250 ms pieces
+constexpr double kRangeSlackRad = 1e-9;                             // rounding, not physiology
 const glm::dvec3 kForward{0.0, 0.0, -1.0};
 
 // q with its angle times s, about the same axis (the short way round).
@@ -55,7 +56,7 @@ glm::dquat scale_rotation(glm::dquat q, double s) {
 }
 
 double eccentricity_rad(const glm::dvec3& d) {
-  return angle_between_rad(d, kForward);
+  return aux::angle_between_rad(d, kForward);
 }
 
 // One piece of the eye's path; it lasts until the next one starts.
@@ -74,14 +75,14 @@ struct Segment {
 
 glm::dvec3 saccade_dir(const Segment& s, std::int64_t t_ns) {
   const double tau = static_cast<double>(t_ns - s.start_ns) / static_cast<double>(s.end_ns - s.start_ns);
-  return glm::normalize(slerp_dir(s.from, s.to, saccade_progress(tau, s.ratio)));
+  return glm::normalize(aux::slerp_direction(s.from, s.to, gaze::main_sequence::progress(tau, s.ratio)));
 }
 
 class Vor final : public Effect {
  public:
   explicit Vor(EffectInit& in) {
     gain_ = in.params.number("gain", 1.0, 0.0, 2.0);
-    range_rad_ = in.params.number("range_deg", 45.0, 1.0, 90.0) * kRadPerDeg;
+    range_rad_ = in.params.number("range_deg", 45.0, 1.0, 90.0) * aux::kRadPerDeg;
     window_ = read_window(in.params);
     before_ = make_gaze_effects_before(in);
   }
@@ -111,7 +112,9 @@ class Vor final : public Effect {
     for (const std::unique_ptr<Effect>& e : before_) e->apply_gaze(t_ns, ctx, d);
     return d;
   }
-  bool moves(const glm::dvec3& a, const glm::dvec3& b) const { return angle_between_rad(a, b) > kMovingRadPerStep; }
+  bool moves(const glm::dvec3& a, const glm::dvec3& b) const {
+    return aux::angle_between_rad(a, b) > kMovingRadPerStep;
+  }
 
   glm::dquat counter(const glm::dquat& anchor_head, std::int64_t t_ns, const EffectContext& ctx) const {
     return scale_rotation(glm::conjugate(ctx.head_at(t_ns).orientation) * anchor_head, gain_);
@@ -160,13 +163,13 @@ class Vor final : public Effect {
   // land_until, then the incoming direction), and that hold.
   void push_saccade(std::int64_t t_ns, const glm::dvec3& from, std::int64_t land_until_ns, const glm::dvec3& land,
                     const EffectContext& ctx) const {
-    const double amp_deg = angle_between_rad(from, land) * kDegPerRad;
+    const double amp_deg = aux::angle_between_rad(from, land) * aux::kDegPerRad;
     Segment s;
     s.saccade = true;
     s.start_ns = t_ns;
-    s.end_ns = t_ns + to_ns(saccade_duration_s(amp_deg));
+    s.end_ns = t_ns + aux::ns_from_seconds(gaze::main_sequence::duration_s(amp_deg));
     s.from = from;
-    s.ratio = saccade_velocity_ratio(amp_deg);
+    s.ratio = gaze::main_sequence::velocity_ratio(amp_deg);
     Segment h;
     h.start_ns = s.end_ns;
     h.anchor_head = ctx.head_at(s.end_ns).orientation;
@@ -228,13 +231,13 @@ class Vor final : public Effect {
     if (!end_known_) {
       const std::int64_t t = window_.end_ns;
       const glm::dvec3 from = eye_at(segments_[segment_index(t, ctx)], t, ctx, nullptr);
-      const double amp_deg = angle_between_rad(from, incoming(t, ctx)) * kDegPerRad;
+      const double amp_deg = aux::angle_between_rad(from, incoming(t, ctx)) * aux::kDegPerRad;
       end_.saccade = true;
       end_.start_ns = t;
-      end_.end_ns = amp_deg > 1e-7 ? t + to_ns(saccade_duration_s(amp_deg)) : t;
+      end_.end_ns = amp_deg > 1e-7 ? t + aux::ns_from_seconds(gaze::main_sequence::duration_s(amp_deg)) : t;
       end_.from = from;
       end_.to = incoming(end_.end_ns, ctx);
-      end_.ratio = saccade_velocity_ratio(amp_deg);
+      end_.ratio = gaze::main_sequence::velocity_ratio(amp_deg);
       end_known_ = true;
     }
     return end_;

@@ -5,6 +5,7 @@
 #include "sim/runtime/events.hpp"
 #include "sim/runtime/interaction_profiles.hpp"
 #include "sim/runtime/runtime_state.hpp"
+#include "xr/eye_gaze_paths.hpp"
 
 #include <algorithm>
 #include <cstring>
@@ -95,7 +96,7 @@ XrResult CreateAction(XrActionSet actionSet, const XrActionCreateInfo* info, XrA
       if (p == nullptr) return XR_ERROR_PATH_INVALID;
       if (!is_top_level_user_path(*p)) return XR_ERROR_PATH_UNSUPPORTED;
       // /user/eyes_ext exists only with XR_EXT_eye_gaze_interaction enabled.
-      if (*p == kEyesUserPath && !inst->ext_eye_gaze) return XR_ERROR_PATH_UNSUPPORTED;
+      if (*p == xr::kEyesUserPath && !inst->ext_eye_gaze) return XR_ERROR_PATH_UNSUPPORTED;
       if (std::find(subactions.begin(), subactions.end(), info->subactionPaths[i]) != subactions.end())
         return XR_ERROR_PATH_UNSUPPORTED;  // duplicates
       subactions.push_back(info->subactionPaths[i]);
@@ -186,9 +187,9 @@ XrResult AttachSessionActionSets(XrSession session, const XrSessionActionSetsAtt
     // The eye tracker is present from the start when the system has one; controllers become
     // present when XR_EXT_conformance_automation activates them.
     const sim::Scenario& sc = inst.simulator->scenario();
-    const XrPath eye_profile = inst.paths.intern(kEyeGazeProfile);
+    const XrPath eye_profile = inst.paths.intern(xr::kEyeGazeProfile);
     if (inst.ext_eye_gaze && sc.runtime.eye_gaze_supported && inst.suggested.count(eye_profile) != 0) {
-      InputDevice& eyes = s->devices[inst.paths.intern(kEyesUserPath)];
+      InputDevice& eyes = s->devices[inst.paths.intern(xr::kEyesUserPath)];
       eyes.change_pending = true;  // current from the first xrSyncActions
       eyes.pending_active = true;
       eyes.pending_profile = eye_profile;

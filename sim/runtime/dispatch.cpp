@@ -4,6 +4,7 @@
 // (XR_ERROR_FUNCTION_UNSUPPORTED) and non-global commands without an instance.
 #include "sim/runtime/entry_points.hpp"
 #include "sim/runtime/runtime_state.hpp"
+#include "xr/loader_negotiation.hpp"
 
 #include <cstring>
 #include <string_view>
@@ -155,8 +156,9 @@ XrResult GetInstanceProcAddr(XrInstance instance, const char* name, PFN_xrVoidFu
 
 // The only exported symbol (the library is built with hidden visibility).
 extern "C" __attribute__((visibility("default"))) XrResult xrNegotiateLoaderRuntimeInterface(
-    const gazelod::xrrt::XrNegotiateLoaderInfo* loaderInfo, gazelod::xrrt::XrNegotiateRuntimeRequest* runtimeRequest) {
+    const gazelod::xr::XrNegotiateLoaderInfo* loaderInfo, gazelod::xr::XrNegotiateRuntimeRequest* runtimeRequest) {
   using namespace gazelod::xrrt;
+  using namespace gazelod::xr;
   if (loaderInfo == nullptr || runtimeRequest == nullptr ||
       loaderInfo->structType != XR_LOADER_INTERFACE_STRUCT_LOADER_INFO ||
       loaderInfo->structVersion != kLoaderInfoStructVersion ||

@@ -2,13 +2,15 @@
 // Interaction profile table and path classification (see interaction_profiles.hpp).
 #include "sim/runtime/interaction_profiles.hpp"
 
+#include "xr/eye_gaze_paths.hpp"
+
 #include <algorithm>
 
 namespace gazelod::xrrt {
 namespace {
 
 constexpr std::string_view kUserPaths[] = {"/user/hand/left", "/user/hand/right", "/user/head", "/user/gamepad",
-                                           "/user/eyes_ext"};
+                                           xr::kEyesUserPath};
 
 }  // namespace
 
@@ -87,7 +89,7 @@ const std::vector<InteractionProfile>& interaction_profiles() {
        {"/user/hand/left", "/user/hand/right"},
        {"input/system/click", "input/trigger/click", "input/back/click", "input/trackpad", "input/trackpad/x",
         "input/trackpad/y", "input/trackpad/click", "input/trackpad/touch", "input/grip/pose", "input/aim/pose"}},
-      {kEyeGazeProfile, {kEyesUserPath}, {"input/gaze_ext/pose"}, true},
+      {xr::kEyeGazeProfile, {xr::kEyesUserPath}, {"input/gaze_ext/pose"}, true},
   };
   return kProfiles;
 }

@@ -9,10 +9,6 @@
 
 namespace gazelod::xrrt {
 
-inline constexpr std::string_view kEyeGazeProfile = "/interaction_profiles/ext/eye_gaze_interaction";
-inline constexpr std::string_view kEyesUserPath = "/user/eyes_ext";
-inline constexpr std::string_view kGazePosePath = "/user/eyes_ext/input/gaze_ext/pose";
-
 enum class InputKind : unsigned char { boolean, scalar, vector2, pose, haptic };
 
 struct InteractionProfile {

@@ -2,6 +2,8 @@
 // The simulated clock (see sim_clock.hpp).
 #include "sim/runtime/sim_clock.hpp"
 
+#include "auxiliary/time.hpp"
+
 #include <cmath>
 
 namespace gazelod::xrrt {
@@ -10,7 +12,7 @@ void SimClock::start(bool paced, double refresh_hz) {
   paced_ = paced;
   // Guarded: the scenario loader checks the rate, but a zero or NaN must not divide here.
   const double hz = std::isfinite(refresh_hz) && refresh_hz >= 1.0 ? refresh_hz : 90.0;
-  period_ns_ = static_cast<std::int64_t>(std::llround(1e9 / hz));
+  period_ns_ = aux::period_ns_from_hz(hz);
   origin_mono_ns_ = monotonic_ns();
   last_frame_time_ = kTimeBaseNs;
 }
@@ -23,7 +25,7 @@ XrTime SimClock::now() const {
 std::int64_t SimClock::monotonic_ns() {
   timespec ts{};
   clock_gettime(CLOCK_MONOTONIC, &ts);
-  return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000 + ts.tv_nsec;
+  return aux::ns_from_timespec(ts);
 }
 
 }  // namespace gazelod::xrrt

@@ -4,6 +4,7 @@
 // instance creation; unpaced, only xrWaitFrame moves time (one display period per frame).
 #pragma once
 
+#include "auxiliary/time.hpp"
 #include "sim/runtime/xr_headers.hpp"
 
 #include <cstdint>
@@ -11,7 +12,7 @@
 namespace gazelod::xrrt {
 
 // XrTime of scenario time 0. Non-zero, so that a sample time of 0 ("unknown") stands out.
-inline constexpr XrTime kTimeBaseNs = 1'000'000'000;
+inline constexpr XrTime kTimeBaseNs = aux::ns_from_seconds(1.0);
 
 class SimClock {
  public:

@@ -3,8 +3,10 @@
 #include "sim/runtime/space_locate.hpp"
 #include "sim/runtime/interaction_profiles.hpp"
 #include "sim/runtime/sim_clock.hpp"
+#include "xr/eye_gaze_paths.hpp"
 
 #include <algorithm>
+#include <optional>
 
 namespace gazelod::xrrt {
 namespace {
@@ -80,12 +82,12 @@ Located locate_gaze(Instance& inst, Session& session, const InputDevice* eyes, X
       l.gaze_sample_time = g.t_ns + kTimeBaseNs;
       break;
   }
-  const double len = glm::length(g.direction);
-  if (!g.valid || !(len > 1e-9)) return l;  // blink, dropout: position and orientation both untracked
+  // A blink, a dropout: position and orientation both untracked.
+  const std::optional<Pose> eye_in_head = g.valid ? gaze_ray_pose(g.direction, g.origin_m) : std::nullopt;
+  if (!eye_in_head) return l;
   const sim::HeadState h = inst.simulator->head_at(scenario_time(time));
-  const Pose eye_in_head{gaze_orientation(g.direction / len), g.origin_m};
   l.valid = l.tracked = true;
-  l.pose = compose(compose(Pose{h.orientation, h.position_m}, eye_in_head), offset);
+  l.pose = compose(compose(Pose{h.orientation, h.position_m}, *eye_in_head), offset);
   return l;
 }
 
@@ -137,7 +139,7 @@ Located locate_in_local(Instance& inst, Session& session, const Space& space, Xr
   const InputDevice* device = nullptr;
   for (const auto& [top, d] : session.devices)
     if (const std::string* t = inst.paths.find(top); t != nullptr && top_level_of(*src) == *t) device = &d;
-  if (*src == kGazePosePath) return locate_gaze(inst, session, device, source, offset, time, depth);
+  if (*src == xr::kGazePosePath) return locate_gaze(inst, session, device, source, offset, time, depth);
   if (device == nullptr || !device->switched_on()) return {};
   if (auto it = device->locations.find(source); it != device->locations.end())
     return from_automation(inst, session, it->second, offset, time, depth);

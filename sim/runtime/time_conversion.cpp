@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // XR_KHR_convert_timespec_time: CLOCK_MONOTONIC <-> XrTime on the simulated clock.
+#include "auxiliary/time.hpp"
 #include "sim/runtime/entry_points.hpp"
+
 #include "sim/runtime/runtime_state.hpp"
 
 namespace gazelod::xrrt {
@@ -11,8 +13,7 @@ XrResult ConvertTimespecTimeToTimeKHR(XrInstance instance, const struct timespec
     Instance* inst = find_instance(instance);
     if (inst == nullptr) return XR_ERROR_HANDLE_INVALID;
     if (timespecTime == nullptr || time == nullptr) return XR_ERROR_VALIDATION_FAILURE;
-    const XrTime t =
-        inst->clock.from_monotonic_ns(std::int64_t(timespecTime->tv_sec) * 1'000'000'000 + timespecTime->tv_nsec);
+    const XrTime t = inst->clock.from_monotonic_ns(aux::ns_from_timespec(*timespecTime));
     if (t <= 0) return XR_ERROR_TIME_INVALID;  // before the simulated clock's range
     *time = t;
     return XR_SUCCESS;
@@ -28,8 +29,7 @@ XrResult ConvertTimeToTimespecTimeKHR(XrInstance instance, XrTime time, struct t
     if (time <= 0) return XR_ERROR_TIME_INVALID;
     const std::int64_t mono = inst->clock.to_monotonic_ns(time);
     if (mono < 0) return XR_ERROR_TIME_INVALID;
-    timespecTime->tv_sec = static_cast<time_t>(mono / 1'000'000'000);
-    timespecTime->tv_nsec = static_cast<long>(mono % 1'000'000'000);
+    *timespecTime = aux::timespec_from_ns(mono);
     return XR_SUCCESS;
   });
 }

@@ -294,7 +294,8 @@ std::vector<FrameRecord> run_frame_budget(const FrameBudgetOptions& options, int
       view[k].size_px *= std::exp(0.02 * (u(rng) - 0.5));
     }
     if (f % 200 == 199) fb.set_budget_ms(lo + (0.2 + 0.6 * u(rng)) * (hi - lo));
-    const bool feasible = fb.choose(perceptual, view, out);
+    EXPECT_EQ(fb.choose(perceptual, view, out), "") << f;
+    const bool feasible = !fb.infeasible();
     for (std::size_t k = 0; k < n; ++k) EXPECT_GE(out[k], perceptual[k]);
     if (feasible) {
       EXPECT_LE(fb.predicted_ms(), fb.budget_ms() * (1 + 1e-9)) << f;
@@ -302,7 +303,7 @@ std::vector<FrameRecord> run_frame_budget(const FrameBudgetOptions& options, int
     double true_s = truth.c0_s;
     for (std::size_t k = 0; k < n; ++k)
       true_s += object_cost_s(truth, chains[k][out[k]].triangles, chains[k][out[k]].vertices, 0.0);
-    fb.observe(1e3 * true_s * (1.0 + noise(rng)));
+    EXPECT_TRUE(fb.observe(1e3 * true_s * (1.0 + noise(rng)))) << f;
     records.push_back({out, bits(fb.predicted_ms()), bits(fb.coefficients().c0_s), bits(fb.coefficients().c1_s_per_tri),
                        feasible, fb.truncated(), fb.solver_moves()});
   }

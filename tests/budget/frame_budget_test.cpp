@@ -6,9 +6,11 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <random>
 #include <stdexcept>
+#include <string>
 
 namespace gazelod::budget {
 namespace {
@@ -62,19 +64,22 @@ TEST(FrameBudget, HandWorkedTwoObjects) {
   const std::vector<std::uint8_t> perceptual{0, 0};
   const std::vector<BudgetObjectView> view(2, {100.0, 1.0});
   std::vector<std::uint8_t> out(2);
-  ASSERT_TRUE(fb.choose(perceptual, view, out));
+  ASSERT_EQ(fb.choose(perceptual, view, out), "");
+  EXPECT_FALSE(fb.infeasible());
   EXPECT_EQ(out, (std::vector<std::uint8_t>{0, 1}));
   EXPECT_NEAR(fb.predicted_ms(), 1.5, 1e-9);
   // With room for everything, the answer is exactly the perceptual choice.
   fb.set_budget_ms(10.0);
   const std::vector<std::uint8_t> floor{1, 0};
-  ASSERT_TRUE(fb.choose(floor, view, out));
+  ASSERT_EQ(fb.choose(floor, view, out), "");
+  EXPECT_FALSE(fb.infeasible());
   EXPECT_EQ(out, floor);
   EXPECT_NEAR(fb.predicted_ms(), 1.5, 1e-9);
   // Headroom: a 3 ms budget with half kept free plans exactly like the 1.5 ms budget above.
   opt.headroom = 0.5;
   FrameBudget half(chains, 3.0 + 2e-9, opt);
-  ASSERT_TRUE(half.choose(perceptual, view, out));
+  ASSERT_EQ(half.choose(perceptual, view, out), "");
+  EXPECT_FALSE(half.infeasible());
   EXPECT_EQ(out, (std::vector<std::uint8_t>{0, 1}));
 }
 
@@ -96,7 +101,7 @@ TEST(FrameBudget, PredictedTimeNeverAboveBudgetAndNeverFinerThanPerceptual) {
       view[k].size_px *= std::exp(0.02 * (u(rng) - 0.5));
     }
     if (frame % 50 == 49) fb.set_budget_ms(lo + u(rng) * (hi - lo));
-    ASSERT_TRUE(fb.choose(perceptual, view, out)) << "frame " << frame;
+    ASSERT_EQ(fb.choose(perceptual, view, out), "") << "frame " << frame;
     EXPECT_FALSE(fb.infeasible());
     EXPECT_LE(fb.predicted_ms(), fb.budget_ms() + 1e-9) << "frame " << frame;
     EXPECT_NEAR(fb.predicted_ms(), predicted_by_hand(fb.coefficients(), chains, out), 1e-9);
@@ -119,14 +124,14 @@ TEST(FrameBudget, NothingFitsGivesCoarsestAndSaysInfeasible) {
   const std::vector<std::uint8_t> perceptual(20, 0);
   const std::vector<BudgetObjectView> view(20, {1000.0, 1.0});
   std::vector<std::uint8_t> out(20, 0);
-  EXPECT_FALSE(fb.choose(perceptual, view, out));
+  EXPECT_EQ(fb.choose(perceptual, view, out), "");  // chosen: infeasible is an outcome, not a refusal
   EXPECT_TRUE(fb.infeasible());
   for (std::uint8_t l : out) EXPECT_EQ(l, 3);
   EXPECT_NEAR(fb.predicted_ms(), cost_of(opt.prior, chains, 0), 1e-9);
   EXPECT_GT(fb.predicted_ms(), fb.budget_ms());
   // Once the budget allows it again, a feasible answer returns.
   fb.set_budget_ms(2.0 * cost_of(opt.prior, chains, 0));
-  EXPECT_TRUE(fb.choose(perceptual, view, out));
+  EXPECT_EQ(fb.choose(perceptual, view, out), "");
   EXPECT_FALSE(fb.infeasible());
 }
 
@@ -145,7 +150,7 @@ TEST(FrameBudget, CalibrationConvergesOnSyntheticFrameTimes) {
   std::vector<BudgetObjectView> view(chains.size(), {5000.0, 1.0});
   auto frame = [&](double* rel_error, double* measured_ms) {
     for (auto& p : perceptual) p = u(rng) < 0.5 ? 0 : static_cast<std::uint8_t>(u(rng) * 5);
-    fb.choose(perceptual, view, out);
+    ASSERT_EQ(fb.choose(perceptual, view, out), "");
     const double measured = predicted_by_hand(truth, chains, out) * (1.0 + noise(rng));
     *rel_error = std::fabs(fb.predicted_ms() - measured) / measured;
     *measured_ms = measured;
@@ -185,16 +190,45 @@ TEST(FrameBudget, BadInputIsNamed) {
     EXPECT_NE(std::string(e.what()).find("object 1"), std::string::npos) << e.what();
   }
   FrameBudget fb(Chains(2, {level(10, 10), level(5, 5)}), 5.0);
-  std::vector<std::uint8_t> out(2);
+  std::vector<std::uint8_t> out(2, 7);
   const std::vector<BudgetObjectView> view(2);
-  try {
-    fb.choose(std::vector<std::uint8_t>{0, 2}, view, out);
-    ADD_FAILURE() << "no throw";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("perceptual_lod[1] = 2"), std::string::npos) << e.what();
-  }
-  EXPECT_THROW(fb.choose(std::vector<std::uint8_t>{0}, view, out), std::invalid_argument);
+  // Per frame: refused with the reason, never thrown, nothing written.
+  std::string why;
+  EXPECT_NO_THROW(why = fb.choose(std::vector<std::uint8_t>{0, 2}, view, out));
+  EXPECT_NE(why.find("perceptual_lod[1] = 2"), std::string::npos) << why;
+  EXPECT_NO_THROW(why = fb.choose(std::vector<std::uint8_t>{0}, view, out));
+  EXPECT_NE(why.find("needs 2 objects"), std::string::npos) << why;
+  EXPECT_EQ(out, (std::vector<std::uint8_t>{7, 7}));
   EXPECT_FALSE(fb.observe(1.0));  // no frame chosen yet
+}
+
+TEST(FrameBudget, BadOptionsAreRefusedAtConstructionNotReplaced) {
+  const Chains one(1, {level(10, 10)});
+  EXPECT_EQ(budget::validate_frame_budget_options(FrameBudgetOptions{}), "");
+  const auto refused = [&](const FrameBudgetOptions& o, const std::string& field) {
+    const std::string why = budget::validate_frame_budget_options(o);
+    EXPECT_EQ(why.rfind(field + " must be", 0), 0u) << why;
+    try {
+      FrameBudget fb(one, 5.0, o);
+      ADD_FAILURE() << field << ": no throw";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
+    }
+  };
+  FrameBudgetOptions o;
+  o.headroom = 0.95;  // was clamped to 0.9 each frame
+  refused(o, "headroom");
+  o.headroom = std::nan("");  // was read as 0
+  refused(o, "headroom");
+  o = {};
+  o.forgetting = 0.2;  // was raised to 0.5
+  refused(o, "forgetting");
+  o = {};
+  o.prior.c1_s_per_tri = -1e-8;
+  refused(o, "prior.c1_s_per_tri");
+  o = {};
+  o.solve_time_limit = std::chrono::nanoseconds(0);
+  refused(o, "solve_time_limit");
 }
 
 }  // namespace

@@ -85,6 +85,22 @@ TEST(EvalFamily, BadOptionsAreRefusedWithTheReason) {
   EXPECT_NE(list.out.find("conditioner.carried_evidence=12"), std::string::npos) << list.out;
 }
 
+// The conditioner's own rules are checked on the settings before any seed runs: a setting it
+// refuses stops the family with its name and value (exit 2), never replaced by a default.
+TEST(EvalFamily, ConditionerSettingsItRefusesStopTheFamilyBeforeAnySeed) {
+  FamilySettings settings;
+  settings.conditioning.pursuit_exit_fraction = 1.5;
+  try {
+    (void)run_family(7, 1, 1.0, settings, (scratch() / "w").string(),
+                     [](const std::string& line) { ADD_FAILURE() << "a seed ran: " << line; });
+    ADD_FAILURE() << "accepted";
+  } catch (const UsageError& e) {
+    EXPECT_EQ(e.exit_code, 2);
+    const std::string what = e.what();
+    EXPECT_NE(what.find("conditioner.pursuit_exit_fraction must be in [0, 1], got 1.5"), std::string::npos) << what;
+  }
+}
+
 // Held-out seeds (the defaults were tuned on 1000-1039): the bulk of the family within the
 // targets. Not every seed is (docs/evaluation.md lists the ones outside and why).
 TEST(EvalFamily, HeldOutSeedsMostlyWithinTheTargets) {

@@ -44,14 +44,16 @@ TEST(BudgetFaults, AFrameTenTimesOverBudgetMakesTheNextFramesCoarserNotBroken) {
   std::vector<std::uint8_t> lods(n);
   // Settle on the prior's model: measured = predicted.
   for (int i = 0; i < 30; ++i) {
-    ASSERT_TRUE(fb.choose(perceptual, view, lods));
+    ASSERT_EQ(fb.choose(perceptual, view, lods), "");
     ASSERT_TRUE(fb.observe(fb.predicted_ms()));
   }
   const int settled = total(lods);
-  ASSERT_TRUE(fb.choose(perceptual, view, lods));
+  ASSERT_EQ(fb.choose(perceptual, view, lods), "");
+  ASSERT_FALSE(fb.infeasible());
   ASSERT_TRUE(fb.observe(10.0 * budget_ms));  // the hitch
   EXPECT_TRUE(finite(fb.coefficients()));
-  const bool feasible = fb.choose(perceptual, view, lods);
+  ASSERT_EQ(fb.choose(perceptual, view, lods), "");
+  const bool feasible = !fb.infeasible();
   EXPECT_TRUE(std::isfinite(fb.predicted_ms()));
   if (feasible) {
     EXPECT_LE(fb.predicted_ms(), budget_ms * (1 + 1e-9));
@@ -60,7 +62,7 @@ TEST(BudgetFaults, AFrameTenTimesOverBudgetMakesTheNextFramesCoarserNotBroken) {
   for (std::size_t k = 0; k < n; ++k) EXPECT_LT(lods[k], 5) << k;
   // Frames go back to normal: the scheduler keeps choosing complete frames.
   for (int i = 0; i < 200; ++i) {
-    fb.choose(perceptual, view, lods);
+    ASSERT_EQ(fb.choose(perceptual, view, lods), "");
     ASSERT_TRUE(fb.observe(fb.predicted_ms()));
     ASSERT_TRUE(std::isfinite(fb.predicted_ms())) << i;
   }
@@ -74,7 +76,7 @@ TEST(BudgetFaults, NonTimesAreRefusedAndChangeNothing) {
   const std::vector<BudgetObjectView> view(n, BudgetObjectView{1000.0, 1.0});
   std::vector<std::uint8_t> lods(n);
   EXPECT_FALSE(fb.observe(5.0));  // before any choose()
-  fb.choose(perceptual, view, lods);
+  ASSERT_EQ(fb.choose(perceptual, view, lods), "");
   const budget::CostCoefficients before = fb.coefficients();
   for (double bad : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
                      -std::numeric_limits<double>::infinity(), -1.0})
@@ -96,12 +98,12 @@ TEST(BudgetFaults, ReplayingTheSameFaultsGivesTheSameFrames) {
     for (int i = 0; i < 120; ++i) {
       view[static_cast<std::size_t>(i) % n].size_px *= 1.5;
       perceptual[static_cast<std::size_t>(i * 7) % n] ^= 1;
-      fb.choose(perceptual, view, lods);
+      EXPECT_EQ(fb.choose(perceptual, view, lods), "");
       frames.push_back(lods);
       const double measured = i % 40 == 20   ? 10.0 * 11.1                               // a hitch
                               : i % 40 == 30 ? std::numeric_limits<double>::quiet_NaN()  // refused
                                              : fb.predicted_ms() * 1.1;
-      fb.observe(measured);
+      EXPECT_EQ(fb.observe(measured), std::isfinite(measured)) << i;  // the NaN frame is refused
     }
     return frames;
   };

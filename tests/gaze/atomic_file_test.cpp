@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
-// Atomic output files (gaze/atomic_file.hpp) and the trace writer on top of them: a failure at
+// Atomic output files (auxiliary/atomic_file.hpp) and the trace writer on top of them: a failure at
 // any step (injected write / fsync / rename errors, a missing or unwritable folder, a
 // directory in the way, a full device, a full file system) throws WriteError with the
 // system's reason and leaves neither a partial destination nor a temporary file.
-#include "gaze/atomic_file.hpp"
+#include "auxiliary/atomic_file.hpp"
 #include "gaze/trace_writer.hpp"
 
 #include <gmock/gmock.h>
@@ -25,6 +25,11 @@
 
 namespace gazelod::gaze {
 namespace {
+
+using aux::AtomicFile;
+using aux::AtomicFileFaults;
+using aux::write_file_atomic;
+using aux::WriteError;
 
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;

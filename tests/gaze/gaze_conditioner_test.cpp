@@ -5,7 +5,7 @@
 // axis 0.5 / sqrt(2)), which differenced at 120 Hz reads as ~85 deg/s.
 #include "gaze/gaze_conditioner.hpp"
 
-#include "gaze/angles.hpp"
+#include "auxiliary/angles.hpp"
 #include "gaze/main_sequence.hpp"
 #include "gaze/trace_reader.hpp"
 
@@ -37,7 +37,7 @@ std::int64_t ns_of(double t_s) {
 
 // Head yaw (positive = turned right) as a head-to-world rotation about +Y.
 glm::dquat head_yaw(double yaw_deg) {
-  return glm::angleAxis(-yaw_deg * kRadPerDeg, glm::dvec3(0, 1, 0));
+  return glm::angleAxis(-yaw_deg * aux::kRadPerDeg, glm::dvec3(0, 1, 0));
 }
 
 // Ground truth at time t (s from the stream start): eye-in-world yaw/pitch, head yaw.
@@ -109,10 +109,10 @@ std::vector<Frame> simulate(GazeConditioner& c, const TruthFn& truth, double sec
 }
 
 double err_deg(const Frame& f) {
-  return angle_between_rad(f.out.direction_world, f.truth.world()) * kDegPerRad;
+  return aux::angle_between_rad(f.out.direction_world, f.truth.world()) * aux::kDegPerRad;
 }
 double speed_deg_s(const ConditionedGaze& g) {
-  return glm::length(g.angular_velocity_world_rad_s) * kDegPerRad;
+  return glm::length(g.angular_velocity_world_rad_s) * aux::kDegPerRad;
 }
 
 bool finite(const glm::dvec3& v) {
@@ -162,7 +162,7 @@ TEST(GazeConditioner, NoiseAtRestIsAFixationWithZeroVelocityAndSmoothedDirection
     glm::dvec3 prev = direction_from_yaw_pitch_deg(3.0 + n(rng), -2.0 + n(rng));
     for (int i = 0; i < 1000; ++i) {
       const glm::dvec3 d = direction_from_yaw_pitch_deg(3.0 + n(rng), -2.0 + n(rng));
-      const double v = angle_between_rad(prev, d) * kDegPerRad * 120.0;
+      const double v = aux::angle_between_rad(prev, d) * aux::kDegPerRad * 120.0;
       raw_sum_sq += v * v;
       prev = d;
     }
@@ -196,7 +196,7 @@ void check_saccade(const std::vector<Frame>& frames, const ConditionerConfig& cf
     last = f.sample_t_s;
     EXPECT_EQ(f.out.angular_velocity_world_rad_s, glm::dvec3(0.0)) << what;
     EXPECT_TRUE(f.out.suppressed) << what;
-    const double yaw = std::atan2(f.out.direction_world.x, -f.out.direction_world.z) * kDegPerRad;
+    const double yaw = std::atan2(f.out.direction_world.x, -f.out.direction_world.z) * aux::kDegPerRad;
     if (cfg.saccade_follow_newest) {
       // Following the newest sample: on the saccade's path from 0 to 10 deg (with noise).
       EXPECT_GT(yaw, -3.0) << what;
@@ -309,7 +309,7 @@ TEST(GazeConditioner, GapRestartsTheFixation) {
   c.push(s, id);
   const ConditionedGaze g = c.at(t + 10 * kMs, id);
   EXPECT_EQ(g.motion, EyeMotion::fixation);
-  EXPECT_LT(angle_between_rad(g.direction_world, there), 1e-9) << "not blended with the old fixation";
+  EXPECT_LT(aux::angle_between_rad(g.direction_world, there), 1e-9) << "not blended with the old fixation";
   EXPECT_FALSE(g.suppressed);
 }
 
@@ -332,7 +332,7 @@ TEST(GazeConditioner, VorFixationDuringA100DegPerSecondHeadTurnIsAFixation) {
       sum_sq += err_deg(f) * err_deg(f);
       // The head direction is the world one seen from the head at the display time.
       const glm::dvec3 want_head = glm::conjugate(head_yaw(f.truth.head_yaw_deg)) * f.out.direction_world;
-      EXPECT_LT(angle_between_rad(f.out.direction_head, want_head), 1e-9);
+      EXPECT_LT(aux::angle_between_rad(f.out.direction_head, want_head), 1e-9);
     }
     EXPECT_EQ(fixation, counted) << "seed " << seed;
     EXPECT_LT(std::sqrt(sum_sq / counted), 0.1) << "seed " << seed;
@@ -511,7 +511,7 @@ TEST(GazeConditioner, NanZeroBackwardsAndFutureSamplesAreRefusedAndCounted) {
   const ConditionedGaze after = c.at(t + 10 * kMs, id);
   EXPECT_TRUE(after.valid);
   EXPECT_EQ(after.motion, EyeMotion::fixation);
-  EXPECT_LT(angle_between_rad(after.direction_world, glm::normalize(glm::dvec3(0, 0.1, -1))), 1e-6);
+  EXPECT_LT(aux::angle_between_rad(after.direction_world, glm::normalize(glm::dvec3(0, 0.1, -1))), 1e-6);
 }
 
 TEST(GazeConditioner, FrozenSourceAgesIntoInvalid) {
@@ -628,7 +628,7 @@ TEST(GazeConditioner, ResetForgetsTheHistory) {
   EXPECT_FALSE(g.valid);
   EXPECT_EQ(g.motion, EyeMotion::loss);
   EXPECT_EQ(g.direction_head, glm::dvec3(0, 0, -1));  // straight ahead of the head
-  EXPECT_LT(angle_between_rad(g.direction_world, head_yaw(30.0) * glm::dvec3(0, 0, -1)), 1e-12);
+  EXPECT_LT(aux::angle_between_rad(g.direction_world, head_yaw(30.0) * glm::dvec3(0, 0, -1)), 1e-12);
   expect_sane(g, c.config());
   // A new source's clock may start anywhere, even before the old one's.
   GazeSample s;

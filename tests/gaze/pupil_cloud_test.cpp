@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Pupil Cloud gaze.csv importer, its blinks file, layout detection in open_trace, and the
 // agreement of our classifiers with Pupil Cloud's own fixation / blink ids.
+#include "auxiliary/angles.hpp"
 #include "gaze/gaze_agreement.hpp"
 #include "gaze/import_pupil_cloud.hpp"
 #include "gaze/trace_open.hpp"
@@ -69,8 +70,8 @@ TEST(PupilCloud, AzimuthRightElevationUpInOpenXrAxes) {
   EXPECT_GT(r[1].gaze.direction.y, 0.0);  // elevation positive = up = +y
   const glm::dvec3 d = r[2].gaze.direction;
   EXPECT_NEAR(glm::length(d), 1.0, 1e-15);
-  EXPECT_NEAR(std::atan2(d.x, -d.z) * kDegPerRad, -20.0, 1e-12);
-  EXPECT_NEAR(std::atan2(d.y, std::hypot(d.x, d.z)) * kDegPerRad, -15.0, 1e-12);
+  EXPECT_NEAR(std::atan2(d.x, -d.z) * aux::kDegPerRad, -20.0, 1e-12);
+  EXPECT_NEAR(std::atan2(d.y, std::hypot(d.x, d.z)) * aux::kDegPerRad, -15.0, 1e-12);
   for (const auto& rec : r) EXPECT_TRUE(rec.gaze.valid);
 }
 
@@ -96,8 +97,9 @@ TEST(PupilCloud, ColumnsByNameNeonWithoutIdsAndExtraColumns) {
   TraceRecord rec;
   ASSERT_TRUE(reader.next(rec));
   EXPECT_TRUE(rec.gaze.valid);
-  EXPECT_NEAR(std::atan2(rec.gaze.direction.y, std::hypot(rec.gaze.direction.x, rec.gaze.direction.z)) * kDegPerRad,
-              5.0, 1e-12);
+  EXPECT_NEAR(
+      std::atan2(rec.gaze.direction.y, std::hypot(rec.gaze.direction.x, rec.gaze.direction.z)) * aux::kDegPerRad, 5.0,
+      1e-12);
   EXPECT_LT(rec.gaze.direction.x, 0.0);
   ASSERT_TRUE(reader.next(rec));
   EXPECT_FALSE(rec.gaze.valid);  // worn = 0

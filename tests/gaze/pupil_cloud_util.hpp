@@ -3,7 +3,7 @@
 // synthetic gaze (tests/gaze/synth.hpp) with Pupil's own fixation and blink ids per sample.
 #pragma once
 
-#include "gaze/angles.hpp"
+#include "auxiliary/angles.hpp"
 #include "tests/gaze/synth.hpp"
 
 #include <glm/geometric.hpp>
@@ -99,8 +99,8 @@ inline std::vector<PupilCloudRow> three_fixations_and_a_blink() {
     const glm::dvec3 d = s.out[i].direction;
     PupilCloudRow r;
     r.t_unix_ns = kUnixStartNs + (s.out[i].t_ns - s.out[0].t_ns);
-    r.azimuth_deg = std::atan2(d.x, -d.z) * kDegPerRad;
-    r.elevation_deg = std::atan2(d.y, std::hypot(d.x, d.z)) * kDegPerRad;
+    r.azimuth_deg = std::atan2(d.x, -d.z) * aux::kDegPerRad;
+    r.elevation_deg = std::atan2(d.y, std::hypot(d.x, d.z)) * aux::kDegPerRad;
     r.fixation_id = fix[i];
     r.blink_id = blink[i];
     rows.push_back(r);

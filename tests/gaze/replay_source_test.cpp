@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Replay: angular interpolation, slerp, no interpolation across invalid samples or saccades,
 // bounded hold-last-good.
-#include "gaze/angles.hpp"
+#include "auxiliary/angles.hpp"
 #include "gaze/replay_source.hpp"
 #include "gaze/trace_reader.hpp"
 #include "tests/gaze/synth.hpp"
@@ -23,7 +23,7 @@ TraceRecord rec(std::int64_t t_ns, double yaw_deg, bool valid = true) {
 }
 
 double yaw_of(const glm::dvec3& d) {
-  return std::atan2(d.x, -d.z) * kDegPerRad;
+  return std::atan2(d.x, -d.z) * aux::kDegPerRad;
 }
 
 TEST(Replay, InterpolatesByAngle) {
@@ -108,7 +108,7 @@ TEST(Replay, TimeOffsetMapsTraceToHostTime) {
 }
 
 TEST(Replay, HeadSlerpTakesShortPathAcrossSignFlip) {
-  const double half = 10.0 / 2.0 / kDegPerRad;  // 10 deg about +Y
+  const double half = 10.0 / 2.0 / aux::kDegPerRad;  // 10 deg about +Y
   TraceRecord a = rec(0, 0.0), b = rec(4 * kMs, 0.0);
   a.has_head = b.has_head = true;
   a.head.valid = b.head.valid = true;

@@ -6,7 +6,7 @@
 // when the eye directions and the head pose are converted with the right handedness: with
 // Unity's rotation taken as it is, or SRanipal's x not mirrored, the world gaze moves about 6x
 // faster than with the conversions the importer uses (measured on this file: 60 against 10 deg/s).
-#include "gaze/angles.hpp"
+#include "auxiliary/angles.hpp"
 #include "gaze/trace_open.hpp"
 #include "tests/skip_or_fail.hpp"
 
@@ -62,13 +62,13 @@ TEST(SranipalSample, ReadsWholeAndTheWorldGazeHoldsWhileTheHeadTurns) {
     const double dt_s = double(b.gaze.t_ns - a.gaze.t_ns) * 1e-9;
     if (!(dt_s > 0.0)) continue;
     const double head =
-        angle_between_rad(a.head.orientation * forward, b.head.orientation * forward) * kDegPerRad / dt_s;
+        aux::angle_between_rad(a.head.orientation * forward, b.head.orientation * forward) * aux::kDegPerRad / dt_s;
     if (head < 15.0) continue;
     head_deg_s.push_back(head);
-    in_head_deg_s.push_back(angle_between_rad(a.gaze.direction, b.gaze.direction) * kDegPerRad / dt_s);
+    in_head_deg_s.push_back(aux::angle_between_rad(a.gaze.direction, b.gaze.direction) * aux::kDegPerRad / dt_s);
     world_deg_s.push_back(
-        angle_between_rad(a.head.orientation * a.gaze.direction, b.head.orientation * b.gaze.direction) * kDegPerRad /
-        dt_s);
+        aux::angle_between_rad(a.head.orientation * a.gaze.direction, b.head.orientation * b.gaze.direction) *
+        aux::kDegPerRad / dt_s);
   }
   ASSERT_GT(world_deg_s.size(), 200u) << "too few head turns to check the axes";
   const double world = median(world_deg_s), in_head = median(in_head_deg_s);

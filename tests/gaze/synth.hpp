@@ -4,7 +4,7 @@
 // (raised-cosine) velocity profile.
 #pragma once
 
-#include "gaze/angles.hpp"
+#include "auxiliary/angles.hpp"
 #include "gaze/gaze_sample.hpp"
 #include "gaze/main_sequence.hpp"
 #include "gaze/trace_reader.hpp"
@@ -46,7 +46,7 @@ struct Synth {
     const double dur = main_sequence::duration_s(amp) * slow;
     const auto n = static_cast<int>(std::ceil(dur * rate_hz));
     const double y0 = yaw_deg, p0 = pitch_deg;
-    const double dy = amp * std::cos(angle_deg / kDegPerRad), dp = amp * std::sin(angle_deg / kDegPerRad);
+    const double dy = amp * std::cos(angle_deg / aux::kDegPerRad), dp = amp * std::sin(angle_deg / aux::kDegPerRad);
     for (int i = 1; i <= n; ++i) {
       const double f = std::min(1.0, i / (dur * rate_hz));
       const double s = 0.5 * (1.0 - std::cos(std::numbers::pi * f));  // raised-cosine velocity

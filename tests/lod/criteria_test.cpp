@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Per-object criteria: the geometric hard cases (gaze through the centre, eye inside the
 // sphere, object behind the eye, tiny angles) and retinal velocity.
+#include "auxiliary/angles.hpp"
 #include "tests/lod/reference_criteria.hpp"
 
 #include <glm/geometric.hpp>
@@ -35,7 +36,7 @@ TEST(Criteria, ObjectBehindEye) {
 TEST(Criteria, TinyAngles1em7Rad) {
   // A direction 1e-7 rad off the gaze: acos of the dot product returns 0, atan2 keeps it.
   const glm::dvec3 dir{std::sin(1e-7), 0.0, -std::cos(1e-7)};
-  EXPECT_NEAR(angle_between_rad(kFwd, dir), 1e-7, 1e-15);
+  EXPECT_NEAR(aux::angle_between_rad(kFwd, dir), 1e-7, 1e-15);
   // acos of the dot product keeps only about 3 digits here (and returns 0 at 1e-9 rad).
   EXPECT_GT(std::abs(std::acos(glm::dot(kFwd, glm::normalize(dir))) / 1e-7 - 1.0), 1e-5);
   EXPECT_NEAR(nearest_point_eccentricity_deg(kEye, kFwd, dir * 1000.0, 0.0), 1e-7 * 180 / M_PI, 1e-15);

@@ -2,6 +2,7 @@
 // The exact per-record rule (see reference_cluster_select.hpp).
 #include "tests/lod/reference_cluster_select.hpp"
 
+#include "auxiliary/angles.hpp"
 #include "lod/acuity.hpp"
 #include "lod/cluster/cluster_select_kernel.hpp"  // kNearFloorM
 #include "tests/lod/reference_criteria.hpp"
@@ -58,7 +59,7 @@ RecordRef reference_record(const Viewer& vw, const glm::dvec3& mesh_vel, double 
   // The centre's retinal velocity lowered to the sphere's slowest point (cluster_select.hpp).
   const double speed = glm::length(mesh_vel - vw.eye_velocity_m_s), spin = glm::length(w);
   const double v_centre = retinal_velocity_dps(vw.eye_position_m, vw.eye_velocity_m_s, w, c, mesh_vel);
-  const double lip_dps = rho * (2.0 * speed / r.near_m + spin) / r.near_m * kDegPerRad;
+  const double lip_dps = rho * (2.0 * speed / r.near_m + spin) / r.near_m * aux::kDegPerRad;
   r.vel_dps = near ? 0.0 : std::max(0.0, v_centre - lip_dps);
   const double a0 = acuity_cpd(0.0, 0.0, vw.xi_cpd, vw.scale);
   const double cap = kK * a0 * finest;
@@ -69,7 +70,7 @@ RecordRef reference_record(const Viewer& vw, const glm::dvec3& mesh_vel, double 
 
   // Robust: still invisible with every input moved towards keeping detail by ten times or more
   // the kernel's slacks (cluster_select_kernel.hpp).
-  const double scale_dps = (speed / std::max(dist, floor_m) + spin) * kDegPerRad;
+  const double scale_dps = (speed / std::max(dist, floor_m) + spin) * aux::kDegPerRad;
   const bool at_surface = !(dist - rho > 1e-4 * dist);
   const bool at_floor = !(dist - rho > floor_m * (1.0 + 1e-4) + 1e-6 * dist);
   const double ecc_p = at_surface ? 0.0 : std::max(0.0, r.ecc_deg - 0.003);

@@ -2,6 +2,8 @@
 // Exact per-object criteria (see criteria.hpp).
 #include "tests/lod/reference_criteria.hpp"
 
+#include "auxiliary/angles.hpp"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -26,8 +28,8 @@ double nearest_point_eccentricity_deg(const glm::dvec3& eye_m, const glm::dvec3&
   const glm::dvec3 r = center_m - eye_m;
   const double d = glm::length(r);
   if (!(d > radius_m)) return 0.0;  // eye inside or on the sphere
-  const double phi = angle_between_rad(gaze_dir, r);
-  return std::max(0.0, phi - angular_radius_rad(d, radius_m)) * kDegPerRad;
+  const double phi = aux::angle_between_rad(gaze_dir, r);
+  return std::max(0.0, phi - angular_radius_rad(d, radius_m)) * aux::kDegPerRad;
 }
 
 double retinal_velocity_dps(const glm::dvec3& eye_m, const glm::dvec3& eye_velocity_m_s,
@@ -38,7 +40,7 @@ double retinal_velocity_dps(const glm::dvec3& eye_m, const glm::dvec3& eye_veloc
   if (!(d2 > 0.0)) return 0.0;
   const glm::dvec3 w_obj = glm::cross(r, object_velocity_m_s - eye_velocity_m_s) / d2;
   const glm::dvec3 w_rel = w_obj - gaze_angular_velocity_rad_s;
-  return glm::length(glm::cross(w_rel, r)) / std::sqrt(d2) * kDegPerRad;
+  return glm::length(glm::cross(w_rel, r)) / std::sqrt(d2) * aux::kDegPerRad;
 }
 
 }  // namespace gazelod::lod

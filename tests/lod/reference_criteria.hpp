@@ -6,8 +6,6 @@
 // tested against these; no product code calls them, so they live with the tests.
 #pragma once
 
-#include "lod/angles.hpp"
-
 #include <glm/vec3.hpp>
 
 namespace gazelod::lod {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The foveal circle of the debug view: dots at the requested angle around the gaze, and where
 // they land in a rendered frame.
+#include "auxiliary/angles.hpp"
 #include "render/device_context.hpp"
 #include "render/foveal_marker.hpp"
 #include "render/frame_renderer.hpp"
@@ -20,10 +21,8 @@
 namespace gazelod::render {
 namespace {
 
-constexpr double kDegPerRad = 180.0 / std::numbers::pi;
-
 double angle_deg(const glm::dvec3& a, const glm::dvec3& b) {
-  return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b)) * kDegPerRad;
+  return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b)) * aux::kDegPerRad;
 }
 
 TEST(FovealMarker, DotsLieAtTheRadiusAroundTheGaze) {
@@ -37,12 +36,12 @@ TEST(FovealMarker, DotsLieAtTheRadiusAroundTheGaze) {
       EXPECT_NEAR(angle_deg(d, gaze), 7.5, 1e-3);
       EXPECT_EQ(dots[i].mesh, 3u);
       EXPECT_EQ(dots[i].lod_level, kMarkerLevel);
-      EXPECT_NEAR(dots[i].radius_m, 0.5 * std::tan(0.2 / kDegPerRad), 1e-7);
+      EXPECT_NEAR(dots[i].radius_m, 0.5 * std::tan(0.2 / aux::kDegPerRad), 1e-7);
       // Evenly spread: neighbours 30 degrees apart around the axis, i.e. a chord of
       // 2 sin(7.5 deg) sin(15 deg) at unit distance.
       const glm::dvec3 next = glm::dvec3(dots[(i + 1) % dots.size()].center_m) - eye;
-      EXPECT_NEAR(glm::distance(d / 0.5, next / 0.5), 2.0 * std::sin(7.5 / kDegPerRad) * std::sin(15.0 / kDegPerRad),
-                  1e-5);
+      EXPECT_NEAR(glm::distance(d / 0.5, next / 0.5),
+                  2.0 * std::sin(7.5 / aux::kDegPerRad) * std::sin(15.0 / aux::kDegPerRad), 1e-5);
     }
   }
 }
@@ -75,7 +74,7 @@ TEST(FovealMarker, RenderedCircleHasTheProjectedRadius) {
   // tan(20 deg) / tan(45 deg) of the half-width (100 px): 36.4 px right of the centre for the
   // first dot (along u = +x), and the same distance below for the fifth (a quarter turn on,
   // along v = gaze x u = -y).
-  const auto r_px = static_cast<std::uint32_t>(std::lround(100.0 * std::tan(20.0 / kDegPerRad)));
+  const auto r_px = static_cast<std::uint32_t>(std::lround(100.0 * std::tan(20.0 / aux::kDegPerRad)));
   EXPECT_GT(img.rgb(100 + r_px, 100).g, 0.9f);
   EXPECT_GT(img.rgb(100 + r_px, 100).b, 0.9f);
   EXPECT_GT(img.rgb(100, 100 + r_px).r, 0.9f);

@@ -6,7 +6,7 @@
 #include "tests/skip_or_fail.hpp"
 #include "apps/gazelod/run/session.hpp"
 #include "gaze/trace_writer.hpp"
-#include "lod/angles.hpp"
+#include "auxiliary/angles.hpp"
 
 #include <glm/gtc/quaternion.hpp>
 
@@ -307,7 +307,7 @@ TEST(RunCli, ReplayedHeadAndGazeStayTogetherPacedOrNot) {
       // After the conditioner's first few samples; the relative head starts facing -Z, so the
       // world gaze is -Z throughout.
       if (++frames > 10 && d.eye_motion != gaze::EyeMotion::loss) {
-        worst_deg = std::max(worst_deg, lod::angle_between_rad(d.gaze_direction_world, glm::dvec3(0, 0, -1)) / deg);
+        worst_deg = std::max(worst_deg, aux::angle_between_rad(d.gaze_direction_world, glm::dvec3(0, 0, -1)) / deg);
         ++seen;
       }
     };

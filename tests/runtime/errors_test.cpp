@@ -5,6 +5,7 @@
 // loader screens unknown handles before they reach a runtime.
 #include "sim/runtime/xr_headers.hpp"
 #include "tests/runtime/xr_client.hpp"
+#include "xr/loader_negotiation.hpp"
 
 #include <dlfcn.h>
 
@@ -321,17 +322,13 @@ TEST(RuntimeErrors, InvalidAndDestroyedHandlesDirect) {
   DirectRuntime rt;
   rt.lib = dlopen(GAZELOD_XR_RUNTIME_LIB, RTLD_NOW | RTLD_LOCAL);
   ASSERT_NE(rt.lib, nullptr) << dlerror();
-  using Negotiate = XrResult (*)(const xrrt::XrNegotiateLoaderInfo*, xrrt::XrNegotiateRuntimeRequest*);
+  using Negotiate = XrResult (*)(const xr::XrNegotiateLoaderInfo*, xr::XrNegotiateRuntimeRequest*);
   auto negotiate = reinterpret_cast<Negotiate>(dlsym(rt.lib, "xrNegotiateLoaderRuntimeInterface"));
   ASSERT_NE(negotiate, nullptr);
-  xrrt::XrNegotiateLoaderInfo li{xrrt::XR_LOADER_INTERFACE_STRUCT_LOADER_INFO,
-                                 1,
-                                 sizeof(li),
-                                 1,
-                                 1,
-                                 XR_MAKE_VERSION(1, 0, 0),
-                                 XR_MAKE_VERSION(1, 0xffff, 0xffff)};
-  xrrt::XrNegotiateRuntimeRequest rr{xrrt::XR_LOADER_INTERFACE_STRUCT_RUNTIME_REQUEST, 1, sizeof(rr), 0, 0, nullptr};
+  xr::XrNegotiateLoaderInfo li{
+      xr::XR_LOADER_INTERFACE_STRUCT_LOADER_INFO, 1, sizeof(li), 1, 1, XR_MAKE_VERSION(1, 0, 0),
+      XR_MAKE_VERSION(1, 0xffff, 0xffff)};
+  xr::XrNegotiateRuntimeRequest rr{xr::XR_LOADER_INTERFACE_STRUCT_RUNTIME_REQUEST, 1, sizeof(rr), 0, 0, nullptr};
   ASSERT_EQ(negotiate(&li, &rr), XR_SUCCESS);
   rt.gipa = rr.getInstanceProcAddr;
   ASSERT_NE(rt.gipa, nullptr);

@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 // Unit tests of the runtime's pure parts: the path grammar and table, interaction profile
 // bindings, the simulated clock and the gaze orientation of a direction.
+#include "auxiliary/yaw_pitch.hpp"
 #include "sim/runtime/interaction_profiles.hpp"
 #include "sim/runtime/path_table.hpp"
 #include "sim/runtime/pose_math.hpp"
 #include "sim/runtime/sim_clock.hpp"
+#include "xr/eye_gaze_paths.hpp"
 
 #include <gtest/gtest.h>
 
@@ -49,7 +51,7 @@ TEST(RuntimePaths, TableInternsOnceAndRejectsUnknownPaths) {
 TEST(RuntimeProfiles, BindingsMatchProfileComponentsAndHands) {
   const InteractionProfile* simple = find_profile("/interaction_profiles/khr/simple_controller");
   const InteractionProfile* touch = find_profile("/interaction_profiles/oculus/touch_controller");
-  const InteractionProfile* eyes = find_profile(kEyeGazeProfile);
+  const InteractionProfile* eyes = find_profile(xr::kEyeGazeProfile);
   ASSERT_NE(simple, nullptr);
   ASSERT_NE(touch, nullptr);
   ASSERT_NE(eyes, nullptr);
@@ -63,7 +65,7 @@ TEST(RuntimeProfiles, BindingsMatchProfileComponentsAndHands) {
   EXPECT_FALSE(profile_has_binding(*touch, "/user/hand/right/input/x/click"));
   EXPECT_TRUE(profile_has_binding(*touch, "/user/hand/right/input/trigger"));
   EXPECT_FALSE(profile_has_binding(*touch, "/user/hand/right/input/trig"));
-  EXPECT_TRUE(profile_has_binding(*eyes, kGazePosePath));
+  EXPECT_TRUE(profile_has_binding(*eyes, xr::kGazePosePath));
   EXPECT_TRUE(eyes->needs_eye_gaze_extension);
 }
 
@@ -100,7 +102,7 @@ TEST(RuntimePose, GazeOrientationPointsMinusZAlongDirectionWithoutRoll) {
   const glm::dvec3 dirs[] = {{0, 0, -1}, {0.3, 0.1, -1}, {-0.5, -0.4, -0.2}, {0, 0.9, -0.1}, {1, 0, 0}};
   for (glm::dvec3 d : dirs) {
     d = glm::normalize(d);
-    const glm::dquat q = gaze_orientation(d);
+    const glm::dquat q = aux::orientation_along(d);
     const glm::dvec3 fwd = q * glm::dvec3(0, 0, -1);
     EXPECT_LT(std::atan2(glm::length(glm::cross(fwd, d)), glm::dot(fwd, d)), 1e-12);
     const glm::dvec3 right = q * glm::dvec3(1, 0, 0);

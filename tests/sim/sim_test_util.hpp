@@ -38,7 +38,7 @@ inline double angle_deg(const glm::dvec3& a, const glm::dvec3& b) {
 }
 
 // Yaw (about +Y, positive left) and pitch of a direction, degrees: written out here rather
-// than taken from sim/angles.hpp, so the tests check the convention independently.
+// than taken from auxiliary/yaw_pitch.hpp, so the tests check the convention independently.
 inline double yaw_deg(const glm::dvec3& d) {
   return std::atan2(-d.x, -d.z) * 180.0 / 3.14159265358979323846;
 }

@@ -16,7 +16,7 @@ ClusterDecisionsFile::ClusterDecisionsFile(const std::string& file, const Cluste
   file_.stream() << "frame,t_ns,mesh,cluster,depth,triangles,limited_by,held\n";
   if (!file_.stream()) fail("error while writing the header");
   row_.reserve(256);
-} catch (const gaze::WriteError& e) {
+} catch (const aux::WriteError& e) {
   throw std::runtime_error(std::string("--cluster-decisions: ") + e.what());
 }
 
@@ -76,7 +76,7 @@ void ClusterDecisionsFile::write(std::int64_t frame, std::int64_t t_ns, const Fr
 void ClusterDecisionsFile::commit() {
   try {
     file_.commit();
-  } catch (const gaze::WriteError& e) {
+  } catch (const aux::WriteError& e) {
     throw std::runtime_error(std::string("--cluster-decisions: ") + e.what());
   }
 }

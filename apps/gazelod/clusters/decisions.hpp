@@ -14,7 +14,7 @@
 #pragma once
 
 #include "apps/gazelod/clusters/scene.hpp"
-#include "gaze/atomic_file.hpp"
+#include "auxiliary/atomic_file.hpp"
 #include "plugin/frame_output.hpp"
 
 #include <cstdint>
@@ -37,7 +37,7 @@ class ClusterDecisionsFile {
  private:
   [[noreturn]] void fail(const std::string& what) const;
   const ClusterScene& scene_;
-  gaze::AtomicFile file_;
+  aux::AtomicFile file_;
   std::string row_;
   std::uint64_t rows_ = 0;
 };

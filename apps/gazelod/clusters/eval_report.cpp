@@ -3,7 +3,7 @@
 
 #include "apps/gazelod/commands/command.hpp"
 #include "apps/gazelod/plots/svg_plot.hpp"
-#include "gaze/atomic_file.hpp"
+#include "auxiliary/atomic_file.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -247,8 +247,8 @@ void write_cluster_eval_svg(const ClusterEvalReport& r, const std::filesystem::p
   std::ostringstream svg;
   write_svg(plot, svg);
   try {
-    gaze::write_file_atomic(file.string(), svg.str());
-  } catch (const gaze::WriteError& e) {
+    aux::write_file_atomic(file.string(), svg.str());
+  } catch (const aux::WriteError& e) {
     throw UsageError(std::string("--out: ") + e.what(), 1);
   }
 }

@@ -7,6 +7,7 @@
 // Deterministic: the same instance file and options print the same output on every run. The
 // incremental solvers stop at --max-moves if given; a wall-clock limit (--time-limit-ms) applies
 // only when asked for, and then the answer depends on timing.
+#include "auxiliary/time.hpp"
 #include "budget/knapsack.hpp"
 #include "budget/budget_instance.hpp"
 #include "apps/gazelod/commands/command.hpp"
@@ -72,7 +73,7 @@ int solve_and_print(const Options& o, Io io) {
   if (time_limit_given) {  // explicit only: the answer then depends on timing
     const double ms = parse_number("--time-limit-ms", o.time_limit_ms);
     if (!(ms >= 0.0 && ms <= 1e9)) throw UsageError("--time-limit-ms: must be in [0, 1e9] ms, got " + o.time_limit_ms);
-    limits.wall_clock_limit = std::chrono::nanoseconds(static_cast<std::int64_t>(ms * 1e6));
+    limits.wall_clock_limit = std::chrono::nanoseconds(aux::ns_from_ms(ms));
   }
   budget::MckpSolution sol;
   try {

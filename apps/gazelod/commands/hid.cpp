@@ -2,7 +2,7 @@
 // gazelod hid list | record: HID eye trackers (usage page 0x12, HUTRR74) through hidapi.
 //   list             the usage-page-0x12 devices hidapi sees (--json for one array)
 //   record           read gaze for --seconds into a gazelod trace CSV (--out)
-#include "gaze/atomic_file.hpp"
+#include "auxiliary/atomic_file.hpp"
 #include "gaze/hid/enumerate.hpp"
 #include "gaze/hid/hid_tracker.hpp"
 #include "gaze/trace_writer.hpp"
@@ -95,10 +95,10 @@ int run_record(const Options& o, Io io) {
     config.screen.height_m = parse_positive("--screen-mm", o.screen_mm.substr(x + 1), 10000) * 1e-3;
   }
   // Atomic: a recording that fails (no tracker, a full disk) leaves no file, not a header alone.
-  std::optional<gaze::AtomicFile> out_file;
+  std::optional<aux::AtomicFile> out_file;
   try {
     out_file.emplace(o.out);
-  } catch (const gaze::WriteError& e) {
+  } catch (const aux::WriteError& e) {
     throw UsageError(std::string("--out: ") + e.what());
   }
   std::ostream& file = out_file->stream();
@@ -137,7 +137,7 @@ int run_record(const Options& o, Io io) {
     throw UsageError("no HID eye tracker could be opened (" + tracker.status() + "); nothing written", 1);
   try {
     out_file->commit();
-  } catch (const gaze::WriteError& e) {
+  } catch (const aux::WriteError& e) {
     throw UsageError(std::string("--out: ") + e.what(), 1);
   }
   return 0;

@@ -6,6 +6,7 @@
 // decision, made by the layer's own code (layer/decision.hpp) for an application that enables
 // XR_EXT_eye_gaze_interaction. Exit 0 when the layer would pass through or serve gaze, 1 when
 // gaze would be unavailable or no runtime is found.
+#include "auxiliary/time.hpp"
 #include "layer/decision.hpp"
 #include "layer/gaze_feed.hpp"
 #include "layer/layer_config.hpp"
@@ -176,7 +177,7 @@ int run_check(Io io) {
     io.out << "config     " << layer::kConfigEnv << " unset: defaults\n";
   else
     io.out << "config     " << cr.config.config_path << ": ok (override " << (cr.config.override_runtime ? "on" : "off")
-           << ", freshness " << cr.config.effective_freshness_ns() / 1'000'000 << " ms)\n";
+           << ", freshness " << aux::whole_ms_from_ns(cr.config.effective_freshness_ns()) << " ms)\n";
 
   const layer::LayerConfig& c = cr.config;
   if (!layer::needs_source(in) || !cr.error.empty()) {

@@ -3,8 +3,8 @@
 // with its generated objects written out), and record what a scenario simulates as a gazelod
 // gaze trace.
 #include "apps/gazelod/commands/command.hpp"
+#include "auxiliary/atomic_file.hpp"
 #include "auxiliary/text.hpp"
-#include "gaze/atomic_file.hpp"
 #include "sim/record_trace.hpp"
 #include "sim/scenario_family.hpp"
 #include "sim/simulator.hpp"
@@ -65,7 +65,7 @@ int run_record(const Options& o, Io io) {
   sim::RecordStats st;
   try {  // written atomically: a failure leaves no file behind, partial or temporary
     st = sim::record_trace_file(simulator, o.out, ro);
-  } catch (const gaze::WriteError& e) {
+  } catch (const aux::WriteError& e) {
     throw UsageError(std::string("--out: ") + e.what(), 1);
   }
   io.out << "wrote " << st.rows << " rows (" << st.invalid_rows << " invalid) to " << o.out << "\n";
@@ -85,10 +85,10 @@ int run_family(const Options& o, Io io) {
     io.out << f.json << "\n";
   } else {
     try {
-      gaze::AtomicFile file(o.out);
+      aux::AtomicFile file(o.out);
       file.stream() << f.json << "\n";
       file.commit();
-    } catch (const gaze::WriteError& e) {
+    } catch (const aux::WriteError& e) {
       throw UsageError(std::string("--out: ") + e.what(), 1);
     }
     io.out << "wrote " << o.out << "\n";

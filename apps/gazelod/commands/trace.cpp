@@ -4,6 +4,7 @@
 // --format says. Malformed files exit non-zero naming file:line:column; --lenient skips bad
 // lines and reports every one of them. On a Pupil Cloud trace, stats also says how our
 // classifiers agree with Pupil Cloud's own fixations and blinks (gaze/gaze_agreement.hpp).
+#include "auxiliary/atomic_file.hpp"
 #include "gaze/trace_open.hpp"
 #include "gaze/trace_stats.hpp"
 #include "gaze/trace_writer.hpp"
@@ -166,7 +167,7 @@ int run_convert(const Options& o, Io io) {
   std::error_code ec;
   if (fs::exists(o.out_file, ec) && fs::equivalent(o.file, o.out_file, ec))
     throw UsageError("OUT must not be the input file");
-  // Written atomically (gaze/atomic_file.hpp): a failure, in the input or the output, leaves
+  // Written atomically (auxiliary/atomic_file.hpp): a failure, in the input or the output, leaves
   // neither a truncated OUT nor a temporary file.
   std::size_t n = 0;
   std::unique_ptr<gaze::RecordStream> stream;
@@ -181,7 +182,7 @@ int run_convert(const Options& o, Io io) {
     writer.commit();
   } catch (const gaze::TraceError& e) {
     throw UsageError(e.what());
-  } catch (const gaze::WriteError& e) {
+  } catch (const aux::WriteError& e) {
     throw UsageError(e.what(), 1);
   }
   report_skipped(stream->skipped(), io.err);

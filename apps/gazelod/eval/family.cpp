@@ -4,7 +4,8 @@
 #include "apps/gazelod/eval/work.hpp"
 #include "apps/gazelod/run/report.hpp"
 #include "apps/gazelod/run/session.hpp"
-#include "gaze/atomic_file.hpp"
+#include "auxiliary/atomic_file.hpp"
+#include "auxiliary/time.hpp"
 #include "sim/scenario_family.hpp"
 
 #include <nlohmann/json.hpp>
@@ -113,7 +114,7 @@ const std::vector<Setting>& settings_table() {
 
 double current(const Setting& t, FamilySettings& s) {
   if (t.real) return t.real(s);
-  if (t.ms_as_ns) return static_cast<double>(t.ms_as_ns(s)) * 1e-6;
+  if (t.ms_as_ns) return aux::ms_from_ns(t.ms_as_ns(s));
   return t.flag(s) ? 1.0 : 0.0;
 }
 
@@ -179,7 +180,7 @@ void apply_setting(const std::string& assignment, FamilySettings& settings) {
   if (it->real)
     it->real(settings) = v;
   else if (it->ms_as_ns)
-    it->ms_as_ns(settings) = static_cast<std::int64_t>(std::llround(v * 1e6));
+    it->ms_as_ns(settings) = aux::ns_from_ms(v);
   else if (v != 0.0 && v != 1.0)
     throw UsageError("--set " + name + ": must be 0 or 1, got " + text);
   else
@@ -200,6 +201,10 @@ std::vector<FamilyMember> run_family(std::uint64_t first, int count, double dura
                                      const std::function<void(const std::string&)>& progress) {
   const std::string why = lod::validate_switch_config(settings.switching);
   if (!why.empty()) throw UsageError("--set: " + why);
+  // Each setting is range-checked as it is given; the conditioner's own rules are checked on
+  // the result, before any seed runs (a refused setting, never a default in its place).
+  if (const std::string bad = gaze::validate_conditioner_config(settings.conditioning); !bad.empty())
+    throw UsageError("--set: conditioner." + bad);
   WorkDir work(work_dir, "gazelod-eval-family");
   std::vector<FamilyMember> members;
   for (int k = 0; k < count; ++k) {
@@ -209,8 +214,8 @@ std::vector<FamilyMember> run_family(std::uint64_t first, int count, double dura
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     try {
-      gaze::write_file_atomic((dir / "family.json").string(), f.json);
-    } catch (const gaze::WriteError& e) {
+      aux::write_file_atomic((dir / "family.json").string(), f.json);
+    } catch (const aux::WriteError& e) {
       throw UsageError(std::string("--work: ") + e.what(), 1);
     }
     RunOptions o;

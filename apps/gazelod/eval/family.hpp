@@ -45,7 +45,9 @@ void apply_setting(const std::string& assignment, FamilySettings& settings);
 // The settings --set understands, one per line with its current (default) value.
 std::string settings_list(const FamilySettings& settings);
 
-// Runs seeds [first, first + count) with `settings`; progress gets one line per seed.
+// Runs seeds [first, first + count) with `settings`; progress gets one line per seed. Settings
+// the switch policy or the conditioner refuse throw UsageError (exit 2, naming the setting and
+// its value) before any seed runs.
 std::vector<FamilyMember> run_family(std::uint64_t first, int count, double duration_s, const FamilySettings& settings,
                                      const std::string& work_dir,
                                      const std::function<void(const std::string&)>& progress);

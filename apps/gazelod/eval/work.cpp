@@ -3,7 +3,7 @@
 #include "apps/gazelod/eval/work.hpp"
 
 #include "apps/gazelod/commands/command.hpp"
-#include "gaze/atomic_file.hpp"
+#include "auxiliary/atomic_file.hpp"
 
 #include <unistd.h>
 
@@ -38,8 +38,8 @@ std::string cpu_model() {
 
 void write_report(const fs::path& out_dir, const std::vector<ReportFile>& files) {
   try {
-    for (const ReportFile& f : files) gaze::write_file_atomic((out_dir / f.name).string(), f.text);
-  } catch (const gaze::WriteError& e) {
+    for (const ReportFile& f : files) aux::write_file_atomic((out_dir / f.name).string(), f.text);
+  } catch (const aux::WriteError& e) {
     throw UsageError(std::string("--out: ") + e.what(), 1);
   }
 }

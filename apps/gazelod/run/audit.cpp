@@ -2,7 +2,8 @@
 #include "apps/gazelod/run/audit.hpp"
 
 #include "apps/gazelod/run/in_view.hpp"
-#include "lod/angles.hpp"
+#include "auxiliary/time.hpp"
+#include "auxiliary/angles.hpp"
 #include "lod/select.hpp"
 
 #include <glm/geometric.hpp>
@@ -207,16 +208,17 @@ AuditOracle::AuditOracle(const sim::Scenario& scenario, const EnabledCriteria& c
 }
 
 std::string AuditOracle::evaluate(sim::Simulator& simulator, std::int64_t t_ns, double xi_cpd) {
-  constexpr std::int64_t kHalfStepNs = 1'000'000;  // central difference over t +- 1 ms
+  constexpr std::int64_t kHalfStepNs = aux::ns_from_ms(1.0);  // central difference over t +- 1 ms
   const auto world_gaze = [&](std::int64_t t) {
     return simulator.head_at(t).orientation * simulator.true_gaze_at(t).direction;
   };
   const glm::dvec3 before = world_gaze(t_ns - kHalfStepNs), after = world_gaze(t_ns + kHalfStepNs);
   const glm::dvec3 axis = glm::cross(before, after);
   const double sin_angle = glm::length(axis);
-  omega_ = sin_angle > 0.0
-               ? axis / sin_angle * (std::atan2(sin_angle, glm::dot(before, after)) / (2.0 * kHalfStepNs * 1e-9))
-               : glm::dvec3(0.0);
+  omega_ =
+      sin_angle > 0.0
+          ? axis / sin_angle * (std::atan2(sin_angle, glm::dot(before, after)) / aux::seconds_from_ns(2 * kHalfStepNs))
+          : glm::dvec3(0.0);
 
   const sim::HeadState head = simulator.head_at(t_ns);
   truth_ = simulator.eye_truth_at(t_ns);
@@ -245,8 +247,8 @@ std::string AuditOracle::evaluate(sim::Simulator& simulator, std::int64_t t_ns, 
   const lod::Decisions out{lod_, limited_, size_only_, ecc_only_, vel_only_, ecc_deg_, {}, {}};
   std::string err = lod::select_lods(v, store_.view(), out);
   if (!err.empty()) std::fill(lod_.begin(), lod_.end(), 0);
-  true_gaze_ = classify_true_gaze(truth_, suppressed_, glm::length(head.angular_velocity_rad_s) * lod::kDegPerRad,
-                                  glm::length(omega_) * lod::kDegPerRad);
+  true_gaze_ = classify_true_gaze(truth_, suppressed_, glm::length(head.angular_velocity_rad_s) * aux::kDegPerRad,
+                                  glm::length(omega_) * aux::kDegPerRad);
   return err;
 }
 

@@ -10,6 +10,7 @@
 #pragma once
 
 #include "apps/gazelod/run/audit_breakdown.hpp"
+#include "auxiliary/time.hpp"
 #include "lod/display.hpp"
 #include "lod/lod_chain.hpp"
 #include "lod/object_set.hpp"
@@ -125,7 +126,7 @@ class AuditOracle {
   // plugin got as objects; cluster meshes have their own audit, clusters/audit.hpp); empty:
   // every object, in scenario order. Indices past the scenario's objects are ignored.
   AuditOracle(const sim::Scenario& scenario, const EnabledCriteria& criteria, std::vector<std::size_t> objects = {},
-              std::int64_t after_saccade_ns = static_cast<std::int64_t>(kSuppressionAfterSaccadeMs * 1e6));
+              std::int64_t after_saccade_ns = aux::ns_from_ms(kSuppressionAfterSaccadeMs));
 
   // The truth at scenario time t (ns): levels(), in_view(), truth() and suppressed() hold it
   // until the next call. xi_cpd: the run's display limit (FrameDiagnostics::xi_cpd).

@@ -30,7 +30,7 @@ DecisionsFile::DecisionsFile(const std::filesystem::path& file, std::span<const 
   if (!file_.stream()) fail("error while writing the header");
   row_.clear();
   row_.reserve(48 + 4 * object_names.size());  // frame, t_ns and up to 3 digits a level: no growth per row
-} catch (const gaze::WriteError& e) {
+} catch (const aux::WriteError& e) {
   throw std::runtime_error(std::string("--decisions: ") + e.what());
 }
 
@@ -60,7 +60,7 @@ void DecisionsFile::write(std::int64_t frame, std::int64_t t_ns, std::span<const
 void DecisionsFile::commit() {
   try {
     file_.commit();
-  } catch (const gaze::WriteError& e) {
+  } catch (const aux::WriteError& e) {
     throw std::runtime_error(std::string("--decisions: ") + e.what());
   }
 }

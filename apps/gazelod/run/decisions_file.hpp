@@ -2,12 +2,12 @@
 // `gazelod run --decisions FILE`: the drawn level of every object in every frame, as CSV
 //   frame,t_ns,<object name>,...     (names quoted per RFC 4180 where needed)
 //   0,11111111,2,3,...               (t_ns: predicted display time, ns from the scenario's start)
-// written through gaze::AtomicFile (the project's one atomic writer): rows go to a temporary in
+// written through aux::AtomicFile (the project's one atomic writer): rows go to a temporary in
 // FILE's folder, renamed to FILE by commit(); without commit() (an error, an exception) the
 // temporary is removed and FILE is left as it was.
 #pragma once
 
-#include "gaze/atomic_file.hpp"
+#include "auxiliary/atomic_file.hpp"
 
 #include <cstdint>
 #include <filesystem>
@@ -33,7 +33,7 @@ class DecisionsFile {
 
  private:
   [[noreturn]] void fail(const std::string& what) const;
-  gaze::AtomicFile file_;
+  aux::AtomicFile file_;
   std::string row_;
 };
 

@@ -3,7 +3,7 @@
 
 #include "apps/gazelod/eval/lod_map_frame.hpp"
 #include "apps/gazelod/run/in_view.hpp"
-#include "lod/angles.hpp"
+#include "auxiliary/angles.hpp"
 
 #include <glm/geometric.hpp>
 
@@ -52,7 +52,7 @@ FrameRecord record_frame(const FrameRecordInput& in) {
   r.in_view_lod_sum = view.lod_sum;
   r.gaze_source = to_string(d.gaze_source);
   r.gaze_valid = d.gaze_valid;
-  r.head_speed_dps = glm::length(diag.head_angular_velocity_rad_s) * lod::kDegPerRad;
+  r.head_speed_dps = glm::length(diag.head_angular_velocity_rad_s) * aux::kDegPerRad;
   r.eye_motion = diag.gaze_carried ? "carried" : gaze::to_string(diag.eye_motion);
   r.plugin_suppressed = diag.gaze_suppressed;
   r.gaze_error_deg = diag.gaze_error_deg;

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "apps/gazelod/run/render.hpp"
 
-#include "gaze/atomic_file.hpp"
-#include "lod/angles.hpp"
+#include "auxiliary/atomic_file.hpp"
+#include "auxiliary/angles.hpp"
 #include "render/lod_key.hpp"
 #include "render/camera.hpp"
 #include "render/foveal_marker.hpp"
@@ -168,7 +168,7 @@ void RunRenderer::render_eye(std::size_t eye, std::uint32_t image_index, const X
     const std::size_t first = items_.size();
     items_.resize(first + render::kFovealMarkerDots);
     const std::size_t written = render::foveal_circle(eye_view.pose.position_m, diagnostics.foveal_cone.axis,
-                                                      diagnostics.foveal_cone.half_angle_rad * lod::kDegPerRad,
+                                                      diagnostics.foveal_cone.half_angle_rad * aux::kDegPerRad,
                                                       marker_mesh_, std::span(items_).subspan(first));
     items_.resize(first + written);
   }
@@ -180,7 +180,7 @@ void RunRenderer::save_png(std::size_t eye, std::uint32_t image_index, const std
   // Atomically, like the run's other files: a full disk leaves no cut frame.png.
   const std::vector<unsigned char> png =
       render::encode_png(render::with_lod_key(renderer(eye).read_back(image_index), levels));
-  gaze::write_file_atomic(file.string(), std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
+  aux::write_file_atomic(file.string(), std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
 }
 
 std::uint64_t RunRenderer::triangles_drawn(std::size_t eye) const {

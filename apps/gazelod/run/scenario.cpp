@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "apps/gazelod/run/scenario.hpp"
 
+#include "auxiliary/atomic_file.hpp"
 #include "bake/baked_scene.hpp"
 #include "bake/bake_error.hpp"
 #include "gaze/replay_source.hpp"
-#include "gaze/atomic_file.hpp"
 #include "gaze/trace_error.hpp"
 #include "gaze/trace_open.hpp"
 #include "lod/display.hpp"
@@ -207,8 +207,8 @@ PreparedScenario prepare_scenario(const RunOptions& opt) {
   if (ec) throw UsageError("--out: cannot create '" + opt.out_dir.string() + "': " + ec.message());
   p.file = opt.out_dir / "scenario.json";
   try {
-    gaze::write_file_atomic(p.file.string(), text + "\n");
-  } catch (const gaze::WriteError& e) {
+    aux::write_file_atomic(p.file.string(), text + "\n");
+  } catch (const aux::WriteError& e) {
     throw UsageError(std::string("--out: ") + e.what());
   }
   return p;

@@ -7,6 +7,7 @@
 #include "gaze/gaze_source.hpp"
 #include "gaze/replay_source.hpp"
 #include "apps/gazelod/run/session.hpp"
+#include "auxiliary/time.hpp"
 #include "bake/baked_scene.hpp"
 #include "sim/simulator.hpp"
 
@@ -53,7 +54,7 @@ class TraceFromFirstFrame final : public gaze::GazeSource {
   std::optional<gaze::GazeSample> sample_at(std::int64_t t_ns) override;
   std::string status() const override { return replay_.status(); }
   // From the first sample to the last (seconds): how long the trace can stand in for gaze.
-  double duration_s() const { return static_cast<double>(duration_ns_) * 1e-9; }
+  double duration_s() const { return aux::seconds_from_ns(duration_ns_); }
 
  private:
   std::int64_t start_ns_ = 0, offset_ns_ = 0, duration_ns_ = 0;

@@ -115,6 +115,8 @@ int Session::open_runtime_and_plugin() {
     };
     config.external_source = std::make_shared<gaze::hid::HidGazeSource>(std::move(hid));
   }
+  // Refused before the session is used, with the field and its value (docs/error-policy.md).
+  if (const std::string why = validate_plugin_config(config); !why.empty()) throw UsageError("plugin config: " + why);
   plugin_ = LodPlugin::create(xrGetInstanceProcAddr, app_->instance(), app_->system(), app_->session(),
                               app_->local_space(), config);
   say_source_changes();

@@ -14,7 +14,7 @@
 #include "apps/gazelod/run/session_audit.hpp"
 #include "apps/gazelod/run/signals.hpp"
 #include "apps/xr_host/xr_app.hpp"
-#include "lod/angles.hpp"
+#include "auxiliary/angles.hpp"
 #include "sim/simulator.hpp"
 
 #include <glm/geometric.hpp>
@@ -36,8 +36,8 @@ class SaccadeMarker {
   bool update(bool valid, const glm::dvec3& dir_head, double t_s) {
     bool onset = false;
     if (valid && have_ && t_s > t_s_) {
-      const double angle = std::atan2(glm::length(glm::cross(prev_, dir_head)), glm::dot(prev_, dir_head));
-      const bool fast = angle * lod::kDegPerRad / (t_s - t_s_) > 100.0;
+      const double angle = aux::angle_between_rad(prev_, dir_head);
+      const bool fast = angle * aux::kDegPerRad / (t_s - t_s_) > 100.0;
       onset = fast && !in_saccade_;
       in_saccade_ = fast;
     }

@@ -14,8 +14,11 @@
 #   <libdir>/gazelod/libXrApiLayer_gazelod_eye_gaze.so      the eye-gaze API layer, and its
 #   share/openxr/1/api_layers/explicit.d/, share/gazelod/openxr/1/api_layers/implicit.d/ manifests
 #   bin/gazelod
+#   share/gazelod/shaders/cluster_select.comp    GPU cluster selection (GLSL, docs/gpu-selection.md)
+#   share/gazelod/shaders/cluster_select_gpu.h   its bindings, buffer layouts, push constants (C99)
 #
-# Components: dev (libraries, headers, CMake and pkg-config files), xr_runtime, xr_layer, program.
+# Components: dev (libraries, headers, CMake and pkg-config files), xr_runtime, xr_layer, program,
+# shaders.
 # tests/install/ installs into a scratch prefix and builds a
 # consumer against it.
 include(GNUInstallDirs)
@@ -163,6 +166,13 @@ if(TARGET gazelod_eye_gaze_layer)
     list(APPEND CMAKE_INSTALL_MANIFEST_FILES "${gazelod_layer_dir}/${gazelod_layer_manifest}")
   ]] COMPONENT xr_layer)
 endif()
+
+# ---- GPU cluster selection: the compute shader and the header describing its interface -------
+# For an engine that runs the selection on its own buffers (docs/gpu-selection.md); gazelod's own
+# host for it is render/cluster_select_pass.hpp, which is not installed. Sources, not SPIR-V: the
+# engine compiles them with its own glslangValidator (-V, Vulkan 1.1 or later).
+install(FILES ${GAZELOD_ROOT}/shaders/cluster_select.comp ${GAZELOD_ROOT}/shaders/cluster_select_gpu.h
+  DESTINATION ${CMAKE_INSTALL_DATADIR}/gazelod/shaders COMPONENT shaders)
 
 # ---- the gazelod program ---------------------------------------------------------------------
 if(TARGET gazelod)

@@ -42,10 +42,15 @@ int graphics_family(VkPhysicalDevice physical) {
 
 }  // namespace
 
-OffscreenDevice::OffscreenDevice(bool want_validation) {
+OffscreenDevice::OffscreenDevice(bool want_validation, bool prefer_gpu) {
   VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
   app.pApplicationName = "gazelod offscreen renderer";
-  app.apiVersion = VK_API_VERSION_1_1;
+  // 1.2 where the loader has it: vkCmdDrawIndexedIndirectCount is core there.
+  std::uint32_t loader_version = VK_API_VERSION_1_0;  // a 1.0 loader lacks the query
+  const auto version_of = reinterpret_cast<PFN_vkEnumerateInstanceVersion>(
+      vkGetInstanceProcAddr(VK_NULL_HANDLE, "vkEnumerateInstanceVersion"));
+  if (!version_of || version_of(&loader_version) != VK_SUCCESS) loader_version = VK_API_VERSION_1_0;
+  app.apiVersion = loader_version >= VK_API_VERSION_1_2 ? VK_API_VERSION_1_2 : VK_API_VERSION_1_1;
   const bool validate =
       want_validation && has_layer(kValidationLayer) && has_instance_extension(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
   const char* layers[] = {kValidationLayer};
@@ -80,7 +85,8 @@ OffscreenDevice::OffscreenDevice(bool want_validation) {
     vk_check(vkEnumeratePhysicalDevices(ctx_.instance, &n, nullptr), "vkEnumeratePhysicalDevices");
     std::vector<VkPhysicalDevice> devices(n);
     vk_check(vkEnumeratePhysicalDevices(ctx_.instance, &n, devices.data()), "vkEnumeratePhysicalDevices");
-    // Lavapipe (a CPU device) first: results are then the same on every machine.
+    // Lavapipe (a CPU device) first: results are then the same on every machine (unless
+    // prefer_gpu: real hardware for GPU benchmarks).
     int best_rank = -1;
     for (VkPhysicalDevice d : devices) {
       const int family = graphics_family(d);
@@ -88,7 +94,11 @@ OffscreenDevice::OffscreenDevice(bool want_validation) {
       VkPhysicalDeviceProperties p{};
       vkGetPhysicalDeviceProperties(d, &p);
       if (p.apiVersion < VK_API_VERSION_1_1) continue;
-      const int rank = p.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? 1 : 0;
+      const int rank = !prefer_gpu ? (p.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? 1 : 0)
+                       : p.deviceType == VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU   ? 3
+                       : p.deviceType == VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU ? 2
+                       : p.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU            ? 0
+                                                                                : 1;
       if (rank > best_rank) {
         best_rank = rank;
         ctx_.physical = d;
@@ -109,7 +119,20 @@ OffscreenDevice::OffscreenDevice(bool want_validation) {
     VkPhysicalDeviceFeatures supported{}, enabled{};
     vkGetPhysicalDeviceFeatures(ctx_.physical, &supported);
     enabled.multiDrawIndirect = supported.multiDrawIndirect;
+    // And the GPU-driven cut's one draw (ClusterSelectPass's commands and count).
+    VkPhysicalDeviceProperties chosen{};
+    vkGetPhysicalDeviceProperties(ctx_.physical, &chosen);
+    VkPhysicalDeviceVulkan12Features supported12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+    VkPhysicalDeviceVulkan12Features enabled12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+    const bool has_12 = app.apiVersion >= VK_API_VERSION_1_2 && chosen.apiVersion >= VK_API_VERSION_1_2;
+    if (has_12) {
+      VkPhysicalDeviceFeatures2 features2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+      features2.pNext = &supported12;
+      vkGetPhysicalDeviceFeatures2(ctx_.physical, &features2);
+      enabled12.drawIndirectCount = supported12.drawIndirectCount;
+    }
     VkDeviceCreateInfo dci{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+    dci.pNext = has_12 ? &enabled12 : nullptr;
     dci.queueCreateInfoCount = 1;
     dci.pQueueCreateInfos = &qci;
     dci.pEnabledFeatures = &enabled;
@@ -118,6 +141,7 @@ OffscreenDevice::OffscreenDevice(bool want_validation) {
       throw NoVulkanDevice("vkCreateDevice on " + device_name_ + " failed (VkResult " + std::to_string(r) + ")");
     vkGetDeviceQueue(ctx_.device, ctx_.queue_family, 0, &ctx_.queue);
     ctx_.multi_draw_indirect = enabled.multiDrawIndirect == VK_TRUE;
+    ctx_.draw_indirect_count = enabled12.drawIndirectCount == VK_TRUE;
   } catch (...) {
     destroy();
     throw;

@@ -25,14 +25,19 @@ struct DeviceContext {
   // VkPhysicalDeviceFeatures::multiDrawIndirect was enabled on `device` (OffscreenDevice and
   // the OpenXR host, apps/xr_host, enable it where supported).
   bool multi_draw_indirect = false;
+  // Vulkan 1.2's drawIndirectCount was enabled on `device` (vkCmdDrawIndexedIndirectCount:
+  // FrameRenderer::draw_indirect_count; OffscreenDevice enables it where supported).
+  bool draw_indirect_count = false;
 };
 
 class OffscreenDevice {
  public:
-  // Prefers a CPU device (lavapipe), else the first with a graphics queue. Enables
-  // VK_LAYER_KHRONOS_validation when asked and installed (messages: validation_messages()).
-  // Throws NoVulkanDevice when there is no loader, no ICD or no graphics-capable device.
-  explicit OffscreenDevice(bool want_validation = true);
+  // Prefers a CPU device (lavapipe), else the first with a graphics queue; with prefer_gpu, a
+  // discrete GPU, then an integrated one, then any other (benchmarks meant for real hardware).
+  // Enables VK_LAYER_KHRONOS_validation when asked and installed (messages:
+  // validation_messages()). Throws NoVulkanDevice when there is no loader, no ICD or no
+  // graphics-capable device.
+  explicit OffscreenDevice(bool want_validation = true, bool prefer_gpu = false);
   ~OffscreenDevice();
   OffscreenDevice(const OffscreenDevice&) = delete;
   OffscreenDevice& operator=(const OffscreenDevice&) = delete;

@@ -81,17 +81,7 @@ FrameRenderer::FrameRenderer(const DeviceContext& ctx, const MeshLibrary& meshes
     VkPhysicalDeviceProperties props{};
     vkGetPhysicalDeviceProperties(ctx_.physical, &props);
     max_draw_indirect_count_ = std::max<std::uint32_t>(props.limits.maxDrawIndirectCount, 1);
-    VkCommandPoolCreateInfo pci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-    pci.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-    pci.queueFamilyIndex = ctx_.queue_family;
-    vk_check(vkCreateCommandPool(ctx_.device, &pci, nullptr, &pool_), "vkCreateCommandPool");
-    VkCommandBufferAllocateInfo cai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-    cai.commandPool = pool_;
-    cai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    cai.commandBufferCount = 1;
-    vk_check(vkAllocateCommandBuffers(ctx_.device, &cai, &cmd_), "vkAllocateCommandBuffers");
-    VkFenceCreateInfo fci{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-    vk_check(vkCreateFence(ctx_.device, &fci, nullptr, &fence_), "vkCreateFence");
+    commands_ = std::make_unique<OneShotCommands>(ctx_);
   } catch (...) {
     destroy();
     throw;
@@ -103,42 +93,31 @@ FrameRenderer::~FrameRenderer() {
 }
 
 void FrameRenderer::destroy() {
-  if (fence_) vkDestroyFence(ctx_.device, fence_, nullptr);
-  if (pool_) vkDestroyCommandPool(ctx_.device, pool_, nullptr);  // frees cmd_
+  commands_.reset();
   for (VkFramebuffer fb : framebuffers_) vkDestroyFramebuffer(ctx_.device, fb, nullptr);
   for (VkImageView v : views_) vkDestroyImageView(ctx_.device, v, nullptr);
   destroy_pipeline(ctx_.device, pipeline_);
-  fence_ = VK_NULL_HANDLE;
-  pool_ = VK_NULL_HANDLE;
   cmd_ = VK_NULL_HANDLE;
   framebuffers_.clear();
   views_.clear();
 }
 
-void FrameRenderer::submit_and_wait() {
-  VkSubmitInfo si{VK_STRUCTURE_TYPE_SUBMIT_INFO};
-  si.commandBufferCount = 1;
-  si.pCommandBuffers = &cmd_;
-  vk_check(vkQueueSubmit(ctx_.queue, 1, &si, fence_), "vkQueueSubmit");
-  vk_check(vkWaitForFences(ctx_.device, 1, &fence_, VK_TRUE, UINT64_MAX), "vkWaitForFences");
-  vk_check(vkResetFences(ctx_.device, 1, &fence_), "vkResetFences");
-}
-
-void FrameRenderer::draw(std::uint32_t image_index, const EyeView& view, std::span<const DrawItem> items) {
+DrawConstants FrameRenderer::begin_frame(std::uint32_t image_index, const EyeView& view, bool after_compute) {
   if (image_index >= framebuffers_.size())
     throw RenderError("renderer: image index " + std::to_string(image_index) + " out of range (" +
                       std::to_string(framebuffers_.size()) + " images)");
-  for (const DrawItem& item : items)
-    if (item.mesh >= meshes_.size())
-      throw RenderError("renderer: mesh id " + std::to_string(item.mesh) + " out of range (" +
-                        std::to_string(meshes_.size()) + " meshes)");
-  const glm::mat4 view_proj = glm::mat4(projection_matrix(view.fov, view.near_m, view.far_m) * view_matrix(view.pose));
-  const glm::vec4 eye(glm::vec3(view.pose.position_m), 1.0f);
+  DrawConstants dc{};
+  dc.view_proj = glm::mat4(projection_matrix(view.fov, view.near_m, view.far_m) * view_matrix(view.pose));
+  dc.eye_position = glm::vec4(glm::vec3(view.pose.position_m), 1.0f);
 
-  vk_check(vkResetCommandBuffer(cmd_, 0), "vkResetCommandBuffer");
-  VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-  bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-  vk_check(vkBeginCommandBuffer(cmd_, &bi), "vkBeginCommandBuffer");
+  cmd_ = commands_->begin();
+  if (after_compute) {  // commands a compute pass wrote (earlier in this queue) are read here
+    VkMemoryBarrier b{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    b.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+    b.dstAccessMask = VK_ACCESS_INDIRECT_COMMAND_READ_BIT;
+    vkCmdPipelineBarrier(cmd_, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT, 0, 1, &b, 0,
+                         nullptr, 0, nullptr);
+  }
 
   const glm::vec3 bg = to_target(background_colour(), srgb_);
   std::array<VkClearValue, 2> clear{};
@@ -156,13 +135,42 @@ void FrameRenderer::draw(std::uint32_t image_index, const EyeView& view, std::sp
   const VkDeviceSize offset = 0;
   vkCmdBindVertexBuffers(cmd_, 0, 1, &vb, &offset);
   vkCmdBindIndexBuffer(cmd_, meshes_.index_buffer(), 0, VK_INDEX_TYPE_UINT32);
+  return dc;
+}
 
+void FrameRenderer::end_frame(std::uint32_t image_index) {
+  vkCmdEndRenderPass(cmd_);
+  commands_->submit_and_wait();
+  drawn_[image_index] = true;
+}
+
+void FrameRenderer::draw_indirect_count(std::uint32_t image_index, const EyeView& view, const IndirectCut& cut) {
+  if (!ctx_.draw_indirect_count)
+    throw RenderError("renderer: draw_indirect_count needs Vulkan 1.2's drawIndirectCount, not enabled on this device");
+  if (cut.commands == VK_NULL_HANDLE || cut.count == VK_NULL_HANDLE)
+    throw RenderError("renderer: draw_indirect_count without a command or count buffer");
+  DrawConstants dc = begin_frame(image_index, view, true);
+  dc.center_radius = glm::vec4(cut.center_m, cut.radius_m);
+  dc.colour = glm::vec4(to_target(lod_colour(cut.lod_level), srgb_), 1.0f);
+  vkCmdPushConstants(cmd_, pipeline_.layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof dc,
+                     &dc);
+  vkCmdDrawIndexedIndirectCount(cmd_, cut.commands, cut.commands_offset, cut.count, cut.count_offset, cut.max_draws,
+                                sizeof(VkDrawIndexedIndirectCommand));
+  end_frame(image_index);
+  triangles_last_frame_ = 0;
+  draws_last_frame_ = 0;
+  draw_commands_last_frame_ = 1;
+}
+
+void FrameRenderer::draw(std::uint32_t image_index, const EyeView& view, std::span<const DrawItem> items) {
+  for (const DrawItem& item : items)
+    if (item.mesh >= meshes_.size())
+      throw RenderError("renderer: mesh id " + std::to_string(item.mesh) + " out of range (" +
+                        std::to_string(meshes_.size()) + " meshes)");
+  DrawConstants dc = begin_frame(image_index, view, false);
   const ViewCuller culler(view);
   std::uint64_t triangles = 0;
   std::uint32_t draws = 0;
-  DrawConstants dc{};
-  dc.view_proj = view_proj;
-  dc.eye_position = eye;
   bool pushed = false;
   // The draw being extended: a cluster cut is thousands of items whose ranges follow each other
   // in the index buffer under one set of constants, and lavapipe pays per draw command.
@@ -239,10 +247,7 @@ void FrameRenderer::draw(std::uint32_t image_index, const EyeView& view, std::sp
     if (!merge_draws_) flush();
   }
   flush_batch();
-  vkCmdEndRenderPass(cmd_);
-  vk_check(vkEndCommandBuffer(cmd_), "vkEndCommandBuffer");
-  submit_and_wait();
-  drawn_[image_index] = true;
+  end_frame(image_index);
   triangles_last_frame_ = triangles;
   draws_last_frame_ = draws;
   draw_commands_last_frame_ = draw_commands;
@@ -255,10 +260,7 @@ RgbaImage FrameRenderer::read_back(std::uint32_t image_index) {
   if (readback_.buffer() == VK_NULL_HANDLE) readback_ = HostBuffer(ctx_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
   VkImage image = target_.images[image_index];
 
-  vk_check(vkResetCommandBuffer(cmd_, 0), "vkResetCommandBuffer");
-  VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-  bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-  vk_check(vkBeginCommandBuffer(cmd_, &bi), "vkBeginCommandBuffer");
+  cmd_ = commands_->begin();
   const auto to_src =
       colour_barrier(image, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                      VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT);
@@ -280,8 +282,7 @@ RgbaImage FrameRenderer::read_back(std::uint32_t image_index) {
   vkCmdPipelineBarrier(cmd_, VK_PIPELINE_STAGE_TRANSFER_BIT,
                        VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_HOST_BIT, 0, 0, nullptr, 1,
                        &host, 1, &back);
-  vk_check(vkEndCommandBuffer(cmd_), "vkEndCommandBuffer");
-  submit_and_wait();
+  commands_->submit_and_wait();
 
   RgbaImage out;
   out.width = target_.width;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "render/camera.hpp"
+#include "render/device_buffer.hpp"
 #include "render/device_context.hpp"
 #include "render/gpu_memory.hpp"
 #include "render/mesh_library.hpp"
@@ -15,6 +16,7 @@
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -36,6 +38,20 @@ struct DrawItem {
   std::uint32_t lod_level = 0;  // picks the tint (lod_palette.hpp); kMarkerLevel for markers
 };
 
+// A cut whose draws the GPU wrote (ClusterSelectPass, render/cluster_select_pass.hpp):
+// VkDrawIndexedIndirectCommands into one buffer, their number into another. Drawn under one set
+// of constants: one placement of the cluster mesh's unit frame and one tint for every cluster.
+struct IndirectCut {
+  glm::vec3 center_m{0.0f};
+  float radius_m = 0.0f;
+  std::uint32_t lod_level = 0;  // the tint
+  VkBuffer commands = VK_NULL_HANDLE;
+  VkDeviceSize commands_offset = 0;
+  VkBuffer count = VK_NULL_HANDLE;  // a uint32_t
+  VkDeviceSize count_offset = 0;
+  std::uint32_t max_draws = 0;  // commands the buffer holds (ClusterSelectPass::command_capacity)
+};
+
 class FrameRenderer {
  public:
   // `meshes` must be uploaded and outlive the renderer. Throws RenderError.
@@ -49,6 +65,12 @@ class FrameRenderer {
   // into images[image_index], leaving it in COLOR_ATTACHMENT_OPTIMAL. Throws RenderError for a
   // bad index or mesh id.
   void draw(std::uint32_t image_index, const EyeView& view, std::span<const DrawItem> items);
+
+  // Clears and draws a GPU-built cut with one vkCmdDrawIndexedIndirectCount (after a barrier
+  // from compute shader writes to indirect reads), into images[image_index]. Needs
+  // DeviceContext::draw_indirect_count. The GPU chose the draws: triangles_last_frame() and
+  // draws_last_frame() are 0 after it, draw_commands_last_frame() 1. Throws RenderError.
+  void draw_indirect_count(std::uint32_t image_index, const EyeView& view, const IndirectCut& cut);
 
   // Copies a drawn image to RGBA8 (swizzling BGRA); it stays in COLOR_ATTACHMENT_OPTIMAL.
   RgbaImage read_back(std::uint32_t image_index);
@@ -78,7 +100,11 @@ class FrameRenderer {
   const RenderTarget& target() const { return target_; }
 
  private:
-  void submit_and_wait();
+  // The frame's command buffer up to the bound pipeline and buffers inside the cleared render
+  // pass (first a compute-to-indirect barrier when asked), and the constants every draw shares;
+  // then its end, submitted and waited for.
+  DrawConstants begin_frame(std::uint32_t image_index, const EyeView& view, bool after_compute);
+  void end_frame(std::uint32_t image_index);
   void destroy();
 
   DeviceContext ctx_;
@@ -91,9 +117,8 @@ class FrameRenderer {
   std::vector<VkImageView> views_;
   std::vector<VkFramebuffer> framebuffers_;
   std::vector<bool> drawn_;
-  VkCommandPool pool_ = VK_NULL_HANDLE;
-  VkCommandBuffer cmd_ = VK_NULL_HANDLE;
-  VkFence fence_ = VK_NULL_HANDLE;
+  std::unique_ptr<OneShotCommands> commands_;  // each frame and read-back: record, submit, wait
+  VkCommandBuffer cmd_ = VK_NULL_HANDLE;       // the one being recorded
   HostBuffer readback_;
   std::uint64_t triangles_last_frame_ = 0;
   std::uint32_t draws_last_frame_ = 0, draw_commands_last_frame_ = 0;

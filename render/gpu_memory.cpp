@@ -15,22 +15,42 @@ std::uint32_t find_memory_type(VkPhysicalDevice physical, std::uint32_t type_bit
   throw RenderError("no Vulkan memory type with property flags " + std::to_string(flags));
 }
 
-HostBuffer::HostBuffer(const DeviceContext& ctx, VkDeviceSize size_bytes, VkBufferUsageFlags usage)
-    : device_(ctx.device), size_(size_bytes) {
+BoundBuffer create_bound_buffer(const DeviceContext& ctx, VkDeviceSize size_bytes, VkBufferUsageFlags usage,
+                                VkMemoryPropertyFlags flags, bool any_type_fallback) {
+  BoundBuffer b;
   try {
     VkBufferCreateInfo bci{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
     bci.size = size_bytes > 0 ? size_bytes : 4;  // Vulkan forbids empty buffers
     bci.usage = usage;
     bci.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-    vk_check(vkCreateBuffer(device_, &bci, nullptr, &buffer_), "vkCreateBuffer");
+    vk_check(vkCreateBuffer(ctx.device, &bci, nullptr, &b.buffer), "vkCreateBuffer");
     VkMemoryRequirements req{};
-    vkGetBufferMemoryRequirements(device_, buffer_, &req);
+    vkGetBufferMemoryRequirements(ctx.device, b.buffer, &req);
     VkMemoryAllocateInfo mai{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
     mai.allocationSize = req.size;
-    mai.memoryTypeIndex = find_memory_type(ctx.physical, req.memoryTypeBits,
-                                           VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
-    vk_check(vkAllocateMemory(device_, &mai, nullptr, &memory_), "vkAllocateMemory (buffer)");
-    vk_check(vkBindBufferMemory(device_, buffer_, memory_, 0), "vkBindBufferMemory");
+    try {
+      mai.memoryTypeIndex = find_memory_type(ctx.physical, req.memoryTypeBits, flags);
+    } catch (const RenderError&) {
+      if (!any_type_fallback) throw;
+      mai.memoryTypeIndex = find_memory_type(ctx.physical, req.memoryTypeBits, 0);
+    }
+    vk_check(vkAllocateMemory(ctx.device, &mai, nullptr, &b.memory), "vkAllocateMemory (buffer)");
+    vk_check(vkBindBufferMemory(ctx.device, b.buffer, b.memory, 0), "vkBindBufferMemory");
+  } catch (...) {
+    if (b.buffer) vkDestroyBuffer(ctx.device, b.buffer, nullptr);
+    if (b.memory) vkFreeMemory(ctx.device, b.memory, nullptr);
+    throw;
+  }
+  return b;
+}
+
+HostBuffer::HostBuffer(const DeviceContext& ctx, VkDeviceSize size_bytes, VkBufferUsageFlags usage)
+    : device_(ctx.device), size_(size_bytes) {
+  const BoundBuffer b = create_bound_buffer(ctx, size_bytes, usage,
+                                            VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+  buffer_ = b.buffer;
+  memory_ = b.memory;
+  try {
     vk_check(vkMapMemory(device_, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_), "vkMapMemory");
   } catch (...) {
     reset();

@@ -15,6 +15,16 @@ namespace gazelod::render {
 // Index of a memory type allowed by `type_bits` with all of `flags`; throws RenderError.
 std::uint32_t find_memory_type(VkPhysicalDevice physical, std::uint32_t type_bits, VkMemoryPropertyFlags flags);
 
+// A buffer of size_bytes (at least 4: Vulkan forbids empty buffers) bound to its own memory of a
+// type with all of `flags` (with `any_type_fallback`, of any type where none has them). Throws
+// RenderError, leaving nothing behind. HostBuffer's and DeviceBuffer's (device_buffer.hpp).
+struct BoundBuffer {
+  VkBuffer buffer = VK_NULL_HANDLE;
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+};
+BoundBuffer create_bound_buffer(const DeviceContext& ctx, VkDeviceSize size_bytes, VkBufferUsageFlags usage,
+                                VkMemoryPropertyFlags flags, bool any_type_fallback = false);
+
 class HostBuffer {
  public:
   HostBuffer() = default;

@@ -58,6 +58,7 @@ expect=(
   "$libdir/cmake/gazelod/gazelodTargets.cmake"
   "$libdir/pkgconfig/gazelod.pc"
   "$runtime_lib_rel" "$manifest_rel" "$bindir/gazelod"
+  share/gazelod/shaders/cluster_select.comp share/gazelod/shaders/cluster_select_gpu.h
 )
 for f in "${expect[@]}"; do
   [[ -e $prefix/$f ]] || fail "not installed: $f"
@@ -99,6 +100,17 @@ for h in gazelod.h gazelod.hpp; do
   echo "#include <gazelod/$h>" | "$cxx" -std=c++17 -pedantic -Wall -Wextra -Werror -fsyntax-only -I"$prefix/include" -x c++ - ||
     fail "$h does not compile alone as C++17"
 done
+
+step "the GPU selection's interface header compiles alone (C99, C++17); its shader compiles"
+shaders=$prefix/share/gazelod/shaders
+cc -std=c99 -pedantic -Wall -Wextra -Werror -fsyntax-only -x c "$shaders/cluster_select_gpu.h" ||
+  fail "cluster_select_gpu.h does not compile alone as C99"
+"$cxx" -std=c++17 -pedantic -Wall -Wextra -Werror -fsyntax-only -x c++ "$shaders/cluster_select_gpu.h" ||
+  fail "cluster_select_gpu.h does not compile alone as C++17"
+if command -v glslangValidator > /dev/null; then
+  glslangValidator -V --target-env vulkan1.1 -o "$work/cluster_select.spv" "$shaders/cluster_select.comp" > /dev/null ||
+    fail "the installed cluster_select.comp does not compile"
+fi
 
 export XR_RUNTIME_JSON=$prefix/$manifest_rel
 export GAZELOD_SIM_PACED=0

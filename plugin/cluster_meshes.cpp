@@ -6,28 +6,32 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 namespace gazelod::plugin {
 
+ClusterMeshes::ClusterMeshes()
+    : selector_(std::min(kClusterThreads, std::max(1u, std::thread::hardware_concurrency()))) {}
+
 std::uint32_t ClusterMeshes::add(const ClusterMeshDesc& desc) {
-  const std::size_t first = store_.size();
-  const std::uint32_t id = store_.add_mesh(desc.hierarchy, desc.pose, desc.velocity_m_s, desc.index_count);
-  const std::size_t n = store_.size();
+  const std::size_t first = instances_.size();
+  const std::uint32_t hierarchy = instances_.add_hierarchy(desc.hierarchy, desc.index_count);
+  const std::uint32_t id = instances_.add_instance(hierarchy, desc.pose, desc.velocity_m_s);
+  const std::size_t n = instances_.size();
   first_.push_back(static_cast<std::uint32_t>(first));
-  local_.push_back(desc.hierarchy);
   for (auto* v : {&perceptual_, &limited_, &invisible_, &drawn_, &held_, &record_held_}) v->resize(n, 0);
-  record_flags_.resize(store_.record_count(), 0);
   self_window_s_.resize(n, 0.0);
   parent_window_s_.resize(n, 0.0);
-  const lod::ClusterSet set = store_.view();
+  bytes_incremental_ = false;  // new clusters, and the arrays may have moved
+  const lod::ClusterHierarchy& h = instances_.hierarchy(hierarchy);
   // A new mesh starts at its finest cut with no coarsening window open; its first frame then
   // draws its perceptual cut (nothing was drawn before, so there is no switch to hide).
   const std::size_t count = n - first;
   const lod::ClusterSwitchState state{std::span(record_held_).subspan(first, count),
                                       std::span(self_window_s_).subspan(first, count),
                                       std::span(parent_window_s_).subspan(first, count)};
-  const std::string err = lod::reset_cluster_switch_state(state, set.self_error_m.subspan(first, count),
-                                                          set.parent_error_m.subspan(first, count));
+  // The errors in the mesh's own space: which are 0 does not depend on the pose.
+  const std::string err = lod::reset_cluster_switch_state(state, h.self_error_m, h.parent_error_m);
   if (!err.empty()) throw std::invalid_argument("gazelod plugin: cluster mesh: " + err);
   draw_finest(std::span(drawn_).subspan(first, count), first);
   new_from_ = std::min(new_from_, first);
@@ -35,30 +39,35 @@ std::uint32_t ClusterMeshes::add(const ClusterMeshDesc& desc) {
 }
 
 void ClusterMeshes::set_motion(std::uint32_t id, const lod::InstanceTransform& pose, const glm::dvec3& velocity_m_s) {
-  if (id >= local_.size())
+  if (id >= instances_.instance_count())
     throw std::out_of_range("gazelod plugin: cluster mesh " + std::to_string(id) + " is not registered (" +
-                            std::to_string(local_.size()) + " are)");
+                            std::to_string(instances_.instance_count()) + " are)");
   try {
-    store_.set_pose(id, local_[id], pose, velocity_m_s);
+    instances_.set_pose(id, pose, velocity_m_s);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument("gazelod plugin: cluster mesh " + std::to_string(id) + ": " + e.what());
   }
 }
 
 void ClusterMeshes::draw_finest(std::span<std::uint8_t> out, std::size_t first) const {
-  const lod::ClusterSet set = store_.view();
-  for (std::size_t i = 0; i < out.size(); ++i)
-    out[i] = (set.self_error_m[first + i] == 0.0f && set.parent_error_m[first + i] != 0.0f) ? 1 : 0;
+  for (std::uint32_t k = 0; k < instances_.instance_count(); ++k) {
+    const lod::ClusterInstance& inst = instances_.instance(k);
+    const lod::ClusterHierarchy& h = instances_.hierarchy(inst.hierarchy);
+    if (inst.first_cluster < first || inst.first_cluster + h.size() > first + out.size()) continue;
+    std::uint8_t* to = out.data() + (inst.first_cluster - first);
+    for (std::size_t i = 0; i < h.size(); ++i)
+      to[i] = (h.self_error_m[i] == 0.0f && h.parent_error_m[i] != 0.0f) ? 1 : 0;
+  }
 }
 
 void ClusterMeshes::update(const lod::Viewer& viewer, const lod::SwitchPolicyConfig* policy, double t_s,
                            bool suppressed) {
-  const std::size_t n = store_.size();
+  const std::size_t n = instances_.size();
   policy_used_ = policy != nullptr;
   if (n == 0) return;
-  const lod::ClusterSet set = store_.view();
-  const lod::ClusterDecisions out{perceptual_, limited_, {}, {}, {}, invisible_, record_flags_};
-  if (!lod::select_clusters(viewer, set, out).empty()) {
+  const lod::ClusterCutBytes out{perceptual_, limited_, invisible_, bytes_incremental_};
+  bytes_incremental_ = selector_.select(viewer, instances_, out).empty();
+  if (!bytes_incremental_) {
     // The core refused this frame's viewer: the finest cut rather than a guess.
     draw_finest(perceptual_, 0);
     std::fill(limited_.begin(), limited_.end(), static_cast<std::uint8_t>(lod::Criterion::invalid_input));

@@ -4,7 +4,8 @@
 #   bash scripts/setup.sh run    install, build, run the main job
 #   bash scripts/setup.sh test   install, build, run every test (also under ASan + UBSan, TSan)
 # Build folders: build/ (release), build-asan/ (ASan+UBSan, unit tests only), build-tsan/
-# (ThreadSanitizer, the HID reader thread's tests and the cluster bake's thread pool).
+# (ThreadSanitizer, the HID reader thread's tests and the cluster bake's and selection's thread
+# pools).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 what="${1:-}"
@@ -46,11 +47,12 @@ case "$what" in
       "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -g1 -DGAZELOD_NO_CLONES" -- gazelod_unit_tests
     ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
       ctest --test-dir build-asan --output-on-failure -j"$jobs" -L unit --timeout 600
-    echo "== HID reader thread, the cluster bake's thread pool and the C ABI's threads under ThreadSanitizer =="
+    echo "== HID reader thread, the cluster bake's and selection's thread pools and the C ABI's threads under ThreadSanitizer =="
     # GAZELOD_NO_CLONES here too: the selection kernels' ifunc resolvers would run inside
     # libgazelod.so before the ThreadSanitizer runtime is set up (test_capi crashed loading it).
     build build-tsan -DGAZELOD_TSAN=ON -DGAZELOD_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=Debug \
-      "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -g1 -DGAZELOD_NO_CLONES" -- test_hid test_faults test_bake_clusters test_capi
+      "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -g1 -DGAZELOD_NO_CLONES" -- test_hid test_faults test_bake_clusters test_capi \
+      test_lod_cluster_bvh
     # Repeated: a test that reads what a thread publishes before it is published fails only
     # sometimes (issue #40 item 11; 50 repeats ran clean before this landed, bench/RESULTS.md).
     TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 ./build-tsan/tests/hid/test_hid --gtest_repeat=10 --gtest_brief=1
@@ -58,6 +60,9 @@ case "$what" in
       --gtest_repeat=10 --gtest_brief=1
     # The C ABI: an application thread registering and reading beside the render thread.
     TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 ./build-tsan/tests/capi/test_capi --gtest_filter='CApiThreads.*'
+    # The cluster selection's thread pool: the same cut on 1, 2 and 4 threads.
+    TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 ./build-tsan/tests/lod/test_lod_cluster_bvh \
+      --gtest_filter='ClusterSelectorThreads.*' --gtest_repeat=10 --gtest_brief=1
     TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 ./build-tsan/tests/bake/test_bake_clusters \
       --gtest_filter='ClusterBuild.SameHierarchyOnAnyThreadCount*:ClusterBuild.OpenGridSimplifiesItsRimWithoutCrack:SharedPositions.TiledTerrainKeepsTileSeamsAndSimplifiesTheRim:ClusterGltf.SideBySideBuildsWriteTheSameFile'
     echo "== every libFuzzer target builds (clang, ASan+UBSan) and runs 10 s from its seeds =="

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // gazelod renderer: flat LOD tint with headlight shading, so the point facing the eye has
 // exactly the tint and the silhouette darkens to the ambient share.
 #version 450

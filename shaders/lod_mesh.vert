@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // gazelod renderer: one unit-sphere mesh per LOD level, placed and scaled per draw
 // (push constants), in the eye's Vulkan clip space.
 #version 450

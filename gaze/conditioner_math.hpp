@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: Apache-2.0
+// Small numeric guards the gaze conditioner's files share (gaze_conditioner.cpp: samples in;
+// conditioner_predict.cpp: the estimate at the display time). Internal to gaze/.
+#pragma once
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/vec3.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+namespace gazelod::gaze::detail {
+
+inline bool finite3(const glm::dvec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+// Unit quaternion, or false when q is not finite or (near) zero.
+inline bool normalized_quat(const glm::dquat& q, glm::dquat& out) {
+  const double n2 = q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z;
+  if (!std::isfinite(n2) || !(n2 > 1e-18)) return false;
+  const double n = std::sqrt(n2);
+  out = glm::dquat(q.w / n, q.x / n, q.y / n, q.z / n);
+  return std::isfinite(out.w) && std::isfinite(out.x) && std::isfinite(out.y) && std::isfinite(out.z);
+}
+
+// Unit vector, or false when v is not finite or (near) zero.
+inline bool normalized_dir(const glm::dvec3& v, glm::dvec3& out) {
+  if (!finite3(v)) return false;
+  const double n = glm::length(v);
+  if (!std::isfinite(n) || !(n > 1e-9)) return false;
+  out = v / n;
+  return finite3(out);
+}
+
+// a - b without overflow (saturating).
+inline std::int64_t sat_sub(std::int64_t a, std::int64_t b) {
+  std::int64_t r = 0;
+  if (__builtin_sub_overflow(a, b, &r))
+    return a > b ? std::numeric_limits<std::int64_t>::max() : std::numeric_limits<std::int64_t>::min();
+  return r;
+}
+
+// Smoothing factor of an exponential average with time constant tau over a step dt (1 when
+// tau is zero: no smoothing).
+inline double ema_alpha(double dt_s, double tau_s) {
+  if (!(tau_s > 0.0)) return 1.0;
+  if (!(dt_s > 0.0)) return 0.0;
+  return 1.0 - std::exp(-dt_s / tau_s);
+}
+
+}  // namespace gazelod::gaze::detail

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// GazelodTest.cs: the C# bindings (bindings/csharp/Gazelod.cs) against libgazelod, as an engine
+// GazelodTest.cs: the C# bindings (bindings/csharp/Gazelod*.cs) against libgazelod, as an engine
 // would use them. A console program:
 //   mono gazelod_csharp_test.exe <struct sizes file> <gazelod.h> [--skip-openxr]
 //   layout     every struct's Marshal.SizeOf and every field's Marshal.OffsetOf equal the C
@@ -176,7 +176,7 @@ static class GazelodTest
             }
         }
         // Every struct the C# side declares must have been measured in C (a struct added to
-        // Gazelod.cs but not to struct_sizes.c would go unchecked).
+        // Gazelod.Types.cs but not to struct_sizes.c would go unchecked).
         var declared = assembly.GetTypes()
             .Where(t => t.Namespace == "Gazelod" && t.Name.StartsWith("gzl_") && t.IsValueType && !t.IsEnum)
             .Select(t => t.Name).ToList();

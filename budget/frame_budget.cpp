@@ -48,7 +48,7 @@ std::string validate_frame_budget_options(const FrameBudgetOptions& o) {
 }
 
 FrameBudget::FrameBudget(std::vector<std::vector<lod::LodLevel>> chains, double budget_ms,
-                         const FrameBudgetOptions& options)
+                         const FrameBudgetOptions& options, std::size_t cluster_meshes)
     : chains_(std::move(chains)),
       budget_ms_(checked_budget(budget_ms)),
       options_(checked_options(options)),
@@ -81,11 +81,18 @@ FrameBudget::FrameBudget(std::vector<std::vector<lod::LodLevel>> chains, double 
     }
     frame_.add_subset(items);
   }
+  // Cluster mesh c: subset object_count + c, its steps coarsest first (costs written per frame).
+  items.assign(kClusterSteps, budget::MckpItem{});
+  for (std::size_t j = 0; j < kClusterSteps; ++j) items[j].profit = static_cast<double>(j + 1);
+  for (std::size_t c = 0; c < cluster_meshes; ++c) frame_.add_subset(items);
   frame_.capacity = budget_ms_;
   budget::IncrementalScheduler::Options so;
   so.drop_ip_dominated = false;  // profits change every frame: keep every level
   scheduler_.reset(frame_, so);
-  prev_choice_.assign(chains_.size(), 0);
+  prev_choice_.assign(chains_.size() + cluster_meshes, 0);
+  cluster_pred_tris_.assign(cluster_meshes, 0.0);
+  cluster_fit_tris_.assign(cluster_meshes, 0.0);
+  cluster_pixels_.assign(cluster_meshes, 0.0);
   last_lod_.assign(chains_.size(), 0);
   last_pixels_.assign(chains_.size(), 0.0);
 }
@@ -101,7 +108,38 @@ FrameBudget::MsCoefficients FrameBudget::ms_coefficients() const {
 
 std::string FrameBudget::choose(std::span<const std::uint8_t> perceptual_lod, std::span<const BudgetObjectView> view,
                                 std::span<std::uint8_t> out_lod) {
+  return choose(perceptual_lod, view, out_lod, {}, {});
+}
+
+// Mesh c's steps as subset object_count + c, coarsest first: cost under the fit, benefit
+// size_px * importance * sqrt(triangles_k / triangles_0) capped at 1 (as an object's).
+void FrameBudget::write_cluster_items(const MsCoefficients& coeff, std::span<const BudgetClusterView> clusters) {
   const std::size_t n = chains_.size();
+  for (std::size_t c = 0; c < clusters.size(); ++c) {
+    const BudgetClusterView& v = clusters[c];
+    const double px = clean(v.size_px, 0.0, 1e12, 0.0);
+    const double importance = clean(v.importance, 0.0, 1.0, 0.0);
+    const double root0 = std::sqrt(std::max(clean(v.triangles[0], 0.0, 1e15, 0.0), 1.0));
+    const double value = px * importance / root0;
+    cluster_pixels_[c] = px;
+    budget::MckpItem* items = frame_.items.data() + frame_.subset_offsets[n + c];
+    for (std::size_t j = 0; j < kClusterSteps; ++j) {
+      const std::size_t step = kClusterSteps - 1 - j;
+      const double tris = clean(v.triangles[step], 0.0, 1e15, 0.0);
+      items[j].profit = value * std::min(std::sqrt(std::max(tris, 1.0)), root0);
+      items[j].cost = fs_cost_ms(coeff, tris, kClusterVerticesPerTriangle * tris, px);
+    }
+  }
+}
+
+std::string FrameBudget::choose(std::span<const std::uint8_t> perceptual_lod, std::span<const BudgetObjectView> view,
+                                std::span<std::uint8_t> out_lod, std::span<const BudgetClusterView> clusters,
+                                std::span<std::uint8_t> out_step) {
+  const std::size_t n = chains_.size();
+  if (clusters.size() != cluster_pred_tris_.size() || out_step.size() != cluster_pred_tris_.size())
+    return "frame budget: choose() needs " + std::to_string(cluster_pred_tris_.size()) +
+           " cluster meshes in both spans, got " + std::to_string(clusters.size()) + " views and " +
+           std::to_string(out_step.size()) + " outputs";
   if (perceptual_lod.size() != n || view.size() != n || out_lod.size() != n)
     return "frame budget: choose() needs " + std::to_string(n) + " objects in every span, got " +
            std::to_string(perceptual_lod.size()) + " perceptual levels, " + std::to_string(view.size()) + " views, " +
@@ -146,6 +184,7 @@ std::string FrameBudget::choose(std::span<const std::uint8_t> perceptual_lod, st
     // Start from last frame's level, but never above this frame's perceptual ceiling.
     prev_choice_[k] = std::min<std::uint32_t>(prev_choice_[k], static_cast<std::uint32_t>(m - 1 - p));
   }
+  write_cluster_items(coeff, clusters);
 
   budget::SolveLimits limits;
   limits.max_moves = options_.max_moves;
@@ -166,6 +205,16 @@ std::string FrameBudget::choose(std::span<const std::uint8_t> perceptual_lod, st
     last_lod_[k] = level;
     cost_ms += level_cost_ms(coeff, level_first_[k] + level, last_pixels_[k]);
   }
+  for (std::size_t c = 0; c < clusters.size(); ++c) {
+    std::uint32_t j = solution_.choice[n + c];
+    if (infeasible_ || j == budget::kNoItem) j = 0;  // the coarsest step
+    prev_choice_[n + c] = j;
+    const std::size_t step = kClusterSteps - 1 - j;
+    out_step[c] = static_cast<std::uint8_t>(step);
+    const double tris = clean(clusters[c].triangles[step], 0.0, 1e15, 0.0);
+    cluster_pred_tris_[c] = cluster_fit_tris_[c] = tris;
+    cost_ms += fs_cost_ms(coeff, tris, kClusterVerticesPerTriangle * tris, cluster_pixels_[c]);
+  }
   predicted_ms_ = overhead_ms + cost_ms;
   have_frame_ = true;
   return {};
@@ -179,7 +228,22 @@ bool FrameBudget::observe(double measured_frame_ms) {
     const std::size_t i = level_first_[k] + last_lod_[k];
     budget::add_object(c, level_tris_[i], level_verts_[i], last_pixels_[k], features);
   }
+  for (std::size_t m = 0; m < cluster_fit_tris_.size(); ++m) {
+    const double tris = cluster_fit_tris_[m];
+    budget::add_object(c, tris, kClusterVerticesPerTriangle * tris, cluster_pixels_[m], features);
+  }
   return rls_.update(features, measured_frame_ms * 1e-3);
+}
+
+}  // namespace gazelod::budget
+
+namespace gazelod::budget {
+
+bool FrameBudget::record_cluster_triangles(std::span<const double> drawn_triangles) {
+  if (drawn_triangles.size() != cluster_fit_tris_.size()) return false;
+  for (std::size_t c = 0; c < drawn_triangles.size(); ++c)
+    cluster_fit_tris_[c] = clean(drawn_triangles[c], 0.0, 1e15, 0.0);
+  return true;
 }
 
 }  // namespace gazelod::budget

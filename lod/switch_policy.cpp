@@ -50,17 +50,33 @@ std::string validate_switch_config(const SwitchPolicyConfig& config) {
 std::string apply_switch_policy(const SwitchPolicyConfig& config, double t_s, bool suppressed,
                                 std::span<const std::uint8_t> perceptual, const SwitchState& state,
                                 std::span<std::uint8_t> held) {
+  return apply_switch_policy(config, t_s, suppressed, perceptual, {}, state, held);
+}
+
+std::string apply_switch_policy(const SwitchPolicyConfig& config, double t_s, bool suppressed,
+                                std::span<const std::uint8_t> perceptual, std::span<const std::uint8_t> motion_level,
+                                const SwitchState& state, std::span<std::uint8_t> held) {
   if (std::string err = validate_switch_config(config); !err.empty()) return "apply_switch_policy: " + err;
   const std::size_t n = perceptual.size();
   if (std::string err = check_state("apply_switch_policy", state, n); !err.empty()) return err;
   if (!held.empty() && held.size() != n) return switch_length_error("apply_switch_policy", "held", held.size(), n);
+  if (!motion_level.empty() && motion_level.size() != n)
+    return switch_length_error("apply_switch_policy", "motion_level", motion_level.size(), n);
 
   const SwitchHold st = switch_hold(config, t_s, suppressed);
+  // Only in timed frames, like every other coarsening (a frame without time changes nothing).
+  const bool by_motion = config.release_by_motion && !motion_level.empty() && st.timed;
 
   for (std::size_t i = 0; i < n; ++i) {
     const std::uint8_t p = perceptual[i];
     std::uint8_t d = state.drawn[i];
     HoldReason why = HoldReason::none;
+    if (by_motion && p > d) {
+      // The part of the coarsening that size and motion alone justify needs no hold: it is not
+      // a guess about the gaze, so the gaze estimate's noise cannot make it flicker.
+      const std::uint8_t m = std::min(p, motion_level[i]);
+      if (m > d) state.drawn[i] = d = m;
+    }
     if (p <= d) {
       // Same or finer: draw it now; no coarser level allowed, so any window closes.
       state.drawn[i] = p;

@@ -13,9 +13,10 @@
 //     suppressed (the caller's flag: a saccade, up to ~60 ms after it, or a blink) and
 //     coarsens then, or anyway once max_deferral_s more has passed.
 // So the drawn level is never coarser than this frame's perceptual level, coarsenings of one
-// object are at least coarsen_hold_s apart on a monotonic clock (at most 1 / coarsen_hold_s per
-// object-second; refinements are not limited), and a coarsening comes at most hold + deferral
-// after the window opened. docs/perceptual-model.md ("Switch policy") has the defaults' sources.
+// object (without release_by_motion) are at least coarsen_hold_s apart on a monotonic clock
+// (at most 1 / coarsen_hold_s per object-second; refinements are not limited), and a
+// coarsening comes at most hold + deferral after the window opened. docs/perceptual-model.md
+// ("Switch policy") has the defaults' sources.
 //
 // API (plain data in, caller-owned arrays, no allocation, no hidden state, linear time):
 //   std::vector<std::uint8_t> drawn(n), finest(n), held(n);  std::vector<double> start(n);
@@ -24,6 +25,8 @@
 //   each frame: select_lods(...) -> lod;
 //     std::string err = apply_switch_policy(config, t_s, suppressed, lod, state, held);
 //     draw drawn[i]; held[i] says why it differs from lod[i] (HoldReason).
+//   with release_by_motion: apply_switch_policy(config, t_s, suppressed, lod, motion_level, state,
+//     held), motion_level from lod/motion_bound.hpp.
 // One new object: reset_switch_state on a SwitchState of one-entry subspans.
 // Validation: apply_switch_policy and reset_switch_state refuse an invalid config or spans of
 // different lengths with a message and write nothing. A non-finite t_s is a frame in which no
@@ -75,6 +78,25 @@ struct SwitchPolicyConfig {
   // audit of `gazelod run`: a 30 ms hold here keeps ~25 % more triangles than the eye needs,
   // because the window has often closed before the hold is over.)
   double suppressed_hold_s = 0.0;
+  // Draw at once a coarsening that motion alone justifies (the overload of apply_switch_policy
+  // with motion_level): up to the level the object's size and retinal speed allow with the
+  // eccentricity criterion off, which no gaze direction can make finer. The hold and the
+  // deferral are there for the gaze estimate's noise; this level does not depend on the gaze
+  // direction, and while the head sweeps the field is blurred, so a pop is masked. What it
+  // still depends on is the eye's estimated rotation (lod/motion_bound.hpp). Such a coarsening
+  // is not bound by the hold's rate limit. Off by default: on the scenario family it saved
+  // almost nothing, and where it trusted the eye's estimated motion it broke the degradation
+  // target (docs/evaluation.md, "Scenario family").
+  bool release_by_motion = false;
+  // With release_by_motion: take the motion level at the conditioner's estimate of the eye's
+  // rotation only (true), or the finer of that and an eye at rest in the head (false), so that a
+  // late or wrong eye-velocity estimate (a pursuit's end, a saccade read as motion) releases
+  // nothing the head's own motion does not also blur (lod/motion_bound.hpp).
+  bool motion_trusts_eye_velocity = false;
+  // Without motion_trusts_eye_velocity: also the level with the eye at rest in the world (a
+  // vestibulo-ocular reflex holding the world still while the head turns, which the tracker
+  // reports a latency late), so that only motion blurring every eye motion is released.
+  bool motion_eye_may_hold_world = true;
 };
 
 // "" when valid (both times finite and >= 0), else which field and why.
@@ -99,6 +121,17 @@ struct SwitchState {
 // t_s before an open window's start (the clock went back) restarts that window at t_s.
 [[nodiscard]] std::string apply_switch_policy(const SwitchPolicyConfig& config, double t_s, bool suppressed,
                                               std::span<const std::uint8_t> perceptual, const SwitchState& state,
+                                              std::span<std::uint8_t> held);
+
+// The same, with motion_level[i] (empty: none) the level that size and motion alone allow object
+// i this frame, independent of the gaze direction (lod/motion_bound.hpp). With
+// config.release_by_motion, a coarser perceptual level is drawn at once up to min(perceptual[i],
+// motion_level[i]) in any timed frame; what lies beyond keeps the hold and the deferral (its
+// window, if one is open, goes on). Refused, writing nothing, where motion_level is neither empty
+// nor perceptual's length.
+[[nodiscard]] std::string apply_switch_policy(const SwitchPolicyConfig& config, double t_s, bool suppressed,
+                                              std::span<const std::uint8_t> perceptual,
+                                              std::span<const std::uint8_t> motion_level, const SwitchState& state,
                                               std::span<std::uint8_t> held);
 
 // Every object: draw `level`, no window open (registration, reset). Returns "" or, for spans

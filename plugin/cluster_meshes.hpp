@@ -7,8 +7,16 @@
 // lod::select_clusters_local) and the cut drawn after the switch policy
 // (lod::apply_cluster_switch_policy), in arrays the plugin hands out as FrameDecisions::cluster_*.
 // All allocation happens at registration (and in the first frames, while the cut's lists grow).
+//
+// With a frame budget (docs/cluster-budget.md), each mesh is an item of the budget's MCKP: after
+// update(), measure() counts each mesh's triangles and budget_view() predicts every coarsening
+// step's (budget/cluster_cut_cost.hpp, from the mesh's hierarchy); apply_steps() then selects,
+// in the same frame, the meshes the budget coarsened at their detail scale, and drawn() is that
+// cut (every other mesh keeps update()'s).
 #pragma once
 
+#include "budget/cluster_cut_cost.hpp"
+#include "budget/frame_budget.hpp"
 #include "lod/cluster/cluster_instances.hpp"
 #include "lod/cluster/cluster_selector.hpp"
 #include "lod/cluster/cluster_switch_policy.hpp"
@@ -39,13 +47,39 @@ class ClusterMeshes {
   // viewer or policy input draws the finest cut (every source cluster), never a guess.
   void update(const lod::Viewer& viewer, const lod::SwitchPolicyConfig* policy, double t_s, bool suppressed);
 
-  std::span<const std::uint8_t> drawn() const { return policy_used_ ? drawn_ : perceptual_; }
+  // After apply_steps() with a step > 0: the budgeted cut (and its reasons; held 0 for a
+  // coarsened mesh, whose cut is the budget's, not the policy's).
+  std::span<const std::uint8_t> drawn() const { return budget_used_ ? final_drawn_ : update_drawn(); }
   std::span<const std::uint8_t> perceptual() const { return perceptual_; }
-  std::span<const std::uint8_t> limited_by() const { return limited_; }
-  std::span<const std::uint8_t> held() const { return held_; }
+  std::span<const std::uint8_t> limited_by() const { return budget_used_ ? final_limited_ : limited_; }
+  std::span<const std::uint8_t> held() const { return budget_used_ ? final_held_ : held_; }
   std::span<const std::uint32_t> first_cluster() const { return first_; }
 
+  // Frame budget, after update(): per mesh, the triangles of this frame's perceptual cut and of
+  // the cut update() drew (the switch policy's), by one pass over the cluster bytes.
+  void measure();
+  // Mesh m's budget item: its projected area (the bounding sphere's, in pixels at px_per_deg,
+  // at most max_px: a mesh around the eye fills the view, not more) and the predicted
+  // triangles of every step (ClusterCutCost::predict_steps of its hierarchy).
+  budget::BudgetClusterView budget_view(std::uint32_t mesh, const glm::dvec3& eye_m, double px_per_deg,
+                                        double max_px) const;
+  // Selects the meshes with steps[m] > 0 at detail scale kClusterStepScale[steps[m]] (lod::
+  // ClusterSelector with per-instance scales, into arrays of its own), so that drawn() is the
+  // budgeted cut, and counts their triangles. All steps 0 (or steps not one per mesh): drawn()
+  // stays update()'s, bit for bit. A refused selection keeps update()'s cut and returns why.
+  [[nodiscard]] std::string apply_steps(const lod::Viewer& viewer, std::span<const std::uint8_t> steps);
+  // No budget this frame: drawn() is update()'s.
+  void clear_steps();
+  std::span<const double> perceptual_triangles() const { return perceptual_tris_; }
+  // The triangles each mesh draws (after apply_steps: the budgeted cut's).
+  std::span<const double> drawn_triangles() const { return drawn_tris_; }
+  std::span<const std::uint8_t> steps() const { return steps_; }
+  std::span<const float> detail_scale() const { return scale_f_; }
+
  private:
+  std::span<const std::uint8_t> update_drawn() const { return policy_used_ ? drawn_ : perceptual_; }
+  // Triangles of the clusters of mesh m set in bytes.
+  double triangles_of(std::uint32_t mesh, std::span<const std::uint8_t> bytes) const;
   // The finest consistent cut (every source cluster) into out, clusters [first, first + out.size()).
   void draw_finest(std::span<std::uint8_t> out, std::size_t first) const;
 
@@ -59,6 +93,24 @@ class ClusterMeshes {
   bool bytes_incremental_ = false;
   std::size_t new_from_ = 0;  // clusters [new_from_, size) have not had their first frame
   bool policy_used_ = false;
+
+  // Frame budget: per hierarchy its cut-cost ladder and bounding sphere (its own space); per
+  // mesh the triangles, step and scale; the second selector and its cut.
+  struct Bound {
+    glm::dvec3 center{0.0};
+    double radius = 0.0;
+  };
+  std::vector<budget::ClusterCutCost> cut_cost_;
+  std::vector<budget::ClusterStepElasticity> elasticity_;  // per mesh
+  std::vector<Bound> bound_;
+  std::vector<double> perceptual_tris_, update_tris_, drawn_tris_, scale_;
+  std::vector<std::uint8_t> steps_;
+  std::vector<float> scale_f_;
+  lod::ClusterSelector budget_selector_;
+  std::vector<std::uint8_t> budget_drawn_, budget_limited_, budget_invisible_;
+  std::vector<std::uint8_t> final_drawn_, final_limited_, final_held_;
+  bool budget_bytes_incremental_ = false;
+  bool budget_used_ = false;
 };
 
 }  // namespace gazelod::plugin

@@ -7,6 +7,7 @@
 #include "gaze/gaze_conditioner.hpp"
 #include "lod/cone.hpp"
 #include "lod/criterion.hpp"
+#include "lod/select.hpp"
 #include "lod/switch_policy.hpp"
 #include "plugin/gaze_source_kind.hpp"
 
@@ -39,11 +40,20 @@ struct FrameDecisions {
   // clusters of this frame's cut (after the switch policy), which covers every mesh exactly
   // once, without cracks; cluster_limited_by the criterion that let the cluster's own error go
   // (values as limited_by); cluster_held why a coarser cut waits (values as held; empty
-  // without the policy). The frame budget does not apply to clusters.
+  // without the policy). With a frame budget, cluster_drawn is the budgeted cut (below).
   std::span<const std::uint8_t> cluster_drawn;
   std::span<const std::uint8_t> cluster_limited_by;
   std::span<const std::uint8_t> cluster_held;
   std::span<const std::uint32_t> cluster_first;
+  // With a frame budget (PluginConfig::budget_ms > 0; empty without), per cluster mesh in
+  // registration order: the coarsening step the budget chose (0 = the cut above as the
+  // perceptual rule and the switch policy give it; k > 0: the perceptual rule with every error
+  // of the mesh divided by cluster_detail_scale = 2^(k/2), budget/cluster_cut_cost.hpp) and
+  // that scale. cluster_drawn already is that cut. A renderer that selects the cut itself (on
+  // the GPU) applies it by dividing the mesh's error factor by the scale (lod::detail::
+  // make_cluster_mesh_frame's detail_scale: ClusterMeshFrame::error_factor); docs/cluster-budget.md.
+  std::span<const std::uint8_t> cluster_budget_step;
+  std::span<const float> cluster_detail_scale;
   GazeSourceKind gaze_source = GazeSourceKind::head_fixed;
   bool gaze_valid = false;  // false: head-fixed gaze with the widened cone
 };
@@ -77,10 +87,17 @@ struct FrameDiagnostics {
   double gaze_error_deg = 0.0;
   lod::Cone foveal_cone;
   double xi_cpd = 0.0;  // the display limit used this frame (lod/display.hpp)
+  // The viewer this frame's selection used (objects and clusters alike): what a GPU-driven
+  // cluster selection (render/cluster_select_frame.hpp) needs to choose the same cut.
+  lod::Viewer viewer;
   // With a frame budget: the frame time the cost model predicts for FrameDecisions::lod, and
   // whether even the coarsest levels were predicted over the budget.
   double predicted_ms = 0.0;
   bool budget_infeasible = false;
+  // With a frame budget, per cluster mesh: the triangles the budget predicted for its chosen
+  // step and those its drawn cut has (the prediction's error, docs/cluster-budget.md).
+  std::span<const double> cluster_triangles_predicted;
+  std::span<const double> cluster_triangles_drawn;
 };
 
 }  // namespace gazelod

@@ -218,11 +218,12 @@ const FrameDecisions& LodCore::decide(const FrameInput& in) {
     (void)lod::select_lods(sv, store_.view(), breakdown_sv_out_);
   }
 
-  apply_switch_policy(in.t_ns, diag_.gaze_suppressed);
-  apply_budget();
+  apply_switch_policy(v, in.t_ns, diag_.gaze_suppressed);
   // Cluster meshes: the same viewer, per cluster; the same hysteresis on their records.
-  clusters_.update(v, config_.switch_policy ? &config_.switching : nullptr, frame_seconds(in.t_ns),
-                   diag_.gaze_suppressed);
+  const bool cluster_policy = config_.switch_policy && config_.cluster_switch_policy;
+  clusters_.update(v, cluster_policy ? &config_.switching : nullptr, frame_seconds(in.t_ns), diag_.gaze_suppressed);
+  // Objects and cluster meshes under one budget: after the cluster cut, which it may coarsen.
+  apply_budget(v);
   publish_clusters();
 
   diag_.gaze_bad_samples = primary_conditioner_.bad_samples() + external_conditioner_.bad_samples();
@@ -235,6 +236,7 @@ const FrameDecisions& LodCore::decide(const FrameInput& in) {
   diag_.foveal_cone =
       lod::make_foveal_cone(v.eye_position_m, v.gaze_direction, lod::kEccentricitySeamDeg, diag_.gaze_error_deg);
   diag_.xi_cpd = xi_cpd_;
+  diag_.viewer = v;
   diag_.head_valid = head.valid;
   return frame_;
 }
@@ -251,13 +253,14 @@ double LodCore::frame_seconds(std::int64_t t_ns) {
 void LodCore::publish_clusters() {
   frame_.cluster_drawn = clusters_.drawn();
   frame_.cluster_limited_by = clusters_.limited_by();
-  frame_.cluster_held = config_.switch_policy ? clusters_.held() : std::span<const std::uint8_t>();
+  frame_.cluster_held =
+      config_.switch_policy && config_.cluster_switch_policy ? clusters_.held() : std::span<const std::uint8_t>();
   frame_.cluster_first = clusters_.first_cluster();
   diag_.cluster_drawn_perceptual = clusters_.perceptual();
 }
 
 // Refinement at once, coarsening after the hold and preferably while vision is suppressed.
-void LodCore::apply_switch_policy(std::int64_t t_ns, bool suppressed) {
+void LodCore::apply_switch_policy(const lod::Viewer& v, std::int64_t t_ns, bool suppressed) {
   if (!config_.switch_policy) return;
   const double t_s = frame_seconds(t_ns);
   // An object's first frame draws its perceptual level: nothing was drawn before, so there is
@@ -268,7 +271,17 @@ void LodCore::apply_switch_policy(std::int64_t t_ns, bool suppressed) {
       switch_started_[i] = 1;
     }
   const lod::SwitchState state{switch_drawn_, switch_finest_, switch_window_s_};
-  if (!lod::apply_switch_policy(config_.switching, t_s, suppressed, lod_, state, held_).empty()) {
+  // What size and motion alone allow the objects about to be held (lod/motion_bound.hpp). A
+  // refusal (only for a viewer select_lods refused too, when lod_ is all 0) releases nothing.
+  std::span<const std::uint8_t> motion_level;
+  if (config_.switching.release_by_motion) {
+    motion_level_.resize(lod_.size());
+    const bool any_eye = !config_.switching.motion_trusts_eye_velocity;
+    const lod::EyeHypotheses also{any_eye, any_eye && config_.switching.motion_eye_may_hold_world};
+    if (lod::motion_bound_levels(v, store_.view(), lod_, switch_drawn_, motion_scratch_, motion_level_, also).empty())
+      motion_level = motion_level_;
+  }
+  if (!lod::apply_switch_policy(config_.switching, t_s, suppressed, lod_, motion_level, state, held_).empty()) {
     // Cannot happen (the constructor checked the configuration, resize_outputs keeps the sizes
     // equal); were it refused, draw the perceptual choice.
     std::copy(lod_.begin(), lod_.end(), switch_drawn_.begin());
@@ -283,29 +296,53 @@ std::span<const std::uint8_t> LodCore::policy_lod() const {
 
 // The budget pass: the perceptual levels are the finest worth drawing; the solver coarsens
 // them until the predicted frame time fits. Benefit grows with projected area (pixels); a
-// disabled object is not drawn, so it has none.
-void LodCore::apply_budget() {
+// disabled object is not drawn, so it has none. Cluster meshes are items of the same solve
+// (docs/cluster-budget.md): each mesh's coarsening steps, predicted from its hierarchy, and
+// the chosen step's cut selected in this frame (ClusterMeshes::apply_steps).
+void LodCore::apply_budget(const lod::Viewer& v) {
   diag_.predicted_ms = 0.0;
   diag_.budget_infeasible = false;
-  if (!(config_.budget_ms > 0.0) || store_.size() == 0) return;
+  const std::size_t meshes = clusters_.mesh_count();
+  if (!(config_.budget_ms > 0.0) || (store_.size() == 0 && meshes == 0)) return;
   // Built at the first frame after a registration (one rebuild for many add_object calls). It
   // cannot throw: budget_ms and the options passed the constructor's check, every chain
   // ObjectStore::add's (1 to 255 levels).
-  if (!budget_) budget_ = std::make_unique<budget::FrameBudget>(chains_, config_.budget_ms, config_.budget);
+  if (budget_ && budget_->cluster_mesh_count() != meshes) budget_.reset();  // a mesh was added
+  if (!budget_) budget_ = std::make_unique<budget::FrameBudget>(chains_, config_.budget_ms, config_.budget, meshes);
   const double px_per_deg = 2.0 * xi_cpd_;  // xi = pixels / (2 * FOV)
   for (std::size_t i = 0; i < store_.size(); ++i) {
     const double r_px = static_cast<double>(angular_radius_deg_[i]) * px_per_deg;
     budget_view_[i].size_px = std::isfinite(r_px) && enabled_[i] ? std::numbers::pi * r_px * r_px : 0.0;
     budget_view_[i].importance = std::clamp(importance_[i], 0.0, 1.0);
   }
-  if (!budget_->choose(policy_lod(), budget_view_, budget_lod_).empty()) {
+  // A cluster mesh's projected area is at most a view's pixels (one filling the view).
+  double view_px = 0.0;
+  for (std::uint32_t i = 0; i < view_count_; ++i)
+    view_px = std::max(view_px, double(views_[i].width_px) * double(views_[i].height_px));
+  clusters_.measure();
+  cluster_view_.resize(meshes);  // grows at registration's first frame only
+  cluster_step_.resize(meshes);
+  for (std::uint32_t m = 0; m < meshes; ++m)
+    cluster_view_[m] = clusters_.budget_view(m, v.eye_position_m, px_per_deg, view_px > 0.0 ? view_px : 1e12);
+  if (!budget_->choose(policy_lod(), budget_view_, budget_lod_, cluster_view_, cluster_step_).empty()) {
     // Cannot happen (every span has the store's size, every level comes from its own chain);
     // were it refused, draw the perceptual choice rather than guess.
     std::copy(policy_lod().begin(), policy_lod().end(), budget_lod_.begin());
+    clusters_.clear_steps();
     return;
   }
+  // A refused scaled selection (the viewer passed the same check in update()) keeps the cut
+  // update() drew: the cost fit then sees those triangles.
+  (void)clusters_.apply_steps(v, cluster_step_);
+  (void)budget_->record_cluster_triangles(clusters_.drawn_triangles());  // sizes match: one per mesh
   diag_.budget_infeasible = budget_->infeasible();
   diag_.predicted_ms = budget_->predicted_ms();
+  cluster_predicted_tris_.resize(meshes);
+  for (std::uint32_t m = 0; m < meshes; ++m) cluster_predicted_tris_[m] = budget_->cluster_predicted_triangles(m);
+  frame_.cluster_budget_step = clusters_.steps();
+  frame_.cluster_detail_scale = clusters_.detail_scale();
+  diag_.cluster_triangles_predicted = cluster_predicted_tris_;
+  diag_.cluster_triangles_drawn = clusters_.drawn_triangles();
 }
 
 // xi from the views' FOV and the resolution rendered: the finest view decides (an inset's

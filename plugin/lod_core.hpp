@@ -10,6 +10,7 @@
 #include "gaze/gaze_conditioner.hpp"
 #include "gaze/gaze_source.hpp"
 #include "lod/display.hpp"
+#include "lod/motion_bound.hpp"
 #include "lod/object_set.hpp"
 #include "lod/select.hpp"
 #include "plugin/cluster_meshes.hpp"
@@ -110,9 +111,9 @@ class LodCore {
   double frame_seconds(std::int64_t t_ns);
   void condition_gaze(const HeadMotion& head, std::int64_t t_ns, lod::Viewer& v);
   void publish_clusters();
-  void apply_switch_policy(std::int64_t t_ns, bool suppressed);
+  void apply_switch_policy(const lod::Viewer& v, std::int64_t t_ns, bool suppressed);
   std::span<const std::uint8_t> policy_lod() const;
-  void apply_budget();
+  void apply_budget(const lod::Viewer& v);
   void update_display(const FrameInput& in);
   void resize_outputs();
 
@@ -143,11 +144,18 @@ class LodCore {
   std::vector<float> angular_radius_deg_;
   std::vector<std::uint8_t> switch_drawn_, switch_finest_, held_, switch_started_;
   std::vector<double> switch_window_s_;
+  // release_by_motion: each frame's size-and-motion level of the policy's candidates.
+  std::vector<std::uint8_t> motion_level_;
+  lod::MotionBoundScratch motion_scratch_;
   bool have_t0_ = false;
   std::int64_t t0_ns_ = 0;
   std::vector<std::uint8_t> budget_lod_;
   std::vector<budget::BudgetObjectView> budget_view_;
   std::unique_ptr<budget::FrameBudget> budget_;
+  // Cluster meshes in the budget: per mesh its item, the chosen step, the predicted triangles.
+  std::vector<budget::BudgetClusterView> cluster_view_;
+  std::vector<std::uint8_t> cluster_step_;
+  std::vector<double> cluster_predicted_tris_;
 
   glm::dquat last_head_orientation_{1.0, 0.0, 0.0, 0.0};
   glm::dvec3 last_head_position_{0.0};

@@ -59,6 +59,11 @@ struct PluginConfig {
   // perceptual choice (levels then flip with the tracker's noise).
   bool switch_policy = true;
   lod::SwitchPolicyConfig switching;
+  // Off: cluster meshes draw each frame's perceptual cut without the switch policy (objects keep
+  // it). For a renderer that selects the cut itself on the GPU (shaders/cluster_select.comp,
+  // docs/gpu-selection.md): the shader keeps no history, so the CPU's decisions match what it
+  // draws only without the hold.
+  bool cluster_switch_policy = true;
   // Frame budget (ms, 0 = none): after the perceptual selection, Mason's (1999) incremental
   // solver coarsens levels so the predicted frame time (a cost model fit online from
   // end_frame's measured times) stays under the budget. Never finer than the perceptual choice.

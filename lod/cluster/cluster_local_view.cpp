@@ -40,12 +40,14 @@ std::string local_view(const Viewer& world, const ClusterInstance& instance, Loc
   return {};
 }
 
-OneInstanceSet::OneInstanceSet(const ClusterHierarchy& h, const glm::dvec3& velocity_m_s, double finest_error_m)
+OneInstanceSet::OneInstanceSet(const ClusterHierarchy& h, const glm::dvec3& velocity_m_s, double finest_error_m,
+                               double detail_scale)
     : count_(static_cast<std::uint32_t>(h.size())),
       vx_(velocity_m_s.x),
       vy_(velocity_m_s.y),
       vz_(velocity_m_s.z),
-      finest_(finest_error_m) {
+      finest_(finest_error_m),
+      detail_scale_(detail_scale) {
   set_.self_center_x_m = h.self_center_x_m, set_.self_center_y_m = h.self_center_y_m;
   set_.self_center_z_m = h.self_center_z_m, set_.self_radius_m = h.self_radius_m;
   set_.self_error_m = h.self_error_m;
@@ -55,16 +57,18 @@ OneInstanceSet::OneInstanceSet(const ClusterHierarchy& h, const glm::dvec3& velo
   set_.mesh_first_cluster = {&first_, 1}, set_.mesh_cluster_count = {&count_, 1};
   set_.mesh_vel_x_m_s = {&vx_, 1}, set_.mesh_vel_y_m_s = {&vy_, 1}, set_.mesh_vel_z_m_s = {&vz_, 1};
   set_.mesh_finest_error_m = {&finest_, 1};
+  set_.mesh_detail_scale = {&detail_scale_, 1};
 }
 
-LocalFrames local_frames(const LocalView& view, double finest_error_m) {
+LocalFrames local_frames(const LocalView& view, double finest_error_m, double detail_scale) {
   const ClusterHierarchy none;  // make_cluster_mesh_frame reads the mesh's velocity and finest error only
   const OneInstanceSet one(none, view.mesh_velocity, finest_error_m);
-  return {detail::make_cluster_frame(view.viewer), detail::make_cluster_mesh_frame(view.viewer, one.set(), 0)};
+  return {detail::make_cluster_frame(view.viewer),
+          detail::make_cluster_mesh_frame(view.viewer, one.set(), 0, detail_scale)};
 }
 
-std::string select_clusters_local(const Viewer& viewer, const ClusterInstances& instances,
-                                  const ClusterDecisions& out) {
+std::string select_clusters_local(const Viewer& viewer, const ClusterInstances& instances, const ClusterDecisions& out,
+                                  std::span<const double> detail_scale) {
   const std::size_t n = instances.size();
   const bool per_criterion =
       !out.drawn_size_only.empty() || !out.drawn_eccentricity_only.empty() || !out.drawn_velocity_only.empty();
@@ -74,6 +78,7 @@ std::string select_clusters_local(const Viewer& viewer, const ClusterInstances& 
       (!out.record_invisible.empty() && out.record_invisible.size() < n))
     return "decisions: an output is shorter than the cluster count (" + std::to_string(n) + ")";
   if (std::string e = validate_viewer(viewer); !e.empty()) return "viewer: " + e;
+  if (std::string e = check_detail_scales(detail_scale, instances.instance_count()); !e.empty()) return e;
   const auto part = [](std::span<std::uint8_t> s, std::size_t first, std::size_t count) {
     return s.empty() ? s : s.subspan(first, count);
   };
@@ -83,7 +88,8 @@ std::string select_clusters_local(const Viewer& viewer, const ClusterInstances& 
     LocalView view;
     if (std::string e = local_view(viewer, inst, view); !e.empty())
       return "instance " + std::to_string(k) + ": viewer: " + e;
-    const OneInstanceSet one(h, view.mesh_velocity, instances.bvh(inst.hierarchy).finest_error_m);
+    const OneInstanceSet one(h, view.mesh_velocity, instances.bvh(inst.hierarchy).finest_error_m,
+                             detail_scale.empty() ? 1.0 : detail_scale[k]);
     const std::size_t first = inst.first_cluster, count = h.size();
     const ClusterDecisions mine{part(out.drawn, first, count),
                                 part(out.limited_by, first, count),

@@ -47,27 +47,31 @@ struct LocalFrames {
   detail::ClusterFrame frame;
   detail::ClusterMeshFrame mesh;
 };
-LocalFrames local_frames(const LocalView& view, double finest_error_m);
+// detail_scale: the instance's (ClusterSet::mesh_detail_scale; 1 the perceptual cut), in [1, 1e6].
+LocalFrames local_frames(const LocalView& view, double finest_error_m, double detail_scale = 1.0);
 
 // A hierarchy as a one-mesh ClusterSet (no distinct records) with a velocity: what select_clusters
 // reads for one instance in its space.
 class OneInstanceSet {
  public:
-  OneInstanceSet(const ClusterHierarchy& h, const glm::dvec3& velocity_m_s, double finest_error_m);
+  OneInstanceSet(const ClusterHierarchy& h, const glm::dvec3& velocity_m_s, double finest_error_m,
+                 double detail_scale = 1.0);
   OneInstanceSet(const OneInstanceSet&) = delete;  // set() points into this object
   OneInstanceSet& operator=(const OneInstanceSet&) = delete;
   const ClusterSet& set() const { return set_; }
 
  private:
   std::uint32_t first_ = 0, count_ = 0;
-  double vx_ = 0.0, vy_ = 0.0, vz_ = 0.0, finest_ = 0.0;
+  double vx_ = 0.0, vy_ = 0.0, vz_ = 0.0, finest_ = 0.0, detail_scale_ = 1.0;
   ClusterSet set_;
 };
 
 // select_clusters over every instance, each in its own space (the clusters numbered as
 // ClusterInstances numbers them); every output of ClusterDecisions but record_flags (not used).
 // Linear in the clusters. "" or the first instance's refusal (outputs then partly written).
+// detail_scale: empty (every instance at 1, the perceptual cut) or one per instance, each in
+// [1, 1e6] (ClusterSet::mesh_detail_scale: a frame budget's coarsening step).
 [[nodiscard]] std::string select_clusters_local(const Viewer& viewer, const ClusterInstances& instances,
-                                                const ClusterDecisions& out);
+                                                const ClusterDecisions& out, std::span<const double> detail_scale = {});
 
 }  // namespace gazelod::lod

@@ -37,6 +37,21 @@ bool finite3(float x, float y, float z) {
   return std::isfinite(x) && std::isfinite(y) && std::isfinite(z);
 }
 
+}  // namespace
+
+std::string check_detail_scales(std::span<const double> detail_scale, std::size_t meshes) {
+  if (detail_scale.empty()) return {};
+  if (detail_scale.size() != meshes)
+    return "mesh_detail_scale has " + std::to_string(detail_scale.size()) + " entries, the set " +
+           std::to_string(meshes) + " meshes";
+  for (std::size_t k = 0; k < meshes; ++k)
+    if (!(detail_scale[k] >= 1.0 && detail_scale[k] <= detail::kMaxClusterDetailScale))
+      return "mesh " + std::to_string(k) + ": detail scale must be in [1, 1e6], got " + std::to_string(detail_scale[k]);
+  return {};
+}
+
+namespace {
+
 // "" or the lengths' problem (select_clusters checks this per frame, validate_clusters too).
 [[nodiscard]] std::string check_lengths(const ClusterSet& c) {
   const std::size_t n = c.size(), m = c.mesh_count();
@@ -48,6 +63,7 @@ bool finite3(float x, float y, float z) {
   if (c.mesh_first_cluster.size() != m || c.mesh_finest_error_m.size() != m ||
       (moving && (c.mesh_vel_x_m_s.size() != m || c.mesh_vel_y_m_s.size() != m || c.mesh_vel_z_m_s.size() != m)))
     return "mesh arrays differ in length (mesh_cluster_count has " + std::to_string(m) + ")";
+  if (std::string e = check_detail_scales(c.mesh_detail_scale, m); !e.empty()) return e;
   // Back to back from 0 over all clusters (O(meshes)): every output byte is written.
   std::size_t next = 0;
   for (std::size_t k = 0; k < m; ++k) {
@@ -138,7 +154,7 @@ ClusterFrame make_cluster_frame(const Viewer& v) {
   return f;
 }
 
-ClusterMeshFrame make_cluster_mesh_frame(const Viewer& v, const ClusterSet& c, std::size_t k) {
+ClusterMeshFrame make_cluster_mesh_frame(const Viewer& v, const ClusterSet& c, std::size_t k, double detail_scale) {
   ClusterMeshFrame mf{};
   const glm::dvec3 vel = c.mesh_vel_x_m_s.empty()
                              ? glm::dvec3{0.0}
@@ -151,6 +167,8 @@ ClusterMeshFrame make_cluster_mesh_frame(const Viewer& v, const ClusterSet& c, s
   const double cap = kErrorFactor * a0 * c.mesh_finest_error_m[k];  // +inf stays +inf
   mf.cap_m = round_down(cap);  // may be below the floor: an error of 0 is decided apart
   mf.cap_combined_m = v.use_size ? std::numeric_limits<float>::infinity() : mf.cap_m;
+  // Division by exactly 1 is exact: the frame's factor, bit for bit, at the perceptual cut.
+  mf.error_factor = round_up(kErrorFactor * kThresholdMargin / detail_scale);
   return mf;
 }
 
@@ -271,7 +289,8 @@ std::string select_clusters(const Viewer& viewer, const ClusterSet& c, const Clu
                                      c.record_radius_m.data(), c.record_error_m.data()};
   detail::RecordBlock self_blk, parent_blk;  // 10 KiB each, reused per block
   for (std::size_t k = 0; k < c.mesh_count(); ++k) {
-    const detail::ClusterMeshFrame mesh = detail::make_cluster_mesh_frame(viewer, c, k);
+    const double detail_scale = c.mesh_detail_scale.empty() ? 1.0 : c.mesh_detail_scale[k];
+    const detail::ClusterMeshFrame mesh = detail::make_cluster_mesh_frame(viewer, c, k, detail_scale);
     const std::size_t end = std::size_t{c.mesh_first_cluster[k]} + c.mesh_cluster_count[k];
     if (by_record && end > c.mesh_first_cluster[k]) {
       // Each distinct record once (with the per-criterion cuts: every criterion's outcome;

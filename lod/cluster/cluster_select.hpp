@@ -91,6 +91,12 @@ struct ClusterSet {
   std::span<const float> record_center_x_m, record_center_y_m, record_center_z_m, record_radius_m, record_error_m;
   std::span<const std::uint32_t> self_record, parent_record;
   std::span<const std::uint32_t> mesh_first_record, mesh_record_count;
+  // (Last, so positional initialisers of the fields above still work.) Optional, empty or one per mesh: the mesh's
+  // detail scale s in [1, 1e6] (empty: 1 for every mesh, the perceptual cut). s divides every error of the mesh before
+  // the rule, so the mesh's cut coarsens as if the largest invisible error at each point were s times larger: a frame
+  // budget's coarsening steps (budget/cluster_cut_cost.hpp). A larger s never draws a finer
+  // cluster; the cut stays consistent (the errors keep their nesting).
+  std::span<const double> mesh_detail_scale;
 
   std::size_t size() const { return self_error_m.size(); }
   std::size_t mesh_count() const { return mesh_cluster_count.size(); }
@@ -118,6 +124,10 @@ struct ClusterDecisions {
 // The smallest positive error among the records (+inf if there is none finite): a mesh's
 // mesh_finest_error_m.
 double finest_cluster_error_m(std::span<const float> self_error_m, std::span<const float> parent_error_m);
+
+// "" when detail_scale is empty or holds one value in [1, 1e6] per mesh, else the first bad one
+// (select_clusters checks this per frame: linear in the meshes, no allocation when "").
+[[nodiscard]] std::string check_detail_scales(std::span<const double> detail_scale, std::size_t meshes);
 
 // "" when the set is consistent, else a message naming the first bad cluster (or mesh) and
 // field: span lengths, finite centres, radii and errors >= 0 (parent error +inf allowed), self

@@ -25,6 +25,11 @@
 // per-criterion cuts it sets the self bit wherever the parent's is set, by the nesting).
 // tests/lod/cluster_bvh_test.cpp checks the cut bit for bit against the linear pass on walks,
 // fast head turns and saccades included.
+// A detail scale s (a frame budget's step, ClusterMeshFrame::error_factor) divides the node's
+// error and every parent error below it alike: the argument holds for the errors e / s (the
+// node's 1.01 E / s still bounds every e / s below it), and the kernel rounds the factor as it
+// rounds K (up), so its guarantee against the exact rule is the same.
+// tests/budget/cluster_scale_test.cpp checks the scaled cut against the linear pass too.
 #include "lod/cluster/cluster_select_bvh.hpp"
 
 #include "lod/cluster/cluster_local_view.hpp"
@@ -36,17 +41,17 @@
 
 namespace gazelod::lod::detail {
 
-std::string make_bvh_frames(const Viewer& world, const ClusterInstance& instance, double finest_error_m,
-                            BvhFrames& out) {
+std::string make_bvh_frames(const Viewer& world, const ClusterInstance& instance, double finest_error_m, BvhFrames& out,
+                            double detail_scale) {
   LocalView view;
   if (std::string e = local_view(world, instance, view); !e.empty()) return e;
-  const LocalFrames own = local_frames(view, finest_error_m);
+  const LocalFrames own = local_frames(view, finest_error_m, detail_scale);
   LocalView harder = view;
   harder.viewer.eye_velocity_m_s *= kBvhNodeVelocityFactor;
   harder.viewer.head_angular_velocity_rad_s *= kBvhNodeVelocityFactor;
   harder.viewer.gaze_angular_velocity_in_head_rad_s *= kBvhNodeVelocityFactor;
   harder.mesh_velocity *= kBvhNodeVelocityFactor;
-  const LocalFrames nodes = local_frames(harder, finest_error_m);
+  const LocalFrames nodes = local_frames(harder, finest_error_m, detail_scale);
   out = {own.frame, nodes.frame, own.mesh, nodes.mesh};
   return {};
 }

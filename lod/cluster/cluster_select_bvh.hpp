@@ -35,9 +35,10 @@ struct BvhFrames {
   ClusterFrame frame, node_frame;
   ClusterMeshFrame mesh, node_mesh;
 };
-// "" or why not (local_view's refusal).
+// "" or why not (local_view's refusal). detail_scale: the instance's, in [1, 1e6] (1: the
+// perceptual cut), applied to its nodes and clusters alike (ClusterMeshFrame::error_factor).
 [[nodiscard]] std::string make_bvh_frames(const Viewer& world, const ClusterInstance& instance, double finest_error_m,
-                                          BvhFrames& out);
+                                          BvhFrames& out, double detail_scale = 1.0);
 
 // Per-cluster outputs indexed by global cluster id, each null or covering every cluster.
 struct BvhBytes {

@@ -69,8 +69,10 @@ struct Geometry {
 
 // Size alone lets the error go (a0 e K < d, a0 = +inf with size off): then so does the
 // combined rule (A <= a0), which therefore includes this very comparison.
-[[gnu::always_inline]] inline bool by_size(const ClusterFrame& f, float e, float dn) {
-  return f.static_limit_cpd * (e * f.error_factor) < dn;
+// The error factor is the mesh's (ClusterMeshFrame::error_factor: the frame's, divided by the
+// mesh's detail scale), so that a budget's coarser step scales every error of the mesh alike.
+[[gnu::always_inline]] inline bool by_size(const ClusterFrame& f, float error_factor, float e, float dn) {
+  return f.static_limit_cpd * (e * error_factor) < dn;
 }
 
 // The screen (RecordScreen::trivial or by_size, cluster_select_kernel.hpp): every record whose
@@ -80,19 +82,20 @@ struct Geometry {
 // set only for an error of 0 (invisible under any criterion): the limiting criterion is size
 // there whatever they would be, so they are not computed.
 template <bool kAll, bool kBySize>
-[[gnu::always_inline]] inline void screen_loop(const ClusterFrame& f, const RecordInput& in, std::size_t begin,
-                                               std::size_t count, RecordBlock& out) {
+[[gnu::always_inline]] inline void screen_loop(const ClusterFrame& f, const ClusterMeshFrame& m, const RecordInput& in,
+                                               std::size_t begin, std::size_t count, RecordBlock& out) {
   const float* __restrict cx = in.center_x_m + begin;
   const float* __restrict cy = in.center_y_m + begin;
   const float* __restrict cz = in.center_z_m + begin;
   const float* __restrict rad = in.radius_m + begin;
   const float* __restrict err = in.error_m + begin;
   constexpr float kInfF = std::numeric_limits<float>::infinity();
+  const float k_err = m.error_factor;
   GAZELOD_IVDEP  // no overlap (select_kernel.hpp)
       for (std::size_t i = 0; i < count; ++i) {
     const float e = err[i];
     const Geometry g = geometry(f, cx[i], cy[i], cz[i], rad[i], e);
-    const bool zero = e == 0.0f, never = e == kInfF, size_ok = kBySize && by_size(f, e, g.dn);
+    const bool zero = e == 0.0f, never = e == kInfF, size_ok = kBySize && by_size(f, k_err, e, g.dn);
     const bool decided = !g.ok | zero | never | size_ok;
     const bool invisible = g.ok & (zero | size_ok);
     out.combined[i] = invisible ? 1.0f : 0.0f;
@@ -183,7 +186,7 @@ template <bool kAll>
                                                  std::size_t count, RecordBlock& out) {
   const float* __restrict err = in.error_m + begin;
   const float on_e = f.on_eccentricity, on_v = f.on_velocity;
-  const float s = f.scale, s_xi = f.scale_xi_cpd, k_err = f.error_factor;
+  const float s = f.scale, s_xi = f.scale_xi_cpd, k_err = m.error_factor;
   // s 60 rounded as s G is (G <= 60): then each criterion alone letting an error go implies the
   // combined rule does, exactly, as it does exactly.
   const float s_60 = s * kMaxCpdF;
@@ -212,7 +215,7 @@ template <bool kAll>
     const float b = e * k_err;
     const float x_xi = s_xi * b, x_g = (s * g) * b;
     const float dist_c = dn < cap_c ? dn : cap_c;
-    const bool size_ok = by_size(f, e, dn), zero = e == 0.0f;  // 0 goes even at a 0 cap
+    const bool size_ok = by_size(f, k_err, e, dn), zero = e == 0.0f;  // 0 goes even at a 0 cap
     const bool comb =
         size_ok | zero | (x_xi < dist_c) | (x_g < dist_c) | (beyond & (kMNumeratorF * x_g < dist_c * mq2));
     out.combined[j] = (ok & comb) ? 1.0f : 0.0f;
@@ -243,8 +246,8 @@ template <bool kAll>
                                             std::size_t begin, std::size_t count, RecordScreen how,
                                             const float* implied, RecordBlock& out) {
   const bool screen = how != RecordScreen::none;
-  if (how == RecordScreen::by_size) screen_loop<kAll, true>(f, in, begin, count, out);
-  if (how == RecordScreen::trivial) screen_loop<kAll, false>(f, in, begin, count, out);
+  if (how == RecordScreen::by_size) screen_loop<kAll, true>(f, m, in, begin, count, out);
+  if (how == RecordScreen::trivial) screen_loop<kAll, false>(f, m, in, begin, count, out);
   // A record implied invisible is left out of the full evaluation (and set below, after it).
   const bool imply = screen && implied != nullptr;
   if (imply) {

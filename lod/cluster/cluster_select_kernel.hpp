@@ -63,18 +63,33 @@ struct ClusterFrame {
   float on_eccentricity, on_velocity;                // 0 / 1
 };
 
-// Per mesh: its velocity relative to the eye, and the size-off distance cap (metres) at which
+// Per mesh: its velocity relative to the eye, the size-off distance cap (metres) at which
 // its finest error sits at the static limit a0 (rounded down; +inf where size is on, for the
-// combined rule: cap_combined_m).
+// combined rule: cap_combined_m), and the factor its errors are multiplied by.
 struct ClusterMeshFrame {
   float rel_vel_m_s[3], rel_speed_m_s;  // |V| rounded up
   float cap_m;                          // for the per-criterion decisions (size off)
   float cap_combined_m;                 // cap_m with size off, +inf with size on
+  // K kThresholdMargin / detail_scale, rounded up: ClusterFrame::error_factor, bit for bit, at
+  // detail scale 1 (the perceptual cut). A detail scale s >= 1 (a frame budget's coarsening step,
+  // budget/cluster_cut_cost.hpp) divides every error of the mesh by s, i.e. multiplies the
+  // largest error the acuity rule lets go at each point by s. Every comparison of the kernel is
+  // monotone in this factor, so a larger s never makes a record visible that a smaller one
+  // calls invisible (coarser steps never draw finer clusters), and the rule with errors e / s is
+  // still Reddy's rule on a valid hierarchy (errors divided alike keep their nesting), so the
+  // bounding tree's proof of its subtree skipping (cluster_select_bvh.cpp) holds unchanged.
+  // (The size-off cap is not divided: with size off the scale coarsens only out to it.)
+  float error_factor;
 };
 
-// The constants select_clusters derives (cluster_select.cpp); viewer valid, mesh < mesh count.
+// Largest detail scale a mesh may be given: beyond it the factor would leave float's normal range.
+inline constexpr double kMaxClusterDetailScale = 1e6;
+
+// The constants select_clusters derives (cluster_select.cpp); viewer valid, mesh < mesh count,
+// detail_scale in [1, kMaxClusterDetailScale] (callers check; 1: the perceptual cut).
 ClusterFrame make_cluster_frame(const Viewer& viewer);
-ClusterMeshFrame make_cluster_mesh_frame(const Viewer& viewer, const ClusterSet& clusters, std::size_t mesh);
+ClusterMeshFrame make_cluster_mesh_frame(const Viewer& viewer, const ClusterSet& clusters, std::size_t mesh,
+                                         double detail_scale = 1.0);
 
 // One record per cluster, structure of arrays, indexed [begin, begin + count).
 struct RecordInput {

@@ -2,6 +2,8 @@
 // The frame's cut over shared hierarchies on a thread pool (see cluster_selector.hpp).
 #include "lod/cluster/cluster_selector.hpp"
 
+#include "lod/cluster/cluster_select.hpp"
+
 #include <algorithm>
 #include <thread>
 
@@ -25,8 +27,9 @@ void ClusterSelector::plan(const ClusterInstances& instances) {
 }
 
 std::string ClusterSelector::select(const Viewer& viewer, const ClusterInstances& instances,
-                                    const ClusterCutBytes& bytes) {
+                                    const ClusterCutBytes& bytes, std::span<const double> detail_scale) {
   if (std::string e = validate_viewer(viewer); !e.empty()) return "viewer: " + e;
+  if (std::string e = check_detail_scales(detail_scale, instances.instance_count()); !e.empty()) return e;
   const std::size_t n = instances.size();
   for (std::span<std::uint8_t> s : {bytes.drawn, bytes.limited_by, bytes.record_invisible})
     if (!s.empty() && s.size() < n)
@@ -50,7 +53,8 @@ std::string ClusterSelector::select(const Viewer& viewer, const ClusterInstances
     const ClusterInstance& inst = instances.instance(task.instance);
     const ClusterBvh& bvh = instances.bvh(inst.hierarchy);
     detail::BvhFrames frames;
-    out.error = detail::make_bvh_frames(viewer, inst, bvh.finest_error_m, frames);
+    const double scale = detail_scale.empty() ? 1.0 : detail_scale[task.instance];
+    out.error = detail::make_bvh_frames(viewer, inst, bvh.finest_error_m, frames, scale);
     if (!out.error.empty()) {
       out.drawn.clear(), out.limited_by.clear(), out.runs.clear();
       return;

@@ -62,8 +62,11 @@ class ClusterSelector {
   // One frame. Refuses (with a message) an invalid viewer, byte spans shorter than the cluster
   // count, or an instance whose space cannot hold the eye (cluster_local_view.hpp); after a
   // refusal the outputs are unspecified (the next frame writes every byte).
+  // detail_scale: empty (every instance's perceptual cut) or one value in [1, 1e6] per instance
+  // (ClusterSet::mesh_detail_scale: a frame budget's coarsening step; refused otherwise); the
+  // cut is then select_clusters_local's with the same scales, bit for bit.
   [[nodiscard]] std::string select(const Viewer& viewer, const ClusterInstances& instances,
-                                   const ClusterCutBytes& bytes = {});
+                                   const ClusterCutBytes& bytes = {}, std::span<const double> detail_scale = {});
 
   std::span<const std::uint32_t> drawn() const { return drawn_; }
   std::span<const std::uint8_t> drawn_limited_by() const { return limited_; }

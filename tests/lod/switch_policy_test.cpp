@@ -4,6 +4,10 @@
 // validation, non-finite time, and a seeded randomized check of the invariants.
 #include "lod/switch_policy.hpp"
 
+#include "lod/motion_bound.hpp"
+#include "lod/object_set.hpp"
+#include "lod/select.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -424,6 +428,141 @@ TEST(SwitchPolicyProperty, NeverCoarserThanWindowMinimumAndRateBounded) {
         ASSERT_LE(coarsenings[i], 1.0 + seconds / c.coarsen_hold_s) << trial << " " << i;
     }
   }
+}
+
+// release_by_motion: the part of a coarsening that size and motion alone allow is drawn at once,
+// the rest keeps the hold; off (the default) or without motion levels nothing changes.
+TEST(SwitchPolicy, ReleaseByMotionDrawsTheMotionPartAtOnce) {
+  SwitchPolicyConfig c;  // hold 0.2 s, deferral 0.6 s, suppression preferred
+  EXPECT_FALSE(c.release_by_motion);
+  c.release_by_motion = true;
+  Objects o(3, 0);
+  const std::vector<std::uint8_t> lod{3, 3, 3}, motion{3, 1, 0};
+  ASSERT_EQ(apply_switch_policy(c, 0.0, false, lod, motion, o.state(), o.held), "");
+  EXPECT_EQ(o.drawn, (std::vector<std::uint8_t>{3, 1, 0}));
+  EXPECT_EQ(o.why(0), HoldReason::none);
+  EXPECT_EQ(o.why(1), HoldReason::hold_time);  // 1 -> 3 still waits
+  EXPECT_EQ(o.why(2), HoldReason::hold_time);
+  // The rest of the coarsening follows the ordinary rule: after the hold, in suppression.
+  ASSERT_EQ(apply_switch_policy(c, 0.25, true, lod, motion, o.state(), o.held), "");
+  EXPECT_EQ(o.drawn, (std::vector<std::uint8_t>{3, 3, 3}));
+  // Refinement stays immediate whatever the motion level says.
+  const std::vector<std::uint8_t> fine{0, 0, 0};
+  ASSERT_EQ(apply_switch_policy(c, 0.3, false, fine, motion, o.state(), o.held), "");
+  EXPECT_EQ(o.drawn, fine);
+
+  // Off, or no motion levels: the ordinary policy.
+  for (bool on : {false, true}) {
+    SwitchPolicyConfig off = c;
+    off.release_by_motion = on;
+    Objects p(3, 0);
+    ASSERT_EQ(
+        apply_switch_policy(off, 0.0, false, lod, on ? std::span<const std::uint8_t>() : motion, p.state(), p.held),
+        "");
+    EXPECT_EQ(p.drawn, fine);
+  }
+  // A frame without time releases nothing.
+  Objects q(3, 0);
+  ASSERT_EQ(apply_switch_policy(c, kNaN, false, lod, motion, q.state(), q.held), "");
+  EXPECT_EQ(q.drawn, fine);
+  // A motion level of the wrong length is refused, writing nothing.
+  const std::vector<std::uint8_t> short_motion{3, 3};
+  EXPECT_NE(apply_switch_policy(c, 1.0, false, lod, short_motion, q.state(), q.held).find("motion_level"),
+            std::string::npos);
+  EXPECT_EQ(q.drawn, fine);
+}
+
+// A field of moving and static objects under a head sweep with the eye carried by the head.
+struct MotionField {
+  MotionField() {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    const std::vector<LodLevel> chain{{4000, 0, DetailKind::removed_cycles_per_diameter, 0.0},
+                                      {1000, 0, DetailKind::removed_cycles_per_diameter, 30.0},
+                                      {250, 0, DetailKind::removed_cycles_per_diameter, 15.0},
+                                      {60, 0, DetailKind::removed_cycles_per_diameter, 7.0}};
+    for (int i = 0; i < 300; ++i) {
+      const glm::dvec3 c(20.0 * u(rng), 5.0 * u(rng), -12.0 - 10.0 * u(rng));
+      const glm::dvec3 vel = i % 3 == 0 ? glm::dvec3(3.0 * u(rng), 0.0, 3.0 * u(rng)) : glm::dvec3(0.0);
+      store.add(c, 0.2 + 0.15 * (u(rng) + 1.0), vel, chain);
+    }
+    viewer.xi_cpd = 20.0;
+    viewer.head_angular_velocity_rad_s = glm::dvec3(0.0, 0.7, 0.0);  // a 40 deg/s yaw sweep
+    viewer.gaze_angular_velocity_in_head_rad_s = glm::dvec3(0.0);    // carried: no VOR
+    viewer.tracker_error_deg = 1.0;
+  }
+  std::vector<std::uint8_t> select(const Viewer& v) {
+    const std::size_t n = store.size();
+    std::vector<std::uint8_t> lod(n), a(n), b(n), c(n), d(n);
+    EXPECT_EQ(select_lods(v, store.view(), {lod, a, b, c, d, {}, {}, {}}), "");
+    return lod;
+  }
+  ObjectStore store;
+  Viewer viewer;
+};
+
+// The size-and-motion level is select_lods with eccentricity off, for the candidates only, and
+// no gaze direction or tracker error changes it (what makes it safe to release without the hold).
+TEST(MotionBound, GazeIndependentAndCandidatesOnly) {
+  MotionField f;
+  const std::size_t n = f.store.size();
+  Viewer sv = f.viewer;
+  sv.use_eccentricity = false;
+  const std::vector<std::uint8_t> reference = f.select(sv);
+  std::uint8_t coarsest = 0;
+  for (std::uint8_t l : reference) coarsest = std::max(coarsest, l);
+  ASSERT_GE(coarsest, 2);  // the sweep does coarsen something by motion
+  const std::vector<std::uint8_t> perceptual(n, 3);
+  std::vector<std::uint8_t> drawn(n, 0);
+  for (std::size_t i = 0; i < n; i += 4) drawn[i] = 3;  // not candidates
+  MotionBoundScratch scratch;
+  std::vector<std::uint8_t> out(n, 0xff);
+  ASSERT_EQ(motion_bound_levels(f.viewer, f.store.view(), perceptual, drawn, scratch, out), "");
+  for (std::size_t i = 0; i < n; ++i) ASSERT_EQ(out[i], i % 4 == 0 ? 0 : reference[i]) << i;
+
+  // Any gaze direction and error cone: the same levels.
+  const std::vector<glm::dvec3> gazes{{0, 0, -1}, {0.5, 0.1, -1}, {-0.7, -0.3, -0.4}, {1, 0, 0}, {0, 0, 1}};
+  for (const glm::dvec3& g : gazes)
+    for (double err : {0.0, 2.0, 20.0}) {
+      Viewer v = f.viewer;
+      v.gaze_direction = g;
+      v.tracker_error_deg = err;
+      std::vector<std::uint8_t> o2(n, 0xff);
+      ASSERT_EQ(motion_bound_levels(v, f.store.view(), perceptual, drawn, scratch, o2), "");
+      ASSERT_EQ(o2, out);
+    }
+  // Whereas the eye's rotation does change it: an eye holding the world still (VOR) sees the
+  // static objects without head-sweep blur. The bound trusts the conditioner's motion class.
+  Viewer vor = f.viewer;
+  vor.gaze_angular_velocity_in_head_rad_s = -vor.head_angular_velocity_rad_s;
+  std::vector<std::uint8_t> o3(n, 0xff);
+  ASSERT_EQ(motion_bound_levels(vor, f.store.view(), perceptual, drawn, scratch, o3), "");
+  EXPECT_NE(o3, out);
+
+  // Over the eye rotations the tracker may not yet have told apart: the finest of the levels at
+  // the estimate, at rest in the head and at rest in the world (here the VOR viewer's).
+  Viewer at_rest = f.viewer;
+  at_rest.gaze_angular_velocity_in_head_rad_s = glm::dvec3(0.3, 0.0, 0.1);  // some estimate
+  Viewer at_rest_sv = at_rest;
+  at_rest_sv.use_eccentricity = false;
+  const std::vector<std::uint8_t> est = f.select(at_rest_sv);
+  Viewer carried_sv = sv;  // eye-in-head 0
+  Viewer world_sv = sv;
+  world_sv.gaze_angular_velocity_in_head_rad_s = -f.viewer.head_angular_velocity_rad_s;
+  const std::vector<std::uint8_t> carried = f.select(carried_sv), world = f.select(world_sv);
+  std::vector<std::uint8_t> o5(n, 0xff);
+  ASSERT_EQ(motion_bound_levels(at_rest, f.store.view(), perceptual, drawn, scratch, o5, {true, true}), "");
+  for (std::size_t i = 0; i < n; ++i) ASSERT_EQ(o5[i], i % 4 == 0 ? 0 : std::min({est[i], carried[i], world[i]})) << i;
+
+  // Refusals write nothing.
+  std::vector<std::uint8_t> wrong(n - 1, 0xff);
+  EXPECT_NE(motion_bound_levels(f.viewer, f.store.view(), perceptual, drawn, scratch, wrong), "");
+  EXPECT_EQ(wrong, std::vector<std::uint8_t>(n - 1, 0xff));
+  Viewer bad = f.viewer;
+  bad.xi_cpd = -1.0;
+  std::vector<std::uint8_t> o4(n, 0xff);
+  EXPECT_NE(motion_bound_levels(bad, f.store.view(), perceptual, drawn, scratch, o4), "");
+  EXPECT_EQ(o4, std::vector<std::uint8_t>(n, 0xff));
 }
 
 }  // namespace

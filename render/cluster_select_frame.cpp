@@ -72,14 +72,15 @@ gzl_cluster_select_frame make_cluster_select_frame(const lod::Viewer& viewer, co
 }
 
 gzl_cluster_select_mesh make_cluster_select_mesh(const lod::Viewer& viewer, const lod::ClusterSet& clusters,
-                                                 std::size_t mesh) {
-  const lod::detail::ClusterMeshFrame mf = lod::detail::make_cluster_mesh_frame(viewer, clusters, mesh);
+                                                 std::size_t mesh, double detail_scale) {
+  const lod::detail::ClusterMeshFrame mf = lod::detail::make_cluster_mesh_frame(viewer, clusters, mesh, detail_scale);
   gzl_cluster_select_mesh g{};
   std::copy_n(mf.rel_vel_m_s, 3, g.rel_vel_m_s);
   g.lip_v = 2.0f * (1.0f + lod::detail::kVelocitySlack) * mf.rel_speed_m_s;
   g.slack_v = lod::detail::kVelocitySlack * mf.rel_speed_m_s;
   // +inf (size on, or no finite error): no finite distance reaches FLT_MAX either.
   g.cap_combined_m = std::isinf(mf.cap_combined_m) ? std::numeric_limits<float>::max() : mf.cap_combined_m;
+  g.error_factor = mf.error_factor;
   return g;
 }
 

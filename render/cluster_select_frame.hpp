@@ -21,8 +21,9 @@ namespace gazelod::render {
 // degenerate cull view (projection_matrix's rules).
 gzl_cluster_select_frame make_cluster_select_frame(const lod::Viewer& viewer, const EyeView* cull_view);
 
-// Mesh `mesh` of `clusters` (only the mesh arrays are read: velocities, finest errors).
+// Mesh `mesh` of `clusters` (only the mesh arrays are read: velocities, finest errors), its
+// errors divided by detail_scale (>= 1, lod::check_detail_scales; a frame budget's step).
 gzl_cluster_select_mesh make_cluster_select_mesh(const lod::Viewer& viewer, const lod::ClusterSet& clusters,
-                                                 std::size_t mesh);
+                                                 std::size_t mesh, double detail_scale = 1.0);
 
 }  // namespace gazelod::render

@@ -233,9 +233,12 @@ void ClusterSelectPass::upload(const lod::ClusterSet& c) {
   finest_.assign(c.mesh_finest_error_m.begin(), c.mesh_finest_error_m.end());
 }
 
-void ClusterSelectPass::set_frame(const lod::Viewer& viewer, const EyeView* cull_view) {
+void ClusterSelectPass::set_frame(const lod::Viewer& viewer, const EyeView* cull_view,
+                                  std::span<const double> detail_scale) {
   if (const std::string e = lod::validate_viewer(viewer); !e.empty())
     throw std::invalid_argument("cluster select pass: viewer: " + e);
+  if (const std::string e = lod::check_detail_scales(detail_scale, mesh_count_); !e.empty())
+    throw std::invalid_argument("cluster select pass: detail scales: " + e);
   const gzl_cluster_select_frame frame = make_cluster_select_frame(viewer, cull_view);
   std::memcpy(frame_.data(), &frame, sizeof frame);
   // The mesh arrays alone are what the mesh constants read.
@@ -245,7 +248,8 @@ void ClusterSelectPass::set_frame(const lod::Viewer& viewer, const EyeView* cull
   meshes.mesh_vel_z_m_s = vel_z_;
   meshes.mesh_finest_error_m = finest_;
   auto* out = static_cast<gzl_cluster_select_mesh*>(meshes_.data());
-  for (std::size_t m = 0; m < mesh_count_; ++m) out[m] = make_cluster_select_mesh(viewer, meshes, m);
+  for (std::size_t m = 0; m < mesh_count_; ++m)
+    out[m] = make_cluster_select_mesh(viewer, meshes, m, detail_scale.empty() ? 1.0 : detail_scale[m]);
 }
 
 void ClusterSelectPass::record(VkCommandBuffer cmd) {
@@ -277,8 +281,8 @@ void ClusterSelectPass::record(VkCommandBuffer cmd) {
                        0, nullptr);
 }
 
-void ClusterSelectPass::run(const lod::Viewer& viewer, const EyeView* cull_view) {
-  set_frame(viewer, cull_view);
+void ClusterSelectPass::run(const lod::Viewer& viewer, const EyeView* cull_view, std::span<const double> detail_scale) {
+  set_frame(viewer, cull_view, detail_scale);
   record(one_shot_->begin());
   one_shot_->submit_and_wait();
 }

@@ -62,11 +62,13 @@ class ClusterSelectPass {
 
   // One frame: set_frame, then record() in the pass's own command buffer, submitted and waited
   // for. viewer: lod::validate_viewer'd (std::invalid_argument otherwise); cull_view null: no
-  // culling, a command for every drawn cluster.
-  void run(const lod::Viewer& viewer, const EyeView* cull_view);
+  // culling, a command for every drawn cluster; detail_scale: empty (every mesh at 1) or one
+  // scale per mesh (a frame budget's steps, FrameDecisions::cluster_detail_scale;
+  // lod::check_detail_scales, std::invalid_argument otherwise).
+  void run(const lod::Viewer& viewer, const EyeView* cull_view, std::span<const double> detail_scale = {});
   // The frame's constants into the host-visible frame and mesh buffers: call only when no
   // submitted record() of this pass is still executing.
-  void set_frame(const lod::Viewer& viewer, const EyeView* cull_view);
+  void set_frame(const lod::Viewer& viewer, const EyeView* cull_view, std::span<const double> detail_scale = {});
   // Zeroes the draw count, dispatches (between two timestamps) and ends with a barrier that
   // makes the commands, count and drawn bits visible to indirect draws and transfers. The pass
   // must outlive the GPU's execution of it.

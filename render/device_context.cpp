@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "render/device_context.hpp"
-
+#include "render/vulkan12_features.hpp"
 #include "render/render_error.hpp"
 
 #include <algorithm>
@@ -120,19 +120,9 @@ OffscreenDevice::OffscreenDevice(bool want_validation, bool prefer_gpu) {
     vkGetPhysicalDeviceFeatures(ctx_.physical, &supported);
     enabled.multiDrawIndirect = supported.multiDrawIndirect;
     // And the GPU-driven cut's one draw (ClusterSelectPass's commands and count).
-    VkPhysicalDeviceProperties chosen{};
-    vkGetPhysicalDeviceProperties(ctx_.physical, &chosen);
-    VkPhysicalDeviceVulkan12Features supported12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
-    VkPhysicalDeviceVulkan12Features enabled12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
-    const bool has_12 = app.apiVersion >= VK_API_VERSION_1_2 && chosen.apiVersion >= VK_API_VERSION_1_2;
-    if (has_12) {
-      VkPhysicalDeviceFeatures2 features2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
-      features2.pNext = &supported12;
-      vkGetPhysicalDeviceFeatures2(ctx_.physical, &features2);
-      enabled12.drawIndirectCount = supported12.drawIndirectCount;
-    }
+    Vulkan12Features features12 = vulkan12_features_to_enable(ctx_.physical, app.apiVersion);
     VkDeviceCreateInfo dci{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
-    dci.pNext = has_12 ? &enabled12 : nullptr;
+    dci.pNext = features12.has_vulkan_12 ? &features12.enabled : nullptr;
     dci.queueCreateInfoCount = 1;
     dci.pQueueCreateInfos = &qci;
     dci.pEnabledFeatures = &enabled;
@@ -141,7 +131,7 @@ OffscreenDevice::OffscreenDevice(bool want_validation, bool prefer_gpu) {
       throw NoVulkanDevice("vkCreateDevice on " + device_name_ + " failed (VkResult " + std::to_string(r) + ")");
     vkGetDeviceQueue(ctx_.device, ctx_.queue_family, 0, &ctx_.queue);
     ctx_.multi_draw_indirect = enabled.multiDrawIndirect == VK_TRUE;
-    ctx_.draw_indirect_count = enabled12.drawIndirectCount == VK_TRUE;
+    ctx_.draw_indirect_count = features12.enabled.drawIndirectCount == VK_TRUE;
   } catch (...) {
     destroy();
     throw;

@@ -144,30 +144,33 @@ void FrameRenderer::end_frame(std::uint32_t image_index) {
   drawn_[image_index] = true;
 }
 
-void FrameRenderer::draw_indirect_count(std::uint32_t image_index, const EyeView& view, const IndirectCut& cut) {
-  if (!ctx_.draw_indirect_count)
-    throw RenderError("renderer: draw_indirect_count needs Vulkan 1.2's drawIndirectCount, not enabled on this device");
-  if (cut.commands == VK_NULL_HANDLE || cut.count == VK_NULL_HANDLE)
-    throw RenderError("renderer: draw_indirect_count without a command or count buffer");
-  DrawConstants dc = begin_frame(image_index, view, true);
-  dc.center_radius = glm::vec4(cut.center_m, cut.radius_m);
-  dc.colour = glm::vec4(to_target(lod_colour(cut.lod_level), srgb_), 1.0f);
-  vkCmdPushConstants(cmd_, pipeline_.layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof dc,
-                     &dc);
-  vkCmdDrawIndexedIndirectCount(cmd_, cut.commands, cut.commands_offset, cut.count, cut.count_offset, cut.max_draws,
-                                sizeof(VkDrawIndexedIndirectCommand));
-  end_frame(image_index);
-  triangles_last_frame_ = 0;
-  draws_last_frame_ = 0;
-  draw_commands_last_frame_ = 1;
+void FrameRenderer::set_instance_tints(std::span<const std::uint8_t> levels) {
+  if (levels.empty()) throw RenderError("renderer: set_instance_tints without any instance");
+  // The colours the push constants would carry for these levels, bit for bit: the same pixels.
+  instance_tints_ = HostBuffer(ctx_, levels.size() * sizeof(glm::vec3), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+  auto* out = static_cast<glm::vec3*>(instance_tints_.data());
+  for (std::size_t i = 0; i < levels.size(); ++i) out[i] = to_target(lod_colour(levels[i]), srgb_);
 }
 
-void FrameRenderer::draw(std::uint32_t image_index, const EyeView& view, std::span<const DrawItem> items) {
+void FrameRenderer::draw_indirect_count(std::uint32_t image_index, const EyeView& view, const IndirectCut& cut) {
+  draw(image_index, view, {}, std::span<const IndirectCut>(&cut, 1));
+}
+
+void FrameRenderer::draw(std::uint32_t image_index, const EyeView& view, std::span<const DrawItem> items,
+                         std::span<const IndirectCut> cuts) {
   for (const DrawItem& item : items)
     if (item.mesh >= meshes_.size())
       throw RenderError("renderer: mesh id " + std::to_string(item.mesh) + " out of range (" +
                         std::to_string(meshes_.size()) + " meshes)");
-  DrawConstants dc = begin_frame(image_index, view, false);
+  if (!cuts.empty() && !ctx_.draw_indirect_count)
+    throw RenderError("renderer: a GPU-built cut needs Vulkan 1.2's drawIndirectCount, not enabled on this device");
+  for (const IndirectCut& cut : cuts) {
+    if (cut.commands == VK_NULL_HANDLE || cut.count == VK_NULL_HANDLE)
+      throw RenderError("renderer: a GPU-built cut without a command or count buffer");
+    if (cut.per_instance_tint && instance_tints_.buffer() == VK_NULL_HANDLE)
+      throw RenderError("renderer: a GPU-built cut tinted per instance before set_instance_tints");
+  }
+  DrawConstants dc = begin_frame(image_index, view, !cuts.empty());
   const ViewCuller culler(view);
   std::uint64_t triangles = 0;
   std::uint32_t draws = 0;
@@ -247,6 +250,25 @@ void FrameRenderer::draw(std::uint32_t image_index, const EyeView& view, std::sp
     if (!merge_draws_) flush();
   }
   flush_batch();
+  // The GPU-built cuts last, each under its own constants: the compute pass chose their draws,
+  // so their triangles are not known here.
+  for (const IndirectCut& cut : cuts) {
+    if (cut.per_instance_tint) {
+      vkCmdBindPipeline(cmd_, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.tinted);
+      const VkBuffer tints = instance_tints_.buffer();
+      const VkDeviceSize offset = 0;
+      vkCmdBindVertexBuffers(cmd_, 1, 1, &tints, &offset);
+    } else {
+      vkCmdBindPipeline(cmd_, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.pipeline);
+    }
+    dc.center_radius = glm::vec4(cut.center_m, cut.radius_m);
+    dc.colour = glm::vec4(to_target(lod_colour(cut.lod_level), srgb_), 1.0f);
+    vkCmdPushConstants(cmd_, pipeline_.layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof dc,
+                       &dc);
+    vkCmdDrawIndexedIndirectCount(cmd_, cut.commands, cut.commands_offset, cut.count, cut.count_offset, cut.max_draws,
+                                  sizeof(VkDrawIndexedIndirectCommand));
+    ++draw_commands;
+  }
   end_frame(image_index);
   triangles_last_frame_ = triangles;
   draws_last_frame_ = draws;

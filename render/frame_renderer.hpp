@@ -50,6 +50,9 @@ struct IndirectCut {
   VkBuffer count = VK_NULL_HANDLE;  // a uint32_t
   VkDeviceSize count_offset = 0;
   std::uint32_t max_draws = 0;  // commands the buffer holds (ClusterSelectPass::command_capacity)
+  // Each command tinted by the level set_instance_tints gave its firstInstance (the cluster's
+  // id, as ClusterSelectPass writes it) instead of lod_level.
+  bool per_instance_tint = false;
 };
 
 class FrameRenderer {
@@ -62,14 +65,19 @@ class FrameRenderer {
 
   // Clears and draws `items` (skipping those with a non-finite centre, a radius <= 0, or whose
   // mesh range's sphere, MeshRange::bound_center_unit placed by the item, is outside the view)
-  // into images[image_index], leaving it in COLOR_ATTACHMENT_OPTIMAL. Throws RenderError for a
-  // bad index or mesh id.
-  void draw(std::uint32_t image_index, const EyeView& view, std::span<const DrawItem> items);
+  // into images[image_index], leaving it in COLOR_ATTACHMENT_OPTIMAL; then each of `cuts`, a
+  // GPU-built cut, with one vkCmdDrawIndexedIndirectCount (after a barrier from compute shader
+  // writes to indirect reads; needs DeviceContext::draw_indirect_count). The GPU chose the cuts'
+  // draws: triangles_last_frame() and draws_last_frame() count the items only, and each cut is
+  // one of draw_commands_last_frame(). Throws RenderError for a bad index, mesh id or cut.
+  void draw(std::uint32_t image_index, const EyeView& view, std::span<const DrawItem> items,
+            std::span<const IndirectCut> cuts = {});
 
-  // Clears and draws a GPU-built cut with one vkCmdDrawIndexedIndirectCount (after a barrier
-  // from compute shader writes to indirect reads), into images[image_index]. Needs
-  // DeviceContext::draw_indirect_count. The GPU chose the draws: triangles_last_frame() and
-  // draws_last_frame() are 0 after it, draw_commands_last_frame() 1. Throws RenderError.
+  // The tints of per_instance_tint cuts: instance i drawn in level levels[i]'s colour (what
+  // DrawItem::lod_level gives), for firstInstance values below levels.size(). Throws RenderError.
+  void set_instance_tints(std::span<const std::uint8_t> levels);
+
+  // draw() with one GPU-built cut and no items.
   void draw_indirect_count(std::uint32_t image_index, const EyeView& view, const IndirectCut& cut);
 
   // Copies a drawn image to RGBA8 (swizzling BGRA); it stays in COLOR_ATTACHMENT_OPTIMAL.
@@ -123,7 +131,8 @@ class FrameRenderer {
   std::uint64_t triangles_last_frame_ = 0;
   std::uint32_t draws_last_frame_ = 0, draw_commands_last_frame_ = 0;
   bool merge_draws_ = true, multi_draw_ = true, cull_ranges_ = true;
-  HostBuffer indirect_;  // VkDrawIndexedIndirectCommand per merged draw, grown to the item count
+  HostBuffer indirect_;        // VkDrawIndexedIndirectCommand per merged draw, grown to the item count
+  HostBuffer instance_tints_;  // vec3 per instance (set_instance_tints), in the target's colour space
   std::uint32_t max_draw_indirect_count_ = 1;
 };
 

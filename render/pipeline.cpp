@@ -6,6 +6,8 @@
 #include <cstdint>
 #include "shaders/lod_mesh.frag.h"
 #include "shaders/lod_mesh.vert.h"
+#include "shaders/lod_mesh_tinted.frag.h"
+#include "shaders/lod_mesh_tinted.vert.h"
 
 #include <array>
 
@@ -75,12 +77,15 @@ VkShaderModule create_module(VkDevice device, const std::uint32_t* code, std::si
   return module;
 }
 
+// tinted: the PER_CLUSTER_TINT build of the shaders, with binding 1 a vec3 per instance.
 VkPipeline create_graphics_pipeline(VkDevice device, VkRenderPass pass, VkPipelineLayout layout, std::uint32_t width,
-                                    std::uint32_t height) {
-  VkShaderModule vert = create_module(device, lod_mesh_vert_spv, sizeof lod_mesh_vert_spv);
+                                    std::uint32_t height, bool tinted) {
+  VkShaderModule vert = tinted ? create_module(device, lod_mesh_tinted_vert_spv, sizeof lod_mesh_tinted_vert_spv)
+                               : create_module(device, lod_mesh_vert_spv, sizeof lod_mesh_vert_spv);
   VkShaderModule frag = VK_NULL_HANDLE;
   try {
-    frag = create_module(device, lod_mesh_frag_spv, sizeof lod_mesh_frag_spv);
+    frag = tinted ? create_module(device, lod_mesh_tinted_frag_spv, sizeof lod_mesh_tinted_frag_spv)
+                  : create_module(device, lod_mesh_frag_spv, sizeof lod_mesh_frag_spv);
   } catch (...) {
     vkDestroyShaderModule(device, vert, nullptr);
     throw;
@@ -95,13 +100,15 @@ VkPipeline create_graphics_pipeline(VkDevice device, VkRenderPass pass, VkPipeli
   stages[1].module = frag;
   stages[1].pName = "main";
 
-  VkVertexInputBindingDescription binding{0, sizeof(float) * 3, VK_VERTEX_INPUT_RATE_VERTEX};
-  VkVertexInputAttributeDescription attribute{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0};
+  const std::array<VkVertexInputBindingDescription, 2> bindings{
+      {{0, sizeof(float) * 3, VK_VERTEX_INPUT_RATE_VERTEX}, {1, sizeof(float) * 3, VK_VERTEX_INPUT_RATE_INSTANCE}}};
+  const std::array<VkVertexInputAttributeDescription, 2> attributes{
+      {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0}, {1, 1, VK_FORMAT_R32G32B32_SFLOAT, 0}}};
   VkPipelineVertexInputStateCreateInfo vin{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-  vin.vertexBindingDescriptionCount = 1;
-  vin.pVertexBindingDescriptions = &binding;
-  vin.vertexAttributeDescriptionCount = 1;
-  vin.pVertexAttributeDescriptions = &attribute;
+  vin.vertexBindingDescriptionCount = tinted ? 2 : 1;
+  vin.pVertexBindingDescriptions = bindings.data();
+  vin.vertexAttributeDescriptionCount = tinted ? 2 : 1;
+  vin.pVertexAttributeDescriptions = attributes.data();
   VkPipelineInputAssemblyStateCreateInfo ia{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
   ia.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
   VkViewport viewport{0.0f, 0.0f, static_cast<float>(width), static_cast<float>(height), 0.0f, 1.0f};
@@ -173,7 +180,8 @@ Pipeline create_pipeline(VkDevice device, VkFormat colour_format, VkFormat depth
     lci.pushConstantRangeCount = 1;
     lci.pPushConstantRanges = &range;
     vk_check(vkCreatePipelineLayout(device, &lci, nullptr, &p.layout), "vkCreatePipelineLayout");
-    p.pipeline = create_graphics_pipeline(device, p.render_pass, p.layout, width, height);
+    p.pipeline = create_graphics_pipeline(device, p.render_pass, p.layout, width, height, false);
+    p.tinted = create_graphics_pipeline(device, p.render_pass, p.layout, width, height, true);
   } catch (...) {
     destroy_pipeline(device, p);
     throw;
@@ -183,6 +191,7 @@ Pipeline create_pipeline(VkDevice device, VkFormat colour_format, VkFormat depth
 
 void destroy_pipeline(VkDevice device, Pipeline& p) {
   if (p.pipeline) vkDestroyPipeline(device, p.pipeline, nullptr);
+  if (p.tinted) vkDestroyPipeline(device, p.tinted, nullptr);
   if (p.layout) vkDestroyPipelineLayout(device, p.layout, nullptr);
   if (p.render_pass) vkDestroyRenderPass(device, p.render_pass, nullptr);
   p = {};

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// The one graphics pipeline of the renderer: clear colour + depth, draw LOD meshes with the
-// lod_mesh shaders, leave the colour image in COLOR_ATTACHMENT_OPTIMAL (what OpenXR expects
-// of a released swapchain image).
+// The renderer's graphics pipelines (one tint per draw, or one per instance): clear colour +
+// depth, draw LOD meshes with the lod_mesh shaders, leave the colour image in
+// COLOR_ATTACHMENT_OPTIMAL (what OpenXR expects of a released swapchain image).
 #pragma once
 
 #include <glm/mat4x4.hpp>
@@ -28,6 +28,9 @@ struct Pipeline {
   VkRenderPass render_pass = VK_NULL_HANDLE;
   VkPipelineLayout layout = VK_NULL_HANDLE;
   VkPipeline pipeline = VK_NULL_HANDLE;
+  // The same with each draw's tint from a per-instance vec3 at vertex binding 1 (picked by the
+  // command's firstInstance) instead of the push constants' colour: GPU-built cuts.
+  VkPipeline tinted = VK_NULL_HANDLE;
 };
 
 // Throws RenderError; destroy with destroy_pipeline.

@@ -58,7 +58,8 @@ struct MeshFrame {
   float lip_v;            // 2 (1 + kVelocitySlack) |V|
   float slack_v;          // kVelocitySlack |V|
   float cap_combined_m;   // size off: the mesh's distance cap; size on: FLT_MAX (+inf on the CPU)
-  float reserved0, reserved1;
+  float error_factor;     // the frame's over the mesh's detail scale (a frame budget's step)
+  float reserved0;
 };
 layout(std430, set = 0, binding = 1) readonly buffer Meshes { MeshFrame meshes[]; };
 
@@ -248,7 +249,7 @@ bool record_invisible(vec4 sphere, float e, uint m, out bool ok) {
   precise float mq2 = mq * mq;
   // Invisible when A e K < dist (f > A), each min() of A an "or". e = +inf never goes (the
   // CPU gets there through inf and NaN, which a device may assume away).
-  precise float b = e * frame.error_factor;
+  precise float b = e * mf.error_factor;
   precise float x_xi = frame.scale_xi_cpd * b;
   precise float x_g = (frame.scale * gv) * b;
   precise float dist_c = dn < mf.cap_combined_m ? dn : mf.cap_combined_m;

@@ -78,7 +78,11 @@ typedef struct gzl_cluster_select_mesh {
   float lip_v;               /* 2.0f * (1.0f + kVelocitySlack) * rel_speed_m_s */
   float slack_v;             /* kVelocitySlack * rel_speed_m_s */
   float cap_combined_m;      /* size off: cap_m; size on (+inf): FLT_MAX */
-  float reserved[2];
+  float error_factor;        /* the frame's error_factor over the mesh's detail scale, rounded up:
+                              * ClusterMeshFrame::error_factor (a frame budget's coarsening step;
+                              * at scale 1 the frame block's error_factor, bit for bit). The
+                              * shader reads this one, not the frame block's. */
+  float reserved;
 } gzl_cluster_select_mesh;
 
 /* Binding 6, per cluster (std430, 12 bytes): its triangles in the index buffer the commands

@@ -13,6 +13,12 @@ layout(push_constant) uniform Draw {
 layout(location = 0) in vec3 in_normal;
 layout(location = 1) in vec3 in_world;
 layout(location = 0) out vec4 out_colour;
+#ifdef PER_CLUSTER_TINT
+layout(location = 2) flat in vec3 in_tint;  // lod_mesh.vert's, per cluster
+#define TINT in_tint
+#else
+#define TINT draw.colour.rgb
+#endif
 
 const float kAmbient = 0.35;
 
@@ -20,5 +26,5 @@ void main() {
   vec3 n = normalize(in_normal);
   vec3 to_eye = normalize(draw.eye_position.xyz - in_world);
   float light = kAmbient + (1.0 - kAmbient) * max(dot(n, to_eye), 0.0);
-  out_colour = vec4(draw.colour.rgb * light, 1.0);
+  out_colour = vec4(TINT * light, 1.0);
 }

@@ -2,6 +2,7 @@
 #include "apps/xr_host/xr_app.hpp"
 
 #include "plugin/xr_check.hpp"
+#include "render/vulkan12_features.hpp"
 #include "sim/runtime/simulator_state_ext.h"
 
 #include <algorithm>
@@ -102,7 +103,11 @@ void XrApp::create_vulkan() {
 
   VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
   app.pApplicationName = "gazelod run";
-  app.apiVersion = VK_API_VERSION_1_1;
+  // 1.2 where the loader has it: drawIndirectCount draws a GPU-selected cut (render/).
+  std::uint32_t loader_version = VK_API_VERSION_1_0;
+  if (vkEnumerateInstanceVersion(&loader_version) != VK_SUCCESS) loader_version = VK_API_VERSION_1_0;
+  const bool runtime_allows_12 = req.maxApiVersionSupported >= XR_MAKE_VERSION(1, 2, 0);
+  app.apiVersion = loader_version >= VK_API_VERSION_1_2 && runtime_allows_12 ? VK_API_VERSION_1_2 : VK_API_VERSION_1_1;
   VkInstanceCreateInfo vci{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
   vci.pApplicationInfo = &app;
   XrVulkanInstanceCreateInfoKHR xci{XR_TYPE_VULKAN_INSTANCE_CREATE_INFO_KHR};
@@ -147,7 +152,12 @@ void XrApp::create_vulkan() {
   vkGetPhysicalDeviceFeatures(vk_physical_, &supported);
   enabled.multiDrawIndirect = supported.multiDrawIndirect;
   multi_draw_indirect_ = supported.multiDrawIndirect == VK_TRUE;
+  // And Vulkan 1.2's drawIndirectCount where instance and device have 1.2: the cut a compute
+  // pass selected is drawn with one vkCmdDrawIndexedIndirectCount (gazelod run --cluster-select gpu).
+  render::Vulkan12Features features12 = render::vulkan12_features_to_enable(vk_physical_, app.apiVersion);
+  draw_indirect_count_ = features12.enabled.drawIndirectCount == VK_TRUE;
   VkDeviceCreateInfo dci{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+  dci.pNext = features12.has_vulkan_12 ? &features12.enabled : nullptr;
   dci.queueCreateInfoCount = 1;
   dci.pQueueCreateInfos = &qci;
   dci.pEnabledFeatures = &enabled;

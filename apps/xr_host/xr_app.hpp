@@ -59,6 +59,7 @@ class XrApp {
   VkDevice vk_device() const { return vk_device_; }
   // VkPhysicalDeviceFeatures::multiDrawIndirect was enabled on vk_device().
   bool vk_multi_draw_indirect() const { return multi_draw_indirect_; }
+  bool vk_draw_indirect_count() const { return draw_indirect_count_; }  // Vulkan 1.2's, enabled
   std::uint32_t vk_queue_family() const { return queue_family_; }
   VkQueue vk_queue() const { return queue_; }
   const std::string& vk_device_name() const { return vk_device_name_; }
@@ -100,6 +101,7 @@ class XrApp {
   VkInstance vk_instance_ = VK_NULL_HANDLE;
   VkPhysicalDevice vk_physical_ = VK_NULL_HANDLE;
   bool multi_draw_indirect_ = false;
+  bool draw_indirect_count_ = false;
   VkDevice vk_device_ = VK_NULL_HANDLE;
   std::uint32_t queue_family_ = 0;
   VkQueue queue_ = VK_NULL_HANDLE;

@@ -140,9 +140,8 @@ TEST(ClusterSelectShader, BlocksMatchTheCHeader) {
                                          offsetof(F, side_x),
                                          offsetof(F, side_y)};
   using M = gzl_cluster_select_mesh;
-  const std::vector<std::uint32_t> mesh{offsetof(M, rel_vel_m_s), offsetof(M, lip_v),
-                                        offsetof(M, slack_v),     offsetof(M, cap_combined_m),
-                                        offsetof(M, reserved[0]), offsetof(M, reserved[1])};
+  const std::vector<std::uint32_t> mesh{offsetof(M, rel_vel_m_s),    offsetof(M, lip_v),        offsetof(M, slack_v),
+                                        offsetof(M, cap_combined_m), offsetof(M, error_factor), offsetof(M, reserved)};
   using R = gzl_cluster_select_draw_range;
   const std::vector<std::uint32_t> range{offsetof(R, first_index), offsetof(R, index_count),
                                          offsetof(R, vertex_offset)};

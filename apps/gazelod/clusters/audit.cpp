@@ -253,6 +253,29 @@ void write_cluster_csv_cells(std::ostream& csv, std::uint64_t triangles_drawn, s
     csv << ",,,,,,";
 }
 
+namespace {
+
+double mean_of(double sum, std::uint64_t n) {
+  return n > 0 ? sum / static_cast<double>(n) : 0.0;
+}
+
+nlohmann::json cluster_gpu_json(const ClusterGpuSummary& g) {
+  if (!g.used) return {{"used", false}};
+  return {{"used", true},
+          {"dispatches_per_selection", g.dispatches_per_select},
+          {"selections", g.selections},
+          {"selections_refused", g.selections_refused},
+          {"commands_per_selection", mean_of(static_cast<double>(g.commands), g.selections)},
+          {"dispatch_ms_mean", g.dispatches_timed > 0 ? nlohmann::json(mean_of(g.dispatch_ms_sum, g.dispatches_timed))
+                                                      : nlohmann::json(nullptr)},
+          {"dispatch_ms_max", g.dispatches_timed > 0 ? nlohmann::json(g.dispatch_ms_max) : nlohmann::json(nullptr)},
+          {"frames_compared", g.frames_compared},
+          {"decisions_compared", g.decisions_compared},
+          {"differences_from_cpu", g.differences}};
+}
+
+}  // namespace
+
 nlohmann::json cluster_run_json(const ClusterRunSummary& s) {
   if (s.meshes == 0) return {{"meshes", 0}};
   return {{"meshes", s.meshes},
@@ -262,7 +285,8 @@ nlohmann::json cluster_run_json(const ClusterRunSummary& s) {
           {"triangles_perceptual", s.triangles_perceptual},
           {"triangles_full", s.triangles_full},
           {"drawn_over_full", ratio(static_cast<double>(s.triangles_drawn), static_cast<double>(s.triangles_full))},
-          {"audit", cluster_audit_json(s.audit)}};
+          {"audit", cluster_audit_json(s.audit)},
+          {"gpu_select", cluster_gpu_json(s.gpu)}};
 }
 
 void print_cluster_run(const ClusterRunSummary& s, std::int64_t frames, std::ostream& out) {
@@ -277,6 +301,21 @@ void print_cluster_run(const ClusterRunSummary& s, std::int64_t frames, std::ost
                 100.0 * ratio(static_cast<double>(s.triangles_drawn), static_cast<double>(s.triangles_full)),
                 static_cast<double>(s.triangles_perceptual) / n);
   out << line;
+  const ClusterGpuSummary& g = s.gpu;
+  if (!g.used) return;
+  std::snprintf(line, sizeof line,
+                "cluster GPU     selected on the GPU %llu times (%llu refused viewers), %.0f draw commands each; "
+                "against the plugin's cut: %llu differences in %llu decisions over %llu frames\n",
+                static_cast<unsigned long long>(g.selections), static_cast<unsigned long long>(g.selections_refused),
+                mean_of(static_cast<double>(g.commands), g.selections), static_cast<unsigned long long>(g.differences),
+                static_cast<unsigned long long>(g.decisions_compared),
+                static_cast<unsigned long long>(g.frames_compared));
+  out << line;
+  if (g.dispatches_timed > 0) {
+    std::snprintf(line, sizeof line, "cluster GPU     dispatch %.3f ms mean, %.3f ms max (timestamp queries)\n",
+                  mean_of(g.dispatch_ms_sum, g.dispatches_timed), g.dispatch_ms_max);
+    out << line;
+  }
 }
 
 }  // namespace gazelod::cli

@@ -124,12 +124,27 @@ ClusterAuditSummary summarize_cluster_audit(std::span<const ClusterAuditFrame> f
 
 // The cluster meshes over a run (RunSummary::clusters): the scene's counts, set by the caller,
 // and the triangles of every frame's cuts summed (per eye).
+// gazelod run --cluster-select gpu (run/gpu_clusters.hpp): the compute pass's selections (one
+// per eye and frame), their draw commands and GPU time, and how its cut compared with the
+// plugin's, once per frame, cluster by cluster.
+struct ClusterGpuSummary {
+  bool used = false;
+  std::size_t dispatches_per_select = 0;
+  // refused: the plugin refused the viewer (or handed out bad detail scales): the CPU's cut drawn
+  std::uint64_t selections = 0, selections_refused = 0;
+  std::uint64_t commands = 0;  // summed over selections
+  std::uint64_t dispatches_timed = 0;
+  double dispatch_ms_sum = 0.0, dispatch_ms_max = 0.0;  // timestamp queries
+  std::uint64_t frames_compared = 0, decisions_compared = 0, differences = 0;
+};
+
 struct ClusterRunSummary {
   std::size_t meshes = 0, clusters = 0, leaves = 0;
   std::uint64_t triangles_drawn = 0;       // the drawn cuts (after the switch policy)
   std::uint64_t triangles_perceptual = 0;  // each frame's perceptual cut
   std::uint64_t triangles_full = 0;        // every mesh at full detail (its leaves)
   ClusterAuditSummary audit;
+  ClusterGpuSummary gpu;
 };
 
 // frames.csv's cluster columns (a leading comma each): the header's, and one frame's (audit

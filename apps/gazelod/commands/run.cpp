@@ -66,6 +66,11 @@ const Registrar reg(
       app.add_option("--cluster-decisions", opt->cluster_decisions_path,
                      "Write every frame's drawn cut of the cluster meshes to this CSV, one row per drawn cluster "
                      "(frame,t_ns,mesh,cluster,depth,triangles,limited_by,held)");
+      app.add_option("--cluster-select", opt->cluster_select,
+                     "Where the cluster meshes' cut is selected: cpu (default: the plugin's cut, with its switch "
+                     "policy, drawn cluster by cluster) or gpu (the compute shader selects it from the plugin's viewer "
+                     "and one indirect-count draw per eye draws it; checked against the plugin's cut each frame)")
+          ->check(CLI::IsMember({"cpu", "gpu"}));
       auto no_audit = std::make_shared<bool>(false);
       app.add_flag("--no-audit", *no_audit, "Skip the visibility audit against the simulator's true gaze");
       return [=, &app](Io io) {

@@ -31,25 +31,35 @@ render::EyeView to_eye_view(const XrView& v) {
   return e;
 }
 
-// The mesh's positions posed into LOCAL space, then expressed in their own bounding sphere's
-// unit frame ((p - centre) / radius, what the renderer's DrawItem places).
-void unit_positions(const ClusterMesh& m, std::vector<glm::vec3>& unit, glm::dvec3& center_m, double& radius_m) {
+// The mesh's positions posed into LOCAL space.
+std::vector<glm::dvec3> posed_positions(const ClusterMesh& m) {
   const std::vector<float>& xyz = m.primitive->positions_xyz;
   std::vector<glm::dvec3> world(xyz.size() / 3);
   const glm::dquat rotation = glm::normalize(m.pose.rotation);
-  glm::dvec3 lo(0.0), hi(0.0);
-  for (std::size_t v = 0; v < world.size(); ++v) {
+  for (std::size_t v = 0; v < world.size(); ++v)
     world[v] =
         m.pose.translation_m + m.pose.scale * (rotation * glm::dvec3(xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]));
-    lo = v == 0 ? world[v] : glm::min(lo, world[v]);
-    hi = v == 0 ? world[v] : glm::max(hi, world[v]);
+  return world;
+}
+
+// The sphere around the box of `points` (radius 1 for one point or none: any radius places it).
+void bounding_sphere(std::span<const glm::dvec3> points, glm::dvec3& center_m, double& radius_m) {
+  glm::dvec3 lo(0.0), hi(0.0);
+  for (std::size_t v = 0; v < points.size(); ++v) {
+    lo = v == 0 ? points[v] : glm::min(lo, points[v]);
+    hi = v == 0 ? points[v] : glm::max(hi, points[v]);
   }
   center_m = 0.5 * (lo + hi);
   double r2 = 0.0;
-  for (const glm::dvec3& p : world) r2 = std::max(r2, glm::dot(p - center_m, p - center_m));
-  radius_m = r2 > 0.0 ? std::sqrt(r2) : 1.0;  // one point (or none): any radius places it
-  unit.resize(world.size());
-  for (std::size_t v = 0; v < world.size(); ++v) unit[v] = glm::vec3((world[v] - center_m) / radius_m);
+  for (const glm::dvec3& p : points) r2 = std::max(r2, glm::dot(p - center_m, p - center_m));
+  radius_m = r2 > 0.0 ? std::sqrt(r2) : 1.0;
+}
+
+// Positions in the unit frame of a sphere ((p - centre) / radius, what a DrawItem places).
+std::vector<glm::vec3> in_unit_frame(std::span<const glm::dvec3> points, const glm::dvec3& center_m, double radius_m) {
+  std::vector<glm::vec3> unit(points.size());
+  for (std::size_t v = 0; v < points.size(); ++v) unit[v] = glm::vec3((points[v] - center_m) / radius_m);
+  return unit;
 }
 
 // A baked level's positions posed by the object's world transform, in the unit frame of its
@@ -71,7 +81,8 @@ void unit_level(const bake::BakedObject& o, const bake::BakedLevelMesh& level, s
 }  // namespace
 
 RunRenderer::RunRenderer(xr_host::XrApp& app, const std::vector<std::vector<lod::LodLevel>>& chains,
-                         const ClusterScene* clusters, std::span<const bake::BakedObject* const> baked) {
+                         const ClusterScene* clusters, std::span<const bake::BakedObject* const> baked,
+                         bool gpu_select) {
   std::size_t max_items = 0;
   mesh_ids_.reserve(chains.size());
   std::vector<glm::vec3> unit;
@@ -92,19 +103,39 @@ RunRenderer::RunRenderer(xr_host::XrApp& app, const std::vector<std::vector<lod:
     mesh_ids_.push_back(std::move(ids));
     ++max_items;
   }
+  std::vector<std::uint32_t> first_mesh;  // per cluster mesh: the MeshLibrary id of its cluster 0
   if (clusters != nullptr) {
+    std::vector<std::vector<glm::dvec3>> posed;
+    for (const ClusterMesh& m : clusters->meshes) posed.push_back(posed_positions(m));
+    // One indirect draw places every mesh: with gpu_select one frame for all, the scene's sphere.
+    glm::dvec3 scene_center(0.0);
+    double scene_radius = 1.0;
+    if (gpu_select) {
+      std::vector<glm::dvec3> all;
+      for (const auto& p : posed) all.insert(all.end(), p.begin(), p.end());
+      bounding_sphere(all, scene_center, scene_radius);
+      gpu_center_m_ = glm::vec3(scene_center);
+      gpu_radius_m_ = static_cast<float>(scene_radius);
+    }
     for (std::size_t k = 0; k < clusters->meshes.size(); ++k) {
       const ClusterMesh& m = clusters->meshes[k];
       const lod::ClusterHierarchy& h = m.primitive->hierarchy;
       glm::dvec3 center(0.0);
       double radius = 1.0;
-      unit_positions(m, unit, center, radius);
+      if (gpu_select) {
+        center = scene_center;
+        radius = scene_radius;
+      } else {
+        bounding_sphere(posed[k], center, radius);
+      }
       ClusterDraw d;
       d.center_m = glm::vec3(center);
       d.radius_m = static_cast<float>(radius);
-      d.first_mesh = meshes_.add_cluster_mesh(unit, m.primitive->indices, h.first_index, h.index_count);
+      d.first_mesh = meshes_.add_cluster_mesh(in_unit_frame(posed[k], center, radius), m.primitive->indices,
+                                              h.first_index, h.index_count);
       d.first_cluster = clusters->first_cluster[k];
       d.depth = h.depth;
+      first_mesh.push_back(d.first_mesh);
       max_items += h.size();
       clusters_.push_back(std::move(d));
     }
@@ -117,7 +148,14 @@ RunRenderer::RunRenderer(xr_host::XrApp& app, const std::vector<std::vector<lod:
   ctx.queue_family = app.vk_queue_family();
   ctx.queue = app.vk_queue();
   ctx.multi_draw_indirect = app.vk_multi_draw_indirect();
+  ctx.draw_indirect_count = app.vk_draw_indirect_count();
   meshes_.upload(ctx);
+  if (gpu_select && clusters != nullptr) {
+    if (!ctx.draw_indirect_count)
+      throw render::RenderError("--cluster-select gpu needs Vulkan 1.2's drawIndirectCount, which " +
+                                app.vk_device_name() + " does not offer here");
+    gpu_ = std::make_unique<GpuClusterCut>(ctx, *clusters, meshes_, first_mesh);
+  }
   for (const xr_host::XrSwapchainView& sc : app.swapchains()) {
     render::RenderTarget target;
     target.images = sc.images;
@@ -127,6 +165,11 @@ RunRenderer::RunRenderer(xr_host::XrApp& app, const std::vector<std::vector<lod:
     eyes_.push_back(std::make_unique<render::FrameRenderer>(ctx, meshes_, std::move(target)));
   }
   items_.reserve(max_items + render::kFovealMarkerDots);
+  if (gpu_) {  // each cluster the GPU draws in its depth's tint, as the CPU path draws it
+    std::vector<std::uint8_t> depths;
+    for (const ClusterDraw& d : clusters_) depths.insert(depths.end(), d.depth.begin(), d.depth.end());
+    for (auto& eye : eyes_) eye->set_instance_tints(depths);
+  }
 }
 
 RunRenderer::~RunRenderer() = default;
@@ -152,7 +195,11 @@ void RunRenderer::render_eye(std::size_t eye, std::uint32_t image_index, const X
     items_.push_back(
         {glm::vec3(positions_m[i]), static_cast<float>(radii_m[i]), ids[level], static_cast<std::uint32_t>(level)});
   }
-  for (std::size_t k = 0; k < clusters_.size(); ++k) {
+  const render::EyeView eye_view = to_eye_view(view);
+  // The GPU's cut when it selected (the plugin accepted this frame's viewer); else the CPU's.
+  const bool gpu = gpu_ && gpu_->select(diagnostics.viewer, eye_view, decisions.cluster_detail_scale);
+  if (gpu && eye == 0) gpu_->compare(decisions.cluster_drawn);
+  for (std::size_t k = 0; k < clusters_.size() && !gpu; ++k) {
     const ClusterDraw& m = clusters_[k];
     if (m.first_cluster >= decisions.cluster_drawn.size()) continue;  // not registered: nothing drawn
     const std::span<const std::uint8_t> drawn = decisions.cluster_drawn.subspan(
@@ -162,7 +209,6 @@ void RunRenderer::render_eye(std::size_t eye, std::uint32_t image_index, const X
       if (drawn[c] != 0)
         items_.push_back({center, m.radius_m, m.first_mesh + static_cast<std::uint32_t>(c), m.depth[c]});
   }
-  const render::EyeView eye_view = to_eye_view(view);
   if (foveal_circle_) {
     // Around this eye's own position, so the circle sits on the gaze in each eye's image.
     const std::size_t first = items_.size();
@@ -172,7 +218,13 @@ void RunRenderer::render_eye(std::size_t eye, std::uint32_t image_index, const X
                                                       marker_mesh_, std::span(items_).subspan(first));
     items_.resize(first + written);
   }
-  r.draw(image_index, eye_view, items_);
+  if (!gpu) {
+    r.draw(image_index, eye_view, items_);
+    return;
+  }
+  render::IndirectCut cut = gpu_->cut(gpu_center_m_, gpu_radius_m_, 0);
+  cut.per_instance_tint = true;
+  r.draw(image_index, eye_view, items_, std::span<const render::IndirectCut>(&cut, 1));
 }
 
 void RunRenderer::save_png(std::size_t eye, std::uint32_t image_index, const std::filesystem::path& file,

@@ -11,6 +11,7 @@
 #pragma once
 
 #include "apps/gazelod/clusters/scene.hpp"
+#include "apps/gazelod/run/gpu_clusters.hpp"
 #include "apps/xr_host/xr_app.hpp"
 #include "plugin/lod_plugin.hpp"
 #include "render/frame_renderer.hpp"
@@ -35,8 +36,13 @@ class RunRenderer {
   // its bounding sphere (the scenario object's position and radius); otherwise a stand-in
   // sphere of the level's triangle count. Throws render::RenderError (unsupported swapchain
   // format, Vulkan failure, a level mesh the renderer refuses).
+  // gpu_select (with `clusters`): the cluster meshes' cut is selected on the GPU and drawn
+  // with one indirect-count draw per eye (run/gpu_clusters.hpp), every mesh at its registration
+  // pose in one shared frame, each cluster tinted by its depth per instance; throws
+  // RenderError where the device has no drawIndirectCount.
   RunRenderer(xr_host::XrApp& app, const std::vector<std::vector<lod::LodLevel>>& chains,
-              const ClusterScene* clusters = nullptr, std::span<const bake::BakedObject* const> baked = {});
+              const ClusterScene* clusters = nullptr, std::span<const bake::BakedObject* const> baked = {},
+              bool gpu_select = false);
   ~RunRenderer();
   RunRenderer(const RunRenderer&) = delete;
   RunRenderer& operator=(const RunRenderer&) = delete;
@@ -60,8 +66,11 @@ class RunRenderer {
   // on by default.
   void set_foveal_circle(bool on) { foveal_circle_ = on; }
 
-  // Scene triangles submitted for the last render_eye of `eye`.
+  // Scene triangles submitted for the last render_eye of `eye` (a GPU-selected cut's not
+  // counted: the host does not see it).
   std::uint64_t triangles_drawn(std::size_t eye) const;
+  // The GPU selection's figures (used = false without gpu_select).
+  ClusterGpuSummary gpu_summary() const { return gpu_ ? gpu_->summary() : ClusterGpuSummary{}; }
 
  private:
   render::FrameRenderer& renderer(std::size_t eye) const;
@@ -78,6 +87,9 @@ class RunRenderer {
   std::vector<ClusterDraw> clusters_;
   std::vector<std::unique_ptr<render::FrameRenderer>> eyes_;
   std::vector<render::DrawItem> items_;  // reused each frame: no allocation
+  std::unique_ptr<GpuClusterCut> gpu_;   // --cluster-select gpu
+  glm::vec3 gpu_center_m_{0.0f};         // the cluster meshes' shared frame there
+  float gpu_radius_m_ = 1.0f;
   std::uint32_t marker_mesh_ = 0;
   bool foveal_circle_ = true;
 };

@@ -102,6 +102,9 @@ int Session::frame() {
     positions_[k] = objects_[k].position_m;
   }
   for (std::size_t k : cluster_motion_->update(scenario_, all_objects)) {
+    if (opt_.cluster_select == "gpu")
+      throw UsageError("--cluster-select gpu: the scenario moves cluster mesh '" + clusters_.meshes[k].label +
+                       "'; the GPU path draws cluster meshes where they were registered (use --cluster-select cpu)");
     plugin_->set_cluster_mesh_motion(static_cast<std::uint32_t>(k), cluster_motion_->pose(k),
                                      cluster_motion_->velocity_m_s(k));
     audit_->set_cluster_pose(k, cluster_motion_->pose(k), cluster_motion_->velocity_m_s(k));
@@ -205,6 +208,7 @@ int Session::finish() {
   summary.clusters.clusters = clusters_.cluster_count();
   for (const ClusterMesh& m : clusters_.meshes)
     for (std::uint8_t depth : m.primitive->hierarchy.depth) summary.clusters.leaves += depth == 0 ? 1 : 0;
+  if (renderer_) summary.clusters.gpu = renderer_->gpu_summary();
   audit_->finish(summary, !opt_.trace_path.empty()  ? "no ground truth: the gaze is a replayed trace"
                           : opt_.hid_gaze           ? "no ground truth: the gaze is a HID eye tracker"
                           : !audit_->ground_truth() ? "no ground truth: not the simulated runtime"

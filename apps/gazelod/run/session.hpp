@@ -32,8 +32,12 @@ struct RunOptions {
   double gaze_error_deg = 0.0;  // > 0: the gaze error assumed for every source; 0: the plugin's per-source defaults
   bool paced = false;           // sleep to the display rate (default: as fast as possible)
   bool render = true;           // false: select only, no Vulkan drawing
-  bool eye_gaze = true;         // false: ignore the runtime's eye gaze (fallback test)
-  std::string trace_path;       // an external gaze source: a gazelod trace to replay
+  // "cpu": the plugin's cut drawn cluster by cluster; "gpu": selected by the compute shader and
+  // drawn with one indirect-count draw per eye (run/gpu_clusters.hpp; needs rendering, a scene
+  // with cluster meshes that stay put, and turns the plugin's cluster switch policy off).
+  std::string cluster_select = "cpu";
+  bool eye_gaze = true;    // false: ignore the runtime's eye gaze (fallback test)
+  std::string trace_path;  // an external gaze source: a gazelod trace to replay
   // With a trace that has head poses (and the simulated runtime): the head moves as recorded
   // (relative to its first pose) in place of the scenario's head effects, so the replayed
   // eye-in-head gaze and the head it was recorded with stay together. false: the scenario's head.

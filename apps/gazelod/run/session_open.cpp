@@ -49,6 +49,14 @@ void Session::split_objects() {
     if (i >= clusters_.drawn_as_clusters.size() || !clusters_.drawn_as_clusters[i]) plain_.push_back(i);
   cluster_motion_.emplace(clusters_);
   layout_checked_ = clusters_.empty();
+  if (opt_.cluster_select == "gpu") {
+    if (!opt_.render) throw UsageError("--cluster-select gpu: needs rendering (not --no-render)");
+    if (clusters_.empty())
+      throw UsageError(
+          "--cluster-select gpu: the scene has no cluster meshes (--scene with a file from gazelod bake --clusters)");
+  } else if (opt_.cluster_select != "cpu") {
+    throw UsageError("--cluster-select: must be 'cpu' or 'gpu', got '" + opt_.cluster_select + "'");
+  }
 }
 
 // Opened before the session so that a bad path fails at once; committed (renamed into place)
@@ -87,6 +95,8 @@ PluginConfig Session::plugin_config() const {
   if (opt_.switching) config.switching = *opt_.switching;
   if (opt_.conditioning) config.conditioning = *opt_.conditioning;
   config.external_source = trace_;
+  // The shader keeps no history: the plugin's cut is then the one it can be checked against.
+  config.cluster_switch_policy = opt_.cluster_select != "gpu";
   return config;
 }
 
@@ -162,7 +172,9 @@ void Session::register_objects() {
   if (prepared_.baked)
     for (std::size_t i : plain_)
       baked_of_plain_.push_back(i < prepared_.baked->objects.size() ? &prepared_.baked->objects[i] : nullptr);
-  if (opt_.render) renderer_.emplace(*app_, chains_, clusters_.empty() ? nullptr : &clusters_, baked_of_plain_);
+  if (opt_.render)
+    renderer_.emplace(*app_, chains_, clusters_.empty() ? nullptr : &clusters_, baked_of_plain_,
+                      opt_.cluster_select == "gpu");
   // frame.png's colour key: every level an object has, or every tint when cluster depths are drawn.
   key_levels_ = clusters_.empty() ? 1u : static_cast<std::uint32_t>(render::kLodPaletteSize);
   for (const auto& c : chains_) key_levels_ = std::max(key_levels_, static_cast<std::uint32_t>(c.size()));

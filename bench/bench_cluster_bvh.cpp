@@ -13,6 +13,8 @@
 //   4  the same writing every byte each frame;
 //   5  mode 2 on 2 threads; 6  mode 3 on 2 threads.
 // BM_LocalVsWorld (below) counts how often the local cut differs from the world-space one.
+// BM_PluginClusterFrame (below): the plugin's whole cluster frame with the switch policy, over
+// consecutive frames at 90 Hz.
 // Counters: ms_per_frame = wall time, cpu_ms_per_frame = the calling thread's CPU time (on a
 // shared machine the one-thread figure to trust; with 2 threads it leaves out the worker's);
 // cpu_ns_per_drawn = that over the clusters in the cut; x_linear = CPU time over mode 0's at the
@@ -27,6 +29,8 @@
 #include "lod/cluster/cluster_local_view.hpp"
 #include "lod/cluster/cluster_select_store.hpp"
 #include "lod/cluster/cluster_selector.hpp"
+#include "lod/cluster/cluster_switch_policy.hpp"
+#include "plugin/cluster_meshes.hpp"
 #include "tests/lod/cluster_instance_scene.hpp"
 
 #include <benchmark/benchmark.h>
@@ -241,6 +245,86 @@ void BM_LocalVsWorld(benchmark::State& state) {
   state.counters["local_finer"] = double(d.local_finer);
   state.counters["drawn_differ"] = double(d.drawn_differ);
 }
+
+// The plugin's cluster frame with the switch policy (its default) at 10 M clusters (399 tiles),
+// over 180 consecutive frames at 90 Hz of the terrain walk from t = 60 s (a saccade every
+// 23rd frame): mode 0, what the plugin ran before: the selector writing its bytes
+// incrementally, then lod::apply_cluster_switch_policy over every cluster; mode 1,
+// plugin::ClusterMeshes::update, which steps only the clusters whose bits may have changed
+// and those still held back. Both with the plugin's kClusterThreads. Counters as
+// BM_ClusterCut's; stepped = clusters the policy stepped per frame (mode 1); x_full = the CPU
+// time of all threads over mode 0's.
+void BM_PluginClusterFrame(benchmark::State& state) {
+  constexpr std::size_t kRun = 180;
+  static const std::vector<Viewer> frames = [] {
+    sim::Simulator s(sim::load_scenario_file(std::string(GAZELOD_SOURCE_DIR) + "/sim/scenarios/terrain-walk.json"));
+    std::vector<Viewer> out;
+    for (std::size_t f = 0; f < kRun; ++f)
+      out.push_back(test::scenario_viewer(s, 60'000'000'000 + std::int64_t(f) * 11'111'111, 20.0));
+    return out;
+  }();
+  static double full_cpu_ms = 0.0;
+  const int mode = static_cast<int>(state.range(0));
+  const std::vector<InstanceTransform> ps = poses(instances_for(10'000'000));
+  ClusterInstances instances;
+  plugin::ClusterMeshes meshes;
+  const std::uint32_t h = instances.add_hierarchy(tile(), 1u << 30);
+  for (const InstanceTransform& p : ps) {
+    if (mode == 0) {
+      (void)instances.add_instance(h, p, glm::dvec3(0.0));
+      continue;
+    }
+    ClusterMeshDesc d;
+    d.hierarchy = tile();
+    d.index_count = 1u << 30;
+    d.pose = p;
+    (void)meshes.add(d);
+  }
+  const std::size_t n = mode == 0 ? instances.size() : meshes.cluster_count();
+  test::CutBytes bytes(n);
+  std::vector<std::uint8_t> record_held(n), drawn(n), held(n);
+  std::vector<double> self_window(n, kNoSwitchWindow), parent_window(n, kNoSwitchWindow);
+  const ClusterSwitchState policy_state{record_held, self_window, parent_window};
+  ClusterSelector selector(plugin::kClusterThreads);  // the plugin's threads in both modes
+  const SwitchPolicyConfig policy;
+  std::size_t f = 0, stepped = 0;
+  bool incremental = false;
+  const double cpu0 = cpu_ms(CLOCK_THREAD_CPUTIME_ID), all0 = cpu_ms(CLOCK_PROCESS_CPUTIME_ID);
+  const auto t0 = std::chrono::steady_clock::now();
+  for (auto _ : state) {
+    const Viewer& v = frames[f % kRun];
+    const double t_s = double(f) / 90.0;  // the clock runs on over the repeats
+    const bool suppressed = f % 23 < 3;
+    if (mode == 0) {
+      std::string err = selector.select(v, instances, {bytes.drawn, bytes.why, bytes.bits, incremental});
+      incremental = err.empty();
+      if (f == 0) std::copy(bytes.bits.begin(), bytes.bits.end(), record_held.begin());
+      if (err.empty())
+        err = apply_cluster_switch_policy(policy, t_s, suppressed, bytes.bits, policy_state, drawn, held);
+      if (!err.empty()) state.SkipWithError(err.c_str());
+    } else {
+      meshes.update(v, &policy, t_s, suppressed);
+      stepped += meshes.policy_clusters_stepped();
+    }
+    ++f;
+    benchmark::ClobberMemory();
+  }
+  const double frames_run = double(state.iterations());
+  const double cpu = (cpu_ms(CLOCK_THREAD_CPUTIME_ID) - cpu0) / frames_run;
+  const double all = (cpu_ms(CLOCK_PROCESS_CPUTIME_ID) - all0) / frames_run;
+  state.counters["clusters"] = double(n);
+  state.counters["all_threads_cpu_ms"] = all;
+  state.counters["ms_per_frame"] =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count() / frames_run;
+  state.counters["cpu_ms_per_frame"] = cpu;
+  if (mode == 0) full_cpu_ms = all;
+  if (mode == 1) {
+    state.counters["stepped"] = double(stepped) / frames_run;
+    if (full_cpu_ms > 0.0) state.counters["x_full"] = all / full_cpu_ms;
+  }
+}
+
+BENCHMARK(BM_PluginClusterFrame)->Arg(0)->Arg(1)->ArgNames({"mode"})->Unit(benchmark::kMillisecond)->UseRealTime();
 
 BENCHMARK(BM_LocalVsWorld)
     ->Args({0, 3})

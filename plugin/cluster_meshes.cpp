@@ -108,20 +108,59 @@ void ClusterMeshes::update(const lod::Viewer& viewer, const lod::SwitchPolicyCon
     std::fill(limited_.begin(), limited_.end(), static_cast<std::uint8_t>(lod::Criterion::invalid_input));
     std::copy(perceptual_.begin(), perceptual_.end(), drawn_.begin());
     std::fill(held_.begin(), held_.end(), 0);
+    policy_state_valid_ = false;
     return;
   }
-  if (policy == nullptr) return;
+  if (policy == nullptr) {
+    policy_state_valid_ = false;
+    return;
+  }
   // Meshes registered since the last frame: their first cut is the perceptual one.
   for (std::size_t i = new_from_; i < n; ++i) {
     record_held_[i] = invisible_[i];
     self_window_s_[i] = parent_window_s_[i] = lod::kNoSwitchWindow;
   }
   new_from_ = n;
-  const lod::ClusterSwitchState state{record_held_, self_window_s_, parent_window_s_};
-  if (!lod::apply_cluster_switch_policy(*policy, t_s, suppressed, invisible_, state, drawn_, held_).empty()) {
+  evaluated_.clear();
+  selector_.append_evaluated(instances_, evaluated_);
+  const std::string err = apply_policy(*policy, t_s, suppressed);
+  std::swap(previous_evaluated_, evaluated_);
+  policy_state_valid_ = err.empty();
+  if (!err.empty()) {
     std::copy(perceptual_.begin(), perceptual_.end(), drawn_.begin());
     std::fill(held_.begin(), held_.end(), 0);
   }
+}
+
+// In time proportional to the change (the switch policy must not undo what the selector's
+// bounding tree saves): a cluster's policy step changes nothing while its record bits equal its
+// held bits, so only the clusters whose bits the selector may have rewritten (those it evaluated
+// this frame or the last) and those left pending (a coarsening still held back) are stepped
+// (lod::apply_cluster_switch_policy_listed). The full pass where that is not known: the first
+// frame, after a refusal or a frame without the policy, or when the selector wrote every byte.
+std::string ClusterMeshes::apply_policy(const lod::SwitchPolicyConfig& policy, double t_s, bool suppressed) {
+  const lod::ClusterSwitchState state{record_held_, self_window_s_, parent_window_s_};
+  const std::size_t n = instances_.size();
+  if (!policy_state_valid_ || !selector_.last_select_incremental()) {
+    std::string err = lod::apply_cluster_switch_policy(policy, t_s, suppressed, invisible_, state, drawn_, held_);
+    policy_stepped_ = n;
+    pending_.clear();
+    for (std::size_t i = 0; i < n && err.empty(); ++i)
+      if ((invisible_[i] & 3 & ~record_held_[i]) != 0) pending_.push_back(static_cast<std::uint32_t>(i));
+    return err;
+  }
+  listed_mark_.resize(n, 0);  // all 0 between frames
+  listed_.clear();
+  for (const std::vector<std::uint32_t>* from : {&evaluated_, &previous_evaluated_, &pending_})
+    for (std::uint32_t i : *from)
+      if (i < n && listed_mark_[i] == 0) listed_mark_[i] = 1, listed_.push_back(i);
+  for (std::uint32_t i : listed_) listed_mark_[i] = 0;
+  next_pending_.clear();
+  policy_stepped_ = listed_.size();
+  std::string err = lod::apply_cluster_switch_policy_listed(policy, t_s, suppressed, invisible_, state, drawn_, held_,
+                                                            listed_, next_pending_);
+  std::swap(pending_, next_pending_);
+  return err;
 }
 
 double ClusterMeshes::triangles_of(std::uint32_t mesh, std::span<const std::uint8_t> bytes) const {

@@ -5,7 +5,9 @@
 // cut (lod::ClusterSelector: each mesh in its own space through its hierarchy's bounding tree,
 // in time proportional to the cut, on up to kClusterThreads threads; the same cut as
 // lod::select_clusters_local) and the cut drawn after the switch policy
-// (lod::apply_cluster_switch_policy), in arrays the plugin hands out as FrameDecisions::cluster_*.
+// (lod::apply_cluster_switch_policy_listed: only the clusters the selector evaluated this frame
+// or the last and those still held back are stepped, so the frame stays proportional to the
+// cut), in arrays the plugin hands out as FrameDecisions::cluster_*.
 // All allocation happens at registration (and in the first frames, while the cut's lists grow).
 //
 // With a frame budget (docs/cluster-budget.md), each mesh is an item of the budget's MCKP: after
@@ -54,6 +56,8 @@ class ClusterMeshes {
   std::span<const std::uint8_t> limited_by() const { return budget_used_ ? final_limited_ : limited_; }
   std::span<const std::uint8_t> held() const { return budget_used_ ? final_held_ : held_; }
   std::span<const std::uint32_t> first_cluster() const { return first_; }
+  // The last update()'s switch-policy work: clusters stepped (all of them in a full pass).
+  std::size_t policy_clusters_stepped() const { return policy_stepped_; }
 
   // Frame budget, after update(): per mesh, the triangles of this frame's perceptual cut and of
   // the cut update() drew (the switch policy's), by one pass over the cluster bytes.
@@ -82,6 +86,8 @@ class ClusterMeshes {
   double triangles_of(std::uint32_t mesh, std::span<const std::uint8_t> bytes) const;
   // The finest consistent cut (every source cluster) into out, clusters [first, first + out.size()).
   void draw_finest(std::span<std::uint8_t> out, std::size_t first) const;
+  // The switch policy over this frame's invisible_ into drawn_ and held_ (see the .cpp).
+  [[nodiscard]] std::string apply_policy(const lod::SwitchPolicyConfig& policy, double t_s, bool suppressed);
 
   lod::ClusterInstances instances_;
   lod::ClusterSelector selector_;
@@ -93,6 +99,14 @@ class ClusterMeshes {
   bool bytes_incremental_ = false;
   std::size_t new_from_ = 0;  // clusters [new_from_, size) have not had their first frame
   bool policy_used_ = false;
+  // The switch policy in time proportional to the change: the clusters the selector evaluated
+  // this frame and the last, those with a coarsening still held back, and the list stepped
+  // (deduplicated by listed_mark_, all 0 between frames). policy_state_valid_: last frame
+  // stepped the policy over the selector's cut.
+  std::vector<std::uint32_t> evaluated_, previous_evaluated_, pending_, next_pending_, listed_;
+  std::vector<std::uint8_t> listed_mark_;
+  bool policy_state_valid_ = false;
+  std::size_t policy_stepped_ = 0;
 
   // Frame budget: per hierarchy its cut-cost ladder and bounding sphere (its own space); per
   // mesh the triangles, step and scale; the second selector and its cut.

@@ -52,7 +52,7 @@ case "$what" in
     # libgazelod.so before the ThreadSanitizer runtime is set up (test_capi crashed loading it).
     build build-tsan -DGAZELOD_TSAN=ON -DGAZELOD_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=Debug \
       "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -g1 -DGAZELOD_NO_CLONES" -- test_hid test_faults test_bake_clusters test_capi \
-      test_lod_cluster_bvh
+      test_lod_cluster_bvh test_plugin_cluster_policy
     # Repeated: a test that reads what a thread publishes before it is published fails only
     # sometimes (issue #40 item 11; 50 repeats ran clean before this landed, bench/RESULTS.md).
     TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 ./build-tsan/tests/hid/test_hid --gtest_repeat=10 --gtest_brief=1
@@ -63,6 +63,8 @@ case "$what" in
     # The cluster selection's thread pool: the same cut on 1, 2 and 4 threads.
     TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 ./build-tsan/tests/lod/test_lod_cluster_bvh \
       --gtest_filter='ClusterSelectorThreads.*' --gtest_repeat=10 --gtest_brief=1
+    # The plugin's cluster frame on those threads, its switch policy stepping what they evaluated.
+    TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 ./build-tsan/tests/plugin/test_plugin_cluster_policy --gtest_brief=1
     TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 ./build-tsan/tests/bake/test_bake_clusters \
       --gtest_filter='ClusterBuild.SameHierarchyOnAnyThreadCount*:ClusterBuild.OpenGridSimplifiesItsRimWithoutCrack:SharedPositions.TiledTerrainKeepsTileSeamsAndSimplifiesTheRim:ClusterGltf.SideBySideBuildsWriteTheSameFile'
     echo "== every libFuzzer target builds (clang, ASan+UBSan) and runs 10 s from its seeds =="

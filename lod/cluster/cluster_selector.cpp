@@ -28,6 +28,7 @@ void ClusterSelector::plan(const ClusterInstances& instances) {
 
 std::string ClusterSelector::select(const Viewer& viewer, const ClusterInstances& instances,
                                     const ClusterCutBytes& bytes, std::span<const double> detail_scale) {
+  last_incremental_ = false;  // until this frame succeeds
   if (std::string e = validate_viewer(viewer); !e.empty()) return "viewer: " + e;
   if (std::string e = check_detail_scales(detail_scale, instances.instance_count()); !e.empty()) return e;
   const std::size_t n = instances.size();
@@ -89,7 +90,18 @@ std::string ClusterSelector::select(const Viewer& viewer, const ClusterInstances
   }
   last_bytes_ = b;
   bytes_valid_ = b.any();
+  last_incremental_ = incremental;
   return {};
+}
+
+void ClusterSelector::append_evaluated(const ClusterInstances& instances, std::vector<std::uint32_t>& out) const {
+  for (std::size_t t = 0; t < tasks_.size() && t < outputs_.size(); ++t) {
+    const ClusterInstance& inst = instances.instance(tasks_[t].instance);
+    const ClusterBvh& bvh = instances.bvh(inst.hierarchy);
+    const std::vector<std::uint32_t>& runs = outputs_[t].runs;
+    for (std::size_t r = 0; r + 1 < runs.size(); r += 2)
+      for (std::uint32_t j = runs[r]; j < runs[r + 1]; ++j) out.push_back(inst.first_cluster + bvh.cluster_id[j]);
+  }
 }
 
 }  // namespace gazelod::lod

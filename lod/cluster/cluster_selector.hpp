@@ -69,6 +69,13 @@ class ClusterSelector {
                                    const ClusterCutBytes& bytes = {}, std::span<const double> detail_scale = {});
 
   std::span<const std::uint32_t> drawn() const { return drawn_; }
+  // Whether the last select() wrote only what changed (ClusterCutBytes::incremental honoured):
+  // then its byte outputs differ from the frame before only at the clusters it evaluated and
+  // those the frame before evaluated (append_evaluated's lists of the two frames).
+  bool last_select_incremental() const { return last_incremental_; }
+  // Appends the global ids of the clusters the last select() evaluated (in time proportional to
+  // them); `instances` as passed to it.
+  void append_evaluated(const ClusterInstances& instances, std::vector<std::uint32_t>& out) const;
   std::span<const std::uint8_t> drawn_limited_by() const { return limited_; }
   // The last frame's work: node records tested and clusters evaluated.
   std::size_t nodes_tested() const { return nodes_tested_; }
@@ -95,6 +102,7 @@ class ClusterSelector {
   std::uint64_t planned_generation_ = 0;
   detail::BvhBytes last_bytes_;
   bool bytes_valid_ = false;
+  bool last_incremental_ = false;
 };
 
 }  // namespace gazelod::lod

@@ -47,6 +47,31 @@ bool step_record(const SwitchHold& st, double t_s, bool invisible, bool held, do
   return false;
 }
 
+// Cluster i's two records stepped; its drawn and held written. Returns whether a record is left
+// invisible but not held (pending: its window is open).
+bool step_cluster(const SwitchHold& st, double t_s, std::uint8_t bits, const ClusterSwitchState& state, std::size_t i,
+                  std::span<std::uint8_t> drawn, std::span<std::uint8_t> held) {
+  const std::uint8_t was = state.record_held[i];
+  HoldReason why_self = HoldReason::none, why_parent = HoldReason::none;
+  const bool self = step_record(st, t_s, (bits & 1) != 0, (was & 1) != 0, state.self_window_start_s[i], why_self);
+  const bool parent = step_record(st, t_s, (bits & 2) != 0, (was & 2) != 0, state.parent_window_start_s[i], why_parent);
+  const auto now = static_cast<std::uint8_t>((self ? 1 : 0) | (parent ? 2 : 0));
+  state.record_held[i] = now;
+  drawn[i] = self && !parent ? 1 : 0;
+  if (!held.empty()) held[i] = static_cast<std::uint8_t>(why_parent != HoldReason::none ? why_parent : why_self);
+  return (bits & 3 & ~now) != 0;
+}
+
+// "" when config, state, drawn and held fit n clusters.
+[[nodiscard]] std::string check_frame(const char* fn, const SwitchPolicyConfig& config, const ClusterSwitchState& state,
+                                      std::size_t n, std::span<std::uint8_t> drawn, std::span<std::uint8_t> held) {
+  if (std::string e = validate_switch_config(config); !e.empty()) return std::string(fn) + ": " + e;
+  if (std::string e = check_state(fn, state, n); !e.empty()) return e;
+  if (drawn.size() != n) return switch_length_error(fn, "drawn", drawn.size(), n);
+  if (!held.empty() && held.size() != n) return switch_length_error(fn, "held", held.size(), n);
+  return {};
+}
+
 }  // namespace
 
 std::string reset_cluster_switch_state(const ClusterSwitchState& state, std::span<const float> self_error_m,
@@ -66,24 +91,28 @@ std::string reset_cluster_switch_state(const ClusterSwitchState& state, std::spa
 std::string apply_cluster_switch_policy(const SwitchPolicyConfig& config, double t_s, bool suppressed,
                                         std::span<const std::uint8_t> record_invisible, const ClusterSwitchState& state,
                                         std::span<std::uint8_t> drawn, std::span<std::uint8_t> held) {
-  const char* fn = "apply_cluster_switch_policy";
-  if (std::string e = validate_switch_config(config); !e.empty()) return std::string(fn) + ": " + e;
   const std::size_t n = record_invisible.size();
-  if (std::string e = check_state(fn, state, n); !e.empty()) return e;
-  if (drawn.size() != n) return switch_length_error(fn, "drawn", drawn.size(), n);
-  if (!held.empty() && held.size() != n) return switch_length_error(fn, "held", held.size(), n);
-
+  if (std::string e = check_frame("apply_cluster_switch_policy", config, state, n, drawn, held); !e.empty()) return e;
   const SwitchHold st = switch_hold(config, t_s, suppressed);
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::uint8_t bits = record_invisible[i], was = state.record_held[i];
-    HoldReason why_self = HoldReason::none, why_parent = HoldReason::none;
-    const bool self = step_record(st, t_s, (bits & 1) != 0, (was & 1) != 0, state.self_window_start_s[i], why_self);
-    const bool parent =
-        step_record(st, t_s, (bits & 2) != 0, (was & 2) != 0, state.parent_window_start_s[i], why_parent);
-    state.record_held[i] = static_cast<std::uint8_t>((self ? 1 : 0) | (parent ? 2 : 0));
-    drawn[i] = self && !parent ? 1 : 0;
-    if (!held.empty()) held[i] = static_cast<std::uint8_t>(why_parent != HoldReason::none ? why_parent : why_self);
-  }
+  for (std::size_t i = 0; i < n; ++i) (void)step_cluster(st, t_s, record_invisible[i], state, i, drawn, held);
+  return {};
+}
+
+std::string apply_cluster_switch_policy_listed(const SwitchPolicyConfig& config, double t_s, bool suppressed,
+                                               std::span<const std::uint8_t> record_invisible,
+                                               const ClusterSwitchState& state, std::span<std::uint8_t> drawn,
+                                               std::span<std::uint8_t> held, std::span<const std::uint32_t> clusters,
+                                               std::vector<std::uint32_t>& pending) {
+  const char* fn = "apply_cluster_switch_policy_listed";
+  const std::size_t n = record_invisible.size();
+  if (std::string e = check_frame(fn, config, state, n, drawn, held); !e.empty()) return e;
+  for (std::uint32_t i : clusters)
+    if (i >= n)
+      return std::string(fn) + ": cluster " + std::to_string(i) + " is out of range (" + std::to_string(n) +
+             " clusters)";
+  const SwitchHold st = switch_hold(config, t_s, suppressed);
+  for (std::uint32_t i : clusters)
+    if (step_cluster(st, t_s, record_invisible[i], state, i, drawn, held)) pending.push_back(i);
   return {};
 }
 

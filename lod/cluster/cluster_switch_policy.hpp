@@ -27,6 +27,9 @@
 //   each frame: select_clusters(viewer, clusters, {drawn_now, why, ..., record_invisible});
 //     apply_cluster_switch_policy(config, t_s, suppressed, record_invisible, state, drawn, held);
 //     draw cluster i when drawn[i] == 1; held[i] (HoldReason) says why a coarser cut waits.
+//   or, with a selector that rewrites only what changed (ClusterSelector's incremental bytes),
+//     apply_cluster_switch_policy_listed over the clusters it evaluated this frame and the last
+//     and those left pending: the same result in time proportional to the change.
 // Validation: an invalid config or spans of different lengths are refused with a message,
 // nothing written. A non-finite t_s is a frame in which no time passes (as for objects).
 #pragma once
@@ -36,6 +39,7 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace gazelod::lod {
 
@@ -61,5 +65,17 @@ struct ClusterSwitchState {
                                                       std::span<const std::uint8_t> record_invisible,
                                                       const ClusterSwitchState& state, std::span<std::uint8_t> drawn,
                                                       std::span<std::uint8_t> held);
+
+// The same step for the listed clusters only (each at most once), in time proportional to the
+// list: every other cluster keeps its state, drawn and held, which is exactly what the full pass
+// gives a cluster whose record_invisible equals its held bits (its windows then are closed).
+// So listing every cluster whose record_invisible changed since the last frame plus those left
+// pending (a record invisible, not yet held) gives the full pass's result. Appends to pending
+// the listed clusters left pending after this frame. "" or a message (an id out of range, or as
+// apply_cluster_switch_policy), nothing written then.
+[[nodiscard]] std::string apply_cluster_switch_policy_listed(
+    const SwitchPolicyConfig& config, double t_s, bool suppressed, std::span<const std::uint8_t> record_invisible,
+    const ClusterSwitchState& state, std::span<std::uint8_t> drawn, std::span<std::uint8_t> held,
+    std::span<const std::uint32_t> clusters, std::vector<std::uint32_t>& pending);
 
 }  // namespace gazelod::lod

@@ -159,6 +159,45 @@ TEST(ClusterSwitchPolicy, RefusesBadConfigAndLengths) {
   EXPECT_NE(apply_cluster_switch_policy({}, 0.0, false, bits, {st.held, short_start, st.parent_start}, st.drawn, {}),
             "");
   EXPECT_EQ(st.held, before);
+  // The listed pass: the same checks, and an id past the clusters, nothing written.
+  std::vector<std::uint32_t> pending;
+  const std::vector<std::uint32_t> past{0, 2};
+  EXPECT_NE(apply_cluster_switch_policy_listed(bad, 0.0, false, bits, st.s(), st.drawn, st.why, past, pending), "");
+  EXPECT_NE(apply_cluster_switch_policy_listed({}, 0.0, false, bits, st.s(), st.drawn, st.why, past, pending)
+                .find("cluster 2 is out of range (2 clusters)"),
+            std::string::npos);
+  EXPECT_EQ(st.held, before);
+  EXPECT_TRUE(pending.empty());
+}
+
+// Listing a cluster steps it as the full pass does; one left out keeps its state, and a
+// coarsening still held back is reported pending until it is drawn.
+TEST(ClusterSwitchPolicy, ListedPassStepsTheListAndReportsWhatIsPending) {
+  State full(2), listed(2);
+  ASSERT_EQ(reset_cluster_switch_state(full.s(), kSelfErr, kParentErr), "");
+  ASSERT_EQ(reset_cluster_switch_state(listed.s(), kSelfErr, kParentErr), "");
+  const SwitchPolicyConfig c;  // hold 0.2 s, then a saccade or 0.6 s more
+  const std::vector<std::uint8_t> bits = bits_of(true);
+  const std::vector<std::uint32_t> both{0, 1};
+  std::vector<std::uint32_t> pending;
+  for (double t_s : {0.0, 0.1, 0.3, 0.9}) {
+    pending.clear();
+    ASSERT_EQ(apply_cluster_switch_policy(c, t_s, false, bits, full.s(), full.drawn, full.why), "");
+    ASSERT_EQ(apply_cluster_switch_policy_listed(c, t_s, false, bits, listed.s(), listed.drawn, listed.why, both,
+                                                 pending),
+              "");
+    EXPECT_EQ(listed.held, full.held) << t_s;
+    EXPECT_EQ(listed.drawn, full.drawn) << t_s;
+    EXPECT_EQ(listed.why, full.why) << t_s;
+    // Pending while a record is invisible and not yet held, i.e. while the coarsening waits.
+    EXPECT_EQ(pending.size(), t_s < 0.8 ? 2u : 0u) << t_s;
+  }
+  // Now held: an empty list changes nothing, as the full pass would not.
+  const std::vector<std::uint8_t> held = listed.held, drawn = listed.drawn;
+  ASSERT_EQ(apply_cluster_switch_policy_listed(c, 1.0, false, bits, listed.s(), listed.drawn, listed.why, {}, pending),
+            "");
+  EXPECT_EQ(listed.held, held);
+  EXPECT_EQ(listed.drawn, drawn);
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // What the plugin returns each frame: the levels to draw (FrameDecisions) and, for reports
 // and debugging, how it got there (FrameDiagnostics). Spans are indexed by object id and stay
-// valid until the next begin_frame.
+// valid until the next begin_frame or registration (add_object, add_cluster_mesh: the arrays
+// behind them grow).
 #pragma once
 
 #include "gaze/gaze_conditioner.hpp"

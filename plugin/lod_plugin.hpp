@@ -104,7 +104,8 @@ class LodPlugin {
   virtual plugin::PushResult push_gaze(const plugin::PushedSample& sample, std::string& why) = 0;
 
   // At the frame's predicted display time: gaze, head, views, selection. The returned
-  // spans stay valid until the next begin_frame. No allocation after the first frame.
+  // spans stay valid until the next begin_frame or registration. No allocation after the first
+  // frame.
   virtual const FrameDecisions& begin_frame(XrTime predicted_display_time) = 0;
   // How the last begin_frame decided (valid until the next one).
   virtual const FrameDiagnostics& diagnostics() const = 0;

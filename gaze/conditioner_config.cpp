@@ -63,6 +63,7 @@ std::string validate_conditioner_config(const ConditionerConfig& c) {
       at_least_zero("carried_evidence", c.carried_evidence),
       above_zero_ns("max_gap_ns", c.max_gap_ns),
       at_least_zero_ns("fixation_smoothing_tau_ns", c.fixation_smoothing_tau_ns),
+      at_least_zero("fixation_step_chi2", c.fixation_step_chi2),
       at_least_zero_ns("pursuit_velocity_tau_ns", c.pursuit_velocity_tau_ns),
       at_least_zero_ns("prediction_horizon_max_ns", c.prediction_horizon_max_ns),
       at_least_zero_ns("post_saccade_suppression_ns", c.post_saccade_suppression_ns),

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// Small numeric guards the gaze conditioner's files share (gaze_conditioner.cpp: samples in;
-// conditioner_predict.cpp: the estimate at the display time). Internal to gaze/.
+// Small numeric guards and constants the gaze conditioner's files share (gaze_conditioner.cpp:
+// samples in; conditioner_fixation.cpp: the fixation's tests; conditioner_predict.cpp: the
+// estimate at the display time). Internal to gaze/.
 #pragma once
 
 #include <glm/geometric.hpp>
@@ -8,10 +9,19 @@
 #include <glm/vec3.hpp>
 
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 
 namespace gazelod::gaze::detail {
+
+inline constexpr std::size_t kMinPursuitSamples = 5;  // residuals need a few degrees of freedom
+// The carried test's window: most fixations are shorter (Rayner 1998); a long one is judged on
+// its latest second, so a head that stops moving is noticed.
+inline constexpr std::int64_t kCarriedWindowNs = 1'000'000'000;
+// The step test's window: about half of a small saccade's duration (21 ms + 2.2 ms/deg,
+// Carpenter 1988), so a landing is judged on the samples after it.
+inline constexpr std::int64_t kStepWindowNs = 25'000'000;
 
 inline bool finite3(const glm::dvec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);

@@ -20,6 +20,8 @@ namespace gazelod::gaze {
 
 using detail::ema_alpha;
 using detail::finite3;
+using detail::kCarriedWindowNs;
+using detail::kMinPursuitSamples;
 using detail::normalized_dir;
 using detail::normalized_quat;
 using detail::sat_sub;
@@ -27,11 +29,7 @@ using detail::sat_sub;
 namespace {
 
 constexpr std::size_t kMinVelocitySamples = 3;  // a slope from fewer is a two-sample difference
-constexpr std::size_t kMinPursuitSamples = 5;   // residuals need a few degrees of freedom
 constexpr double kNoiseTau_s = 2.0;             // averaging time of the long-run noise level
-// The carried test's window: most fixations are shorter (Rayner 1998); a long one is judged on
-// its latest second, so a head that stops moving is noticed.
-constexpr std::int64_t kCarriedWindowNs = aux::ns_from_seconds(1.0);
 
 // The constructor's check: a bad setting is refused with its name and value, never replaced
 // by a default (docs/error-policy.md).
@@ -189,35 +187,7 @@ void GazeConditioner::push_invalid(std::int64_t t_ns) noexcept {
   motion_ = EyeMotion::loss;  // est_world_ is held
   omega_world_ = glm::dvec3(0.0);
   speed_deg_s_ = 0.0;
-  carried_ = carried_prior_ = false;
-}
-
-double GazeConditioner::carried_evidence(std::size_t m, glm::dvec3& head_mean) const noexcept {
-  m = std::min(m, segment_count_);
-  if (m == 0) return 0.0;
-  // Residual sum of squares about each frame's mean direction, in tangent-plane angles.
-  const auto rss = [&](auto pick, glm::dvec3& mean) {
-    glm::dvec3 sum(0.0);
-    for (std::size_t i = 0; i < m; ++i) sum += pick(newest(i));
-    if (!normalized_dir(sum, mean)) return std::numeric_limits<double>::infinity();
-    glm::dvec3 e1, e2;
-    aux::tangent_basis(mean, e1, e2);
-    glm::dvec2 s(0.0), ss(0.0);
-    for (std::size_t i = 0; i < m; ++i) {
-      const glm::dvec2 a = aux::angular_offset_rad(pick(newest(i)), mean, e1, e2);
-      s += a;
-      ss += a * a;
-    }
-    const double n = static_cast<double>(m);
-    return std::max(0.0, ss.x - s.x * s.x / n) + std::max(0.0, ss.y - s.y * s.y / n);
-  };
-  glm::dvec3 world_mean;
-  const double in_world = rss([](const Entry& e) { return e.world; }, world_mean);
-  const double in_head = rss([](const Entry& e) { return e.head; }, head_mean);
-  if (m < kMinPursuitSamples) return 0.0;  // too few for residuals: no evidence either way
-  const double var = std::max(noise_var_, 1e-12);
-  const double evidence = (in_world - in_head) / var;
-  return std::isfinite(evidence) ? evidence : 0.0;
+  carried_ = false;
 }
 
 void GazeConditioner::push_valid(std::int64_t t_ns, const glm::dvec3& world, const glm::dvec3& head) noexcept {
@@ -228,7 +198,7 @@ void GazeConditioner::push_valid(std::int64_t t_ns, const glm::dvec3& world, con
     fixation_n_ = 0.0;
     motion_ = EyeMotion::loss;
     omega_world_ = glm::dvec3(0.0);
-    carried_ = carried_prior_ = false;
+    carried_ = false;
   }
   const double dt_s = segment_count_ > 0 ? aux::seconds_from_ns(sat_sub(t_ns, newest(0).t_ns)) : 0.0;
   ring_[head_] = Entry{t_ns, world, head};
@@ -265,7 +235,6 @@ void GazeConditioner::push_valid(std::int64_t t_ns, const glm::dvec3& world, con
   const double v_se_deg_s = fv.ctt > 0.0 ? std::sqrt(noise_var_ / fv.ctt) * aux::kDegPerRad : 0.0;
   const double v_threshold = std::max(config_.saccade_threshold_deg_s, config_.saccade_significance * v_se_deg_s);
   if (fv.ok && fv.n >= kMinVelocitySamples && fv.span_s >= 0.5 * v_window_s && v_deg_s > v_threshold) {
-    if (prev == EyeMotion::fixation) carried_prior_ = carried_;  // the next fixation starts so
     carried_ = false;
     // No estimate yet (the stream began in a saccade): the oldest sample of the fit, where
     // the saccade started from.
@@ -332,7 +301,7 @@ void GazeConditioner::push_valid(std::int64_t t_ns, const glm::dvec3& world, con
         est_world_ = world;
         fixation_n_ = 1.0;
       }
-    } else {
+    } else if (!fixation_step(t_ns)) {  // a step restarts the fixation at the newest samples
       fixation_n_ += 1.0;
       const double a =
           std::max(1.0 / fixation_n_, ema_alpha(dt_s, aux::seconds_from_ns(config_.fixation_smoothing_tau_ns)));
@@ -341,10 +310,10 @@ void GazeConditioner::push_valid(std::int64_t t_ns, const glm::dvec3& world, con
     }
     // Still in the head rather than in the world (the eyes carried by a moving head)? The
     // evidence grows with the phase, so it is taken over the whole fixation (up to
-    // kCarriedWindow). A fixation after a carried one starts carried (the eyes keep their
-    // behaviour across a saccade) and a carried fixation stays so until the samples favour
-    // the world (evidence below -carried_evidence / 4): a VOR fixation misread as carried
-    // for the ~100 ms this takes is within the switch policy's coarsening hold.
+    // kCarriedWindow). Each fixation starts in the world and earns the carried reading anew:
+    // carrying it over a saccade (the eyes often keep their behaviour) was measured and drew
+    // 10-30 % fewer triangles on the carried seeds but turned reflex-held fixations of noisy
+    // trackers into visible degradations (docs/evaluation.md, "Scenario family").
     std::size_t w = 0;
     while (w < phase_count_ && t_ns - newest(w).t_ns <= kCarriedWindowNs) ++w;
     glm::dvec3 head_mean = est_head_;

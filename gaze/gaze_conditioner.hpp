@@ -122,6 +122,18 @@ struct ConditionerConfig {
   // slow drift). Most fixations last 200-300 ms (Rayner 1998), so they are averaged whole; at
   // 120 Hz the steady state averages ~60 samples (0.5 deg noise -> ~0.07 deg).
   std::int64_t fixation_smoothing_tau_ns = 250'000'000;
+  // A step in a fixation: the mean of the newest samples (25 ms, at least 3) lies apart from
+  // the mean of the fixation's samples before them (up to dispersion_window, at least as many)
+  // by more than this chi-square of 2 degrees of freedom under the measured noise, in the
+  // world and in the head alike (a carried eye moves only in the world, a reflex-held one
+  // only in the head), and the two means fit those samples better than a line by the same
+  // margin (a ramp is a pursuit beginning, the dispersion test's case). It is a saccade the
+  // velocity test missed (a noisy tracker raises that test's threshold, saccade_significance:
+  // at 1.4 deg and 227 Hz to ~130 deg/s, above many small saccades); the fixation restarts at
+  // those samples instead of dragging its mean there at 1/n a sample. 16: noise alone passes
+  // the first test with p = 3e-4. Chosen from 9, 12, 16, 25, 40 and off on the family's
+  // tuning seeds (docs/evaluation.md, "Scenario family"). 0: off.
+  double fixation_step_chi2 = 16.0;
   // Exponential smoothing of the pursuit angular velocity on top of the least-squares fit
   // (the fit's slope changes by noise from sample to sample); 50 ms, well under the ~100 ms
   // latency with which pursuit itself follows a change of target velocity (Lisberger, Morris
@@ -230,8 +242,12 @@ class GazeConditioner {
   const Entry& newest(std::size_t back) const noexcept;
   void push_valid(std::int64_t t_ns, const glm::dvec3& world, const glm::dvec3& head) noexcept;
   // Twice the log-likelihood ratio of "still in the head" over "still in the world" for the
-  // newest m samples, in noise variances; and the eye-in-head mean.
+  // newest m samples, in noise variances; and the eye-in-head mean
+  // (gaze/conditioner_fixation.cpp).
   double carried_evidence(std::size_t m, glm::dvec3& head_mean) const noexcept;
+  // In a fixation: restarts it at the newest samples when they sit apart from the estimate
+  // (fixation_step_chi2); true if it did.
+  bool fixation_step(std::int64_t t_ns) noexcept;
   void push_invalid(std::int64_t t_ns) noexcept;
 
   ConditionerConfig config_;
@@ -257,7 +273,6 @@ class GazeConditioner {
   glm::dvec3 est_world_{0.0, 0.0, -1.0};
   glm::dvec3 omega_world_{0.0};          // pursuit only
   bool carried_ = false;                 // fixation: still in the head, not in the world
-  bool carried_prior_ = false;           // the fixation before the latest saccade was carried
   glm::dvec3 est_head_{0.0, 0.0, -1.0};  // carried: the eye-in-head mean
   double speed_deg_s_ = 0.0;             // eye-in-world speed of the current motion (0 in fixation)
   double fixation_n_ = 0.0;              // samples in the fixation mean so far

@@ -42,6 +42,8 @@ std::vector<BadSetting> bad_settings() {
       {"carried_evidence", "-2", [](C& c) { c.carried_evidence = -2.0; }},
       {"max_gap_ns", "0", [](C& c) { c.max_gap_ns = 0; }},
       {"fixation_smoothing_tau_ns", "-1", [](C& c) { c.fixation_smoothing_tau_ns = -1; }},
+      {"fixation_step_chi2", "-1", [](C& c) { c.fixation_step_chi2 = -1.0; }},
+      {"fixation_step_chi2", "nan", [](C& c) { c.fixation_step_chi2 = kNaN; }},
       {"pursuit_velocity_tau_ns", "-1", [](C& c) { c.pursuit_velocity_tau_ns = -1; }},
       {"prediction_horizon_max_ns", "-1", [](C& c) { c.prediction_horizon_max_ns = -1; }},
       {"post_saccade_suppression_ns", "-1", [](C& c) { c.post_saccade_suppression_ns = -1; }},

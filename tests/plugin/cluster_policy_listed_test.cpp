@@ -89,7 +89,9 @@ TEST(ClusterMeshesPolicy, StepsWhatChangedAndEqualsTheFullPassEveryFrame) {
     }
     frames_changed += k > 0 && !std::equal(got.begin(), got.end(), last.begin());
     std::copy(got.begin(), got.end(), last.begin());
-    if (k == 0 || k == kNoPolicyFrame + 1) EXPECT_EQ(meshes.policy_clusters_stepped(), n) << "a full pass";
+    if (k == 0 || k == kNoPolicyFrame + 1) {
+      EXPECT_EQ(meshes.policy_clusters_stepped(), n) << "a full pass";
+    }
     if (k > 0 && k != kNoPolicyFrame && k != kNoPolicyFrame + 1)
       stepped_after_first += meshes.policy_clusters_stepped();
   }

@@ -1,0 +1,110 @@
+// SPDX-License-Identifier: Apache-2.0
+// The gaze conditioner's two tests inside a fixation (gaze_conditioner.hpp): is it carried by
+// the head rather than held in the world, and has it moved to a new place without the velocity
+// test noticing (a step)?
+#include "gaze/gaze_conditioner.hpp"
+
+#include "auxiliary/angles.hpp"
+#include "auxiliary/time.hpp"
+#include "gaze/conditioner_math.hpp"
+
+#include <glm/vec2.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace gazelod::gaze {
+
+using detail::kMinPursuitSamples;
+using detail::kStepWindowNs;
+using detail::normalized_dir;
+
+double GazeConditioner::carried_evidence(std::size_t m, glm::dvec3& head_mean) const noexcept {
+  m = std::min(m, segment_count_);
+  if (m == 0) return 0.0;
+  // Residual sum of squares about each frame's mean direction, in tangent-plane angles.
+  const auto rss = [&](auto pick, glm::dvec3& mean) {
+    glm::dvec3 sum(0.0);
+    for (std::size_t i = 0; i < m; ++i) sum += pick(newest(i));
+    if (!normalized_dir(sum, mean)) return std::numeric_limits<double>::infinity();
+    glm::dvec3 e1, e2;
+    aux::tangent_basis(mean, e1, e2);
+    glm::dvec2 s(0.0), ss(0.0);
+    for (std::size_t i = 0; i < m; ++i) {
+      const glm::dvec2 a = aux::angular_offset_rad(pick(newest(i)), mean, e1, e2);
+      s += a;
+      ss += a * a;
+    }
+    const double n = static_cast<double>(m);
+    return std::max(0.0, ss.x - s.x * s.x / n) + std::max(0.0, ss.y - s.y * s.y / n);
+  };
+  glm::dvec3 world_mean;
+  const double in_world = rss([](const Entry& e) { return e.world; }, world_mean);
+  const double in_head = rss([](const Entry& e) { return e.head; }, head_mean);
+  if (m < kMinPursuitSamples) return 0.0;  // too few for residuals: no evidence either way
+  const double var = std::max(noise_var_, 1e-12);
+  const double evidence = (in_world - in_head) / var;
+  return std::isfinite(evidence) ? evidence : 0.0;
+}
+
+bool GazeConditioner::fixation_step(std::int64_t t_ns) noexcept {
+  if (!(config_.fixation_step_chi2 > 0.0)) return false;
+  const std::size_t avail = std::min(phase_count_, segment_count_);
+  std::size_t k = 0;
+  while (k < avail && t_ns - newest(k).t_ns <= kStepWindowNs) ++k;
+  // The samples before them in the fixation, up to the dispersion window: as many at least
+  // (three: one outlier is no step).
+  std::size_t m = k;
+  while (m < avail && t_ns - newest(m).t_ns <= config_.dispersion_window_ns) ++m;
+  if (k < 3 || m - k < k) return false;
+  // A saccade moves the eye in the head and in the world alike; a carried eye moves only in
+  // the world, a reflex-held one only in the head. So a step must show in both. And a step is
+  // a jump, not a ramp: the two means must also fit the samples better than a line through
+  // them (by the same margin, in noise variances), or it is the start of a pursuit, which the
+  // dispersion test will take.
+  const double var = std::max(noise_var_, 1e-12);
+  const double t0 = aux::seconds_from_ns(newest(0).t_ns);
+  const auto stepped = [&](auto pick, glm::dvec3& landing) {
+    glm::dvec3 e1, e2;
+    const glm::dvec3 ref = pick(newest(0));
+    aux::tangent_basis(ref, e1, e2);
+    glm::dvec2 s_recent(0.0), s_before(0.0), ss(0.0), sa(0.0), sta(0.0);
+    double st = 0.0, stt = 0.0;
+    glm::dvec3 sum(0.0);
+    for (std::size_t i = 0; i < m; ++i) {
+      const glm::dvec2 a = aux::angular_offset_rad(pick(newest(i)), ref, e1, e2);
+      const double t = aux::seconds_from_ns(newest(i).t_ns) - t0;
+      (i < k ? s_recent : s_before) += a;
+      if (i < k) sum += pick(newest(i));
+      ss += a * a;
+      sa += a;
+      st += t;
+      stt += t * t;
+      sta += t * a;
+    }
+    const double nk = static_cast<double>(k), nb = static_cast<double>(m - k), n = static_cast<double>(m);
+    const glm::dvec2 d = s_recent / nk - s_before / nb;
+    if (!(glm::dot(d, d) / (var * (1.0 / nk + 1.0 / nb)) > config_.fixation_step_chi2)) return false;
+    // Residual sums of squares (both axes) of the two means and of the least-squares line.
+    const auto sum2 = [](glm::dvec2 v) { return v.x + v.y; };
+    const double rss_step = sum2(ss) - sum2(s_recent * s_recent) / nk - sum2(s_before * s_before) / nb;
+    const double ctt = stt - st * st / n;
+    if (!(ctt > 0.0)) return false;
+    const glm::dvec2 cta = sta - st * sa / n;
+    const double rss_line = sum2(ss) - sum2(sa * sa) / n - sum2(cta * cta) / ctt;
+    return (rss_line - rss_step) / var > config_.fixation_step_chi2 && normalized_dir(sum, landing);
+  };
+  glm::dvec3 world_landing, head_landing;
+  if (!stepped([](const Entry& e) { return e.world; }, world_landing) ||
+      !stepped([](const Entry& e) { return e.head; }, head_landing))
+    return false;
+  est_world_ = world_landing;
+  est_head_ = head_landing;
+  fixation_n_ = static_cast<double>(k);
+  phase_count_ = k;  // the dispersion and carried tests start from the landing
+  carried_ = false;  // and the carried reading is earned anew
+  return true;
+}
+
+}  // namespace gazelod::gaze

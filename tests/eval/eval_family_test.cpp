@@ -112,10 +112,12 @@ TEST(EvalFamily, HeldOutSeedsMostlyWithinTheTargets) {
   const auto& triangles = d.at("triangles drawn / oracle");
   const auto& switches = d.at("switches per object-second outside suppression");
   EXPECT_LE(degraded.at("median").get<double>(), kTargetDegradedShare);
-  EXPECT_GE(degraded.at("within_target").get<int>(), 18);
+  EXPECT_GE(degraded.at("within_target").get<int>(), 19);
   EXPECT_LE(triangles.at("median").get<double>(), kTargetTriangleRatio);
   EXPECT_GE(triangles.at("median").get<double>(), 1.0) << "below the oracle would be degradations";
-  EXPECT_GE(triangles.at("within_target").get<int>(), 14);
+  // 13: seed 2006 is at 1.35 since head-fixed gaze no longer assumes retinal slip (it was at
+  // 1.34, with twice the degradations; docs/evaluation.md, "Scenario family", item 6).
+  EXPECT_GE(triangles.at("within_target").get<int>(), 13);
   EXPECT_LE(switches.at("median").get<double>(), kTargetSwitchesPerObjectS);
   EXPECT_GE(switches.at("within_target").get<int>(), 16);
 }

@@ -71,6 +71,7 @@ std::string validate_conditioner_config(const ConditionerConfig& c) {
       at_least_zero_ns("loss_hold_max_ns", c.loss_hold_max_ns),
       at_least_zero("age_growth_deg_s", c.age_growth_deg_s),
       at_least_zero("velocity_error_fraction", c.velocity_error_fraction),
+      at_least_zero("saccade_path_margin", c.saccade_path_margin),
       above_zero("max_uncertainty_deg", c.max_uncertainty_deg),
       uncertainty_range,
       above_zero_ns("max_sample_lead_ns", c.max_sample_lead_ns),

@@ -61,6 +61,15 @@ ConditionedGaze GazeConditioner::at(std::int64_t display_t_ns, const glm::dquat&
       if (config_.saccade_follow_newest) {
         dir = last_raw_world_;
         speed_term_deg = speed_deg_s_ * h_s;
+        // A saccade goes on along its path, not back: the cone over the path ahead, centred
+        // half the distance on, with the margin for a curved path or an overshoot.
+        const double half_rad = 0.5 * speed_term_deg * aux::kRadPerDeg;
+        glm::dvec3 next;
+        if (config_.saccade_cone_ahead && glm::length(saccade_axis_) > 0.5 && std::isfinite(half_rad) &&
+            normalized_dir(glm::angleAxis(half_rad, saccade_axis_) * dir, next)) {
+          dir = next;
+          speed_term_deg *= 0.5 * (1.0 + config_.saccade_path_margin);
+        }
       } else {
         speed_term_deg = aux::angle_between_rad(est_world_, last_raw_world_) * aux::kDegPerRad + speed_deg_s_ * h_s;
       }

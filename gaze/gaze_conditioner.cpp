@@ -256,6 +256,11 @@ void GazeConditioner::push_valid(std::int64_t t_ns, const glm::dvec3& world, con
     motion_ = EyeMotion::saccade;  // est_world_ (the estimate before the saccade) is held
     omega_world_ = glm::dvec3(0.0);
     speed_deg_s_ = fv.speed_rad_s() * aux::kDegPerRad;
+    {
+      const glm::dvec3 om = fv.omega();
+      const double w = glm::length(om);
+      saccade_axis_ = std::isfinite(w) && w > 1e-9 ? om / w : glm::dvec3(0.0);
+    }
     have_saccade_ = true;
     saccade_last_t_ns_ = t_ns;
     phase_count_ = 0;  // the next phase begins after the saccade

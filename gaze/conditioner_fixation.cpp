@@ -63,20 +63,24 @@ bool GazeConditioner::fixation_step(std::int64_t t_ns) noexcept {
   // a jump, not a ramp: the two means must also fit the samples better than a line through
   // them (by the same margin, in noise variances), or it is the start of a pursuit, which the
   // dispersion test will take.
-  const double var = std::max(noise_var_, 1e-12);
-  const double t0 = aux::seconds_from_ns(newest(0).t_ns);
+  const std::int64_t t0_ns = newest(0).t_ns;
   const auto stepped = [&](auto pick, glm::dvec3& landing) {
     glm::dvec3 e1, e2;
     const glm::dvec3 ref = pick(newest(0));
     aux::tangent_basis(ref, e1, e2);
-    glm::dvec2 s_recent(0.0), s_before(0.0), ss(0.0), sa(0.0), sta(0.0);
+    glm::dvec2 s_recent(0.0), s_before(0.0), ss_before(0.0), ss(0.0), sa(0.0), sta(0.0);
     double st = 0.0, stt = 0.0;
     glm::dvec3 sum(0.0);
     for (std::size_t i = 0; i < m; ++i) {
       const glm::dvec2 a = aux::angular_offset_rad(pick(newest(i)), ref, e1, e2);
-      const double t = aux::seconds_from_ns(newest(i).t_ns) - t0;
-      (i < k ? s_recent : s_before) += a;
-      if (i < k) sum += pick(newest(i));
+      const double t = aux::seconds_from_ns(newest(i).t_ns - t0_ns);
+      if (i < k) {
+        s_recent += a;
+        sum += pick(newest(i));
+      } else {
+        s_before += a;
+        ss_before += a * a;
+      }
       ss += a * a;
       sa += a;
       st += t;
@@ -84,10 +88,15 @@ bool GazeConditioner::fixation_step(std::int64_t t_ns) noexcept {
       sta += t * a;
     }
     const double nk = static_cast<double>(k), nb = static_cast<double>(m - k), n = static_cast<double>(m);
+    const auto sum2 = [](glm::dvec2 v) { return v.x + v.y; };
+    // The noise level: the long-run one, or the earlier samples' own spread where that is larger
+    // (the long-run level starts from a guess and is learnt over seconds; an underestimate
+    // would read noise as steps).
+    const double spread = (sum2(ss_before) - sum2(s_before * s_before) / nb) / (2.0 * (nb - 1.0));
+    const double var = std::max({noise_var_, std::isfinite(spread) ? spread : 0.0, 1e-12});
     const glm::dvec2 d = s_recent / nk - s_before / nb;
     if (!(glm::dot(d, d) / (var * (1.0 / nk + 1.0 / nb)) > config_.fixation_step_chi2)) return false;
     // Residual sums of squares (both axes) of the two means and of the least-squares line.
-    const auto sum2 = [](glm::dvec2 v) { return v.x + v.y; };
     const double rss_step = sum2(ss) - sum2(s_recent * s_recent) / nk - sum2(s_before * s_before) / nb;
     const double ctt = stt - st * st / n;
     if (!(ctt > 0.0)) return false;

@@ -62,13 +62,17 @@ ConditionedGaze GazeConditioner::at(std::int64_t display_t_ns, const glm::dquat&
         dir = last_raw_world_;
         speed_term_deg = speed_deg_s_ * h_s;
         // A saccade goes on along its path, not back: the cone over the path ahead, centred
-        // half the distance on, with the margin for a curved path or an overshoot.
-        const double half_rad = 0.5 * speed_term_deg * aux::kRadPerDeg;
+        // half the distance on, with the margin for a curved path or an overshoot. The path is
+        // no longer than a saccade lasts (max_saccade) nor than the oculomotor range
+        // (max_uncertainty): a tracker that stops in flight does not send the cone away.
+        const double path_deg = std::min(speed_deg_s_ * std::min(h_s, aux::seconds_from_ns(config_.max_saccade_ns)),
+                                         config_.max_uncertainty_deg);
+        const double half_rad = 0.5 * path_deg * aux::kRadPerDeg;
         glm::dvec3 next;
-        if (config_.saccade_cone_ahead && glm::length(saccade_axis_) > 0.5 && std::isfinite(half_rad) &&
-            normalized_dir(glm::angleAxis(half_rad, saccade_axis_) * dir, next)) {
+        if (config_.saccade_cone_ahead && age_ns <= config_.loss_hold_max_ns && glm::length(saccade_axis_) > 0.5 &&
+            std::isfinite(half_rad) && normalized_dir(glm::angleAxis(half_rad, saccade_axis_) * dir, next)) {
           dir = next;
-          speed_term_deg *= 0.5 * (1.0 + config_.saccade_path_margin);
+          speed_term_deg = 0.5 * (1.0 + config_.saccade_path_margin) * path_deg;
         }
       } else {
         speed_term_deg = aux::angle_between_rad(est_world_, last_raw_world_) * aux::kDegPerRad + speed_deg_s_ * h_s;

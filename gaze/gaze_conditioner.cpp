@@ -268,7 +268,11 @@ void GazeConditioner::push_valid(std::int64_t t_ns, const glm::dvec3& world, con
     return;
   }
 
-  // 2. Dispersion over the phase so far (since the saccade / gap / loss), at most the window.
+  // 2. A fixation that stepped to a new place (a saccade the velocity test missed) restarts
+  // there first, so the dispersion test below does not read the jump as a pursuit.
+  const bool stepped = prev == EyeMotion::fixation && fixation_step(t_ns);
+  // 3. Dispersion over the phase so far (since the saccade / gap / loss / step), at most the
+  // window.
   std::size_t m = 0;
   while (m < phase_count_ && t_ns - newest(m).t_ns <= config_.dispersion_window_ns) ++m;
   const Fit fd = fit_newest(m);
@@ -306,7 +310,7 @@ void GazeConditioner::push_valid(std::int64_t t_ns, const glm::dvec3& world, con
         est_world_ = world;
         fixation_n_ = 1.0;
       }
-    } else if (!fixation_step(t_ns)) {  // a step restarts the fixation at the newest samples
+    } else if (!stepped) {  // a step has already restarted it at the newest samples
       fixation_n_ += 1.0;
       const double a =
           std::max(1.0 / fixation_n_, ema_alpha(dt_s, aux::seconds_from_ns(config_.fixation_smoothing_tau_ns)));
@@ -332,7 +336,7 @@ void GazeConditioner::push_valid(std::int64_t t_ns, const glm::dvec3& world, con
     speed_deg_s_ = 0.0;
     // Long-run noise level (the adaptive noise estimate of Nyström & Holmqvist 2010, here
     // from the fixation windows' residuals).
-    if (fd.ok && fd.n >= kMinPursuitSamples && std::isfinite(fd.resid_var))
+    if (!stepped && fd.ok && fd.n >= kMinPursuitSamples && std::isfinite(fd.resid_var))
       noise_var_ += ema_alpha(dt_s, kNoiseTau_s) * (fd.resid_var - noise_var_);
   }
   if (!finite3(est_world_)) est_world_ = world;

@@ -28,8 +28,8 @@
 // the newest sample, predicted to the display time at the fitted angular velocity (at most
 // prediction_horizon_max ahead); carried fixation -> the eye-in-head mean turned by the head
 // at the display time; saccade -> the newest sample (saccade_follow_newest; else the estimate
-// from before the saccade, held), moved speed * h / 2 on along the saccade's direction
-// (saccade_cone_ahead), suppressed; loss -> held, suppressed, valid for at most
+// from before the saccade, held; the newest sample is moved speed * h / 2 on along the
+// saccade's direction with saccade_cone_ahead), suppressed; loss -> held, suppressed, valid for at most
 // loss_hold_max after the last valid sample. The angular velocity is non-zero only in pursuit
 // and carried fixations. With h = display time - newest
 // valid sample (>= 0) and H = prediction_horizon_max, the uncertainty is
@@ -126,15 +126,17 @@ struct ConditionerConfig {
   std::int64_t fixation_smoothing_tau_ns = 250'000'000;
   // A step in a fixation: the mean of the newest samples (25 ms, at least 3) lies apart from
   // the mean of the fixation's samples before them (up to dispersion_window, at least as many)
-  // by more than this chi-square of 2 degrees of freedom under the measured noise, in the
+  // by more than this chi-square of 2 degrees of freedom under the noise (the long-run level,
+  // or the earlier samples' own spread where larger: the long-run level is learnt), in the
   // world and in the head alike (a carried eye moves only in the world, a reflex-held one
   // only in the head), and the two means fit those samples better than a line by the same
   // margin (a ramp is a pursuit beginning, the dispersion test's case). It is a saccade the
   // velocity test missed (a noisy tracker raises that test's threshold, saccade_significance:
   // at 1.4 deg and 227 Hz to ~130 deg/s, above many small saccades); the fixation restarts at
-  // those samples instead of dragging its mean there at 1/n a sample. 16: noise alone passes
-  // the first test with p = 3e-4. Chosen from 9, 12, 16, 25, 40 and off on the family's
-  // tuning seeds (docs/evaluation.md, "Scenario family"). 0: off.
+  // those samples instead of dragging its mean there at 1/n a sample. Run before the
+  // dispersion test, so the jump is not read as a pursuit. 16: noise alone passes the first
+  // test with p = 3e-4; 9 and 12 (tried, with 25, 40 and off, on the family's tuning seeds,
+  // docs/evaluation.md "Scenario family") restarted settled fixations on noise. 0: off.
   double fixation_step_chi2 = 16.0;
   // Exponential smoothing of the pursuit angular velocity on top of the least-squares fit
   // (the fit's slope changes by noise from sample to sample); 50 ms, well under the ~100 ms
@@ -259,8 +261,8 @@ class GazeConditioner {
   // newest m samples, in noise variances; and the eye-in-head mean
   // (gaze/conditioner_fixation.cpp).
   double carried_evidence(std::size_t m, glm::dvec3& head_mean) const noexcept;
-  // In a fixation: restarts it at the newest samples when they sit apart from the estimate
-  // (fixation_step_chi2); true if it did.
+  // In a fixation: restarts it at the newest samples when they sit apart from the fixation's
+  // earlier ones (fixation_step_chi2); true if it did.
   bool fixation_step(std::int64_t t_ns) noexcept;
   void push_invalid(std::int64_t t_ns) noexcept;
 

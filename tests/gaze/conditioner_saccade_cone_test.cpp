@@ -25,10 +25,11 @@ glm::dvec3 dir(double yaw_deg) {
 }
 
 struct Seen {
-  int in_saccade = 0;     // frames the conditioner read as saccade
-  int landed = 0;         // ... of which shown after the suppression (landing + 50 ms)
-  int landing_held = 0;   // ... whose cone holds the landing (3 sigma of noise as margin)
-  double cone_sum = 0.0;  // sum of the saccade frames' uncertainty, deg
+  int in_saccade = 0;       // frames the conditioner read as saccade
+  int landed = 0;           // ... of which shown after the suppression (landing + 50 ms)
+  int landing_held = 0;     // ... whose cone holds the landing (3 sigma of noise as margin)
+  double cone_sum = 0.0;    // sum of the saccade frames' uncertainty, deg
+  int ahead_of_sample = 0;  // saccade frames whose cone centre lies on the landing's side of the newest sample
 };
 
 // A main-sequence saccade of `amplitude_deg` (yaw) at kOnsetS; samples at rate_hz with 0.5 deg
@@ -55,6 +56,10 @@ Seen run(const ConditionerConfig& config, double amplitude_deg, double rate_hz, 
     if (out.motion != EyeMotion::saccade) continue;
     ++s.in_saccade;
     s.cone_sum += out.uncertainty_deg;
+    // The saccade runs towards +yaw: the centre is moved that way from the newest sample.
+    const double yaw_centre = aux::yaw_pitch_of(out.direction_world).yaw_rad;
+    const double yaw_sample = aux::yaw_pitch_of(g.direction).yaw_rad;
+    s.ahead_of_sample += yaw_centre > yaw_sample ? 1 : 0;
     // In flight and up to ~50 ms after the landing vision is suppressed (Volkmann 1986): only
     // the cone shown after that must hold where the eye is.
     if (shown < kOnsetS + dur + 0.05) continue;
@@ -81,6 +86,8 @@ TEST(ConditionerSaccadeCone, HoldsTheLandingWithASmallerCone) {
         if (latency >= 0.05) {
           ASSERT_GT(ahead.landed, 0) << what;
         }
+        // The centre is moved along the saccade, not back.
+        EXPECT_EQ(ahead.ahead_of_sample, ahead.in_saccade) << what;
         EXPECT_EQ(ahead.landing_held, ahead.landed) << what;
         EXPECT_EQ(old.landing_held, old.landed) << what;
         // (1 + 0.75) / 2 of the speed term; the accuracy and age terms are the same in both, so

@@ -102,7 +102,8 @@ TEST(EvalFamily, ConditionerSettingsItRefusesStopTheFamilyBeforeAnySeed) {
 }
 
 // Held-out seeds (the defaults were tuned on 1000-1039): the bulk of the family within the
-// targets. Not every seed is (docs/evaluation.md lists the ones outside and why).
+// targets. Not every seed is (docs/evaluation.md lists the ones outside and why); the counts
+// are those of 2026-12-06, so a change that loses one fails here.
 TEST(EvalFamily, HeldOutSeedsMostlyWithinTheTargets) {
   const auto dir = scratch();
   const Result r = cli({"eval", "family", "--seeds", "2000-2019", "--out", dir.string()});
@@ -115,11 +116,9 @@ TEST(EvalFamily, HeldOutSeedsMostlyWithinTheTargets) {
   EXPECT_GE(degraded.at("within_target").get<int>(), 19);
   EXPECT_LE(triangles.at("median").get<double>(), kTargetTriangleRatio);
   EXPECT_GE(triangles.at("median").get<double>(), 1.0) << "below the oracle would be degradations";
-  // 13: seed 2006 is at 1.35 since head-fixed gaze no longer assumes retinal slip (it was at
-  // 1.34, with twice the degradations; docs/evaluation.md, "Scenario family", item 6).
-  EXPECT_GE(triangles.at("within_target").get<int>(), 13);
+  EXPECT_GE(triangles.at("within_target").get<int>(), 15);
   EXPECT_LE(switches.at("median").get<double>(), kTargetSwitchesPerObjectS);
-  EXPECT_GE(switches.at("within_target").get<int>(), 16);
+  EXPECT_GE(switches.at("within_target").get<int>(), 18);
 }
 
 }  // namespace

@@ -17,6 +17,7 @@
 namespace gazelod::gaze {
 
 using detail::kMinPursuitSamples;
+using detail::kStepOverLine;
 using detail::kStepWindowNs;
 using detail::normalized_dir;
 
@@ -61,15 +62,15 @@ bool GazeConditioner::fixation_step(std::int64_t t_ns) noexcept {
   // A saccade moves the eye in the head and in the world alike; a carried eye moves only in
   // the world, a reflex-held one only in the head. So a step must show in both. And a step is
   // a jump, not a ramp: the two means must also fit the samples better than a line through
-  // them (by the same margin, in noise variances), or it is the start of a pursuit, which the
+  // them, by kStepOverLine noise variances, or it is the start of a pursuit, which the
   // dispersion test will take.
   const std::int64_t t0_ns = newest(0).t_ns;
   const auto stepped = [&](auto pick, glm::dvec3& landing) {
     glm::dvec3 e1, e2;
     const glm::dvec3 ref = pick(newest(0));
     aux::tangent_basis(ref, e1, e2);
-    glm::dvec2 s_recent(0.0), s_before(0.0), ss_before(0.0), ss(0.0), sa(0.0), sta(0.0);
-    double st = 0.0, stt = 0.0;
+    glm::dvec2 s_recent(0.0), s_before(0.0), ss_before(0.0), sta_before(0.0), ss(0.0), sa(0.0), sta(0.0);
+    double st = 0.0, stt = 0.0, st_before = 0.0, stt_before = 0.0;
     glm::dvec3 sum(0.0);
     for (std::size_t i = 0; i < m; ++i) {
       const glm::dvec2 a = aux::angular_offset_rad(pick(newest(i)), ref, e1, e2);
@@ -80,6 +81,9 @@ bool GazeConditioner::fixation_step(std::int64_t t_ns) noexcept {
       } else {
         s_before += a;
         ss_before += a * a;
+        st_before += t;
+        stt_before += t * t;
+        sta_before += t * a;
       }
       ss += a * a;
       sa += a;
@@ -89,20 +93,25 @@ bool GazeConditioner::fixation_step(std::int64_t t_ns) noexcept {
     }
     const double nk = static_cast<double>(k), nb = static_cast<double>(m - k), n = static_cast<double>(m);
     const auto sum2 = [](glm::dvec2 v) { return v.x + v.y; };
-    // The noise level: the long-run one, or the earlier samples' own spread where that is larger
-    // (the long-run level starts from a guess and is learnt over seconds; an underestimate
-    // would read noise as steps).
-    const double spread = (sum2(ss_before) - sum2(s_before * s_before) / nb) / (2.0 * (nb - 1.0));
-    const double var = std::max({noise_var_, std::isfinite(spread) ? spread : 0.0, 1e-12});
+    // Residual sum of squares (both axes) of the least-squares line through `count` samples.
+    const auto line_rss = [&](double count, glm::dvec2 s_a, glm::dvec2 ss_a, double s_t, double ss_t, glm::dvec2 s_ta) {
+      const double ctt = ss_t - s_t * s_t / count;
+      const glm::dvec2 cta = s_ta - s_t * s_a / count;
+      return ctt > 0.0 ? sum2(ss_a) - sum2(s_a * s_a) / count - sum2(cta * cta) / ctt
+                       : std::numeric_limits<double>::quiet_NaN();
+    };
+    // The noise level: the long-run one, or the earlier samples' own scatter about their line
+    // where that is larger (the long-run level starts from a guess and is learnt over seconds;
+    // an underestimate would read noise as steps; about a line, so that a reflex-held eye's
+    // steady drift in the head is not counted as noise).
+    const double scatter = line_rss(nb, s_before, ss_before, st_before, stt_before, sta_before) / (2.0 * (nb - 2.0));
+    const double var = std::max({noise_var_, std::isfinite(scatter) ? scatter : 0.0, 1e-12});
     const glm::dvec2 d = s_recent / nk - s_before / nb;
     if (!(glm::dot(d, d) / (var * (1.0 / nk + 1.0 / nb)) > config_.fixation_step_chi2)) return false;
     // Residual sums of squares (both axes) of the two means and of the least-squares line.
     const double rss_step = sum2(ss) - sum2(s_recent * s_recent) / nk - sum2(s_before * s_before) / nb;
-    const double ctt = stt - st * st / n;
-    if (!(ctt > 0.0)) return false;
-    const glm::dvec2 cta = sta - st * sa / n;
-    const double rss_line = sum2(ss) - sum2(sa * sa) / n - sum2(cta * cta) / ctt;
-    return (rss_line - rss_step) / var > config_.fixation_step_chi2 && normalized_dir(sum, landing);
+    const double rss_line = line_rss(n, sa, ss, st, stt, sta);
+    return (rss_line - rss_step) / var > kStepOverLine && normalized_dir(sum, landing);
   };
   glm::dvec3 world_landing, head_landing;
   if (!stepped([](const Entry& e) { return e.world; }, world_landing) ||
@@ -113,6 +122,7 @@ bool GazeConditioner::fixation_step(std::int64_t t_ns) noexcept {
   fixation_n_ = static_cast<double>(k);
   phase_count_ = k;  // the dispersion and carried tests start from the landing
   carried_ = false;  // and the carried reading is earned anew
+  ++fixation_restarts_;
   return true;
 }
 

@@ -22,6 +22,13 @@ inline constexpr std::int64_t kCarriedWindowNs = 1'000'000'000;
 // The step test's window: about half of a small saccade's duration (21 ms + 2.2 ms/deg,
 // Carpenter 1988), so a landing is judged on the samples after it.
 inline constexpr std::int64_t kStepWindowNs = 25'000'000;
+// ... and by how much (noise variances, both axes) two means must fit the samples better than a
+// line for a step. 9 (a chi-square of 2 degrees of freedom at p = 0.011): at the frame rate a
+// landing has only ~3 samples in the step window, and a line through the few samples after a
+// 5-7 deg jump and the many before explains part of it (16 missed the jump of family seed
+// 1001 that made a reflex-held fixation read as carried); 4 restarted still fixations on
+// noise (docs/evaluation.md, "Scenario family", item 5).
+inline constexpr double kStepOverLine = 9.0;
 
 inline bool finite3(const glm::dvec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);

@@ -23,6 +23,7 @@ ConditionedGaze GazeConditioner::at(std::int64_t display_t_ns, const glm::dquat&
   last_display_t_ns_ = display_t_ns;
   ConditionedGaze g;
   g.bad_samples = bad_samples_;
+  g.fixation_restarts = fixation_restarts_;
   glm::dquat q;
   if (!normalized_quat(head_at_display, q)) q = last_head_;
   const glm::dquat q_inv = glm::conjugate(q);

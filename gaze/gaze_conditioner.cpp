@@ -135,12 +135,13 @@ GazeConditioner::GazeConditioner(ConditionerConfig config)
       noise_var_(0.5 * (config_.precision_deg * aux::kRadPerDeg) * (config_.precision_deg * aux::kRadPerDeg)) {}
 
 void GazeConditioner::reset() noexcept {
-  const std::int64_t bad = bad_samples_;
+  const std::int64_t bad = bad_samples_, restarts = fixation_restarts_;
   const bool have_display = have_display_;
   const std::int64_t display = last_display_t_ns_;
   const ConditionerConfig config = config_;
   *this = GazeConditioner(config);  // config_ passed the constructor's check: cannot throw here
   bad_samples_ = bad;
+  fixation_restarts_ = restarts;
   have_display_ = have_display;
   last_display_t_ns_ = display;
 }

@@ -129,8 +129,8 @@ struct ConditionerConfig {
   // by more than this chi-square of 2 degrees of freedom under the noise (the long-run level,
   // or the earlier samples' own spread where larger: the long-run level is learnt), in the
   // world and in the head alike (a carried eye moves only in the world, a reflex-held one
-  // only in the head), and the two means fit those samples better than a line by the same
-  // margin (a ramp is a pursuit beginning, the dispersion test's case). It is a saccade the
+  // only in the head), and the two means fit those samples better than a line by 9 noise
+  // variances (a ramp is a pursuit beginning, the dispersion test's case). It is a saccade the
   // velocity test missed (a noisy tracker raises that test's threshold, saccade_significance:
   // at 1.4 deg and 227 Hz to ~130 deg/s, above many small saccades); the fixation restarts at
   // those samples instead of dragging its mean there at 1/n a sample. Run before the
@@ -224,7 +224,8 @@ struct ConditionedGaze {
   std::int64_t sample_t_ns = 0;  // newest valid sample used (0: none)
   bool suppressed =
       false;  // in a saccade or blink/loss, or within post_saccade_suppression after a saccade (false when !valid)
-  std::int64_t bad_samples = 0;  // NaN / zero / non-finite / backwards / far-future samples refused so far
+  std::int64_t bad_samples = 0;        // NaN / zero / non-finite / backwards / far-future samples refused so far
+  std::int64_t fixation_restarts = 0;  // fixations restarted by the step test so far (fixation_step_chi2)
 };
 
 class GazeConditioner {
@@ -298,6 +299,7 @@ class GazeConditioner {
   std::int64_t saccade_last_t_ns_ = 0;   // newest saccade-labelled sample
   std::int64_t saccade_start_t_ns_ = 0;  // first sample of the saccade in progress
   std::int64_t bad_samples_ = 0;
+  std::int64_t fixation_restarts_ = 0;  // kept across reset(), like bad_samples_
 };
 
 }  // namespace gazelod::gaze

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// The gaze conditioner's two tests inside a fixation (gaze_conditioner.hpp): is it carried by
-// the head rather than held in the world, and has it moved to a new place without the velocity
-// test noticing (a step)?
+// The gaze conditioner's two tests inside a phase (gaze_conditioner.hpp): is a fixation carried
+// by the head rather than held in the world, and has a fixation or a pursuit moved to a new
+// place without the velocity test noticing (a step)?
 #include "gaze/gaze_conditioner.hpp"
 
 #include "auxiliary/angles.hpp"
@@ -16,6 +16,7 @@
 
 namespace gazelod::gaze {
 
+using detail::chi2_upper_999;
 using detail::kMinPursuitSamples;
 using detail::kStepOverLine;
 using detail::kStepWindowNs;
@@ -69,7 +70,8 @@ bool GazeConditioner::fixation_step(std::int64_t t_ns) noexcept {
     glm::dvec3 e1, e2;
     const glm::dvec3 ref = pick(newest(0));
     aux::tangent_basis(ref, e1, e2);
-    glm::dvec2 s_recent(0.0), s_before(0.0), ss_before(0.0), sta_before(0.0), ss(0.0), sa(0.0), sta(0.0);
+    glm::dvec2 ss_recent(0.0), s_recent(0.0), s_before(0.0), ss_before(0.0), sta_before(0.0), ss(0.0), sa(0.0),
+        sta(0.0);
     double st = 0.0, stt = 0.0, st_before = 0.0, stt_before = 0.0;
     glm::dvec3 sum(0.0);
     for (std::size_t i = 0; i < m; ++i) {
@@ -77,6 +79,7 @@ bool GazeConditioner::fixation_step(std::int64_t t_ns) noexcept {
       const double t = aux::seconds_from_ns(newest(i).t_ns - t0_ns);
       if (i < k) {
         s_recent += a;
+        ss_recent += a * a;
         sum += pick(newest(i));
       } else {
         s_before += a;
@@ -106,6 +109,12 @@ bool GazeConditioner::fixation_step(std::int64_t t_ns) noexcept {
     // steady drift in the head is not counted as noise).
     const double scatter = line_rss(nb, s_before, ss_before, st_before, stt_before, sta_before) / (2.0 * (nb - 2.0));
     const double var = std::max({noise_var_, std::isfinite(scatter) ? scatter : 0.0, 1e-12});
+    // The newest samples must themselves hold still (their scatter about their mean within the
+    // noise, p = 0.001): in flight, a missed saccade's last samples spread along its path, and
+    // a restart there would put the fixation between the two places and leave the rest of the
+    // flight to the next line fit, read as a pursuit (measured with a noise-free tracker:
+    // docs/evaluation.md, "Scenario family").
+    if (!(sum2(ss_recent) - sum2(s_recent * s_recent) / nk <= chi2_upper_999(2.0 * (nk - 1.0)) * var)) return false;
     const glm::dvec2 d = s_recent / nk - s_before / nb;
     if (!(glm::dot(d, d) / (var * (1.0 / nk + 1.0 / nb)) > config_.fixation_step_chi2)) return false;
     // Residual sums of squares (both axes) of the two means and of the least-squares line.

@@ -270,8 +270,12 @@ void GazeConditioner::push_valid(std::int64_t t_ns, const glm::dvec3& world, con
   }
 
   // 2. A fixation that stepped to a new place (a saccade the velocity test missed) restarts
-  // there first, so the dispersion test below does not read the jump as a pursuit.
-  const bool stepped = prev == EyeMotion::fixation && fixation_step(t_ns);
+  // there first, so the dispersion test below does not read the jump as a pursuit. In a
+  // pursuit too: a jump read as one while in flight (the line through the samples before and
+  // after it is steep) ends as soon as its landing holds still, rather than when the jump
+  // leaves the dispersion window; a real pursuit's samples lie on a line, which two means do
+  // not fit better.
+  const bool stepped = (prev == EyeMotion::fixation || prev == EyeMotion::pursuit) && fixation_step(t_ns);
   // 3. Dispersion over the phase so far (since the saccade / gap / loss / step), at most the
   // window.
   std::size_t m = 0;
@@ -302,7 +306,9 @@ void GazeConditioner::push_valid(std::int64_t t_ns, const glm::dvec3& world, con
     speed_deg_s_ = glm::length(omega_world_) * aux::kDegPerRad;
     fixation_n_ = 0.0;
   } else {
-    if (prev != EyeMotion::fixation) {
+    if (stepped) {
+      // Restarted at the landing (fixation_step).
+    } else if (prev != EyeMotion::fixation) {
       if (prev == EyeMotion::pursuit && fd.ok) {
         // From pursuit: start at the fitted position, weighted like a quarter of its samples.
         est_world_ = fd.direction();
@@ -311,7 +317,7 @@ void GazeConditioner::push_valid(std::int64_t t_ns, const glm::dvec3& world, con
         est_world_ = world;
         fixation_n_ = 1.0;
       }
-    } else if (!stepped) {  // a step has already restarted it at the newest samples
+    } else {
       fixation_n_ += 1.0;
       const double a =
           std::max(1.0 / fixation_n_, ema_alpha(dt_s, aux::seconds_from_ns(config_.fixation_smoothing_tau_ns)));

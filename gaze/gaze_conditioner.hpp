@@ -124,17 +124,20 @@ struct ConditionerConfig {
   // slow drift). Most fixations last 200-300 ms (Rayner 1998), so they are averaged whole; at
   // 120 Hz the steady state averages ~60 samples (0.5 deg noise -> ~0.07 deg).
   std::int64_t fixation_smoothing_tau_ns = 250'000'000;
-  // A step in a fixation: the mean of the newest samples (25 ms, at least 3) lies apart from
-  // the mean of the fixation's samples before them (up to dispersion_window, at least as many)
-  // by more than this chi-square of 2 degrees of freedom under the noise (the long-run level,
-  // or the earlier samples' own spread where larger: the long-run level is learnt), in the
-  // world and in the head alike (a carried eye moves only in the world, a reflex-held one
-  // only in the head), and the two means fit those samples better than a line by 9 noise
-  // variances (a ramp is a pursuit beginning, the dispersion test's case). It is a saccade the
-  // velocity test missed (a noisy tracker raises that test's threshold, saccade_significance:
-  // at 1.4 deg and 227 Hz to ~130 deg/s, above many small saccades); the fixation restarts at
-  // those samples instead of dragging its mean there at 1/n a sample. Run before the
-  // dispersion test, so the jump is not read as a pursuit. 16: noise alone passes the first
+  // A step in a fixation or a pursuit: the newest samples (25 ms, at least 3) hold still
+  // (their scatter within the noise, p = 0.001) and their mean lies apart from the mean of the
+  // phase's samples before them (up to dispersion_window, at least as many) by more than this
+  // chi-square of 2 degrees of freedom under the noise (the long-run level, or the earlier
+  // samples' own spread where larger: the long-run level is learnt), in the world and in the
+  // head alike (a carried eye moves only in the world, a reflex-held one only in the head), and
+  // the two means fit those samples better than a line by 9 noise variances (a ramp is a
+  // pursuit, the dispersion test's case). It is a saccade the velocity test missed (a noisy
+  // tracker raises that test's threshold, saccade_significance: at 1.4 deg and 227 Hz to ~130
+  // deg/s, above many small saccades; a clean one read once a frame at 120 Hz has three or four
+  // samples of a 2-3 deg saccade); a fixation restarts at those samples instead of dragging
+  // its mean there at 1/n a sample. Run before the dispersion test, so the jump is not read as
+  // a pursuit, and in a pursuit too, so that a jump read as one in flight ends as a fixation
+  // once its landing holds still. 16: noise alone passes the first
   // test with p = 3e-4; 9 and 12 (tried, with 25, 40 and off, on the family's tuning seeds,
   // docs/evaluation.md "Scenario family") restarted settled fixations on noise. 0: off.
   double fixation_step_chi2 = 16.0;
@@ -262,8 +265,8 @@ class GazeConditioner {
   // newest m samples, in noise variances; and the eye-in-head mean
   // (gaze/conditioner_fixation.cpp).
   double carried_evidence(std::size_t m, glm::dvec3& head_mean) const noexcept;
-  // In a fixation: restarts it at the newest samples when they sit apart from the fixation's
-  // earlier ones (fixation_step_chi2); true if it did.
+  // In a fixation or a pursuit: restarts a fixation at the newest samples when they hold still
+  // apart from the phase's earlier ones (fixation_step_chi2); true if it did.
   bool fixation_step(std::int64_t t_ns) noexcept;
   void push_invalid(std::int64_t t_ns) noexcept;
 

@@ -77,7 +77,32 @@ nlohmann::json lod_chain(double triangles, int levels, double ratio) {
 
 }  // namespace
 
-FamilyScenario family_scenario(std::uint64_t seed, double duration_s) {
+bool parse_ideal_tracker(const std::string& text, IdealTracker& out) {
+  IdealTracker r;
+  if (text == "all") {
+    r = IdealTracker{true, true, true};
+  } else if (!text.empty() && text != "none") {
+    std::size_t from = 0;
+    while (from <= text.size()) {
+      const std::size_t comma = std::min(text.find(',', from), text.size());
+      const std::string part = text.substr(from, comma - from);
+      if (part == "latency") {
+        r.latency = true;
+      } else if (part == "noise") {
+        r.noise = true;
+      } else if (part == "rate") {
+        r.rate = true;
+      } else {
+        return false;
+      }
+      from = comma + 1;
+    }
+  }
+  out = r;
+  return true;
+}
+
+FamilyScenario family_scenario(std::uint64_t seed, double duration_s, IdealTracker ideal) {
   const aux::CounterRng r{seed, kFamilyStream};
   const auto u = [&](Draw d, double lo, double hi) { return r.uniform(d, lo, hi); };
   const double T = duration_s > 0.0 ? duration_s : 20.0;
@@ -89,9 +114,9 @@ FamilyScenario family_scenario(std::uint64_t seed, double duration_s) {
   const double walk = head == 3 ? u(kWalk, 0.8, 1.6) : 0.0;
   const bool vor = moving && r.uniform(kVor) < 0.75;
   const bool pursuit = r.uniform(kPursuit) < 0.6;
-  const double tracker_hz = std::round(u(kTrackerRate, 60.0, 250.0));
-  const double latency_ms = std::round(u(kLatency, 5.0, 80.0));
-  const double noise_deg = std::round(u(kNoise, 0.2, 1.5) * 100.0) / 100.0;
+  const double tracker_hz = ideal.rate ? 1000.0 : std::round(u(kTrackerRate, 60.0, 250.0));
+  const double latency_ms = ideal.latency ? 0.0 : std::round(u(kLatency, 5.0, 80.0));
+  const double noise_deg = ideal.noise ? 0.0 : std::round(u(kNoise, 0.2, 1.5) * 100.0) / 100.0;
 
   nlohmann::json effects = nlohmann::json::array();
   std::string head_text = kHeadProfiles[head];

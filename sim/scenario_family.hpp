@@ -25,7 +25,24 @@ struct FamilyScenario {
   std::string summary;  // one line: "walk 1.3 m/s, vor, pursuit 18 deg/s, psvr2, 120 Hz 35 ms 0.8 deg, open field"
 };
 
+// A what-if for measuring what the tracker costs: the seed's scenario with parts of its tracker
+// made ideal. Everything else (head, eyes, blinks, dropouts, display, objects) is the seed's
+// own draw, unchanged: each draw has its own key (auxiliary/random.hpp), so skipping a value
+// moves no other.
+struct IdealTracker {
+  bool latency = false;  // 0 ms from the eye to the sample
+  bool noise = false;    // 0 deg of noise
+  bool rate = false;     // 1000 Hz (the display still polls it once a frame)
+  bool any() const { return latency || noise || rate; }
+};
+
 // 20 s of the seed's draw; `duration_s` > 0 shortens or lengthens it (effects keep their times).
-FamilyScenario family_scenario(std::uint64_t seed, double duration_s = 20.0);
+FamilyScenario family_scenario(std::uint64_t seed, double duration_s = 20.0, IdealTracker ideal = {});
+
+// "latency", "noise", "rate" (comma-separated, any order) or "all"; "" or "none": none. Returns
+// false, leaving `out` as it was, for anything else.
+bool parse_ideal_tracker(const std::string& text, IdealTracker& out);
+// What parse_ideal_tracker accepts, for a refusal's message.
+inline constexpr const char* kIdealTrackerNames = "latency, noise, rate (comma-separated), all or none";
 
 }  // namespace gazelod::sim

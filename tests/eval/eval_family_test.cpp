@@ -78,6 +78,7 @@ TEST(EvalFamily, BadOptionsAreRefusedWithTheReason) {
   refused({"--seeds", "9-3"}, "ends before it starts");
   refused({"--seeds", "0x10"}, "expected A-B or A");
   refused({"--seeds", "0-20000"}, "at most 10000 seeds");
+  refused({"--ideal", "latency,speed"}, "--ideal: expected latency, noise, rate");
   EXPECT_FALSE(std::filesystem::exists(dir / "x" / "family.md")) << "nothing written on a refusal";
   const Result list = cli({"eval", "family", "--list-settings"});
   ASSERT_EQ(list.rc, 0);
@@ -119,6 +120,30 @@ TEST(EvalFamily, HeldOutSeedsMostlyWithinTheTargets) {
   EXPECT_GE(triangles.at("within_target").get<int>(), 15);
   EXPECT_LE(switches.at("median").get<double>(), kTargetSwitchesPerObjectS);
   EXPECT_GE(switches.at("within_target").get<int>(), 18);
+}
+
+// What the tracker costs (docs/evaluation.md, "What the tracker costs"): the same seeds with
+// the tracker's latency removed draw fewer triangles and switch less, and the run says so.
+TEST(EvalFamily, IdealTrackerWhatIf) {
+  const auto dir = scratch();
+  const auto figures = [&](const std::vector<std::string>& extra, const std::string& name) {
+    std::vector<std::string> args{"eval", "family", "--seeds", "2000-2009", "--out", (dir / name).string()};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const Result r = cli(args);
+    EXPECT_EQ(r.rc, 0) << r.err;
+    return nlohmann::json::parse(read(dir / name / "family.json"));
+  };
+  const nlohmann::json drawn = figures({}, "drawn"), ideal = figures({"--ideal", "latency"}, "ideal");
+  EXPECT_EQ(ideal.at("settings_changed")[0], "ideal=latency");
+  EXPECT_NE(ideal.at("members")[0].at("scenario").get<std::string>().find(" 0 ms "), std::string::npos);
+  const auto median = [](const nlohmann::json& j, const char* figure) {
+    return j.at("distribution").at(figure).at("median").get<double>();
+  };
+  for (const char* figure : {"visible degradations (fixation object-frames)", "triangles drawn / oracle",
+                             "switches per object-second outside suppression"})
+    EXPECT_LT(median(ideal, figure), median(drawn, figure)) << figure;
+  EXPECT_TRUE(read(dir / "ideal" / "family.md")
+                  .starts_with("<!-- written by: gazelod eval family --seeds 2000-2009 --ideal latency"));
 }
 
 }  // namespace

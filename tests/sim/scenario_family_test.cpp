@@ -84,5 +84,52 @@ TEST(ScenarioFamily, SpansTheHeadGazeTrackerAndFieldRanges) {
   spans(pursuit_lo, pursuit_hi, 5.0, 30.0, 2.0, "pursuit speed");
 }
 
+// The what-if of `gazelod eval family --ideal`: only the named tracker values change; every
+// other draw of the seed (head, eyes, blinks, display, field) stays as it was.
+TEST(ScenarioFamily, IdealTrackerChangesOnlyTheTracker) {
+  const auto without_tracker = [](nlohmann::json sc) {
+    nlohmann::json kept = nlohmann::json::array();
+    for (const nlohmann::json& e : sc.at("effects"))
+      if (!e.at("type").get<std::string>().starts_with("tracker_")) kept.push_back(e);
+    sc["effects"] = kept;
+    sc["display"].erase("eye_tracking_hz");
+    return sc;
+  };
+  for (std::uint64_t seed = 2000; seed < 2020; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const nlohmann::json drawn = nlohmann::json::parse(family_scenario(seed).json);
+    const FamilyScenario f = family_scenario(seed, 20.0, IdealTracker{true, true, true});
+    const nlohmann::json ideal = nlohmann::json::parse(f.json);
+    ASSERT_NO_THROW((void)load_scenario_json(f.json, "ideal"));
+    EXPECT_EQ(without_tracker(ideal), without_tracker(drawn));
+    EXPECT_EQ(effect(ideal, "tracker_latency")->at("latency_ms").get<double>(), 0.0);
+    EXPECT_EQ(effect(ideal, "tracker_noise")->at("std_deg").get<double>(), 0.0);
+    EXPECT_EQ(effect(ideal, "tracker_rate")->at("rate_hz").get<double>(), 1000.0);
+    EXPECT_EQ(ideal.at("display").at("eye_tracking_hz").get<double>(), 1000.0);
+    EXPECT_NE(f.summary.find("1000 Hz 0 ms 0.00 deg"), std::string::npos) << f.summary;
+    // One part alone leaves the other two as drawn.
+    const nlohmann::json late =
+        nlohmann::json::parse(family_scenario(seed, 20.0, IdealTracker{true, false, false}).json);
+    EXPECT_EQ(effect(late, "tracker_latency")->at("latency_ms").get<double>(), 0.0);
+    EXPECT_EQ(*effect(late, "tracker_noise"), *effect(drawn, "tracker_noise"));
+    EXPECT_EQ(*effect(late, "tracker_rate"), *effect(drawn, "tracker_rate"));
+  }
+}
+
+TEST(ScenarioFamily, IdealTrackerNames) {
+  IdealTracker t;
+  ASSERT_TRUE(parse_ideal_tracker("noise,latency", t));
+  EXPECT_TRUE(t.latency && t.noise && !t.rate);
+  ASSERT_TRUE(parse_ideal_tracker("all", t));
+  EXPECT_TRUE(t.latency && t.noise && t.rate);
+  ASSERT_TRUE(parse_ideal_tracker("", t));
+  EXPECT_FALSE(t.any());
+  ASSERT_TRUE(parse_ideal_tracker("rate", t));
+  for (const char* bad : {"latency,", ",noise", "speed", "all,noise", "LATENCY", "latency,,rate"}) {
+    EXPECT_FALSE(parse_ideal_tracker(bad, t)) << bad;
+    EXPECT_TRUE(t.rate && !t.latency && !t.noise) << bad << ": left as it was";
+  }
+}
+
 }  // namespace
 }  // namespace gazelod::sim

@@ -22,6 +22,7 @@ struct Options {
   double rate_hz = 0.0;
   double duration_s = 0.0;
   std::uint64_t seed = 0;
+  std::string ideal;  // family: parts of the tracker made ideal (sim::parse_ideal_tracker)
 };
 
 sim::Scenario load(const Options& o) {
@@ -75,7 +76,10 @@ int run_record(const Options& o, Io io) {
 // One member of the scenario family (sim/scenario_family.hpp), checked by the loader before
 // it is printed or written.
 int run_family(const Options& o, Io io) {
-  const sim::FamilyScenario f = sim::family_scenario(o.seed, o.duration_s);
+  sim::IdealTracker ideal;
+  if (!sim::parse_ideal_tracker(o.ideal, ideal))
+    throw UsageError(std::string("--ideal: expected ") + sim::kIdealTrackerNames + ", got '" + o.ideal + "'");
+  const sim::FamilyScenario f = sim::family_scenario(o.seed, o.duration_s, ideal);
   try {
     (void)sim::load_scenario_json(f.json, "family seed " + std::to_string(o.seed));
   } catch (const sim::ScenarioError& e) {
@@ -124,6 +128,9 @@ const Registrar registrar{
       family->add_option("--seed", o->seed, "which member (any non-negative integer)")->required();
       family->add_option("--out", o->out, "scenario JSON to write (default: print it)");
       family->add_option("--duration", o->duration_s, "seconds (default 20)")->check(CLI::Range(1.0, 3600.0));
+      family->add_option("--ideal", o->ideal,
+                         "what-if: make parts of the seed's tracker ideal: latency (0 ms), noise (0 deg), rate (1000 "
+                         "Hz), comma-separated, or all");
       return [o, validate, print, family](Io io) {
         if (validate->parsed()) return run_validate(*o, io);
         if (print->parsed()) return run_print(*o, io);

@@ -71,7 +71,7 @@ std::vector<FamilyMember> run_family(std::uint64_t first, int count, double dura
   std::vector<FamilyMember> members;
   for (int k = 0; k < count; ++k) {
     const std::uint64_t seed = first + static_cast<std::uint64_t>(k);
-    const sim::FamilyScenario f = sim::family_scenario(seed, duration_s);
+    const sim::FamilyScenario f = sim::family_scenario(seed, duration_s, settings.ideal);
     const std::filesystem::path dir = work.path() / ("seed-" + std::to_string(seed));
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
@@ -186,6 +186,7 @@ struct FamilyFlags {
   std::string seeds = "2000-2099";
   double duration_s = 20.0;
   std::vector<std::string> set;
+  std::string ideal;
   bool list = false;
 };
 
@@ -207,6 +208,9 @@ std::pair<std::uint64_t, int> seed_range(const std::string& text) {
 int run_eval_family(const FamilyFlags& flags, Io io) {
   FamilySettings settings;
   for (const std::string& s : flags.set) apply_setting(s, settings);
+  if (!sim::parse_ideal_tracker(flags.ideal, settings.ideal))
+    throw UsageError(std::string("--ideal: expected ") + sim::kIdealTrackerNames + ", got '" + flags.ideal + "'");
+  if (settings.ideal.any()) settings.changed.push_back("ideal=" + flags.ideal);
   if (flags.list) {
     io.out << settings_list(settings);
     return 0;
@@ -221,6 +225,7 @@ int run_eval_family(const FamilyFlags& flags, Io io) {
   std::string command = "gazelod eval family --seeds " + flags.seeds;
   if (flags.duration_s != 20.0) command += " --duration " + fmt("%g", flags.duration_s);
   for (const std::string& s : flags.set) command += " --set " + s;
+  if (settings.ideal.any()) command += " --ideal " + flags.ideal;
   const std::string md = family_markdown(members, settings, command);
   std::error_code ec;
   std::filesystem::create_directories(flags.out, ec);
@@ -240,6 +245,9 @@ EvalSubcommand add_eval_family(CLI::App& eval) {
                   "Seed range A-B (default 2000-2099, the held-out seeds; tuning used 1000-1039)");
   app->add_option("--duration", flags->duration_s, "Seconds per scenario (default 20)")->check(CLI::Range(1.0, 600.0));
   app->add_option("--set", flags->set, "NAME=VALUE: a switch-policy or conditioner setting (repeatable)");
+  app->add_option("--ideal", flags->ideal,
+                  "What-if: each seed with parts of its tracker made ideal, to measure what they cost: latency (0 "
+                  "ms), noise (0 deg), rate (1000 Hz), comma-separated, or all");
   app->add_flag("--list-settings", flags->list, "Print the settings --set understands, with their values");
   app->add_option("--out", flags->out, "Folder for family.md and family.json");
   app->add_option("--work", flags->work, "Folder for each seed's scenario (default: a temporary one, removed)");

@@ -13,6 +13,7 @@
 #include "apps/gazelod/run/audit.hpp"
 #include "gaze/gaze_conditioner.hpp"
 #include "lod/switch_policy.hpp"
+#include "sim/scenario_family.hpp"
 
 #include <cstdint>
 #include <functional>
@@ -36,6 +37,7 @@ struct FamilyMember {
 struct FamilySettings {
   lod::SwitchPolicyConfig switching;
   gaze::ConditionerConfig conditioning;
+  sim::IdealTracker ideal;           // --ideal: what each seed's tracker costs (its scenario with parts made ideal)
   std::vector<std::string> changed;  // "switch.coarsen_hold_s=0.3", as given
 };
 

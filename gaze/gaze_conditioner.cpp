@@ -83,20 +83,21 @@ const GazeConditioner::Entry& GazeConditioner::newest(std::size_t back) const no
   return ring_[(head_ + kCapacity - 1 - back) % kCapacity];
 }
 
-GazeConditioner::Fit GazeConditioner::fit_newest(std::size_t count) const noexcept {
+GazeConditioner::Fit GazeConditioner::fit_newest(std::size_t count, bool in_head) const noexcept {
+  const auto dir = [in_head](const Entry& e) -> const glm::dvec3& { return in_head ? e.head : e.world; };
   Fit f;
   count = std::min(count, segment_count_);
   f.n = count;
   if (count == 0) return f;
   const Entry& last = newest(0);
-  f.ref = last.world;
+  f.ref = dir(last);
   aux::tangent_basis(f.ref, f.e1, f.e2);
   if (count < 2) return f;
   double st = 0, sx = 0, sy = 0, stt = 0, stx = 0, sty = 0, sxx = 0, syy = 0;
   for (std::size_t i = 0; i < count; ++i) {
     const Entry& e = newest(i);
     const double t = aux::seconds_from_ns(e.t_ns - last.t_ns);
-    const glm::dvec2 a = aux::angular_offset_rad(e.world, f.ref, f.e1, f.e2);
+    const glm::dvec2 a = aux::angular_offset_rad(dir(e), f.ref, f.e1, f.e2);
     st += t;
     sx += a.x;
     sy += a.y;
@@ -128,6 +129,19 @@ GazeConditioner::Fit GazeConditioner::fit_newest(std::size_t count) const noexce
     f.at_newest = glm::dvec2(0.0);
   }
   return f;
+}
+
+// A line through the newest n samples (fitted in the world: `world`) whose eye-in-head
+// directions move at most half as fast: the head carries the eye. Faster than
+// carried_shift_deg_s, or at any speed while the eye is read as carried (the line then ends in
+// the head's own stop, not a pursuit's).
+bool GazeConditioner::carried_line(const Fit& world, std::size_t n) const noexcept {
+  if (!(config_.carried_shift_deg_s > 0.0) || !world.ok) return false;
+  const double speed = world.speed_rad_s();
+  const bool carried_now = motion_ == EyeMotion::fixation && carried_;
+  if (!carried_now && !(speed * aux::kDegPerRad > config_.carried_shift_deg_s)) return false;
+  const Fit in_head = fit_newest(n, true);
+  return in_head.ok && in_head.speed_rad_s() < 0.5 * speed;
 }
 
 GazeConditioner::GazeConditioner(ConditionerConfig config)
@@ -235,7 +249,11 @@ void GazeConditioner::push_valid(std::int64_t t_ns, const glm::dvec3& world, con
   // The fitted speed's standard error per axis under the long-run noise level.
   const double v_se_deg_s = fv.ctt > 0.0 ? std::sqrt(noise_var_ / fv.ctt) * aux::kDegPerRad : 0.0;
   const double v_threshold = std::max(config_.saccade_threshold_deg_s, config_.saccade_significance * v_se_deg_s);
-  if (fv.ok && fv.n >= kMinVelocitySamples && fv.span_s >= 0.5 * v_window_s && v_deg_s > v_threshold) {
+  // Fast in the world but not in the head: the head carrying the eye through a turn
+  // (carried_shift_deg_s), not a saccade, which turns the eye in the head.
+  const bool carried_shift = carried_line(fv, k);
+  if (fv.ok && fv.n >= kMinVelocitySamples && fv.span_s >= 0.5 * v_window_s && v_deg_s > v_threshold &&
+      !carried_shift) {
     carried_ = false;
     // No estimate yet (the stream began in a saccade): the oldest sample of the fit, where
     // the saccade started from.
@@ -288,9 +306,15 @@ void GazeConditioner::push_valid(std::int64_t t_ns, const glm::dvec3& world, con
   // long-run noise level gives (a window of few samples can have small residuals by chance).
   const double se = fd.ok && fd.ctt > 0.0 ? std::sqrt(std::max(fd.resid_var, noise_var_) / fd.ctt)
                                           : std::numeric_limits<double>::infinity();
-  const bool pursuit = fd.ok && fd.n >= kMinPursuitSamples && fd.span_s >= v_window_s &&
-                       speed * fd.span_s * aux::kDegPerRad >= f * config_.dispersion_threshold_deg &&
-                       speed > f * config_.pursuit_significance * se;
+  bool pursuit = fd.ok && fd.n >= kMinPursuitSamples && fd.span_s >= v_window_s &&
+                 speed * fd.span_s * aux::kDegPerRad >= f * config_.dispersion_threshold_deg &&
+                 speed > f * config_.pursuit_significance * se;
+  // Faster than a pursuit goes (or the eye already carried) and not moving in the head: the
+  // head carries the eye through a turn. Read as a pursuit, its speed would outlast the turn by
+  // the tracker's latency (the plugin would take the world to slip across the retina at the
+  // turn's rate after the head stopped); read as a carried fixation, the eye follows the
+  // head's own, current, motion.
+  if (pursuit && carried_line(fd, m)) pursuit = false;
   if (pursuit) {
     carried_ = false;
     const glm::dvec3 om = fd.omega();

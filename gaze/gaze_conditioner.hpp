@@ -21,7 +21,8 @@
 // eyes carried by a moving head) is told apart by comparing the two models' residuals over
 // the phase (a likelihood ratio against the noise level, carried_evidence): it is then
 // `carried`, its direction the mean eye-in-head direction turned by the head at the display
-// time. Invalid samples are a blink / loss.
+// time. A fast line in the world that barely moves in the head is such a fixation too, not a
+// saccade or a pursuit (carried_shift_deg_s). Invalid samples are a blink / loss.
 //
 // Output: fixation -> the running mean of the fixation's world directions (exponential once
 // older than fixation_smoothing_tau), held to the display time; pursuit -> the fitted line at
@@ -115,6 +116,18 @@ struct ConditionerConfig {
   // equal and the fixation in the world (the safer reading: no retinal slip assumed). Left at
   // pursuit_exit_fraction of it once carried.
   double carried_evidence = 12.0;
+  // A line in the world faster than this whose eye-in-head directions move at most half as
+  // fast is the head carrying the eye through a turn, neither a saccade (which turns the eye in
+  // the head) nor a pursuit: it is read as a fixation, carried once carried_evidence says so,
+  // so the gaze follows the head's current motion rather than the line's velocity, which the
+  // tracker reports a latency late (after a 138 deg/s turn stopped, the plugin took the world
+  // to sweep across the retina at that rate for ~100 ms: family seed 2047). While a fixation is
+  // read as carried, the same holds at any speed (the line through the end of a turn slows
+  // down with the head). Pursuit tracks targets up to ~30 deg/s and saturates near 60-100 deg/s
+  // (Meyer, Lasker & Robinson 1985); below this a line the head follows is taken for a pursuit
+  // whose target keeps its velocity. 40, 60 and 90 measured alike on the family's tuning seeds
+  // (docs/evaluation.md, "Scenario family", item 9). 0: off.
+  double carried_shift_deg_s = 60.0;
   // A larger gap between samples splits the history (no fit spans it): Olsen's (2012) gap
   // fill-in limit of 75 ms, shorter than a blink; 30 Hz with one sample skipped still fits.
   std::int64_t max_gap_ns = 75'000'000;
@@ -258,7 +271,8 @@ class GazeConditioner {
     glm::dvec3 head{0.0, 0.0, -1.0};  // the eye-in-head direction of the same sample
   };
   struct Fit;
-  Fit fit_newest(std::size_t count) const noexcept;
+  // In the world, or with in_head the eye-in-head directions.
+  Fit fit_newest(std::size_t count, bool in_head = false) const noexcept;
   const Entry& newest(std::size_t back) const noexcept;
   void push_valid(std::int64_t t_ns, const glm::dvec3& world, const glm::dvec3& head) noexcept;
   // Twice the log-likelihood ratio of "still in the head" over "still in the world" for the
@@ -268,6 +282,9 @@ class GazeConditioner {
   // In a fixation or a pursuit: restarts a fixation at the newest samples when they hold still
   // apart from the phase's earlier ones (fixation_step_chi2); true if it did.
   bool fixation_step(std::int64_t t_ns) noexcept;
+  // The world line `world` through the newest n samples is the head carrying the eye
+  // (carried_shift_deg_s).
+  bool carried_line(const Fit& world, std::size_t n) const noexcept;
   void push_invalid(std::int64_t t_ns) noexcept;
 
   ConditionerConfig config_;

@@ -374,6 +374,41 @@ TEST(GazeConditioner, EyesCarriedByAFastHeadTurnArePursuitNotAnEndlessSaccade) {
   }
 }
 
+// When a fast turn that carries the eyes stops, the gaze stops with the head. Read as a pursuit,
+// the line's velocity outlasted the turn by the tracker's latency: the plugin, whose head pose is
+// current, took the eye to turn in the head at the turn's rate and the whole field to sweep
+// across the retina (family seed 2047: a 138 deg/s turn, 58 ms late, ~95 objects drawn too
+// coarse in each of 11 frames). carried_shift_deg_s reads a fast line that holds still in the
+// head as the head carrying the eye.
+TEST(GazeConditioner, EyesCarriedThroughAFastTurnStopWithTheHead) {
+  const TruthFn carried = [](double t) {
+    const double yaw = std::clamp(-28.0 + 140.0 * (t - 0.4), -28.0, 28.0);  // 0.4-0.8 s
+    return Truth{yaw + 5.0, 0.0, yaw};                                      // 5 deg right in the head
+  };
+  // Frames after the head stopped (display time; the samples are 50 ms older) in which the eye
+  // is read as turning in the head faster than 30 deg/s: a pursuit's world velocity, the head
+  // being still, is all eye-in-head motion; a carried fixation has none.
+  const auto turning_after_stop = [&](const ConditionerConfig& config, unsigned seed) {
+    GazeConditioner c(config);
+    const auto frames = simulate(c, carried, 1.4, Sim{.rate_hz = 200.0, .latency_s = 0.05, .seed = seed});
+    int n = 0;
+    for (const Frame& f : frames) {
+      expect_sane(f.out, c.config());
+      if (f.t_s < 0.8 || f.out.carried || f.out.motion != EyeMotion::pursuit) continue;
+      n += speed_deg_s(f.out) > 30.0 ? 1 : 0;
+    }
+    return n;
+  };
+  ConditionerConfig off;
+  off.carried_shift_deg_s = 0.0;
+  int before = 0;
+  for (unsigned seed = 1; seed <= 5; ++seed) {
+    before += turning_after_stop(off, seed);
+    EXPECT_EQ(turning_after_stop(ConditionerConfig{}, seed), 0) << "seed " << seed;
+  }
+  EXPECT_GE(before, 5 * 10) << "the old reading: ~100 ms of a pursuit at the turn's rate per seed";
+}
+
 TEST(GazeConditioner, BlinkIsLossThenInvalidAfterTheHold) {
   GazeConditioner c;
   // Fixation, a 150 ms blink, fixation, then the eye lost for 0.6 s, then back.

@@ -361,14 +361,23 @@ void GazeConditioner::push_valid(std::int64_t t_ns, const glm::dvec3& world, con
     if (prev != EyeMotion::fixation) carried_ = false;
     carried_ = w >= kMinPursuitSamples &&
                evidence > config_.carried_evidence * (carried_ ? config_.pursuit_exit_fraction : 1.0);
-    if (carried_) est_head_ = head_mean;
+    if (carried_) {
+      est_head_ = head_mean;
+      // The world estimate follows the head too, so that whatever reads it next (a blink's
+      // held estimate, the fixation once it is no longer carried) starts where the eye is, not
+      // where the fixation's running mean of a turning gaze lags behind.
+      glm::dvec3 w_now;
+      if (normalized_dir(last_head_ * est_head_, w_now)) est_world_ = w_now;
+    }
     motion_ = EyeMotion::fixation;
     omega_world_ = glm::dvec3(0.0);
     speed_deg_s_ = 0.0;
     // Long-run noise level (the adaptive noise estimate of Nyström & Holmqvist 2010, here
-    // from the fixation windows' residuals).
-    if (!stepped && fd.ok && fd.n >= kMinPursuitSamples && std::isfinite(fd.resid_var))
-      noise_var_ += ema_alpha(dt_s, kNoiseTau_s) * (fd.resid_var - noise_var_);
+    // from the fixation windows' residuals: about the line in the head while carried, where
+    // the world line bends with the head's motion and its scatter is not noise).
+    const Fit fn = carried_ ? fit_newest(m, true) : fd;
+    if (!stepped && fn.ok && fn.n >= kMinPursuitSamples && std::isfinite(fn.resid_var))
+      noise_var_ += ema_alpha(dt_s, kNoiseTau_s) * (fn.resid_var - noise_var_);
   }
   if (!finite3(est_world_)) est_world_ = world;
   have_estimate_ = true;

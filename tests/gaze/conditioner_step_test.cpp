@@ -6,13 +6,17 @@
 
 #include "auxiliary/angles.hpp"
 #include "auxiliary/yaw_pitch.hpp"
+#include "gaze/trace_reader.hpp"
 #include "tests/gaze/synth.hpp"
 
+#include <glm/gtc/quaternion.hpp>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdint>
+#include <numbers>
 #include <random>
+#include <tuple>
 #include <vector>
 
 namespace gazelod::gaze {
@@ -143,7 +147,7 @@ TEST(ConditionerStep, CleanMissedSaccadeEndsAsAFixation) {
     const double angle = 180.0 * (i % 2) + 7.0 * (i % 5);  // back and forth
     synth.saccade(amp, angle);
     landings.push_back({synth.t_ns, synth.yaw_deg, synth.pitch_deg});
-    synth.fixate(0.3 + 0.013 * (i % 9));  // off the sample grid's phase
+    synth.fixate(0.3 + 0.013 * (i % 9));  // fixations of different lengths
   }
   // Then a real pursuit, 12 deg/s for 1 s: the step test must leave it to the dispersion test.
   const std::int64_t pursuit_from_ns = synth.t_ns;
@@ -191,6 +195,59 @@ TEST(ConditionerStep, CleanMissedSaccadeEndsAsAFixation) {
   // And the real pursuit is read as one throughout.
   ASSERT_GT(pursuit_judged, 90);
   EXPECT_EQ(pursuit_read, pursuit_judged);
+}
+
+// Jumps the velocity test misses while the head sweeps and the eye holds the world: the
+// estimate is at each landing 60 ms after it, as with the head still. Here the velocity test
+// is off (only the step test and the dispersion test see the jumps): a low-noise tracker, 3 deg
+// jumps every 0.4 s, the head still or sweeping +-30 deg every 3 s (up to 63 deg/s). With the
+// head still the step test restarts the fixation at each jump (counted); in the sweep the
+// eye-in-head samples drift at the head's rate, and a line with that drift fits them better
+// than two means, so the step test rarely fires there (5 restarts in 10 s) and the landings are
+// reached through the dispersion test's short pursuits; both within 0.5 deg.
+TEST(ConditionerStep, LandingsAreReachedWhileTheHeadSweeps) {
+  ConditionerConfig config;
+  config.saccade_threshold_deg_s = 1000.0;
+  const auto run = [&](bool sweeping, unsigned seed) {
+    GazeConditioner c(config);
+    std::mt19937_64 rng(seed);
+    std::normal_distribution<double> noise(0.0, 0.15);
+    constexpr double kRate = 250.0;
+    int close = 0, judged = 0, judged_step = -1;
+    std::int64_t restarts = 0;
+    for (int i = 0; i < static_cast<int>(10.0 * kRate); ++i) {
+      const double t = i / kRate;
+      const double head_deg = sweeping ? 30.0 * std::sin(2.0 * std::numbers::pi * t / 3.0) : 0.0;
+      const glm::dquat head = glm::angleAxis(-head_deg * aux::kRadPerDeg, glm::dvec3(0, 1, 0));
+      const double yaw = truth_yaw_deg(t);
+      GazeSample s;
+      s.t_ns = kT0 + static_cast<std::int64_t>(std::llround(t * 1e9));
+      s.direction = direction_from_yaw_pitch_deg(yaw - head_deg + noise(rng), noise(rng));
+      s.valid = true;
+      c.push(s, head);
+      const ConditionedGaze g = c.at(s.t_ns, head);
+      restarts = g.fixation_restarts;
+      const auto step = static_cast<int>(std::floor(t / kFixationS));
+      if (t < 1.0 || step == judged_step || t - step * kFixationS < kStepS + kLookS) continue;
+      judged_step = step;
+      ++judged;
+      close += aux::angle_between_rad(g.direction_world, direction_from_yaw_pitch_deg(yaw, 0.0)) * aux::kDegPerRad < 0.5
+                   ? 1
+                   : 0;
+    }
+    return std::tuple{close, judged, restarts};
+  };
+  for (unsigned seed = 1; seed <= 3; ++seed) {
+    const auto [still_close, still_judged, still_restarts] = run(false, seed);
+    const auto [sweep_close, sweep_judged, sweep_restarts] = run(true, seed);
+    EXPECT_GE(still_restarts, still_judged) << "seed " << seed;
+    (void)sweep_restarts;
+    ASSERT_GE(sweep_judged, 20);
+    // 60 ms after each landing the estimate is there, with the head still and sweeping alike
+    // (without the step test the running mean would still be on its way).
+    EXPECT_GE(still_close, still_judged - 1) << "seed " << seed;
+    EXPECT_GE(sweep_close, sweep_judged - 1) << "seed " << seed;
+  }
 }
 
 }  // namespace

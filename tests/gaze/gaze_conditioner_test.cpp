@@ -346,10 +346,11 @@ TEST(GazeConditioner, VorFixationDuringA100DegPerSecondHeadTurnIsAFixation) {
 }
 
 // Eyes fixed in the head through a 0.8 s, 100 deg/s head turn (no VOR): the gaze moves in the
-// world at saccadic speed for far longer than any saccade lasts. After the first 150 ms (when
-// it could still be a saccade) it is a smooth gaze shift: pursuit, with the head's velocity,
-// not suppressed; the estimate follows the gaze rather than holding where the turn began.
-TEST(GazeConditioner, EyesCarriedByAFastHeadTurnArePursuitNotAnEndlessSaccade) {
+// world at saccadic speed for far longer than any saccade lasts. After the first 150 ms it is a
+// smooth gaze shift with the head, not one saccade after another: a carried fixation
+// (carried_shift_deg_s; a pursuit with the setting off), with the head's velocity, not
+// suppressed; the estimate follows the gaze rather than holding where the turn began.
+TEST(GazeConditioner, EyesCarriedByAFastHeadTurnAreSmoothNotAnEndlessSaccade) {
   for (unsigned seed = 1; seed <= 5; ++seed) {
     GazeConditioner c;
     const TruthFn carried = [](double t) {
@@ -407,6 +408,29 @@ TEST(GazeConditioner, EyesCarriedThroughAFastTurnStopWithTheHead) {
     EXPECT_EQ(turning_after_stop(ConditionerConfig{}, seed), 0) << "seed " << seed;
   }
   EXPECT_GE(before, 5 * 10) << "the old reading: ~100 ms of a pursuit at the turn's rate per seed";
+}
+
+// ... and the estimate is where the eye is, after the stop and through a blink just after it:
+// the fixation's running mean of a turning gaze lags far behind, and a blink holds whatever the
+// world estimate was (it must follow the head while the eye is carried).
+TEST(GazeConditioner, EyesCarriedThroughAFastTurnThenABlinkHoldTheirPlace) {
+  const TruthFn carried_blink = [](double t) {
+    const double yaw = std::clamp(-28.0 + 140.0 * (t - 0.4), -28.0, 28.0);
+    Truth tr{yaw + 5.0, 0.0, yaw};
+    tr.valid = !(t >= 0.85 && t < 0.95);  // a 100 ms blink just after the stop
+    return tr;
+  };
+  for (unsigned seed = 1; seed <= 5; ++seed) {
+    GazeConditioner c;
+    const auto frames = simulate(c, carried_blink, 1.4, Sim{.rate_hz = 200.0, .latency_s = 0.05, .seed = seed});
+    int judged = 0;
+    for (const Frame& f : frames) {
+      if (f.t_s < 0.9 || !f.out.valid) continue;  // from the newest sample after the stop on
+      ++judged;
+      EXPECT_LT(err_deg(f), 2.0) << "seed " << seed << " t " << f.t_s << " " << to_string(f.out.motion);
+    }
+    EXPECT_GT(judged, 80) << "seed " << seed;
+  }
 }
 
 TEST(GazeConditioner, BlinkIsLossThenInvalidAfterTheHold) {

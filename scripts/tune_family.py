@@ -11,6 +11,11 @@ is marked as chosen. Report the chosen point on seeds it was not tuned on (docs/
 "Scenario family").
 
 usage: scripts/tune_family.py [--gazelod build/apps/gazelod/gazelod] [--seeds 1000-1039]
+                              [--sweep NAME=V1,V2,... ...] [--ideal PARTS]
+
+Without --sweep the grid is the switch policy's (GRID below); each --sweep replaces it with the
+named settings' values (`gazelod eval family --list-settings` names them). --ideal passes on to
+every run (`gazelod eval family --ideal`: the tracker's latency, noise or rate made ideal).
 """
 import argparse
 import itertools
@@ -30,8 +35,23 @@ TRIANGLES = "triangles drawn / oracle"
 SWITCHES = "switches per object-second outside suppression"
 
 
-def run_point(gazelod, seeds, point, work):
+def parse_sweep(texts):
+    grid = {}
+    for text in texts:
+        name, sep, values = text.partition("=")
+        if not sep or not name or not values:
+            sys.exit(f"tune_family: --sweep expects NAME=V1,V2,..., got '{text}'")
+        try:
+            grid[name] = [float(v) for v in values.split(",")]
+        except ValueError:
+            sys.exit(f"tune_family: --sweep {name}: the values must be numbers, got '{values}'")
+    return grid
+
+
+def run_point(gazelod, seeds, point, work, ideal):
     args = [gazelod, "eval", "family", "--seeds", seeds, "--out", work]
+    if ideal:
+        args += ["--ideal", ideal]
     for name, value in point.items():
         args += ["--set", f"{name}={value}"]
     done = subprocess.run(args, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
@@ -45,19 +65,25 @@ def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[1])
     p.add_argument("--gazelod", default="build/apps/gazelod/gazelod")
     p.add_argument("--seeds", default="1000-1039")
+    p.add_argument("--sweep", action="append", default=[], help="NAME=V1,V2,... (repeatable; replaces the grid)")
+    p.add_argument("--ideal", default="", help="latency, noise, rate (comma-separated) or all")
     a = p.parse_args()
-    names = list(GRID)
-    points = [dict(zip(names, values)) for values in itertools.product(*(GRID[n] for n in names))]
+    grid = parse_sweep(a.sweep) if a.sweep else GRID
+    names = list(grid)
+    points = [dict(zip(names, values)) for values in itertools.product(*(grid[n] for n in names))]
     rows = []
     with tempfile.TemporaryDirectory(prefix="gazelod-tune-") as work:
         for k, point in enumerate(points, 1):
             print(f"tune_family: [{k}/{len(points)}] {point}", file=sys.stderr, flush=True)
-            d = run_point(a.gazelod, a.seeds, point, work)
+            d = run_point(a.gazelod, a.seeds, point, work, a.ideal)
             ok = d[DEGRADED]["worst"] <= 0.005 and d[SWITCHES]["p90"] <= 1.0
             rows.append((point, d, ok))
     admissible = [r for r in rows if r[2]]
     best = min(admissible, key=lambda r: (r[1][TRIANGLES]["median"], r[1][TRIANGLES]["p90"]), default=None)
-    print(f"<!-- written by: scripts/tune_family.py --seeds {a.seeds} -->\n")
+    command = f"scripts/tune_family.py --seeds {a.seeds}" + "".join(f" --sweep {t}" for t in a.sweep)
+    if a.ideal:
+        command += f" --ideal {a.ideal}"
+    print(f"<!-- written by: {command} -->\n")
     print("| " + " | ".join(names) + " | degraded worst | triangles median | p90 | worst | switches median | p90 | |")
     print("|" + "---:|" * (len(names) + 6) + "---|")
     for point, d, ok in rows:

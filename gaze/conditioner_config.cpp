@@ -62,6 +62,8 @@ std::string validate_conditioner_config(const ConditionerConfig& c) {
           : refusal("pursuit_exit_fraction", "in [0, 1]", c.pursuit_exit_fraction),
       at_least_zero("carried_evidence", c.carried_evidence),
       at_least_zero("carried_shift_deg_s", c.carried_shift_deg_s),
+      at_least_zero("carried_prior_fixations", c.carried_prior_fixations),
+      at_least_zero("carried_prior_exit", c.carried_prior_exit),
       above_zero_ns("max_gap_ns", c.max_gap_ns),
       at_least_zero_ns("fixation_smoothing_tau_ns", c.fixation_smoothing_tau_ns),
       at_least_zero("fixation_step_chi2", c.fixation_step_chi2),

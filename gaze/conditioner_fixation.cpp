@@ -17,6 +17,7 @@
 namespace gazelod::gaze {
 
 using detail::chi2_upper_999;
+using detail::kCarriedWindowNs;
 using detail::kMinPursuitSamples;
 using detail::kStepOverLine;
 using detail::kStepWindowNs;
@@ -48,6 +49,65 @@ double GazeConditioner::carried_evidence(std::size_t m, glm::dvec3& head_mean) c
   const double var = std::max(noise_var_, 1e-12);
   const double evidence = (in_world - in_head) / var;
   return std::isfinite(evidence) ? evidence : 0.0;
+}
+
+// Still in the head rather than in the world (the eyes carried by a moving head)? The evidence
+// grows with the phase, so it is taken over the whole fixation (up to kCarriedWindow). A
+// fixation earns the carried reading from its own samples, or, with carried_prior_fixations,
+// starts with it after a run of fixations that earned it (the viewer's habit) and keeps it
+// until its samples favour the world. Taking the habit from one fixation was measured and kept
+// reflex-held fixations of noisy trackers read as carried (docs/evaluation.md, "Scenario
+// family").
+void GazeConditioner::update_carried(EyeMotion prev, std::int64_t t_ns) noexcept {
+  std::size_t w = 0;
+  while (w < phase_count_ && t_ns - newest(w).t_ns <= kCarriedWindowNs) ++w;
+  glm::dvec3 head_mean = est_head_;
+  const double evidence = carried_evidence(w, head_mean);
+  if (prev != EyeMotion::fixation) begin_fixation_reading();
+  const bool tested = w >= kMinPursuitSamples;
+  const bool earned_before = carried_ && !carried_by_prior_;
+  bool carried = tested && evidence > config_.carried_evidence * (earned_before ? config_.pursuit_exit_fraction : 1.0);
+  if (carried) {
+    fixation_earned_carried_ = true;
+    carried_by_prior_ = false;
+  }
+  if (tested && evidence < -config_.carried_evidence) fixation_held_world_ = true;
+  if (carried_by_prior_) {
+    if (tested && evidence < -config_.carried_prior_exit * config_.carried_evidence) {
+      carried_by_prior_ = false;
+    } else {
+      carried = true;
+    }
+  }
+  carried_ = carried;
+  if (carried_) {
+    est_head_ = head_mean;
+    // The world estimate follows the head too, so that whatever reads it next (a blink's held
+    // estimate, the fixation once it is no longer carried) starts where the eye is, not where
+    // the fixation's running mean of a turning gaze lags behind.
+    glm::dvec3 w_now;
+    if (normalized_dir(last_head_ * est_head_, w_now)) est_world_ = w_now;
+  }
+}
+
+void GazeConditioner::begin_fixation_reading() noexcept {
+  // The fixation before (if any) joins or ends the run.
+  if (fixation_earned_carried_) {
+    ++carried_run_;
+  } else if (fixation_held_world_) {
+    carried_run_ = 0;
+  }
+  fixation_earned_carried_ = false;
+  fixation_held_world_ = false;
+  carried_by_prior_ =
+      config_.carried_prior_fixations > 0.0 && static_cast<double>(carried_run_) >= config_.carried_prior_fixations;
+  carried_ = carried_by_prior_;
+}
+
+bool GazeConditioner::carried_habit() const noexcept {
+  if (!(config_.carried_prior_fixations > 0.0) || fixation_held_world_) return false;
+  const int run = carried_run_ + (fixation_earned_carried_ ? 1 : 0);
+  return static_cast<double>(run) >= config_.carried_prior_fixations;
 }
 
 bool GazeConditioner::fixation_step(std::int64_t t_ns) noexcept {
@@ -142,8 +202,8 @@ bool GazeConditioner::fixation_step(std::int64_t t_ns) noexcept {
   est_world_ = world_landing;
   est_head_ = head_landing;
   fixation_n_ = static_cast<double>(k);
-  phase_count_ = k;  // the dispersion and carried tests start from the landing
-  carried_ = false;  // and the carried reading is earned anew
+  phase_count_ = k;          // the dispersion and carried tests start from the landing
+  begin_fixation_reading();  // and the carried reading is earned anew (or taken from the habit)
   ++fixation_restarts_;
   return true;
 }

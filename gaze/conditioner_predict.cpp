@@ -110,7 +110,9 @@ ConditionedGaze GazeConditioner::at(std::int64_t display_t_ns, const glm::dquat&
   g.valid = true;
   g.motion = motion_;
   if (motion_ == EyeMotion::pursuit && finite3(omega_world_)) g.angular_velocity_world_rad_s = omega_world_;
-  if (motion_ == EyeMotion::fixation && carried_) {
+  // In a saccade between fixations that the head carried, the eye is taken to keep the habit
+  // (carried_prior_fixations). Not in a blink: measured, it cost switches and degradations.
+  if ((motion_ == EyeMotion::fixation && carried_) || (motion_ == EyeMotion::saccade && carried_habit())) {
     g.carried = true;
     // The head's rotation from the newest sample to the display time (exact poses, no noise).
     const glm::dquat dq = q * glm::conjugate(last_head_);

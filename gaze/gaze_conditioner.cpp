@@ -20,7 +20,6 @@ namespace gazelod::gaze {
 
 using detail::ema_alpha;
 using detail::finite3;
-using detail::kCarriedWindowNs;
 using detail::kMinPursuitSamples;
 using detail::normalized_dir;
 using detail::normalized_quat;
@@ -348,27 +347,7 @@ void GazeConditioner::push_valid(std::int64_t t_ns, const glm::dvec3& world, con
       glm::dvec3 next;
       if (normalized_dir(aux::slerp_direction(est_world_, world, std::clamp(a, 0.0, 1.0)), next)) est_world_ = next;
     }
-    // Still in the head rather than in the world (the eyes carried by a moving head)? The
-    // evidence grows with the phase, so it is taken over the whole fixation (up to
-    // kCarriedWindow). Each fixation starts in the world and earns the carried reading anew:
-    // carrying it over a saccade (the eyes often keep their behaviour) was measured and drew
-    // 10-30 % fewer triangles on the carried seeds but turned reflex-held fixations of noisy
-    // trackers into visible degradations (docs/evaluation.md, "Scenario family").
-    std::size_t w = 0;
-    while (w < phase_count_ && t_ns - newest(w).t_ns <= kCarriedWindowNs) ++w;
-    glm::dvec3 head_mean = est_head_;
-    const double evidence = carried_evidence(w, head_mean);
-    if (prev != EyeMotion::fixation) carried_ = false;
-    carried_ = w >= kMinPursuitSamples &&
-               evidence > config_.carried_evidence * (carried_ ? config_.pursuit_exit_fraction : 1.0);
-    if (carried_) {
-      est_head_ = head_mean;
-      // The world estimate follows the head too, so that whatever reads it next (a blink's
-      // held estimate, the fixation once it is no longer carried) starts where the eye is, not
-      // where the fixation's running mean of a turning gaze lags behind.
-      glm::dvec3 w_now;
-      if (normalized_dir(last_head_ * est_head_, w_now)) est_world_ = w_now;
-    }
+    update_carried(prev, t_ns);
     motion_ = EyeMotion::fixation;
     omega_world_ = glm::dvec3(0.0);
     speed_deg_s_ = 0.0;

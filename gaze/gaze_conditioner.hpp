@@ -22,7 +22,9 @@
 // the phase (a likelihood ratio against the noise level, carried_evidence): it is then
 // `carried`, its direction the mean eye-in-head direction turned by the head at the display
 // time. A fast line in the world that barely moves in the head is such a fixation too, not a
-// saccade or a pursuit (carried_shift_deg_s). Invalid samples are a blink / loss.
+// saccade or a pursuit (carried_shift_deg_s). After a run of carried fixations the next
+// saccade and fixation start carried (the habit, carried_prior_fixations) until the new
+// fixation's samples favour the world. Invalid samples are a blink / loss.
 //
 // Output: fixation -> the running mean of the fixation's world directions (exponential once
 // older than fixation_smoothing_tau), held to the display time; pursuit -> the fitted line at
@@ -31,8 +33,8 @@
 // at the display time; saccade -> the newest sample (saccade_follow_newest; else the estimate
 // from before the saccade, held; the newest sample is moved speed * h / 2 on along the
 // saccade's direction with saccade_cone_ahead), suppressed; loss -> held, suppressed, valid for at most
-// loss_hold_max after the last valid sample. The angular velocity is non-zero only in pursuit
-// and carried fixations. With h = display time - newest
+// loss_hold_max after the last valid sample. The angular velocity is non-zero only in pursuit,
+// carried fixations and saccades read as carried by the habit. With h = display time - newest
 // valid sample (>= 0) and H = prediction_horizon_max, the uncertainty is
 //   clamp(sqrt(accuracy^2 + (age_growth * h)^2 + s^2), accuracy, max_uncertainty)
 // with the speed term s = 0 in fixation and loss, |omega| (velocity_error_fraction * min(h, H)
@@ -128,6 +130,19 @@ struct ConditionerConfig {
   // whose target keeps its velocity. 40, 60 and 90 measured alike on the family's tuning seeds
   // (docs/evaluation.md, "Scenario family", item 9). 0: off.
   double carried_shift_deg_s = 60.0;
+  // The viewer's habit: after this many fixations in a row that earned the carried reading
+  // (carried_evidence), the saccade that ends the last of them and the next fixation are read
+  // as carried too (the eye moves with the head rather than holding the world), until the new
+  // fixation's samples favour the world by carried_prior_exit times carried_evidence. A
+  // fixation whose samples favour the world by carried_evidence ends the run. Without it each
+  // fixation starts held in the world and earns the reading 40-70 ms after the tracker shows
+  // its landing, too late for the switch policy's hold before the next saccade, so the eyes
+  // carried through a head sweep were drawn at up to 2-3x the oracle's triangles. 3 and 1:
+  // chosen on the scenario family's seeds 1000-1099; 1 and 2 fixations took noisy trackers'
+  // reflex-held fixations for carried (docs/evaluation.md, "Scenario family", item 10).
+  // 0: off (each fixation earns the reading anew).
+  double carried_prior_fixations = 3.0;
+  double carried_prior_exit = 1.0;
   // A larger gap between samples splits the history (no fit spans it): Olsen's (2012) gap
   // fill-in limit of 75 ms, shorter than a blink; 30 Hz with one sample skipped still fits.
   std::int64_t max_gap_ns = 75'000'000;
@@ -232,9 +247,10 @@ struct ConditionedGaze {
   glm::dvec3 direction_world{0, 0, -1};  // predicted to the display time, unit
   glm::dvec3 direction_head{0, 0, -1};   // the same in the head at the display time (head_at_display^-1 * world)
   glm::dvec3 angular_velocity_world_rad_s{0.0};  // eye-in-world; 0 in a fixation held in the world
-  // A fixation of the eye in the head while the head moves (fixation, carried): the gaze moves
-  // with the head, the eye-in-head velocity is 0. angular_velocity_world is then the head's
-  // rotation from the newest sample to the display time.
+  // A fixation of the eye in the head while the head moves (fixation, carried), or a saccade
+  // between such fixations (carried_prior_fixations): the gaze moves with the head, apart from
+  // the saccade's own jump; the eye-in-head velocity is taken as 0. angular_velocity_world is
+  // then the head's rotation from the newest sample to the display time.
   bool carried = false;
   double uncertainty_deg = 0.0;  // angular uncertainty of direction_world (accuracy, age, speed), capped
   std::int64_t sample_t_ns = 0;  // newest valid sample used (0: none)
@@ -285,6 +301,14 @@ class GazeConditioner {
   // The world line `world` through the newest n samples is the head carrying the eye
   // (carried_shift_deg_s).
   bool carried_line(const Fit& world, std::size_t n) const noexcept;
+  // The run of carried fixations up to now, the current (or just ended) fixation included;
+  // true when it reaches carried_prior_fixations.
+  bool carried_habit() const noexcept;
+  // A new fixation (after a saccade, a pursuit, a loss, or a step): the one before joins or
+  // ends the run, and the new one starts carried if the run is long enough.
+  void begin_fixation_reading() noexcept;
+  // The carried test of a fixation sample (carried_evidence, the habit).
+  void update_carried(EyeMotion prev, std::int64_t t_ns) noexcept;
   void push_invalid(std::int64_t t_ns) noexcept;
 
   ConditionerConfig config_;
@@ -308,12 +332,16 @@ class GazeConditioner {
   bool have_estimate_ = false;
   // The estimate at the newest valid sample: fixation mean, pursuit fit, or held.
   glm::dvec3 est_world_{0.0, 0.0, -1.0};
-  glm::dvec3 omega_world_{0.0};          // pursuit only
-  bool carried_ = false;                 // fixation: still in the head, not in the world
-  glm::dvec3 est_head_{0.0, 0.0, -1.0};  // carried: the eye-in-head mean
-  double speed_deg_s_ = 0.0;             // eye-in-world speed of the current motion (0 in fixation)
-  glm::dvec3 saccade_axis_{0.0};         // saccade: the unit rotation axis of its motion (0: unknown)
-  double fixation_n_ = 0.0;              // samples in the fixation mean so far
+  glm::dvec3 omega_world_{0.0};           // pursuit only
+  bool carried_ = false;                  // fixation: still in the head, not in the world
+  bool carried_by_prior_ = false;         // ... taken from the run before it, not yet earned
+  bool fixation_earned_carried_ = false;  // this fixation's samples earned the carried reading
+  bool fixation_held_world_ = false;      // ... or favoured the world by carried_evidence
+  int carried_run_ = 0;                   // fixations in a row before this one that earned it
+  glm::dvec3 est_head_{0.0, 0.0, -1.0};   // carried: the eye-in-head mean
+  double speed_deg_s_ = 0.0;              // eye-in-world speed of the current motion (0 in fixation)
+  glm::dvec3 saccade_axis_{0.0};          // saccade: the unit rotation axis of its motion (0: unknown)
+  double fixation_n_ = 0.0;               // samples in the fixation mean so far
   double noise_var_ = 0.0;  // long-run residual variance per axis in fixation, rad^2 (from precision_deg at first)
   bool have_saccade_ = false;
   std::int64_t saccade_last_t_ns_ = 0;   // newest saccade-labelled sample

@@ -40,6 +40,8 @@ std::vector<BadSetting> bad_settings() {
       {"pursuit_exit_fraction", "1.5", [](C& c) { c.pursuit_exit_fraction = 1.5; }},  // was clamped to 1
       {"pursuit_exit_fraction", "nan", [](C& c) { c.pursuit_exit_fraction = kNaN; }},
       {"carried_evidence", "-2", [](C& c) { c.carried_evidence = -2.0; }},
+      {"carried_prior_fixations", "-1", [](C& c) { c.carried_prior_fixations = -1.0; }},
+      {"carried_prior_exit", "nan", [](C& c) { c.carried_prior_exit = kNaN; }},
       {"max_gap_ns", "0", [](C& c) { c.max_gap_ns = 0; }},
       {"fixation_smoothing_tau_ns", "-1", [](C& c) { c.fixation_smoothing_tau_ns = -1; }},
       {"fixation_step_chi2", "-1", [](C& c) { c.fixation_step_chi2 = -1.0; }},

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-// The gaze conditioner's two tests inside a phase (gaze_conditioner.hpp): is a fixation carried
-// by the head rather than held in the world, and has a fixation or a pursuit moved to a new
-// place without the velocity test noticing (a step)?
+// The gaze conditioner's tests of where a phase begins and what it is (gaze_conditioner.hpp):
+// is a fixation carried by the head rather than held in the world, has a fixation or a
+// pursuit moved to a new place without the velocity test noticing (a step), and has a saccade
+// landed, and when?
 #include "gaze/gaze_conditioner.hpp"
 
 #include "auxiliary/angles.hpp"
@@ -18,6 +19,8 @@ namespace gazelod::gaze {
 
 using detail::chi2_upper_999;
 using detail::kCarriedWindowNs;
+using detail::kLandingMinSpanNs;
+using detail::kMinLandingSamples;
 using detail::kMinPursuitSamples;
 using detail::kStepOverLine;
 using detail::kStepWindowNs;
@@ -205,6 +208,97 @@ bool GazeConditioner::fixation_step(std::int64_t t_ns) noexcept {
   phase_count_ = k;          // the dispersion and carried tests start from the landing
   begin_fixation_reading();  // and the carried reading is earned anew (or taken from the habit)
   ++fixation_restarts_;
+  return true;
+}
+
+// Walk back from the newest sample while each older one lies within the noise of the newer
+// ones' mean (p = 0.001 for a chi-square of 2 degrees of freedom, widened by the mean's own
+// error), the noise being the larger of the long-run level and the newer samples' own scatter
+// (the long-run level is learnt over seconds and starts from a guess; too small a level would
+// stop the walk at once and put the landing at the newest sample, the old answer). The
+// flight's samples lie apart from the landing in both frames (a saccade turns the eye in the
+// head and in the world alike); the landing holds still in the world (reflex) or in the head
+// (carried), so either frame will do. Not before the saccade's first labelled sample: a
+// saccade within the noise gives that, the earliest (shortest window) answer.
+std::int64_t GazeConditioner::landing_time() const noexcept {
+  if (segment_count_ == 0) return last_valid_t_ns_;
+  struct Run {
+    glm::dvec3 e1, e2;
+    glm::dvec2 s{0.0}, ss{0.0};
+  };
+  Run world, head;
+  aux::tangent_basis(newest(0).world, world.e1, world.e2);
+  aux::tangent_basis(newest(0).head, head.e1, head.e2);
+  const double floor_var = std::max(noise_var_, 1e-12);
+  const double chi2 = 13.82;  // chi-square, 2 degrees of freedom, p = 0.001
+  const auto near = [&](const Run& r, const glm::dvec3& ref, const glm::dvec3& d, double n) {
+    const glm::dvec2 a = aux::angular_offset_rad(d, ref, r.e1, r.e2);
+    const glm::dvec2 mean = r.s / n;
+    const double scatter = n >= 3.0 ? (r.ss.x + r.ss.y - n * glm::dot(mean, mean)) / (2.0 * (n - 1.0)) : 0.0;
+    const double var = std::max(floor_var, scatter);
+    const glm::dvec2 off = a - mean;
+    return glm::dot(off, off) <= chi2 * var * (1.0 + 1.0 / n);
+  };
+  const auto add = [](Run& r, const glm::dvec3& ref, const glm::dvec3& d) {
+    const glm::dvec2 a = aux::angular_offset_rad(d, ref, r.e1, r.e2);
+    r.s += a;
+    r.ss += a * a;
+  };
+  const glm::dvec3 ref_world = newest(0).world, ref_head = newest(0).head;
+  add(world, ref_world, ref_world);
+  add(head, ref_head, ref_head);
+  std::int64_t landing = newest(0).t_ns;
+  for (std::size_t j = 1; j < segment_count_; ++j) {
+    const Entry& e = newest(j);
+    if (e.t_ns < saccade_start_t_ns_) break;
+    const double n = static_cast<double>(j);
+    if (!near(world, ref_world, e.world, n) && !near(head, ref_head, e.head, n)) break;
+    add(world, ref_world, e.world);
+    add(head, ref_head, e.head);
+    landing = e.t_ns;
+  }
+  return landing;
+}
+
+bool GazeConditioner::saccade_landed() noexcept {
+  std::size_t k = 0;
+  while (k < segment_count_ && newest(0).t_ns - newest(k).t_ns <= kStepWindowNs &&
+         newest(k).t_ns >= saccade_start_t_ns_)
+    ++k;
+  if (k < kMinLandingSamples || newest(0).t_ns - newest(k - 1).t_ns < kLandingMinSpanNs) return false;
+  const double min_limit_rad_s = config_.saccade_threshold_deg_s * aux::kRadPerDeg;
+  const double var = std::max(noise_var_, 1e-12);
+  // Still: no saccadic speed along a line through them (a mid-flight run of a few samples can
+  // lie within the noise of its mean on a noisy tracker, not on a line below the velocity
+  // test's threshold), and their scatter about their mean within the noise (p = 0.001).
+  const auto still = [&](auto pick) {
+    const glm::dvec3 ref = pick(newest(0));
+    glm::dvec3 e1, e2;
+    aux::tangent_basis(ref, e1, e2);
+    glm::dvec2 s(0.0), ss(0.0), sta(0.0);
+    double st = 0.0, stt = 0.0;
+    for (std::size_t i = 0; i < k; ++i) {
+      const glm::dvec2 a = aux::angular_offset_rad(pick(newest(i)), ref, e1, e2);
+      const double t = aux::seconds_from_ns(newest(i).t_ns - newest(0).t_ns);
+      s += a;
+      ss += a * a;
+      sta += t * a;
+      st += t;
+      stt += t * t;
+    }
+    const double n = static_cast<double>(k);
+    const double ctt = stt - st * st / n;
+    if (!(ctt > 0.0)) return false;
+    const glm::dvec2 slope = (sta - st * s / n) / ctt;
+    // The velocity test's own threshold over these samples (saccade_significance standard
+    // errors under the noise, at least saccade_threshold): what it would not call a saccade.
+    const double limit_rad_s = std::max(min_limit_rad_s, config_.saccade_significance * std::sqrt(var / ctt));
+    if (!(std::hypot(slope.x, slope.y) < limit_rad_s)) return false;
+    const double rss = std::max(0.0, ss.x - s.x * s.x / n) + std::max(0.0, ss.y - s.y * s.y / n);
+    return rss <= chi2_upper_999(2.0 * (n - 1.0)) * var;
+  };
+  if (!still([](const Entry& e) { return e.world; }) && !still([](const Entry& e) { return e.head; })) return false;
+  velocity_floor_t_ns_ = newest(k - 1).t_ns;
   return true;
 }
 

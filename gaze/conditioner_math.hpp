@@ -16,6 +16,10 @@
 namespace gazelod::gaze::detail {
 
 inline constexpr std::size_t kMinPursuitSamples = 5;  // residuals need a few degrees of freedom
+inline constexpr std::size_t kMinLandingSamples = 3;  // a landing's scatter from fewer says little
+// ... nor from less time than this: a landing holds still for longer than a few fast samples
+// of a flight do.
+inline constexpr std::int64_t kLandingMinSpanNs = 15'000'000;
 // The carried test's window: most fixations are shorter (Rayner 1998); a long one is judged on
 // its latest second, so a head that stops moving is noticed.
 inline constexpr std::int64_t kCarriedWindowNs = 1'000'000'000;

@@ -124,7 +124,9 @@ ConditionedGaze GazeConditioner::at(std::int64_t display_t_ns, const glm::dquat&
     }
   }
   g.suppressed = motion_ == EyeMotion::saccade || motion_ == EyeMotion::loss ||
-                 (have_saccade_ && sat_sub(display_t_ns, saccade_last_t_ns_) <= config_.post_saccade_suppression_ns);
+                 (have_saccade_ && sat_sub(display_t_ns, config_.post_saccade_from_landing ? saccade_landing_t_ns_
+                                                                                           : saccade_last_t_ns_) <=
+                                       config_.post_saccade_suppression_ns);
   return g;
 }
 

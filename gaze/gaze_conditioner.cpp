@@ -228,9 +228,14 @@ void GazeConditioner::push_valid(std::int64_t t_ns, const glm::dvec3& world, con
 
   // 1. I-VT: the least-squares speed over the velocity window (at least 3 samples).
   std::size_t k = 0;
+  bool after_landing = false;  // the fit starts at a landing (saccade_landed)
   while (k < segment_count_) {
     const std::int64_t age = t_ns - newest(k).t_ns;
     if (age > config_.dispersion_window_ns) break;
+    if (newest(k).t_ns < velocity_floor_t_ns_) {
+      after_landing = true;
+      break;
+    }
     if (k >= kMinVelocitySamples && age > config_.velocity_window_ns) break;
     ++k;
   }
@@ -251,7 +256,12 @@ void GazeConditioner::push_valid(std::int64_t t_ns, const glm::dvec3& world, con
   // Fast in the world but not in the head: the head carrying the eye through a turn
   // (carried_shift_deg_s), not a saccade, which turns the eye in the head.
   const bool carried_shift = carried_line(fv, k);
-  if (fv.ok && fv.n >= kMinVelocitySamples && fv.span_s >= 0.5 * v_window_s && v_deg_s > v_threshold &&
+  const bool landed = prev == EyeMotion::saccade && config_.saccade_ends_at_landing && saccade_landed();
+  // After a landing, a whole window of samples: the next saccade is rarely that soon, and a
+  // shorter fit over the landing's first samples reads the flight's last drift and the noise as
+  // a new saccade.
+  const double min_span_s = (after_landing ? 1.0 : 0.5) * v_window_s;
+  if (!landed && fv.ok && fv.n >= kMinVelocitySamples && fv.span_s >= min_span_s && v_deg_s > v_threshold &&
       !carried_shift) {
     carried_ = false;
     // No estimate yet (the stream began in a saccade): the oldest sample of the fit, where
@@ -281,10 +291,15 @@ void GazeConditioner::push_valid(std::int64_t t_ns, const glm::dvec3& world, con
     }
     have_saccade_ = true;
     saccade_last_t_ns_ = t_ns;
-    phase_count_ = 0;  // the next phase begins after the saccade
+    saccade_landing_t_ns_ = t_ns;  // until it is seen to end
+    phase_count_ = 0;              // the next phase begins after the saccade
     fixation_n_ = 0.0;
     return;
   }
+
+  // The saccade has ended: the velocity fit, over a window, falls below the threshold only
+  // once most of the flight has left it, tens of ms after the landing.
+  if (prev == EyeMotion::saccade) saccade_landing_t_ns_ = landing_time();
 
   // 2. A fixation that stepped to a new place (a saccade the velocity test missed) restarts
   // there first, so the dispersion test below does not read the jump as a pursuit. In a

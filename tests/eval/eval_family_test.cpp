@@ -104,7 +104,7 @@ TEST(EvalFamily, ConditionerSettingsItRefusesStopTheFamilyBeforeAnySeed) {
 
 // Held-out seeds (the defaults were tuned on 1000-1039): the bulk of the family within the
 // targets. Not every seed is (docs/evaluation.md lists the ones outside and why); the counts
-// are those of 2026-12-06, so a change that loses one fails here.
+// are those of 2026-12-07, so a change that loses one fails here.
 TEST(EvalFamily, HeldOutSeedsMostlyWithinTheTargets) {
   const auto dir = scratch();
   const Result r = cli({"eval", "family", "--seeds", "2000-2019", "--out", dir.string()});
@@ -117,13 +117,14 @@ TEST(EvalFamily, HeldOutSeedsMostlyWithinTheTargets) {
   EXPECT_GE(degraded.at("within_target").get<int>(), 20);
   EXPECT_LE(triangles.at("median").get<double>(), kTargetTriangleRatio);
   EXPECT_GE(triangles.at("median").get<double>(), 1.0) << "below the oracle would be degradations";
-  EXPECT_GE(triangles.at("within_target").get<int>(), 15);
+  // 15 before saccades ended at their landing (saccade_ends_at_landing, 2026-12-07): seed 2012
+  // now waits for a suppression it used to take 50-110 ms after a landing, when vision was back
+  // (1.34 -> 1.40 times the oracle's triangles; its switches 1.55 -> 0.72 per object-second).
+  EXPECT_GE(triangles.at("within_target").get<int>(), 14);
   EXPECT_LE(switches.at("median").get<double>(), kTargetSwitchesPerObjectS);
-  // 18 before the carried habit (carried_prior_fixations, 2026-12-06, night): the carried
-  // seeds 2002 and 2014 now switch as the head's sweep requires (1.32 and 1.01 per
-  // object-second, the true gaze's own 1.44 and 0.87) instead of holding detail (2.39 and 1.70
-  // times the oracle's triangles; now 1.69 and 1.49).
-  EXPECT_GE(switches.at("within_target").get<int>(), 16);
+  // 16 before the landing (18 before the carried habit, which made the carried seeds 2002 and
+  // 2014 switch as the head's sweep requires): now all 20.
+  EXPECT_GE(switches.at("within_target").get<int>(), 20);
 }
 
 // The carried habit (docs/evaluation.md, "Scenario family", item 10): on a seed whose eyes the

@@ -150,7 +150,9 @@ TEST(ConditionerHabit, AFixationHeldInTheWorldEndsTheHabit) {
     EXPECT_EQ(carried_samples(reads, 5), 0) << "seed " << seed;
     EXPECT_EQ(carried_samples(reads, 6), 0) << "seed " << seed;
     for (const Read& r : reads) {
-      if (r.fixation == -1 - 5 || r.fixation == -1 - 6) EXPECT_FALSE(r.out.carried) << "seed " << seed;
+      if (r.fixation == -1 - 5 || r.fixation == -1 - 6) {
+        EXPECT_FALSE(r.out.carried) << "seed " << seed;
+      }
     }
   }
 }

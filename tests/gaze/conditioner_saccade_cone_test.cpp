@@ -6,18 +6,16 @@
 
 #include "auxiliary/angles.hpp"
 #include "auxiliary/yaw_pitch.hpp"
-#include "gaze/main_sequence.hpp"
+#include "tests/gaze/noisy_saccade.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdint>
-#include <random>
 
 namespace gazelod::gaze {
 namespace {
 
-constexpr std::int64_t kT0 = 1'000'000'000;
 constexpr double kOnsetS = 0.5;
 
 glm::dvec3 dir(double yaw_deg) {
@@ -36,23 +34,16 @@ struct Seen {
 // of noise, each shown latency_s later.
 Seen run(const ConditionerConfig& config, double amplitude_deg, double rate_hz, double latency_s, unsigned seed) {
   GazeConditioner c(config);
-  std::mt19937_64 rng(seed);
-  std::normal_distribution<double> noise(0.0, 0.5 / std::sqrt(2.0));
-  const double dur = main_sequence::duration_s(amplitude_deg);
-  const double ratio = main_sequence::velocity_ratio(amplitude_deg);
-  const auto yaw_at = [&](double t) { return amplitude_deg * main_sequence::progress((t - kOnsetS) / dur, ratio); };
+  test::NoisySaccade saccade(amplitude_deg, kOnsetS, 0.5, seed);
+  const double dur = saccade.end_s() - kOnsetS;
   const glm::dquat still{1.0, 0.0, 0.0, 0.0};
   Seen s;
   for (int i = 0; i < static_cast<int>(1.2 * rate_hz); ++i) {
     const double t = i / rate_hz;
-    GazeSample g;
-    g.t_ns = kT0 + static_cast<std::int64_t>(std::llround(t * 1e9));
-    g.direction =
-        aux::direction_from(aux::YawPitch{(yaw_at(t) + noise(rng)) * aux::kRadPerDeg, noise(rng) * aux::kRadPerDeg});
-    g.valid = true;
+    const GazeSample g = saccade.sample(t);
     c.push(g, still);
     const double shown = t + latency_s;
-    const ConditionedGaze out = c.at(kT0 + static_cast<std::int64_t>(std::llround(shown * 1e9)), still);
+    const ConditionedGaze out = c.at(test::NoisySaccade::at_ns(shown), still);
     if (out.motion != EyeMotion::saccade) continue;
     ++s.in_saccade;
     s.cone_sum += out.uncertainty_deg;
@@ -90,8 +81,9 @@ TEST(ConditionerSaccadeCone, HoldsTheLandingWithASmallerCone) {
         EXPECT_EQ(ahead.ahead_of_sample, ahead.in_saccade) << what;
         EXPECT_EQ(ahead.landing_held, ahead.landed) << what;
         EXPECT_EQ(old.landing_held, old.landed) << what;
-        // (1 + 0.75) / 2 of the speed term; the accuracy and age terms are the same in both, so
-        // the gain shows where the speed term dominates (long saccades, late trackers).
+        // (1 + saccade_path_margin) / 2 of the speed term; the accuracy and age terms are the
+        // same in both, so the gain shows where the speed term dominates (long saccades, late
+        // trackers).
         EXPECT_LT(ahead.cone_sum, old.cone_sum) << what;
         if (amplitude >= 10.0 && latency >= 0.05) {
           EXPECT_LT(ahead.cone_sum, 0.9 * old.cone_sum) << what;

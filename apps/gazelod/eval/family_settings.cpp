@@ -148,6 +148,18 @@ const std::vector<Setting>& settings_table() {
        {},
        [](S& s) -> std::int64_t& { return s.conditioning.post_saccade_suppression_ns; },
        {}},
+      {"conditioner.post_saccade_from_landing",
+       0,
+       1,
+       {},
+       {},
+       [](S& s) -> bool& { return s.conditioning.post_saccade_from_landing; }},
+      {"conditioner.saccade_ends_at_landing",
+       0,
+       1,
+       {},
+       {},
+       [](S& s) -> bool& { return s.conditioning.saccade_ends_at_landing; }},
   };
   return table;
 }

@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -50,6 +51,7 @@ enum Draw : std::uint64_t {
   kRatio,
   kTargetRadius,
   kTurn2Time,
+  kOffsetDirection,
 };
 constexpr std::uint64_t kFamilyStream = 0x66616d696c79;  // "family"
 
@@ -102,7 +104,8 @@ bool parse_ideal_tracker(const std::string& text, IdealTracker& out) {
   return true;
 }
 
-FamilyScenario family_scenario(std::uint64_t seed, double duration_s, IdealTracker ideal) {
+FamilyScenario family_scenario(std::uint64_t seed, double duration_s, IdealTracker ideal,
+                               double calibration_offset_deg) {
   const aux::CounterRng r{seed, kFamilyStream};
   const auto u = [&](Draw d, double lo, double hi) { return r.uniform(d, lo, hi); };
   const double T = duration_s > 0.0 ? duration_s : 20.0;
@@ -172,6 +175,13 @@ FamilyScenario family_scenario(std::uint64_t seed, double duration_s, IdealTrack
   effects.push_back({{"type", "tracker_rate"}, {"rate_hz", tracker_hz}});
   effects.push_back({{"type", "tracker_latency"}, {"latency_ms", latency_ms}});
   effects.push_back({{"type", "tracker_noise"}, {"std_deg", noise_deg}});
+  const double offset_deg = std::isfinite(calibration_offset_deg) ? std::clamp(calibration_offset_deg, 0.0, 30.0) : 0.0;
+  if (offset_deg > 0.0) {
+    const double dir = u(kOffsetDirection, 0.0, 2.0 * std::numbers::pi);
+    effects.push_back({{"type", "calibration_offset"},
+                       {"yaw_deg", std::round(offset_deg * std::cos(dir) * 1000.0) / 1000.0},
+                       {"pitch_deg", std::round(offset_deg * std::sin(dir) * 1000.0) / 1000.0}});
+  }
   effects.push_back({{"type", "blinks"},
                      {"rate_per_min", std::round(u(kBlinkRate, 6.0, 20.0))},
                      {"duration_ms", std::round(u(kBlinkLen, 100.0, 250.0))}});
@@ -210,9 +220,11 @@ FamilyScenario family_scenario(std::uint64_t seed, double duration_s, IdealTrack
                        {"runtime", {{"eye_gaze_supported", true}, {"gaze_delivery", "normal"}, {"paced", true}}}};
   FamilyScenario out;
   out.json = sc.dump(2);
-  std::snprintf(text, sizeof text, "%s, %s%s, %s, %.0f Hz %.0f ms %.2f deg, %s", head_text.c_str(),
+  char offset_text[48] = "";
+  if (offset_deg > 0.0) std::snprintf(offset_text, sizeof offset_text, " offset %.2f deg", offset_deg);
+  std::snprintf(text, sizeof text, "%s, %s%s, %s, %.0f Hz %.0f ms %.2f deg%s, %s", head_text.c_str(),
                 moving ? (vor ? "vor" : "eyes carried") : "fixations", pursuit_text.c_str(), display, tracker_hz,
-                latency_ms, noise_deg, kFields[field]);
+                latency_ms, noise_deg, offset_text, kFields[field]);
   out.summary = text;
   return out;
 }

@@ -37,7 +37,12 @@ struct IdealTracker {
 };
 
 // 20 s of the seed's draw; `duration_s` > 0 shortens or lengthens it (effects keep their times).
-FamilyScenario family_scenario(std::uint64_t seed, double duration_s = 20.0, IdealTracker ideal = {});
+// calibration_offset_deg > 0 (a what-if for the tracker's accuracy, at most 30): every sample
+// is off by that angle, in a direction drawn for the seed (its own key, so nothing else moves),
+// as a tracker's calibration error is (the calibration_offset effect). The family's trackers
+// are otherwise unbiased: their error is noise only.
+FamilyScenario family_scenario(std::uint64_t seed, double duration_s = 20.0, IdealTracker ideal = {},
+                               double calibration_offset_deg = 0.0);
 
 // "latency", "noise", "rate" (comma-separated, any order) or "all"; "" or "none": none. Returns
 // false, leaving `out` as it was, for anything else.

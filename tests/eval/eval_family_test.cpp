@@ -154,18 +154,21 @@ TEST(EvalFamily, CarriedHabitWhatIf) {
             audit.at("switches").at("oracle_outside_suppression").at("per_object_second").get<double>());
 }
 
+// family.json of `gazelod eval family --seeds 2000-2009 EXTRA --out dir/name`.
+nlohmann::json figures(const std::filesystem::path& dir, const std::vector<std::string>& extra,
+                       const std::string& name) {
+  std::vector<std::string> args{"eval", "family", "--seeds", "2000-2009", "--out", (dir / name).string()};
+  args.insert(args.end(), extra.begin(), extra.end());
+  const Result r = cli(args);
+  EXPECT_EQ(r.rc, 0) << r.err;
+  return nlohmann::json::parse(read(dir / name / "family.json"));
+}
+
 // What the tracker costs (docs/evaluation.md, "What the tracker costs"): the same seeds with
 // the tracker's latency removed draw fewer triangles and switch less, and the run says so.
 TEST(EvalFamily, IdealTrackerWhatIf) {
   const auto dir = scratch();
-  const auto figures = [&](const std::vector<std::string>& extra, const std::string& name) {
-    std::vector<std::string> args{"eval", "family", "--seeds", "2000-2009", "--out", (dir / name).string()};
-    args.insert(args.end(), extra.begin(), extra.end());
-    const Result r = cli(args);
-    EXPECT_EQ(r.rc, 0) << r.err;
-    return nlohmann::json::parse(read(dir / name / "family.json"));
-  };
-  const nlohmann::json drawn = figures({}, "drawn"), ideal = figures({"--ideal", "latency"}, "ideal");
+  const nlohmann::json drawn = figures(dir, {}, "drawn"), ideal = figures(dir, {"--ideal", "latency"}, "ideal");
   EXPECT_EQ(ideal.at("settings_changed")[0], "ideal=latency");
   EXPECT_NE(ideal.at("members")[0].at("scenario").get<std::string>().find(" 0 ms "), std::string::npos);
   const auto median = [](const nlohmann::json& j, const char* figure) {
@@ -176,6 +179,25 @@ TEST(EvalFamily, IdealTrackerWhatIf) {
     EXPECT_LT(median(ideal, figure), median(drawn, figure)) << figure;
   EXPECT_TRUE(read(dir / "ideal" / "family.md")
                   .starts_with("<!-- written by: gazelod eval family --seeds 2000-2009 --ideal latency"));
+}
+
+// What a calibration error costs (docs/evaluation.md, "What the tracker costs"): beyond the
+// plugin's accuracy margin (1.5 deg), the same seeds are drawn coarser than the true gaze
+// allows more often, and the run says what it changed.
+TEST(EvalFamily, TrackerOffsetWhatIf) {
+  const auto dir = scratch();
+  const nlohmann::json drawn = figures(dir, {}, "drawn"), off = figures(dir, {"--tracker-offset", "3"}, "off");
+  EXPECT_EQ(off.at("settings_changed")[0], "tracker_offset_deg=3");
+  EXPECT_NE(off.at("members")[0].at("scenario").get<std::string>().find(" offset 3.00 deg"), std::string::npos);
+  const char* degraded = "visible degradations (fixation object-frames)";
+  EXPECT_GT(off.at("distribution").at(degraded).at("median").get<double>(),
+            2.0 * drawn.at("distribution").at(degraded).at("median").get<double>());
+  EXPECT_TRUE(read(dir / "off" / "family.md")
+                  .starts_with("<!-- written by: gazelod eval family --seeds 2000-2009 --tracker-offset 3"));
+  const Result bad =
+      cli({"eval", "family", "--seeds", "2000", "--tracker-offset", "-1", "--out", (dir / "bad").string()});
+  EXPECT_NE(bad.rc, 0);
+  EXPECT_NE(bad.err.find("--tracker-offset"), std::string::npos) << bad.err;
 }
 
 }  // namespace

@@ -5,6 +5,8 @@
 #include "sim/simulator.hpp"
 
 #include <gtest/gtest.h>
+
+#include <cmath>
 #include <nlohmann/json.hpp>
 
 #include <set>
@@ -114,6 +116,34 @@ TEST(ScenarioFamily, IdealTrackerChangesOnlyTheTracker) {
     EXPECT_EQ(*effect(late, "tracker_noise"), *effect(drawn, "tracker_noise"));
     EXPECT_EQ(*effect(late, "tracker_rate"), *effect(drawn, "tracker_rate"));
   }
+}
+
+// The calibration-error what-if (eval family --tracker-offset) adds one calibration_offset
+// effect of that size, in a direction of the seed's own, and changes nothing else.
+TEST(ScenarioFamily, CalibrationOffsetAddsOnlyTheOffset) {
+  int pointing_right = 0;
+  for (std::uint64_t seed = 2000; seed < 2020; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const std::string drawn_text = family_scenario(seed).json;
+    EXPECT_EQ(family_scenario(seed, 20.0, {}, 0.0).json, drawn_text);
+    const FamilyScenario f = family_scenario(seed, 20.0, {}, 1.5);
+    ASSERT_NO_THROW((void)load_scenario_json(f.json, "offset"));
+    nlohmann::json offset = nlohmann::json::parse(f.json);
+    const nlohmann::json* e = effect(offset, "calibration_offset");
+    ASSERT_NE(e, nullptr);
+    const double yaw = e->at("yaw_deg").get<double>(), pitch = e->at("pitch_deg").get<double>();
+    EXPECT_NEAR(std::hypot(yaw, pitch), 1.5, 0.002);
+    pointing_right += yaw > 0.0 ? 1 : 0;
+    nlohmann::json kept = nlohmann::json::array();
+    for (const nlohmann::json& x : offset.at("effects"))
+      if (x.at("type") != "calibration_offset") kept.push_back(x);
+    offset["effects"] = kept;
+    EXPECT_EQ(offset, nlohmann::json::parse(drawn_text));
+    EXPECT_NE(f.summary.find(" offset 1.50 deg"), std::string::npos) << f.summary;
+  }
+  // Directions of the seeds' own, not one for all.
+  EXPECT_GT(pointing_right, 2);
+  EXPECT_LT(pointing_right, 18);
 }
 
 TEST(ScenarioFamily, IdealTrackerNames) {

@@ -71,7 +71,7 @@ std::vector<FamilyMember> run_family(std::uint64_t first, int count, double dura
   std::vector<FamilyMember> members;
   for (int k = 0; k < count; ++k) {
     const std::uint64_t seed = first + static_cast<std::uint64_t>(k);
-    const sim::FamilyScenario f = sim::family_scenario(seed, duration_s, settings.ideal);
+    const sim::FamilyScenario f = sim::family_scenario(seed, duration_s, settings.ideal, settings.tracker_offset_deg);
     const std::filesystem::path dir = work.path() / ("seed-" + std::to_string(seed));
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
@@ -187,6 +187,7 @@ struct FamilyFlags {
   double duration_s = 20.0;
   std::vector<std::string> set;
   std::string ideal;
+  double tracker_offset_deg = 0.0;
   bool list = false;
 };
 
@@ -211,6 +212,9 @@ int run_eval_family(const FamilyFlags& flags, Io io) {
   if (!sim::parse_ideal_tracker(flags.ideal, settings.ideal))
     throw UsageError(std::string("--ideal: expected ") + sim::kIdealTrackerNames + ", got '" + flags.ideal + "'");
   if (settings.ideal.any()) settings.changed.push_back("ideal=" + flags.ideal);
+  settings.tracker_offset_deg = flags.tracker_offset_deg;
+  if (flags.tracker_offset_deg > 0.0)
+    settings.changed.push_back("tracker_offset_deg=" + fmt("%g", flags.tracker_offset_deg));
   if (flags.list) {
     io.out << settings_list(settings);
     return 0;
@@ -226,6 +230,7 @@ int run_eval_family(const FamilyFlags& flags, Io io) {
   if (flags.duration_s != 20.0) command += " --duration " + fmt("%g", flags.duration_s);
   for (const std::string& s : flags.set) command += " --set " + s;
   if (settings.ideal.any()) command += " --ideal " + flags.ideal;
+  if (flags.tracker_offset_deg > 0.0) command += " --tracker-offset " + fmt("%g", flags.tracker_offset_deg);
   const std::string md = family_markdown(members, settings, command);
   std::error_code ec;
   std::filesystem::create_directories(flags.out, ec);
@@ -248,6 +253,10 @@ EvalSubcommand add_eval_family(CLI::App& eval) {
   app->add_option("--ideal", flags->ideal,
                   "What-if: each seed with parts of its tracker made ideal, to measure what they cost: latency (0 "
                   "ms), noise (0 deg), rate (1000 Hz), comma-separated, or all");
+  app->add_option("--tracker-offset", flags->tracker_offset_deg,
+                  "What-if: each seed's tracker off by this many degrees (a calibration error, in a direction drawn "
+                  "per seed), to measure what the plugin's accuracy margin covers")
+      ->check(CLI::Range(0.0, 30.0));
   app->add_flag("--list-settings", flags->list, "Print the settings --set understands, with their values");
   app->add_option("--out", flags->out, "Folder for family.md and family.json");
   app->add_option("--work", flags->work, "Folder for each seed's scenario (default: a temporary one, removed)");

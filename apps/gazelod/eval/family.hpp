@@ -38,6 +38,7 @@ struct FamilySettings {
   lod::SwitchPolicyConfig switching;
   gaze::ConditionerConfig conditioning;
   sim::IdealTracker ideal;           // --ideal: what each seed's tracker costs (its scenario with parts made ideal)
+  double tracker_offset_deg = 0.0;   // --tracker-offset: each seed's tracker off by this much (a calibration error)
   std::vector<std::string> changed;  // "switch.coarsen_hold_s=0.3", as given
 };
 

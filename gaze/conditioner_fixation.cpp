@@ -213,9 +213,11 @@ bool GazeConditioner::fixation_step(std::int64_t t_ns) noexcept {
 
 // Walk back from the newest sample while each older one lies within the noise of the newer
 // ones' mean (p = 0.001 for a chi-square of 2 degrees of freedom, widened by the mean's own
-// error), the noise being the larger of the long-run level and the newer samples' own scatter
-// (the long-run level is learnt over seconds and starts from a guess; too small a level would
-// stop the walk at once and put the landing at the newest sample, the old answer). The
+// error), the noise being the larger of the long-run level and the newer samples' own scatter,
+// capped at four times the long-run variance (the long-run level is learnt over seconds and
+// starts from a guess; too small a level would stop the walk at once and put the landing at
+// the newest sample, the old answer; an uncapped scatter grows with each accepted sample of
+// the flight's slow tail and let the walk run back into the flight). The
 // flight's samples lie apart from the landing in both frames (a saccade turns the eye in the
 // head and in the world alike); the landing holds still in the world (reflex) or in the head
 // (carried), so either frame will do. Not before the saccade's first labelled sample: a
@@ -230,12 +232,15 @@ std::int64_t GazeConditioner::landing_time() const noexcept {
   aux::tangent_basis(newest(0).world, world.e1, world.e2);
   aux::tangent_basis(newest(0).head, head.e1, head.e2);
   const double floor_var = std::max(noise_var_, 1e-12);
-  const double chi2 = 13.82;  // chi-square, 2 degrees of freedom, p = 0.001
+  const double chi2 = 13.82;       // chi-square, 2 degrees of freedom, p = 0.001
+  const double kScatterCap = 4.0;  // variances: twice the deviation
   const auto near = [&](const Run& r, const glm::dvec3& ref, const glm::dvec3& d, double n) {
     const glm::dvec2 a = aux::angular_offset_rad(d, ref, r.e1, r.e2);
     const glm::dvec2 mean = r.s / n;
     const double scatter = n >= 3.0 ? (r.ss.x + r.ss.y - n * glm::dot(mean, mean)) / (2.0 * (n - 1.0)) : 0.0;
-    const double var = std::max(floor_var, scatter);
+    // At most twice the long-run deviation: each accepted sample of a slow flight's tail
+    // widens the scatter, and an uncapped one let the walk run back to the saccade's start.
+    const double var = std::max(floor_var, std::min(scatter, kScatterCap * floor_var));
     const glm::dvec2 off = a - mean;
     return glm::dot(off, off) <= chi2 * var * (1.0 + 1.0 / n);
   };
@@ -260,25 +265,28 @@ std::int64_t GazeConditioner::landing_time() const noexcept {
   return landing;
 }
 
-bool GazeConditioner::saccade_landed() noexcept {
+bool GazeConditioner::saccade_landed(double limit_deg_s) noexcept {
   std::size_t k = 0;
   while (k < segment_count_ && newest(0).t_ns - newest(k).t_ns <= kStepWindowNs &&
          newest(k).t_ns >= saccade_start_t_ns_)
     ++k;
   if (k < kMinLandingSamples || newest(0).t_ns - newest(k - 1).t_ns < kLandingMinSpanNs) return false;
-  const double min_limit_rad_s = config_.saccade_threshold_deg_s * aux::kRadPerDeg;
+  const double limit_rad_s = limit_deg_s * aux::kRadPerDeg;
   const double var = std::max(noise_var_, 1e-12);
-  // Still: no saccadic speed along a line through them (a mid-flight run of a few samples can
-  // lie within the noise of its mean on a noisy tracker, not on a line below the velocity
-  // test's threshold), and their scatter about their mean within the noise (p = 0.001).
+  // Still: no slope through them above the velocity test's threshold over its own, longer,
+  // window (a limit from these few samples' own standard error would let a noisy tracker's
+  // flight through at its peak speed), and their scatter about their mean within the noise
+  // (p = 0.001).
   const auto still = [&](auto pick) {
-    const glm::dvec3 ref = pick(newest(0));
+    glm::dvec3 sum(0.0), mean;
+    for (std::size_t i = 0; i < k; ++i) sum += pick(newest(i));
+    if (!normalized_dir(sum, mean)) return false;
     glm::dvec3 e1, e2;
-    aux::tangent_basis(ref, e1, e2);
+    aux::tangent_basis(mean, e1, e2);
     glm::dvec2 s(0.0), ss(0.0), sta(0.0);
     double st = 0.0, stt = 0.0;
     for (std::size_t i = 0; i < k; ++i) {
-      const glm::dvec2 a = aux::angular_offset_rad(pick(newest(i)), ref, e1, e2);
+      const glm::dvec2 a = aux::angular_offset_rad(pick(newest(i)), mean, e1, e2);
       const double t = aux::seconds_from_ns(newest(i).t_ns - newest(0).t_ns);
       s += a;
       ss += a * a;
@@ -290,9 +298,6 @@ bool GazeConditioner::saccade_landed() noexcept {
     const double ctt = stt - st * st / n;
     if (!(ctt > 0.0)) return false;
     const glm::dvec2 slope = (sta - st * s / n) / ctt;
-    // The velocity test's own threshold over these samples (saccade_significance standard
-    // errors under the noise, at least saccade_threshold): what it would not call a saccade.
-    const double limit_rad_s = std::max(min_limit_rad_s, config_.saccade_significance * std::sqrt(var / ctt));
     if (!(std::hypot(slope.x, slope.y) < limit_rad_s)) return false;
     const double rss = std::max(0.0, ss.x - s.x * s.x / n) + std::max(0.0, ss.y - s.y * s.y / n);
     return rss <= chi2_upper_999(2.0 * (n - 1.0)) * var;

@@ -256,7 +256,7 @@ void GazeConditioner::push_valid(std::int64_t t_ns, const glm::dvec3& world, con
   // Fast in the world but not in the head: the head carrying the eye through a turn
   // (carried_shift_deg_s), not a saccade, which turns the eye in the head.
   const bool carried_shift = carried_line(fv, k);
-  const bool landed = prev == EyeMotion::saccade && config_.saccade_ends_at_landing && saccade_landed();
+  const bool landed = prev == EyeMotion::saccade && config_.saccade_ends_at_landing && saccade_landed(v_threshold);
   // After a landing, a whole window of samples: the next saccade is rarely that soon, and a
   // shorter fit over the landing's first samples reads the flight's last drift and the noise as
   // a new saccade.

@@ -7,7 +7,9 @@
 //  1. saccade when the least-squares slope of the world direction over a short window
 //     (velocity_window, at least 3 samples and half the window, never across a gap or an
 //     invalid sample) exceeds saccade_threshold; during pursuit the slope is taken relative
-//     to the pursuit velocity (so fast pursuit plus noise is no saccade);
+//     to the pursuit velocity (so fast pursuit plus noise is no saccade). A saccade ends when
+//     its newest samples hold still (saccade_ends_at_landing), and the next window then starts
+//     at the landing and must be whole;
 //  2. otherwise a dispersion test over the samples since the last saccade / gap / loss, at
 //     most dispersion_window long and at least velocity_window, separates pursuit from
 //     fixation. The dispersion is that of the least-squares line through the window
@@ -330,9 +332,13 @@ class GazeConditioner {
   // which on every sample lies within the noise of the newer ones' mean, in the world or in the
   // head (gaze/conditioner_fixation.cpp).
   std::int64_t landing_time() const noexcept;
-  // In a saccade: its newest samples (kStepWindowNs, at least kMinLandingSamples, all since it
-  // began) hold still, in the world or in the head: it has landed. Sets velocity_floor_t_ns_.
-  bool saccade_landed() noexcept;
+  // In a saccade: its newest samples (kStepWindowNs, at least kMinLandingSamples over
+  // kLandingMinSpanNs, all since it began) hold still, in the world or in the head, with no
+  // slope above limit_deg_s (the velocity test's threshold over its own window) through them:
+  // it has landed. Sets velocity_floor_t_ns_. (The fixation still starts from the newest
+  // sample: the run's oldest samples may be the flight's slow tail, and starting the phase
+  // with them biased the carried test: measured, ConditionerHabit.)
+  bool saccade_landed(double limit_deg_s) noexcept;
   // The carried test of a fixation sample (carried_evidence, the habit).
   void update_carried(EyeMotion prev, std::int64_t t_ns) noexcept;
   void push_invalid(std::int64_t t_ns) noexcept;

@@ -175,6 +175,13 @@ FamilyScenario family_scenario(std::uint64_t seed, double duration_s, IdealTrack
   effects.push_back({{"type", "tracker_rate"}, {"rate_hz", tracker_hz}});
   effects.push_back({{"type", "tracker_latency"}, {"latency_ms", latency_ms}});
   effects.push_back({{"type", "tracker_noise"}, {"std_deg", noise_deg}});
+  effects.push_back({{"type", "blinks"},
+                     {"rate_per_min", std::round(u(kBlinkRate, 6.0, 20.0))},
+                     {"duration_ms", std::round(u(kBlinkLen, 100.0, 250.0))}});
+  if (r.uniform(kDropouts) < 0.3)
+    effects.push_back({{"type", "dropouts"}, {"fraction", std::round(u(kDropFraction, 0.01, 0.05) * 1000.0) / 1000.0}});
+  // Last: the simulator gives each effect a random stream by its place in the list, so an
+  // effect inserted before the blinks and dropouts would move them too.
   const double offset_deg = std::isfinite(calibration_offset_deg) ? std::clamp(calibration_offset_deg, 0.0, 30.0) : 0.0;
   if (offset_deg > 0.0) {
     const double dir = u(kOffsetDirection, 0.0, 2.0 * std::numbers::pi);
@@ -182,11 +189,6 @@ FamilyScenario family_scenario(std::uint64_t seed, double duration_s, IdealTrack
                        {"yaw_deg", std::round(offset_deg * std::cos(dir) * 1000.0) / 1000.0},
                        {"pitch_deg", std::round(offset_deg * std::sin(dir) * 1000.0) / 1000.0}});
   }
-  effects.push_back({{"type", "blinks"},
-                     {"rate_per_min", std::round(u(kBlinkRate, 6.0, 20.0))},
-                     {"duration_ms", std::round(u(kBlinkLen, 100.0, 250.0))}});
-  if (r.uniform(kDropouts) < 0.3)
-    effects.push_back({{"type", "dropouts"}, {"fraction", std::round(u(kDropFraction, 0.01, 0.05) * 1000.0) / 1000.0}});
 
   // The field: its depth and size structure, stretched ahead by the walk's distance.
   const std::size_t field = pick(r.uniform(kField), kFields.size());

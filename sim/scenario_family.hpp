@@ -38,9 +38,10 @@ struct IdealTracker {
 
 // 20 s of the seed's draw; `duration_s` > 0 shortens or lengthens it (effects keep their times).
 // calibration_offset_deg > 0 (a what-if for the tracker's accuracy, at most 30): every sample
-// is off by that angle, in a direction drawn for the seed (its own key, so nothing else moves),
-// as a tracker's calibration error is (the calibration_offset effect). The family's trackers
-// are otherwise unbiased: their error is noise only.
+// is off by about that angle (a yaw and a pitch offset; the yaw's arc shrinks with the cosine
+// of the gaze's pitch), in a direction drawn for the seed, as a tracker's calibration error is
+// (the calibration_offset effect, appended last so that no other effect's random stream moves).
+// The family's trackers are otherwise unbiased: their error is noise only.
 FamilyScenario family_scenario(std::uint64_t seed, double duration_s = 20.0, IdealTracker ideal = {},
                                double calibration_offset_deg = 0.0);
 

@@ -2,9 +2,9 @@
 // A saccade ends at its landing (ConditionerConfig::saccade_ends_at_landing) and the
 // post-saccadic window counts from there (post_saccade_from_landing). The velocity fit alone
 // ends a saccade only once most of the flight has left its window, tens of ms after the
-// landing, and the window counted from that last saccade-labelled sample took coarsenings
-// 50-110 ms after the landing for hidden when vision was back (docs/evaluation.md, "Scenario
-// family", item 11).
+// landing, and the window counted from that last saccade-labelled sample closed 90-115 ms
+// after the landing, so coarsenings made after the true ~50 ms of suppression were taken for
+// hidden (docs/evaluation.md, "Scenario family", item 11).
 #include "gaze/gaze_conditioner.hpp"
 
 #include "tests/gaze/noisy_saccade.hpp"
@@ -42,7 +42,7 @@ Ends run(const ConditionerConfig& config, double amplitude_deg, double rate_hz, 
     c.push(saccade.sample(t), still);
     const double shown = t + kLatencyS;
     const ConditionedGaze out = c.at(test::NoisySaccade::at_ns(shown), still);
-    if (out.motion == EyeMotion::saccade) {
+    if (out.motion == EyeMotion::saccade && t >= kOnsetS - 0.02) {  // not noise read as one before
       e.found = true;
       e.last_saccade_s = t - end;
     }
@@ -62,23 +62,34 @@ TEST(ConditionerLanding, SaccadeEndsAndItsWindowCountsFromTheLanding) {
   int cases = 0;
   for (const double amplitude : {4.0, 10.0, 20.0})
     for (const double rate : {120.0, 250.0})
-      for (const double noise : {0.2, 0.5, 1.0})
-        for (unsigned seed = 1; seed <= 3; ++seed) {
+      for (const double noise : {0.2, 0.5, 1.0, 1.5})
+        for (unsigned seed = 1; seed <= 5; ++seed) {
           const std::string what = std::to_string(amplitude) + " deg, " + std::to_string(rate) + " Hz, " +
                                    std::to_string(noise) + " deg noise, seed " + std::to_string(seed);
           const Ends a = run(now, amplitude, rate, noise, seed);
           const Ends b = run(old, amplitude, rate, noise, seed);
-          ASSERT_TRUE(a.found) << what;
-          ASSERT_TRUE(b.found) << what;
+          // A small saccade under much noise is below the velocity test's threshold either way
+          // (4 deg at 120 Hz and 1.5 deg of noise).
+          ASSERT_EQ(a.found, b.found) << what;
+          if (!a.found) {
+            EXPECT_TRUE(amplitude < 5.0 && noise > 1.0) << what;
+            continue;
+          }
           // Read as a saccade until at most the landing's own samples (25 ms) and a sample
           // interval after the landing.
           EXPECT_LE(a.last_saccade_s, 0.025 + 1.0 / rate) << what;
+          // ... and not in flight: at most a sample interval before the end (the flight's
+          // last, slow, part within the noise). A slope limit from the landing's own few
+          // samples let a noisy tracker's flight through at its peak speed, 6-8 deg short.
+          EXPECT_GE(a.last_saccade_s, -1.0 / rate - 0.003) << what;
           EXPECT_LE(a.last_saccade_s, b.last_saccade_s) << what;
           // Vision is taken as suppressed until about post_s after the landing: not past it by
           // more than the landing estimate's sample, and not long before the true ~50 ms (the
-          // estimate may fall on the flight's last, slow, part within the noise).
-          EXPECT_LE(a.last_suppressed_s, post_s + 1.0 / rate) << what;
-          EXPECT_GE(a.last_suppressed_s, 0.04) << what;
+          // estimate may fall on the flight's last, slow, part within the noise). At 1.5 deg of
+          // noise the estimate errs by up to 15 ms more either way.
+          const double tol = noise > 1.0 ? 0.015 : 0.0;
+          EXPECT_LE(a.last_suppressed_s, post_s + 1.0 / rate + tol) << what;
+          EXPECT_GE(a.last_suppressed_s, 0.04 - tol) << what;
           EXPECT_EQ(a.fixation_frames_off, 0) << what;
           lag_now += a.last_saccade_s;
           lag_old += b.last_saccade_s;

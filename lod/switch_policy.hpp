@@ -11,7 +11,8 @@
 //     allowed throughout the window, never coarser than anything allowed during it;
 //   - with prefer_suppression, once the hold has passed, waits for a frame in which vision is
 //     suppressed (the caller's flag: a saccade, up to ~60 ms after it, or a blink) and
-//     coarsens then, or anyway once max_deferral_s more has passed.
+//     coarsens then, or anyway once max_deferral_s more has passed, or (release_regret_s)
+//     once waiting has kept as many triangles as a switch is worth.
 // So the drawn level is never coarser than this frame's perceptual level, coarsenings of one
 // object (without release_by_motion) are at least coarsen_hold_s apart on a monotonic clock
 // (at most 1 / coarsen_hold_s per object-second; refinements are not limited), and a
@@ -26,7 +27,8 @@
 //     std::string err = apply_switch_policy(config, t_s, suppressed, lod, state, held);
 //     draw drawn[i]; held[i] says why it differs from lod[i] (HoldReason).
 //   with release_by_motion: apply_switch_policy(config, t_s, suppressed, lod, motion_level, state,
-//     held), motion_level from lod/motion_bound.hpp.
+//     held), motion_level from lod/motion_bound.hpp; with release_regret_s, the overload with
+//     SwitchCosts (the levels' triangles).
 // One new object: reset_switch_state on a SwitchState of one-entry subspans.
 // Validation: apply_switch_policy and reset_switch_state refuse an invalid config or spans of
 // different lengths with a message and write nothing. A non-finite t_s is a frame in which no
@@ -97,6 +99,29 @@ struct SwitchPolicyConfig {
   // vestibulo-ocular reflex holding the world still while the head turns, which the tracker
   // reports a latency late), so that only motion blurring every eye motion is released.
   bool motion_eye_may_hold_world = true;
+  // After the hold, release a coarsening outside suppression too once waiting has cost what a
+  // switch is worth: once the triangles it saves (drawn level minus the level it would go to)
+  // times the time the window has been open reach release_regret_s times
+  // SwitchCosts::unit_triangles (the plugin: the mean full-detail triangles per object, so the
+  // rule does not depend on the scene's scale). The ski-rental rule (Karlin, Manasse, Rudolph &
+  // Sleator 1988): an object whose coarsening saves much goes soon after the hold, one that
+  // saves little waits for suppression as before. The product never exceeds the triangles the
+  // window actually kept (its level to release only gets finer). Needs the levels' triangle
+  // counts (the overload with SwitchCosts); 0, or without them: off. 0.15 s chosen on the
+  // scenario family's tuning seeds (docs/evaluation.md, "Scenario family", item 12): 0.1 and
+  // 0.12 let a seed's degradations pass 0.5 %, 0.2 saved less. Not for cluster cuts: their
+  // nesting (lod/cluster/cluster_switch_policy.hpp) needs a release that depends on time and
+  // suppression alone.
+  double release_regret_s = 0.15;
+};
+
+// What each object's levels cost, for release_regret_s (plain data, caller-owned): the
+// triangles of object i's level l are level_triangles[level_first[i] + l]; a switch is worth
+// release_regret_s * unit_triangles triangle-seconds (0: no release by regret).
+struct SwitchCosts {
+  std::span<const std::uint32_t> level_triangles;
+  std::span<const std::uint32_t> level_first;  // one entry per object, or empty: no costs
+  double unit_triangles = 0.0;                 // finite, >= 0
 };
 
 // "" when valid (both times finite and >= 0), else which field and why.
@@ -133,6 +158,14 @@ struct SwitchState {
                                               std::span<const std::uint8_t> perceptual,
                                               std::span<const std::uint8_t> motion_level, const SwitchState& state,
                                               std::span<std::uint8_t> held);
+
+// The same, with what each level costs (release_regret_s). Refused, writing nothing, where
+// costs.level_first is neither empty nor perceptual's length, costs.unit_triangles is negative
+// or not finite, or an object's drawn or perceptual level lies past level_triangles.
+[[nodiscard]] std::string apply_switch_policy(const SwitchPolicyConfig& config, double t_s, bool suppressed,
+                                              std::span<const std::uint8_t> perceptual,
+                                              std::span<const std::uint8_t> motion_level, const SwitchCosts& costs,
+                                              const SwitchState& state, std::span<std::uint8_t> held);
 
 // Every object: draw `level`, no window open (registration, reset). Returns "" or, for spans
 // of different lengths, a message, writing nothing.

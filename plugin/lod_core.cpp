@@ -64,6 +64,8 @@ std::uint32_t LodCore::add_object(const ObjectDesc& d) {
   chains_.push_back(d.lods);
   importance_.push_back(d.importance);
   budget_.reset();  // rebuilt with the new object at the next frame
+  switch_costs_.mark_stale();
+  switch_unstarted_ = true;
   resize_outputs();
   return id;
 }
@@ -82,6 +84,7 @@ std::uint32_t LodCore::remove_object(std::uint32_t id) {
   move_last(switch_drawn_), move_last(switch_finest_), move_last(switch_window_s_);
   move_last(held_), move_last(switch_started_);
   budget_.reset();
+  switch_costs_.mark_stale();
   resize_outputs();
   return last;
 }
@@ -262,41 +265,6 @@ void LodCore::publish_clusters() {
       config_.switch_policy && config_.cluster_switch_policy ? clusters_.held() : std::span<const std::uint8_t>();
   frame_.cluster_first = clusters_.first_cluster();
   diag_.cluster_drawn_perceptual = clusters_.perceptual();
-}
-
-// Refinement at once, coarsening after the hold and preferably while vision is suppressed.
-void LodCore::apply_switch_policy(const lod::Viewer& v, std::int64_t t_ns, bool suppressed) {
-  if (!config_.switch_policy) return;
-  const double t_s = frame_seconds(t_ns);
-  // An object's first frame draws its perceptual level: nothing was drawn before, so there is
-  // no switch to hide.
-  for (std::size_t i = 0; i < lod_.size(); ++i)
-    if (!switch_started_[i]) {
-      switch_drawn_[i] = lod_[i];
-      switch_started_[i] = 1;
-    }
-  const lod::SwitchState state{switch_drawn_, switch_finest_, switch_window_s_};
-  // What size and motion alone allow the objects about to be held (lod/motion_bound.hpp). A
-  // refusal (only for a viewer select_lods refused too, when lod_ is all 0) releases nothing.
-  std::span<const std::uint8_t> motion_level;
-  if (config_.switching.release_by_motion) {
-    motion_level_.resize(lod_.size());
-    const bool any_eye = !config_.switching.motion_trusts_eye_velocity;
-    const lod::EyeHypotheses also{any_eye, any_eye && config_.switching.motion_eye_may_hold_world};
-    if (lod::motion_bound_levels(v, store_.view(), lod_, switch_drawn_, motion_scratch_, motion_level_, also).empty())
-      motion_level = motion_level_;
-  }
-  if (!lod::apply_switch_policy(config_.switching, t_s, suppressed, lod_, motion_level, state, held_).empty()) {
-    // Cannot happen (the constructor checked the configuration, resize_outputs keeps the sizes
-    // equal); were it refused, draw the perceptual choice.
-    std::copy(lod_.begin(), lod_.end(), switch_drawn_.begin());
-    std::fill(held_.begin(), held_.end(), 0);
-  }
-}
-
-// The levels the policy passes on (the perceptual ones without it).
-std::span<const std::uint8_t> LodCore::policy_lod() const {
-  return config_.switch_policy ? std::span<const std::uint8_t>(switch_drawn_) : std::span<const std::uint8_t>(lod_);
 }
 
 // The budget pass: the perceptual levels are the finest worth drawing; the solver coarsens

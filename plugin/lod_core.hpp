@@ -19,6 +19,7 @@
 #include "plugin/object_desc.hpp"
 #include "plugin/head_motion.hpp"
 #include "plugin/plugin_config.hpp"
+#include "plugin/switch_costs.hpp"
 
 #include <array>
 #include <cstdint>
@@ -143,10 +144,12 @@ class LodCore {
   lod::Decisions decisions_out_, breakdown_se_out_, breakdown_sv_out_;
   std::vector<float> angular_radius_deg_;
   std::vector<std::uint8_t> switch_drawn_, switch_finest_, held_, switch_started_;
+  bool switch_unstarted_ = false;  // some switch_started_ entry is 0 (an object added since)
   std::vector<double> switch_window_s_;
   // release_by_motion: each frame's size-and-motion level of the policy's candidates.
   std::vector<std::uint8_t> motion_level_;
   lod::MotionBoundScratch motion_scratch_;
+  SwitchCostTable switch_costs_;  // release_regret_s: the levels' triangles
   bool have_t0_ = false;
   std::int64_t t0_ns_ = 0;
   std::vector<std::uint8_t> budget_lod_;

@@ -129,6 +129,46 @@ TEST_F(LodPluginFakeXr, RefinesAtOnceAndHoldsACoarsening) {
   EXPECT_TRUE(plugin_->diagnostics().gaze_suppressed);
 }
 
+// The release by regret (SwitchPolicyConfig::release_regret_s) on the plugin's own path: two
+// objects move from 2 m to 8 m ahead while the eye holds still, no saccade to wait for. The one
+// whose coarsening saves 100 times the triangles is drawn coarser right after the hold; the
+// small one waits for the deadline (hold + deferral). With the rule off, both wait.
+TEST_F(LodPluginFakeXr, ABigSavingIsNotHeldForASaccade) {
+  for (const double regret_s : {lod::SwitchPolicyConfig{}.release_regret_s, 0.0}) {
+    PluginConfig config;
+    config.switching.release_regret_s = regret_s;
+    plugin_ = create(config);
+    ObjectDesc big = object_at_yaw(0), small = object_at_yaw(-3);
+    for (lod::LodLevel& level : big.lods) level.triangles *= 100;
+    plugin_->add_object(big);
+    plugin_->add_object(small);
+    // More small objects, so that the mean object (the rule's unit, 0.15 s of its full detail)
+    // is small beside the big one's saving.
+    for (int k = 0; k < 8; ++k) plugin_->add_object(object_at_yaw(20.0 + 3.0 * k));
+    const std::vector<std::uint8_t> near = look(0, 60);
+    plugin_->set_object_motion(0, {0.0, 0.0, -8.0}, glm::dvec3(0.0));
+    plugin_->set_object_motion(1, {-std::sin(glm::radians(-3.0)) * 8.0, 0.0, -std::cos(glm::radians(-3.0)) * 8.0},
+                               glm::dvec3(0.0));
+    std::vector<int> frames_held(2, -1);
+    for (int f = 0; f < 90; ++f) {
+      const FrameDecisions& d = frames(1);
+      for (std::size_t i = 0; i < 2; ++i)
+        if (frames_held[i] < 0 && d.lod[i] > near[i]) frames_held[i] = f;
+    }
+    ASSERT_GE(frames_held[0], 0) << "regret " << regret_s;
+    ASSERT_GE(frames_held[1], 0) << "regret " << regret_s;
+    EXPECT_GE(frames_held[0], 18) << "never before the hold (200 ms, 18 frames)";
+    if (regret_s > 0.0)
+      EXPECT_LE(frames_held[0], 20) << "the big saving: at the end of the hold";
+    else
+      EXPECT_GE(frames_held[0], 70) << "without the rule: the deadline (72 frames)";
+    EXPECT_GE(frames_held[1], 70) << "the small saving waits for the deadline, regret " << regret_s;
+    EXPECT_FALSE(plugin_->diagnostics().gaze_suppressed);
+    plugin_.reset();
+    FakeXr::get().reset();
+  }
+}
+
 TEST_F(LodPluginFakeXr, CreationFailureThrowsTheResultAndReleasesWhatWasMade) {
   // plugin_actions creates two spaces and an action set before the views are enumerated.
   for (XrFn call : {XrFn::create_action_set, XrFn::attach_session_action_sets, XrFn::create_action_space,

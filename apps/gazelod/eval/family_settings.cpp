@@ -31,6 +31,7 @@ const std::vector<Setting>& settings_table() {
       {"switch.max_deferral_s", 0, 10, [](S& s) -> double& { return s.switching.max_deferral_s; }, {}, {}},
       {"switch.suppressed_hold_s", 0, 10, [](S& s) -> double& { return s.switching.suppressed_hold_s; }, {}, {}},
       {"switch.prefer_suppression", 0, 1, {}, {}, [](S& s) -> bool& { return s.switching.prefer_suppression; }},
+      {"switch.release_regret_s", 0, 10, [](S& s) -> double& { return s.switching.release_regret_s; }, {}, {}},
       {"switch.release_by_motion", 0, 1, {}, {}, [](S& s) -> bool& { return s.switching.release_by_motion; }},
       {"switch.motion_trusts_eye_velocity",
        0,

@@ -2,7 +2,8 @@
 // What the two switch policies share (lod/switch_policy.cpp for objects,
 // lod/cluster/cluster_switch_policy.cpp for cluster records): one frame's constants of the
 // hold rule and the message for a span of the wrong length. One copy, so the two policies
-// cannot drift apart in when they release a coarsening.
+// cannot drift apart in the hold and the deadline. (The object policy alone also releases by
+// regret, release_regret_s, and by motion, release_by_motion.)
 #pragma once
 
 #include "lod/switch_policy.hpp"

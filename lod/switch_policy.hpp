@@ -31,7 +31,8 @@
 //     SwitchCosts (the levels' triangles).
 // One new object: reset_switch_state on a SwitchState of one-entry subspans.
 // Validation: apply_switch_policy and reset_switch_state refuse an invalid config or spans of
-// different lengths with a message and write nothing. A non-finite t_s is a frame in which no
+// different lengths with a message and write nothing; with release_regret_s > 0 so are costs
+// that do not cover the levels in use. A non-finite t_s is a frame in which no
 // time passes (see apply_switch_policy); no NaN reaches a decision.
 #pragma once
 
@@ -48,7 +49,8 @@ enum class HoldReason : std::uint8_t {
   hold_time = 1,             // a coarser level is allowed, but not yet for coarsen_hold_s
                              // without a break: drawn stays finer
   awaiting_suppression = 2,  // the hold has passed; prefer_suppression waits for a suppressed
-                             // frame (saccade or blink), at most max_deferral_s
+                             // frame (saccade or blink), at most max_deferral_s, or with
+                             // release_regret_s until waiting has cost what a switch is worth
   no_time = 3,               // a coarser level is allowed, but this frame's t_s is not finite:
                              // nothing coarsens and no window opens in it
 };
@@ -117,14 +119,17 @@ struct SwitchPolicyConfig {
 
 // What each object's levels cost, for release_regret_s (plain data, caller-owned): the
 // triangles of object i's level l are level_triangles[level_first[i] + l]; a switch is worth
-// release_regret_s * unit_triangles triangle-seconds (0: no release by regret).
+// release_regret_s * unit_triangles triangle-seconds (0: no release by regret). The policy
+// checks that every level in use has an entry, not where one object's chain ends: the levels
+// passed must lie within each object's chain, and the counts must not increase along it (as
+// lod::validate_chain requires), else the regret can exceed what the window kept.
 struct SwitchCosts {
   std::span<const std::uint32_t> level_triangles;
   std::span<const std::uint32_t> level_first;  // one entry per object, or empty: no costs
   double unit_triangles = 0.0;                 // finite, >= 0
 };
 
-// "" when valid (both times finite and >= 0), else which field and why.
+// "" when valid (every time and release_regret_s finite and >= 0), else which field and why.
 [[nodiscard]] std::string validate_switch_config(const SwitchPolicyConfig& config);
 
 // No window open (window_start_s); any non-finite value reads the same.
@@ -159,9 +164,10 @@ struct SwitchState {
                                               std::span<const std::uint8_t> motion_level, const SwitchState& state,
                                               std::span<std::uint8_t> held);
 
-// The same, with what each level costs (release_regret_s). Refused, writing nothing, where
-// costs.level_first is neither empty nor perceptual's length, costs.unit_triangles is negative
-// or not finite, or an object's drawn or perceptual level lies past level_triangles.
+// The same, with what each level costs (release_regret_s). With release_regret_s > 0, refused,
+// writing nothing, where costs.level_first is neither empty nor perceptual's length,
+// costs.unit_triangles is negative or not finite, or an object's drawn or perceptual level lies
+// past level_triangles; at 0 the costs are not read.
 [[nodiscard]] std::string apply_switch_policy(const SwitchPolicyConfig& config, double t_s, bool suppressed,
                                               std::span<const std::uint8_t> perceptual,
                                               std::span<const std::uint8_t> motion_level, const SwitchCosts& costs,

@@ -9,7 +9,9 @@
 //   - coarsening after a hold: a record the selection finds invisible is drawn as invisible only
 //     once it has been so for coarsen_hold_s without a break, with prefer_suppression then in a
 //     suppressed frame (saccade or blink; suppressed_hold_s there) or anyway after
-//     max_deferral_s more (the same SwitchPolicyConfig, the same rules as for objects);
+//     max_deferral_s more (the same SwitchPolicyConfig, the same rules as for objects, except
+//     that release_regret_s and release_by_motion are not used here: the consistency argument
+//     below needs a release that depends on time and suppression alone);
 //   - a cluster is drawn when its self record is held invisible and its parent record not.
 // Why the held cut stays consistent: a group's record is held in every cluster that carries it
 // (as self in the clusters it produced, as parent in its members); those copies see identical

@@ -137,6 +137,12 @@ TEST(SwitchRegret, BadCostsOrSettingRefusedWritingNothing) {
   EXPECT_NE(wrong_length.find("costs.level_first has 1 entries, expected 2"), std::string::npos) << wrong_length;
   const std::string past = o.frame(regret(0.8), 0.0, false, lod, SwitchCosts{short_tri, kFirst, 1.0});
   EXPECT_NE(past.find("no entry for object 1's level 3"), std::string::npos) << past;
+  // A drawn level past the costs is refused as well (a caller's state, not this frame's level).
+  Objects drawn_past(2);
+  drawn_past.drawn[1] = 3;
+  const std::string drawn_err = drawn_past.frame(regret(0.8), 0.0, false, {0, 0}, SwitchCosts{short_tri, kFirst, 1.0});
+  EXPECT_NE(drawn_err.find("no entry for object 1's level 3"), std::string::npos) << drawn_err;
+  EXPECT_EQ(drawn_past.drawn, (std::vector<std::uint8_t>{0, 3}));
   for (double bad : {-0.1, kNaN, std::numeric_limits<double>::infinity()}) {
     EXPECT_NE(validate_switch_config(regret(bad)), "");
     EXPECT_NE(o.frame(regret(bad), 0.0, false, lod, SwitchCosts{kTriangles, kFirst, 1.0}), "");
@@ -146,6 +152,45 @@ TEST(SwitchRegret, BadCostsOrSettingRefusedWritingNothing) {
   EXPECT_EQ(o.drawn, (std::vector<std::uint8_t>{0, 0}));
   EXPECT_EQ(o.held, (std::vector<std::uint8_t>(2, 0xff)));
   EXPECT_TRUE(std::isnan(o.start[0]));
+}
+
+// Time as for the other rules: a frame without a finite time releases nothing by regret, and a
+// clock that goes back restarts the window (the regret starts again from zero).
+TEST(SwitchRegret, NoReleaseWithoutTimeAndAClockGoingBackStartsAgain) {
+  const SwitchCosts costs{kTriangles, kFirst, 1000.0};  // object 0 at 0.2 s: 3 750 >= 800
+  Objects o(2);
+  const std::vector<std::uint8_t> coarser{2, 0};
+  ASSERT_EQ(o.frame(regret(0.8), 10.0, false, coarser, costs), "");
+  ASSERT_EQ(o.frame(regret(0.8), kNaN, false, coarser, costs), "");
+  EXPECT_EQ(o.drawn[0], 0);
+  EXPECT_EQ(o.why(0), HoldReason::no_time);
+  ASSERT_EQ(o.frame(regret(0.8), 8.0, false, coarser, costs), "");  // back: the window restarts
+  ASSERT_EQ(o.frame(regret(0.8), 8.125, false, coarser, costs), "");
+  EXPECT_EQ(o.drawn[0], 0);
+  EXPECT_EQ(o.why(0), HoldReason::hold_time);
+  ASSERT_EQ(o.frame(regret(0.8), 8.25, false, coarser, costs), "");  // 18 750 * 0.25 >= 800
+  EXPECT_EQ(o.drawn[0], 2);
+}
+
+// With release_by_motion the motion's share goes at once; the regret then counts what the rest
+// of the coarsening saves, from the same window.
+TEST(SwitchRegret, AfterAReleaseByMotionTheRestWaitsForItsOwnRegret) {
+  SwitchPolicyConfig c = regret(0.8);
+  c.release_by_motion = true;
+  c.max_deferral_s = 2.0;  // no deadline in the way
+  const SwitchCosts costs{kTriangles, kFirst, 1000.0};
+  Objects o(2);
+  const std::vector<std::uint8_t> lod{3, 3}, motion{2, 2};
+  for (double t : {0.0, 0.1}) ASSERT_EQ(apply_switch_policy(c, t, false, lod, motion, costs, o.state(), o.held), "");
+  EXPECT_EQ(o.drawn, (std::vector<std::uint8_t>{2, 2}));  // motion's share: no hold
+  ASSERT_EQ(apply_switch_policy(c, 0.2, false, lod, motion, costs, o.state(), o.held), "");
+  // From 2 to 3: object 0 saves 937 * 0.2 s = 187 < 800, object 1 saves 100 * 0.2 = 20: both wait.
+  EXPECT_EQ(o.drawn, (std::vector<std::uint8_t>{2, 2}));
+  EXPECT_EQ(o.why(0), HoldReason::awaiting_suppression);
+  for (double t : {0.5, 0.85}) ASSERT_EQ(apply_switch_policy(c, t, false, lod, motion, costs, o.state(), o.held), "");
+  EXPECT_EQ(o.drawn, (std::vector<std::uint8_t>{2, 2}));  // 937 * 0.85 = 796 < 800
+  ASSERT_EQ(apply_switch_policy(c, 0.86, false, lod, motion, costs, o.state(), o.held), "");
+  EXPECT_EQ(o.drawn, (std::vector<std::uint8_t>{3, 2}));  // 937 * 0.86 = 806: the window counts from 0
 }
 
 // Randomized (seeded): against a reference of the rule. Per object, the run of frames allowing

@@ -308,6 +308,39 @@ TEST(RunAudit, TargetsHoldOnTheDefaultAndItsLateNoisyAndStillHeadVariants) {
   }
 }
 
+// --breakdown also prints the offline optimum (run/offline_bound.hpp): at the policy's own
+// switches, what a policy knowing the run's future could have drawn. Under the oracle's levels
+// it can never draw less than the oracle (every level is at most the oracle's); the policy's
+// own sequence is one of those allowed under its perceptual levels, so the optimum is not
+// above it (up to the Lagrangian hull's gap, far below what is measured here).
+TEST(RunAudit, BreakdownAddsTheOfflineOptimum) {
+  use_simulated_runtime("");
+  const auto dir = scratch_dir();
+  const CliResult r = run_cli({"run", "--no-render", "--quiet", "--breakdown", "--out", (dir / "b").string()});
+  ASSERT_EQ(r.rc, 0) << r.err;
+  EXPECT_NE(r.out.find("offline         the future known, at most the policy's"), std::string::npos) << r.out;
+  const auto audit = nlohmann::json::parse(read_text(dir / "b" / "summary.json")).at("audit");
+  const auto& bound = audit.at("offline_optimum");
+  const std::int64_t budget = audit.at("switches").at("outside_suppression").at("switches").get<std::int64_t>();
+  EXPECT_EQ(bound.at("max_switches").get<std::int64_t>(), budget);
+  const auto& perceptual = bound.at("ceiling_perceptual");
+  const auto& oracle = bound.at("ceiling_oracle");
+  ASSERT_TRUE(perceptual.at("available").get<bool>()) << bound.dump(2);
+  ASSERT_TRUE(oracle.at("available").get<bool>()) << bound.dump(2);
+  EXPECT_LE(perceptual.at("switches").get<std::int64_t>(), budget);
+  EXPECT_LE(oracle.at("switches").get<std::int64_t>(), budget);
+  EXPECT_LE(perceptual.at("triangles").get<std::uint64_t>(),
+            audit.at("triangles_in_view").at("drawn").get<std::uint64_t>());
+  EXPECT_GE(oracle.at("triangles").get<std::uint64_t>(),
+            audit.at("triangles_in_view").at("oracle").get<std::uint64_t>());
+  EXPECT_GE(oracle.at("over_oracle").get<double>(), 1.0);
+
+  const CliResult plain = run_cli({"run", "--no-render", "--quiet", "--frames", "30", "--out", (dir / "p").string()});
+  ASSERT_EQ(plain.rc, 0) << plain.err;
+  EXPECT_TRUE(nlohmann::json::parse(read_text(dir / "p" / "summary.json")).at("audit").at("offline_optimum").is_null())
+      << "kept only when asked for";
+}
+
 TEST(RunAudit, DecisionsIntoAMissingFolderFailsWithTheReasonAndWritesNothing) {
   const auto dir = scratch_dir();
   use_simulated_runtime("");

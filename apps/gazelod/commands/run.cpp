@@ -57,7 +57,8 @@ const Registrar reg(
       app.add_flag("--quiet", opt->quiet, "No progress lines");
       app.add_flag(
           "--breakdown", opt->breakdown,
-          "Print where the audit's figures come from: by true gaze state, object class and the oracle's criterion");
+          "Print where the audit's figures come from: by true gaze state, object class and the oracle's criterion, "
+          "and the offline optimum (the fewest triangles at the policy's switches, the run's future known)");
       app.add_flag("--lod-map", opt->lod_map,
                    "Also evaluate the LOD-map thesis's policy each frame (summary.json \"lod_map\"; nothing it picks "
                    "is drawn)");

@@ -34,6 +34,16 @@ double visible(const AuditSummary& a) {
 double oracle_own(const AuditSummary& a) {
   return a.oracle_switches_fixation.per_object_s;
 }
+// The offline optimum at the policy's switches (--bound), over the oracle's triangles.
+double bound_ratio(const OfflinePoint& p, const AuditSummary& a) {
+  return a.oracle_triangles > 0 ? static_cast<double>(p.triangles) / static_cast<double>(a.oracle_triangles) : 0.0;
+}
+double bound_perceptual(const AuditSummary& a) {
+  return bound_ratio(a.bound_perceptual, a);
+}
+double bound_oracle(const AuditSummary& a) {
+  return bound_ratio(a.bound_oracle, a);
+}
 
 struct Metric {
   const char* name;
@@ -48,6 +58,11 @@ constexpr Metric kMetrics[] = {
     {"switches per object-second outside suppression", switches, kTargetSwitchesPerObjectS, 1.0, ""},
     {"  of which visible (the change above threshold)", visible, 0.0, 1.0, ""},
     {"  the oracle's own (what the true gaze requires)", oracle_own, 0.0, 1.0, ""},
+};
+// With --bound: what a policy that knew each run's future could have drawn at the same switches.
+constexpr Metric kBoundMetrics[] = {
+    {"triangles / oracle, the future known, at the policy's switches", bound_perceptual, kTargetTriangleRatio, 1.0, ""},
+    {"  the same with a perfect tracker (under the oracle's levels)", bound_oracle, kTargetTriangleRatio, 1.0, ""},
 };
 
 std::string fmt(const char* f, double v) {
@@ -88,6 +103,7 @@ std::vector<FamilyMember> run_family(std::uint64_t first, int count, double dura
     o.write_reports = false;
     o.switching = settings.switching;
     o.conditioning = settings.conditioning;
+    o.offline_bound = settings.offline_bound;
     RunSummary summary;
     o.result = &summary;
     std::ostringstream out, err;
@@ -95,6 +111,10 @@ std::vector<FamilyMember> run_family(std::uint64_t first, int count, double dura
     if (rc != 0) throw UsageError("family seed " + std::to_string(seed) + ": the run failed: " + err.str(), rc);
     if (!summary.audit.available)
       throw UsageError("family seed " + std::to_string(seed) + ": no audit: " + summary.audit.reason, 1);
+    if (settings.offline_bound && !(summary.audit.bound_perceptual.available && summary.audit.bound_oracle.available))
+      throw UsageError("family seed " + std::to_string(seed) + ": no offline optimum: " +
+                           summary.audit.bound_perceptual.reason + summary.audit.bound_oracle.reason,
+                       1);
     members.push_back({seed, f.summary, summary.audit});
     const AuditSummary& a = summary.audit;
     progress("[" + std::to_string(k + 1) + "/" + std::to_string(count) + "] seed " + std::to_string(seed) + " (" +
@@ -138,7 +158,9 @@ std::string family_markdown(const std::vector<FamilyMember>& members, const Fami
   }
   md << ".\n\n| figure | median | 90th percentile | worst (seed) | target | within target "
         "|\n|---|---:|---:|---:|---:|---:|\n";
-  for (const Metric& m : kMetrics) {
+  std::vector<Metric> metrics(std::begin(kMetrics), std::end(kMetrics));
+  if (settings.offline_bound) metrics.insert(metrics.end(), std::begin(kBoundMetrics), std::end(kBoundMetrics));
+  for (const Metric& m : metrics) {
     const Spread s = spread(members, m.value, m.target > 0 ? m.target : 1e300);
     md << "| " << m.name << " | " << fmt("%.3f", s.median * m.scale) << m.unit << " | " << fmt("%.3f", s.p90 * m.scale)
        << m.unit << " | " << fmt("%.3f", s.worst * m.scale) << m.unit << " (" << s.worst_seed << ") | ";
@@ -148,12 +170,16 @@ std::string family_markdown(const std::vector<FamilyMember>& members, const Fami
       md << " | ";
     md << " |\n";
   }
-  md << "\n| seed | scenario | degraded | triangles / oracle | switches (visible; oracle's own) "
-        "|\n|---:|---|---:|---:|---:|\n";
+  const bool bound = settings.offline_bound;
+  md << "\n| seed | scenario | degraded | triangles / oracle"
+     << (bound ? " (the future known: perceptual; oracle)" : "")
+     << " | switches (visible; oracle's own) |\n|---:|---|---:|---:|---:|\n";
   for (const FamilyMember& m : members) {
     const AuditSummary& a = m.audit;
     md << "| " << m.seed << " | " << m.summary << " | " << fmt("%.2f%%", 100.0 * a.degraded_share) << " | "
-       << fmt("%.2f", a.triangle_ratio) << " | " << fmt("%.2f", a.switches_fixation.per_object_s) << " ("
+       << fmt("%.2f", a.triangle_ratio);
+    if (bound) md << " (" << fmt("%.2f", bound_perceptual(a)) << "; " << fmt("%.2f", bound_oracle(a)) << ")";
+    md << " | " << fmt("%.2f", a.switches_fixation.per_object_s) << " ("
        << fmt("%.2f", a.visible_switches_fixation.per_object_s) << "; "
        << fmt("%.2f", a.oracle_switches_fixation.per_object_s) << ") |\n";
   }
@@ -164,7 +190,9 @@ std::string family_json(const std::vector<FamilyMember>& members, const FamilySe
   nlohmann::json j;
   j["settings_changed"] = settings.changed;
   nlohmann::json spreads = nlohmann::json::object();
-  for (const Metric& m : kMetrics) {
+  std::vector<Metric> metrics(std::begin(kMetrics), std::end(kMetrics));
+  if (settings.offline_bound) metrics.insert(metrics.end(), std::begin(kBoundMetrics), std::end(kBoundMetrics));
+  for (const Metric& m : metrics) {
     const Spread s = spread(members, m.value, m.target > 0 ? m.target : 1e300);
     nlohmann::json e = {{"median", s.median}, {"p90", s.p90}, {"worst", s.worst}, {"worst_seed", s.worst_seed}};
     if (m.target > 0) e["target"] = m.target, e["within_target"] = s.within_target;
@@ -189,6 +217,7 @@ struct FamilyFlags {
   std::string ideal;
   double tracker_offset_deg = 0.0;
   bool list = false;
+  bool bound = false;
 };
 
 // "A-B" (inclusive) or "A".
@@ -213,6 +242,7 @@ int run_eval_family(const FamilyFlags& flags, Io io) {
     throw UsageError(std::string("--ideal: expected ") + sim::kIdealTrackerNames + ", got '" + flags.ideal + "'");
   if (settings.ideal.any()) settings.changed.push_back("ideal=" + flags.ideal);
   settings.tracker_offset_deg = flags.tracker_offset_deg;
+  settings.offline_bound = flags.bound;
   if (flags.tracker_offset_deg > 0.0)
     settings.changed.push_back("tracker_offset_deg=" + fmt("%g", flags.tracker_offset_deg));
   if (flags.list) {
@@ -231,6 +261,7 @@ int run_eval_family(const FamilyFlags& flags, Io io) {
   for (const std::string& s : flags.set) command += " --set " + s;
   if (settings.ideal.any()) command += " --ideal " + flags.ideal;
   if (flags.tracker_offset_deg > 0.0) command += " --tracker-offset " + fmt("%g", flags.tracker_offset_deg);
+  if (flags.bound) command += " --bound";
   const std::string md = family_markdown(members, settings, command);
   std::error_code ec;
   std::filesystem::create_directories(flags.out, ec);
@@ -257,6 +288,9 @@ EvalSubcommand add_eval_family(CLI::App& eval) {
                   "What-if: each seed's tracker off by this many degrees (a calibration error, in a direction drawn "
                   "per seed), to measure what the plugin's accuracy margin covers")
       ->check(CLI::Range(0.0, 30.0));
+  app->add_flag("--bound", flags->bound,
+                "Also each seed's offline optimum: the fewest triangles at the policy's own switches with the run's "
+                "future known, under the plugin's perceptual levels and under the oracle's (run/offline_bound.hpp)");
   app->add_flag("--list-settings", flags->list, "Print the settings --set understands, with their values");
   app->add_option("--out", flags->out, "Folder for family.md and family.json");
   app->add_option("--work", flags->work, "Folder for each seed's scenario (default: a temporary one, removed)");

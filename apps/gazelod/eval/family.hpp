@@ -39,6 +39,7 @@ struct FamilySettings {
   gaze::ConditionerConfig conditioning;
   sim::IdealTracker ideal;           // --ideal: what each seed's tracker costs (its scenario with parts made ideal)
   double tracker_offset_deg = 0.0;   // --tracker-offset: each seed's tracker off by this much (a calibration error)
+  bool offline_bound = false;        // --bound: each seed's offline optimum (run/offline_bound.hpp)
   std::vector<std::string> changed;  // "switch.coarsen_hold_s=0.3", as given
 };
 

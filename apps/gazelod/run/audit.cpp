@@ -25,6 +25,25 @@ std::uint64_t triangles_at(const std::vector<lod::LodLevel>& chain, std::uint8_t
   return chain[std::min<std::size_t>(level, chain.size() - 1)].triangles;
 }
 
+nlohmann::json bound_point_json(const OfflinePoint& p, const AuditSummary& s) {
+  if (!p.available) return {{"available", false}, {"reason", p.reason}};
+  const double object_s = s.switches_fixation.object_s;
+  return {{"available", true},
+          {"triangles", p.triangles},
+          {"over_oracle", ratio(static_cast<double>(p.triangles), static_cast<double>(s.oracle_triangles))},
+          {"switches", p.switches},
+          {"per_object_s", ratio(static_cast<double>(p.switches), object_s)},
+          {"price_triangles", p.price_triangles}};
+}
+
+// summary.json's "offline_optimum" (run/offline_bound.hpp): null unless asked for.
+nlohmann::json bound_json(const AuditSummary& s) {
+  if (s.bound_max_switches < 0) return nullptr;
+  return {{"max_switches", s.bound_max_switches},
+          {"ceiling_perceptual", bound_point_json(s.bound_perceptual, s)},
+          {"ceiling_oracle", bound_point_json(s.bound_oracle, s)}};
+}
+
 void add_rate(SwitchRate& r, const AuditFrame& f) {
   r.switches += f.switches;
   r.object_s += f.object_s;
@@ -144,6 +163,7 @@ nlohmann::json audit_json(const AuditSummary& s) {
         {"oracle_outside_suppression", rate_json(s.oracle_switches_fixation)},
         {"targets_use", "outside_suppression"}}},
       {"breakdown", breakdown_json(s.breakdown)},
+      {"offline_optimum", bound_json(s)},
       {"pursuit",
        {{"frames", s.pursuit_frames}, {"degraded", s.pursuit_degraded}, {"share", s.pursuit_degraded_share}}}};
 }
@@ -182,6 +202,19 @@ void print_audit(const AuditSummary& s, std::ostream& out, bool breakdown) {
   else
     std::snprintf(line, sizeof line, "audit           no pursuit with its object in view\n");
   out << line;
+  if (s.bound_max_switches >= 0) {
+    if (s.bound_perceptual.available && s.bound_oracle.available)
+      std::snprintf(line, sizeof line,
+                    "offline         the future known, at most the policy's %lld switches: triangles / oracle %.3f "
+                    "under the plugin's perceptual levels, %.3f under the oracle's\n",
+                    static_cast<long long>(s.bound_max_switches),
+                    ratio(static_cast<double>(s.bound_perceptual.triangles), static_cast<double>(s.oracle_triangles)),
+                    ratio(static_cast<double>(s.bound_oracle.triangles), static_cast<double>(s.oracle_triangles)));
+    else
+      std::snprintf(line, sizeof line, "offline         no offline optimum (%s)\n",
+                    (s.bound_perceptual.available ? s.bound_oracle : s.bound_perceptual).reason.c_str());
+    out << line;
+  }
   if (breakdown) print_breakdown(s.breakdown, out);
 }
 

@@ -10,6 +10,7 @@
 #pragma once
 
 #include "apps/gazelod/run/audit_breakdown.hpp"
+#include "apps/gazelod/run/offline_bound.hpp"
 #include "auxiliary/time.hpp"
 #include "lod/display.hpp"
 #include "lod/lod_chain.hpp"
@@ -103,6 +104,11 @@ struct AuditSummary {
   SwitchRate oracle_switches_fixation;
   // Where the figures come from (run/audit_breakdown.hpp); summed by the caller frame by frame.
   AuditBreakdown breakdown;
+  // The offline optimum (run/offline_bound.hpp) at the policy's own switches outside suppression
+  // (bound_max_switches): with the plugin's perceptual levels as the ceiling, and with the
+  // oracle's. Set by the session when asked for (--breakdown, eval family --bound).
+  std::int64_t bound_max_switches = -1;  // -1: not asked for
+  OfflinePoint bound_perceptual, bound_oracle;
   // The pursued object over pursuit frames where it is in view.
   std::int64_t pursuit_frames = 0;
   std::int64_t pursuit_degraded = 0;

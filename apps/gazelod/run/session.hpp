@@ -47,6 +47,9 @@ struct RunOptions {
   bool quiet = false;               // no progress lines
   bool audit = true;                // the visibility audit against the simulator's truth (run/audit.hpp)
   bool breakdown = false;           // print the audit's breakdown (run/audit_breakdown.hpp)
+  // The offline optimum at the policy's switches (run/offline_bound.hpp; on with breakdown):
+  // keeps 3 bytes per object-frame, up to kMaxOfflineObjectFrames.
+  bool offline_bound = false;
   // Evaluate the LOD-map thesis's policy (eval/lod_map.hpp) beside the plugin each frame, for
   // the reports' comparison (eval, compare); nothing it picks is drawn.
   bool lod_map = false;

@@ -10,7 +10,7 @@ namespace gazelod::cli {
 
 SessionAudit::SessionAudit(const sim::Scenario& scenario, const EnabledCriteria& criteria,
                            std::vector<std::size_t> plain, const std::vector<std::vector<lod::LodLevel>>& chains,
-                           const ClusterScene& clusters)
+                           const ClusterScene& clusters, bool keep_for_bound)
     : scenario_(scenario),
       criteria_(criteria),
       plain_(std::move(plain)),
@@ -18,7 +18,8 @@ SessionAudit::SessionAudit(const sim::Scenario& scenario, const EnabledCriteria&
       chains_(chains),
       clusters_(clusters),
       previous_lod_(chains.size(), 0),
-      previous_oracle_(chains.size(), 0) {
+      previous_oracle_(chains.size(), 0),
+      keep_for_bound_(keep_for_bound) {
   for (std::size_t k = 0; k < plain_.size(); ++k)
     if (plain_[k] < plugin_id_.size()) plugin_id_[plain_[k]] = static_cast<int>(k);
 }
@@ -71,6 +72,7 @@ void SessionAudit::frame(sim::Simulator& simulator, std::int64_t t_ns, double t_
     b.estimate = static_cast<std::uint8_t>(diag.eye_motion);
     b.frame_s = in.frame_s;
     add_breakdown_frame(b, breakdown_);
+    if (keep_for_bound_) keep_frame(in, diag.lod_perceptual);
     std::copy_n(in.oracle.begin(), std::min(in.oracle.size(), previous_oracle_.size()), previous_oracle_.begin());
     if (cluster_oracle_)
       r.cluster_audit =
@@ -81,8 +83,44 @@ void SessionAudit::frame(sim::Simulator& simulator, std::int64_t t_ns, double t_
   previous_t_s_ = t_s;
 }
 
+void SessionAudit::keep_frame(const AuditFrameInput& in, std::span<const std::uint8_t> perceptual) {
+  const std::size_t n = chains_.size();
+  if (!bound_reason_.empty()) return;
+  if (in.oracle.size() != n || in.in_view.size() != n || perceptual.size() != n) {
+    bound_reason_ = "the frames' levels do not cover the objects";
+  } else if (kept_oracle_.size() + n > kMaxOfflineObjectFrames) {
+    bound_reason_ = "the run has more than " + std::to_string(kMaxOfflineObjectFrames) + " object-frames";
+  } else {
+    kept_perceptual_.insert(kept_perceptual_.end(), perceptual.begin(), perceptual.end());
+    kept_oracle_.insert(kept_oracle_.end(), in.oracle.begin(), in.oracle.end());
+    kept_in_view_.insert(kept_in_view_.end(), in.in_view.begin(), in.in_view.end());
+    kept_suppressed_.push_back(in.suppressed ? 1 : 0);
+    return;
+  }
+  // Past the limit or inconsistent: release what was kept, the bound is not computed.
+  std::vector<std::uint8_t>().swap(kept_perceptual_);
+  std::vector<std::uint8_t>().swap(kept_oracle_);
+  std::vector<std::uint8_t>().swap(kept_in_view_);
+  std::vector<std::uint8_t>().swap(kept_suppressed_);
+}
+
 void SessionAudit::finish(RunSummary& summary, const std::string& no_truth_reason) const {
   if (summary.audit.available) summary.audit.breakdown = breakdown_;
+  if (summary.audit.available && keep_for_bound_) {
+    // At the policy's own switches outside suppression: what a policy knowing the run's future
+    // could have drawn with the same pops.
+    const std::int64_t budget = summary.audit.switches_fixation.switches;
+    OfflineBoundInput in{chains_.size(), &chains_, kept_perceptual_, kept_in_view_, kept_suppressed_};
+    AuditSummary& a = summary.audit;
+    a.bound_max_switches = budget;
+    if (!bound_reason_.empty()) {
+      a.bound_perceptual.reason = a.bound_oracle.reason = bound_reason_;
+    } else {
+      a.bound_perceptual = offline_bound(in, budget);
+      in.ceiling = kept_oracle_;
+      a.bound_oracle = offline_bound(in, budget);
+    }
+  }
   if (!oracle_) {
     summary.audit = AuditSummary{};
     summary.audit.reason = no_truth_reason;

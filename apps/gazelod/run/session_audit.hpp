@@ -9,12 +9,14 @@
 #include "apps/gazelod/clusters/scene.hpp"
 #include "apps/gazelod/run/audit.hpp"
 #include "apps/gazelod/run/audit_breakdown.hpp"
+#include "apps/gazelod/run/offline_bound.hpp"
 #include "apps/gazelod/run/report.hpp"
 #include "plugin/lod_plugin.hpp"
 #include "sim/simulator.hpp"
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -24,8 +26,11 @@ class SessionAudit {
  public:
   // plain[k]: the scenario index of plugin object k; the rest of the scenario's objects are
   // cluster meshes (clusters). `chains` are plugin object k's levels.
+  // keep_for_bound: keep every frame's perceptual and oracle levels (3 bytes per object-frame,
+  // up to kMaxOfflineObjectFrames) for the offline optimum computed by finish().
   SessionAudit(const sim::Scenario& scenario, const EnabledCriteria& criteria, std::vector<std::size_t> plain,
-               const std::vector<std::vector<lod::LodLevel>>& chains, const ClusterScene& clusters);
+               const std::vector<std::vector<lod::LodLevel>>& chains, const ClusterScene& clusters,
+               bool keep_for_bound = false);
 
   // At the first frame: whether the simulator's truth is on the runtime's clock (gazelod's
   // simulated runtime, its own gaze); audit = false (--no-audit) keeps the oracle off. Throws
@@ -42,10 +47,13 @@ class SessionAudit {
   void frame(sim::Simulator& simulator, std::int64_t t_ns, double t_s, const FrameDecisions& d,
              const FrameDiagnostics& diag, const sim::HeadState& head, FrameRecord& record);
 
-  // The summary's audit: the breakdown when audited, else why there is no audit.
+  // The summary's audit: the breakdown (and the offline optimum, when kept) when audited, else
+  // why there is no audit.
   void finish(RunSummary& summary, const std::string& no_truth_reason) const;
 
  private:
+  void keep_frame(const AuditFrameInput& in, std::span<const std::uint8_t> perceptual);
+
   const sim::Scenario& scenario_;
   EnabledCriteria criteria_;
   std::vector<std::size_t> plain_;
@@ -59,6 +67,10 @@ class SessionAudit {
   std::vector<std::uint8_t> previous_lod_, previous_oracle_;
   AuditBreakdown breakdown_;  // summed frame by frame (not kept per frame)
   double previous_t_s_ = 0.0;
+  // For the offline optimum (run/offline_bound.hpp): frame-major levels, kept while they fit.
+  bool keep_for_bound_ = false;
+  std::string bound_reason_;  // why there is none ("" while kept)
+  std::vector<std::uint8_t> kept_perceptual_, kept_oracle_, kept_in_view_, kept_suppressed_;
 };
 
 }  // namespace gazelod::cli

@@ -166,7 +166,7 @@ void Session::register_objects() {
   }
   register_cluster_meshes(clusters_, *plugin_);
   triangles_full_ = chain_triangles(chains_, std::vector<std::uint8_t>(chains_.size(), 0));
-  audit_.emplace(scenario_, opt_.criteria, plain_, chains_, clusters_);
+  audit_.emplace(scenario_, opt_.criteria, plain_, chains_, clusters_, opt_.offline_bound || opt_.breakdown);
   // --scene objects are drawn with their levels' own triangles (the scenario's objects are the
   // baked file's, in order); generated objects as stand-in spheres.
   if (prepared_.baked)

@@ -72,8 +72,11 @@ echo "$(wc -l < "$work/installed.txt") files installed (list: $work/installed.tx
 
 step "libgazelod.so: exports only gzl_*, needs no OpenXR loader"
 lib=$prefix/$libdir/libgazelod.so.1
-objdump -p "$lib" | grep -q 'SONAME *libgazelod.so.1' || fail "libgazelod.so.1 has no SONAME libgazelod.so.1"
-! objdump -p "$lib" | grep NEEDED | grep -qi openxr || fail "libgazelod.so.1 needs an OpenXR loader"
+# objdump's output read whole first: with pipefail, `objdump | grep -q` fails whenever grep's
+# early exit makes objdump die of SIGPIPE, which happened under load.
+headers=$(objdump -p "$lib")
+grep -q 'SONAME *libgazelod.so.1' <<< "$headers" || fail "libgazelod.so.1 has no SONAME libgazelod.so.1"
+! grep -qi 'NEEDED.*openxr' <<< "$headers" || fail "libgazelod.so.1 needs an OpenXR loader"
 undefined_xr=$(nm -D --undefined-only "$lib" | awk '{print $2}' | grep '^xr' || true)
 [[ -z $undefined_xr ]] || fail "libgazelod.so.1 has undefined xr* symbols: $undefined_xr"
 others=$(nm -D --defined-only "$lib" | awk '$2 ~ /^[TDBRVW]$/ {print $3}' | grep -v '^gzl_' || true)

@@ -45,7 +45,8 @@ TEST(OfflineBound, HandSolvedDip) {
   EXPECT_EQ(none.triangles, 10000u) << "no switch: the full level throughout";
   EXPECT_EQ(none.switches, 0);
   EXPECT_EQ(offline_bound(d.input(), 2).triangles, free.triangles);
-  EXPECT_EQ(offline_bound(d.input(), -3).switches, 0) << "a negative budget reads as none";
+  EXPECT_EQ(offline_bound(d.input(), -3).triangles, 10000u) << "a negative budget reads as none";
+  EXPECT_DOUBLE_EQ(one.lower_triangles, 4600.0) << "the bracket is closed on a hull corner";
 }
 
 TEST(OfflineBound, SwitchesInSuppressionAreFree) {
@@ -57,6 +58,26 @@ TEST(OfflineBound, SwitchesInSuppressionAreFree) {
   d.suppressed[4] = 0;  // the way back is seen: refine unseen at 3 and stay fine (3 x 100 + 7 x 1000)
   EXPECT_EQ(offline_bound(d.input(), 0).triangles, 7300u);
   EXPECT_EQ(offline_bound(d.input(), 1).triangles, 1900u) << "one counted switch buys the way back";
+}
+
+// With the oracle's levels given, the sequence's degraded object-frames are counted (in view,
+// outside suppression, coarser than the oracle), not avoided.
+TEST(OfflineBound, CountsTheDegradationsOfTheSequenceItFinds) {
+  Dip d;
+  std::vector<std::uint8_t> oracle = d.ceiling;
+  oracle[6] = oracle[7] = 0;  // the truth needs the full level at 6 and 7; the ceiling does not know
+  OfflineBoundInput in = d.input();
+  in.oracle = oracle;
+  const OfflinePoint free = offline_optimum(in, 0.0);
+  EXPECT_EQ(free.degraded, 2);
+  EXPECT_EQ(free.triangles, 1900u) << "counting changes nothing it chooses";
+  d.suppressed[6] = 1;
+  in = d.input();
+  in.oracle = oracle;
+  EXPECT_EQ(offline_optimum(in, 0.0).degraded, 1) << "a suppressed frame hides its degradation";
+  EXPECT_EQ(offline_optimum(d.input(), 0.0).degraded, 0) << "not counted without the oracle";
+  in.oracle = std::span<const std::uint8_t>(oracle).first(5);
+  EXPECT_NE(offline_optimum(in, 0.0).reason.find("oracle's levels"), std::string::npos);
 }
 
 TEST(OfflineBound, OutOfViewFramesCountNothingAndBindNothing) {
@@ -128,15 +149,21 @@ TEST(OfflineBound, MatchesExhaustiveSearchOnRandomRuns) {
       EXPECT_DOUBLE_EQ(static_cast<double>(p.triangles) + price * static_cast<double>(p.switches), want)
           << "run " << run << " price " << price;
     }
-    for (std::int64_t budget = 0; budget <= 6; ++budget) {
-      // The bound fits the budget and is never below the exact constrained optimum (the sum
-      // over objects of the best split of the budget, found by trying every split of two).
+    // The exact constrained optimum: the sum over objects of the best split of the budget.
+    const auto exact_within = [&](std::int64_t budget) {
       std::uint64_t exact = std::numeric_limits<std::uint64_t>::max();
       for (std::int64_t a = 0; a <= budget; ++a)
         exact = std::min(exact, each[0].triangles_within(a) + each[1].triangles_within(budget - a));
+      return exact;
+    };
+    for (std::int64_t budget = 0; budget <= 6; ++budget) {
+      // The sequence found fits the budget and is the exact optimum for its own switch count
+      // (a Lagrangian minimiser); the exact optimum at the budget lies in [lower, triangles].
       const OfflinePoint b = offline_bound(in, budget);
       EXPECT_LE(b.switches, budget) << "run " << run;
-      EXPECT_GE(b.triangles, exact) << "run " << run << " budget " << budget;
+      EXPECT_EQ(b.triangles, exact_within(b.switches)) << "run " << run << " budget " << budget;
+      EXPECT_LE(b.lower_triangles, static_cast<double>(exact_within(budget))) << "run " << run << " budget " << budget;
+      EXPECT_GE(b.lower_triangles, 0.0);
     }
   }
 }

@@ -310,9 +310,10 @@ TEST(RunAudit, TargetsHoldOnTheDefaultAndItsLateNoisyAndStillHeadVariants) {
 
 // --breakdown also prints the offline optimum (run/offline_bound.hpp): at the policy's own
 // switches, what a policy knowing the run's future could have drawn. Under the oracle's levels
-// it can never draw less than the oracle (every level is at most the oracle's); the policy's
-// own sequence is one of those allowed under its perceptual levels, so the optimum is not
-// above it (up to the Lagrangian hull's gap, far below what is measured here).
+// it can never draw less than the oracle (every level is at most the oracle's: a check that the
+// ceilings are wired as documented). That the better policy draws less than the plugin did is
+// measured, not a theorem (1.150 against 1.165 here): its sequence also has to respect the
+// oracle's levels, where the plugin degraded 0.14 % of the object-frames.
 TEST(RunAudit, BreakdownAddsTheOfflineOptimum) {
   use_simulated_runtime("");
   const auto dir = scratch_dir();
@@ -323,8 +324,8 @@ TEST(RunAudit, BreakdownAddsTheOfflineOptimum) {
   const auto& bound = audit.at("offline_optimum");
   const std::int64_t budget = audit.at("switches").at("outside_suppression").at("switches").get<std::int64_t>();
   EXPECT_EQ(bound.at("max_switches").get<std::int64_t>(), budget);
-  const auto& perceptual = bound.at("ceiling_perceptual");
-  const auto& oracle = bound.at("ceiling_oracle");
+  const auto& perceptual = bound.at("better_policy");
+  const auto& oracle = bound.at("perfect_tracker");
   ASSERT_TRUE(perceptual.at("available").get<bool>()) << bound.dump(2);
   ASSERT_TRUE(oracle.at("available").get<bool>()) << bound.dump(2);
   EXPECT_LE(perceptual.at("switches").get<std::int64_t>(), budget);
@@ -334,6 +335,8 @@ TEST(RunAudit, BreakdownAddsTheOfflineOptimum) {
   EXPECT_GE(oracle.at("triangles").get<std::uint64_t>(),
             audit.at("triangles_in_view").at("oracle").get<std::uint64_t>());
   EXPECT_GE(oracle.at("over_oracle").get<double>(), 1.0);
+  EXPECT_LE(perceptual.at("triangles_lower_bound").get<double>(),
+            static_cast<double>(perceptual.at("triangles").get<std::uint64_t>()));
 
   const CliResult plain = run_cli({"run", "--no-render", "--quiet", "--frames", "30", "--out", (dir / "p").string()});
   ASSERT_EQ(plain.rc, 0) << plain.err;

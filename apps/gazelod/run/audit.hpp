@@ -105,10 +105,12 @@ struct AuditSummary {
   // Where the figures come from (run/audit_breakdown.hpp); summed by the caller frame by frame.
   AuditBreakdown breakdown;
   // The offline optimum (run/offline_bound.hpp) at the policy's own switches outside suppression
-  // (bound_max_switches): with the plugin's perceptual levels as the ceiling, and with the
-  // oracle's. Set by the session when asked for (--breakdown, eval family --bound).
+  // (bound_max_switches), the run's future known. bound_policy: never coarser than the plugin's
+  // perceptual level nor the oracle's (what a better switch policy could draw, invisibly);
+  // bound_oracle: never coarser than the oracle's (a perfect tracker too). Set by the session
+  // when asked for (--breakdown, eval family --bound).
   std::int64_t bound_max_switches = -1;  // -1: not asked for
-  OfflinePoint bound_perceptual, bound_oracle;
+  OfflinePoint bound_policy, bound_oracle;
   // The pursued object over pursuit frames where it is in view.
   std::int64_t pursuit_frames = 0;
   std::int64_t pursuit_degraded = 0;

@@ -209,6 +209,10 @@ int Session::finish() {
   for (const ClusterMesh& m : clusters_.meshes)
     for (std::uint8_t depth : m.primitive->hierarchy.depth) summary.clusters.leaves += depth == 0 ? 1 : 0;
   if (renderer_) summary.clusters.gpu = renderer_->gpu_summary();
+  // The offline optimum takes about a second per million object-frames kept: say so first.
+  if (!opt_.quiet && audit_->kept_object_frames() >= (std::size_t{1} << 20))
+    io_.err << "gazelod run: the offline optimum over " << audit_->kept_object_frames() << " object-frames\n"
+            << std::flush;
   audit_->finish(summary, !opt_.trace_path.empty()  ? "no ground truth: the gaze is a replayed trace"
                           : opt_.hid_gaze           ? "no ground truth: the gaze is a HID eye tracker"
                           : !audit_->ground_truth() ? "no ground truth: not the simulated runtime"

@@ -110,13 +110,19 @@ void SessionAudit::finish(RunSummary& summary, const std::string& no_truth_reaso
     // At the policy's own switches outside suppression: what a policy knowing the run's future
     // could have drawn with the same pops.
     const std::int64_t budget = summary.audit.switches_fixation.switches;
-    OfflineBoundInput in{chains_.size(), &chains_, kept_perceptual_, kept_in_view_, kept_suppressed_};
+    OfflineBoundInput in{chains_.size(), &chains_, kept_perceptual_, kept_in_view_, kept_suppressed_, kept_oracle_};
     AuditSummary& a = summary.audit;
     a.bound_max_switches = budget;
     if (!bound_reason_.empty()) {
-      a.bound_perceptual.reason = a.bound_oracle.reason = bound_reason_;
+      a.bound_policy.reason = a.bound_oracle.reason = bound_reason_;
     } else {
-      a.bound_perceptual = offline_bound(in, budget);
+      // A better policy: never coarser than the plugin allowed, and never visibly coarse (the
+      // perceptual level is at times coarser than the truth; the plugin's hold hides much of
+      // that, and a bound that drew it would buy triangles with degradations).
+      std::vector<std::uint8_t> finer(kept_perceptual_.size());
+      for (std::size_t j = 0; j < finer.size(); ++j) finer[j] = std::min(kept_perceptual_[j], kept_oracle_[j]);
+      in.ceiling = finer;
+      a.bound_policy = offline_bound(in, budget);
       in.ceiling = kept_oracle_;
       a.bound_oracle = offline_bound(in, budget);
     }

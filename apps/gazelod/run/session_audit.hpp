@@ -38,6 +38,8 @@ class SessionAudit {
   void start(bool ground_truth, bool audit);
   bool ground_truth() const { return ground_truth_; }
   bool on() const { return oracle_.has_value(); }
+  // Object-frames kept for the offline optimum (0 when not asked for or past the limit).
+  std::size_t kept_object_frames() const { return kept_oracle_.size(); }
 
   // A cluster mesh moved (the same pose and velocity the plugin got).
   void set_cluster_pose(std::size_t mesh, const lod::InstanceTransform& pose, const glm::dvec3& velocity_m_s);

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-// validate_conditioner_config (gaze/gaze_conditioner.hpp): which ConditionerConfig the
+// validate_conditioner_config (gaze/conditioner_config.hpp): which ConditionerConfig the
 // conditioner accepts. A bad setting is refused with its name and value; the conditioner never
 // substitutes a default for it (docs/error-policy.md).
-#include "gaze/gaze_conditioner.hpp"
+#include "gaze/conditioner_config.hpp"
 
 #include <cmath>
 #include <cstdint>
@@ -75,6 +75,7 @@ std::string validate_conditioner_config(const ConditionerConfig& c) {
       at_least_zero("age_growth_deg_s", c.age_growth_deg_s),
       at_least_zero("velocity_error_fraction", c.velocity_error_fraction),
       at_least_zero("saccade_path_margin", c.saccade_path_margin),
+      at_least_zero("saccade_ahead_of_travelled", c.saccade_ahead_of_travelled),
       above_zero("max_uncertainty_deg", c.max_uncertainty_deg),
       uncertainty_range,
       above_zero_ns("max_sample_lead_ns", c.max_sample_lead_ns),

@@ -66,8 +66,14 @@ ConditionedGaze GazeConditioner::at(std::int64_t display_t_ns, const glm::dquat&
         // half the distance on, with the margin for a curved path or an overshoot. The path is
         // no longer than a saccade lasts (max_saccade) nor than the oculomotor range
         // (max_uncertainty): a tracker that stops in flight does not send the cone away.
-        const double path_deg = std::min(speed_deg_s_ * std::min(h_s, aux::seconds_from_ns(config_.max_saccade_ns)),
-                                         config_.max_uncertainty_deg);
+        double path_deg = std::min(speed_deg_s_ * std::min(h_s, aux::seconds_from_ns(config_.max_saccade_ns)),
+                                   config_.max_uncertainty_deg);
+        // No further ahead than a fraction of the path behind (saccade_ahead_of_travelled).
+        if (config_.saccade_ahead_of_travelled > 0.0) {
+          const double travelled_deg = aux::angle_between_rad(est_world_, last_raw_world_) * aux::kDegPerRad;
+          const double cap_deg = config_.saccade_ahead_of_travelled * travelled_deg + kSaccadeAheadFloorDeg;
+          if (std::isfinite(cap_deg)) path_deg = std::min(path_deg, cap_deg);
+        }
         const double half_rad = 0.5 * path_deg * aux::kRadPerDeg;
         glm::dvec3 next;
         if (config_.saccade_cone_ahead && age_ns <= config_.loss_hold_max_ns && glm::length(saccade_axis_) > 0.5 &&

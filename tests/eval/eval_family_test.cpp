@@ -121,14 +121,16 @@ TEST(EvalFamily, HeldOutSeedsMostlyWithinTheTargets) {
   // now waits for a suppression it used to take 50-110 ms after a landing, when vision was back
   // (1.34 -> 1.40 times the oracle's triangles; its switches 1.55 -> 0.72 per object-second).
   // 14 then; 16 with the release by regret (release_regret_s, 2026-12-07: 2003 and 2009 come
-  // within, 1.39 -> 1.33 and 1.37 -> 1.31).
-  EXPECT_GE(triangles.at("within_target").get<int>(), 16);
+  // within, 1.39 -> 1.33 and 1.37 -> 1.31). 17 with the saccade's path ahead capped by the path
+  // behind (saccade_ahead_of_travelled, 2026-12-07: 2012, 1.37 -> 1.34).
+  EXPECT_GE(triangles.at("within_target").get<int>(), 17);
   EXPECT_LE(switches.at("median").get<double>(), kTargetSwitchesPerObjectS);
   // 16 before the landing (18 before the carried habit, which made the carried seeds 2002 and
   // 2014 switch as the head's sweep requires), then all 20. 19 with the release by regret:
   // the carried seed 2002 goes from 0.97 to 1.02 (its triangles 1.70 -> 1.62 times the
-  // oracle's; the true gaze itself needs 1.4).
-  EXPECT_GE(switches.at("within_target").get<int>(), 19);
+  // oracle's; the true gaze itself needs 1.4). 20 again with the saccade's path ahead capped
+  // (2002: 1.02 -> 0.97).
+  EXPECT_GE(switches.at("within_target").get<int>(), 20);
 }
 
 // The carried habit (docs/evaluation.md, "Scenario family", item 10): on a seed whose eyes the

@@ -54,6 +54,7 @@ std::vector<BadSetting> bad_settings() {
       {"age_growth_deg_s", "-inf", [](C& c) { c.age_growth_deg_s = -kInf; }},
       {"velocity_error_fraction", "-0.25", [](C& c) { c.velocity_error_fraction = -0.25; }},
       {"saccade_path_margin", "-0.5", [](C& c) { c.saccade_path_margin = -0.5; }},
+      {"saccade_ahead_of_travelled", "-1", [](C& c) { c.saccade_ahead_of_travelled = -1.0; }},
       {"max_uncertainty_deg", "0", [](C& c) { c.max_uncertainty_deg = 0.0; }},
       // Below the accuracy: the uncertainty's clamp range would be empty (was raised to it).
       {"max_uncertainty_deg", "1", [](C& c) { c.max_uncertainty_deg = 1.0; }},

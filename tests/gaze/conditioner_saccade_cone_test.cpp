@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // The gaze conditioner's cone in a saccade (ConditionerConfig::saccade_cone_ahead): over the
-// path ahead of the newest sample, not all around it. It must still hold where the eye lands,
-// and be smaller than the cone around the newest sample.
+// path ahead of the newest sample, not all around it, and no further ahead than a fraction of
+// the path behind (saccade_ahead_of_travelled). It must still hold where the eye lands, and be
+// smaller than the cone around the newest sample.
 #include "gaze/gaze_conditioner.hpp"
 
 #include "auxiliary/angles.hpp"
@@ -64,15 +65,19 @@ Seen run(const ConditionerConfig& config, double amplitude_deg, double rate_hz, 
 TEST(ConditionerSaccadeCone, HoldsTheLandingWithASmallerCone) {
   ConditionerConfig around;
   around.saccade_cone_ahead = false;
+  ConditionerConfig uncapped;
+  uncapped.saccade_ahead_of_travelled = 0.0;
   for (const double amplitude : {4.0, 10.0, 20.0})
     for (const double latency : {0.015, 0.05, 0.08})
       for (unsigned seed = 1; seed <= 3; ++seed) {
         const Seen ahead = run(ConditionerConfig{}, amplitude, 120.0, latency, seed);
         const Seen old = run(around, amplitude, 120.0, latency, seed);
+        const Seen far = run(uncapped, amplitude, 120.0, latency, seed);
         const std::string what =
             std::to_string(amplitude) + " deg, " + std::to_string(latency) + " s, seed " + std::to_string(seed);
         ASSERT_GT(ahead.in_saccade, 0) << what;
         ASSERT_EQ(ahead.in_saccade, old.in_saccade) << what << ": the same frames (only the cone differs)";
+        ASSERT_EQ(ahead.in_saccade, far.in_saccade) << what;
         // A late tracker still reads the saccade after the suppression has ended.
         if (latency >= 0.05) {
           ASSERT_GT(ahead.landed, 0) << what;
@@ -81,6 +86,13 @@ TEST(ConditionerSaccadeCone, HoldsTheLandingWithASmallerCone) {
         EXPECT_EQ(ahead.ahead_of_sample, ahead.in_saccade) << what;
         EXPECT_EQ(ahead.landing_held, ahead.landed) << what;
         EXPECT_EQ(old.landing_held, old.landed) << what;
+        EXPECT_EQ(far.landing_held, far.landed) << what;
+        // The cap shortens the path only where speed x age runs past half the path behind:
+        // never a larger cone, and a smaller one where a late tracker reads a long saccade.
+        EXPECT_LE(ahead.cone_sum, far.cone_sum) << what;
+        if (amplitude >= 10.0 && latency >= 0.05) {
+          EXPECT_LT(ahead.cone_sum, 0.9 * far.cone_sum) << what;
+        }
         // (1 + saccade_path_margin) / 2 of the speed term; the accuracy and age terms are the
         // same in both, so the gain shows where the speed term dominates (long saccades, late
         // trackers).

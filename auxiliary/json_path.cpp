@@ -23,6 +23,17 @@ std::string json_error_line(std::string_view source, std::string_view path, std:
   return s.append(": ").append(path).append(": ").append(message);
 }
 
+std::string json_line_column(std::string_view text, std::size_t byte) {
+  std::size_t line = 1, col = 1;
+  for (std::size_t i = 0; i < byte && i < text.size(); ++i) {
+    if (text[i] == '\n')
+      ++line, col = 1;
+    else
+      ++col;
+  }
+  return std::to_string(line) + ":" + std::to_string(col);
+}
+
 std::string json_type_name(const nlohmann::json& v) {
   if (v.is_boolean()) return "boolean";
   if (v.is_number()) return "number";

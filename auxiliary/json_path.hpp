@@ -30,6 +30,10 @@ std::string json_element_path(std::string_view array_path, std::size_t index);
 // for it, such as "--instance: f.json" or "GAZELOD_LAYER_CONFIG=f.json").
 std::string json_error_line(std::string_view source, std::string_view path, std::string_view message);
 
+// "LINE:COLUMN" (both from 1) of a byte offset into `text`, for a syntax error's position:
+// "scenario.json:3:14: JSON syntax error: ...".
+std::string json_line_column(std::string_view text, std::size_t byte);
+
 // "boolean", "number", "string", "array", "object" or "null", for "expected ..., got TYPE".
 std::string json_type_name(const nlohmann::json& v);
 

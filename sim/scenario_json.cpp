@@ -134,18 +134,6 @@ RuntimeOptions read_runtime(const nlohmann::json& j, JsonFields& top) {
   return r;
 }
 
-// "file:line:column" of a byte offset, for JSON syntax errors.
-std::string line_column(std::string_view text, std::size_t byte) {
-  std::size_t line = 1, col = 1;
-  for (std::size_t i = 0; i < byte && i < text.size(); ++i) {
-    if (text[i] == '\n')
-      ++line, col = 1;
-    else
-      ++col;
-  }
-  return std::to_string(line) + ":" + std::to_string(col);
-}
-
 // The trace file a head_track effect will load, resolved as the effect resolves it (relative
 // paths: from the working directory, else from the scenario file's folder); "" when unknown.
 std::string head_track_file(const nlohmann::json& e, const std::string& source) {
@@ -188,7 +176,7 @@ Scenario load_scenario_json(std::string_view json_text, std::string_view source_
   } catch (const aux::JsonStrictError& e) {
     throw ScenarioError(source + ": " + (e.path().empty() ? "" : e.path() + ": ") + e.message());
   } catch (const nlohmann::json::parse_error& e) {
-    throw ScenarioError(source + ":" + line_column(json_text, e.byte > 0 ? e.byte - 1 : 0) +
+    throw ScenarioError(source + ":" + aux::json_line_column(json_text, e.byte > 0 ? e.byte - 1 : 0) +
                         ": JSON syntax error: " + e.what());
   } catch (const nlohmann::json::exception& e) {  // e.g. out_of_range: a number too large
     throw ScenarioError(source + ": JSON error: " + e.what());

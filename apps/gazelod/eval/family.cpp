@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "apps/gazelod/eval/family.hpp"
-
+#include "apps/gazelod/eval/family_against.hpp"
 #include "apps/gazelod/eval/work.hpp"
 #include "apps/gazelod/run/report.hpp"
 #include "apps/gazelod/run/session.hpp"
@@ -12,22 +12,25 @@
 
 #include <algorithm>
 #include <chrono>
+#include <optional>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
 
 namespace gazelod::cli {
-namespace {
 
-double degraded(const AuditSummary& a) {
+double degraded_figure(const AuditSummary& a) {
   return a.degraded_share;
 }
-double tri_ratio(const AuditSummary& a) {
+double triangle_figure(const AuditSummary& a) {
   return a.triangle_ratio;
 }
-double switches(const AuditSummary& a) {
+double switch_figure(const AuditSummary& a) {
   return a.switches_fixation.per_object_s;
 }
+
+namespace {
+
 double visible(const AuditSummary& a) {
   return a.visible_switches_fixation.per_object_s;
 }
@@ -53,9 +56,9 @@ struct Metric {
   const char* unit;
 };
 constexpr Metric kMetrics[] = {
-    {"visible degradations (fixation object-frames)", degraded, kTargetDegradedShare, 100.0, "%"},
-    {"triangles drawn / oracle", tri_ratio, kTargetTriangleRatio, 1.0, ""},
-    {"switches per object-second outside suppression", switches, kTargetSwitchesPerObjectS, 1.0, ""},
+    {"visible degradations (fixation object-frames)", degraded_figure, kTargetDegradedShare, 100.0, "%"},
+    {"triangles drawn / oracle", triangle_figure, kTargetTriangleRatio, 1.0, ""},
+    {"switches per object-second outside suppression", switch_figure, kTargetSwitchesPerObjectS, 1.0, ""},
     {"  of which visible (the change above threshold)", visible, 0.0, 1.0, ""},
     {"  the oracle's own (what the true gaze requires)", oracle_own, 0.0, 1.0, ""},
 };
@@ -127,14 +130,26 @@ std::vector<FamilyMember> run_family(std::uint64_t first, int count, double dura
 }
 
 Spread spread(const std::vector<FamilyMember>& members, double (*value)(const AuditSummary&), double target) {
+  std::vector<std::pair<std::uint64_t, double>> v;
+  for (const FamilyMember& m : members) v.emplace_back(m.seed, value(m.audit));
+  return spread_of(v, target);
+}
+
+int within_all_targets(const std::vector<FamilyMember>& members) {
+  return static_cast<int>(std::count_if(members.begin(), members.end(), [](const FamilyMember& m) {
+    return degraded_figure(m.audit) <= kTargetDegradedShare && triangle_figure(m.audit) <= kTargetTriangleRatio &&
+           switch_figure(m.audit) <= kTargetSwitchesPerObjectS;
+  }));
+}
+
+Spread spread_of(const std::vector<std::pair<std::uint64_t, double>>& seed_values, double target) {
   Spread s;
-  if (members.empty()) return s;
+  if (seed_values.empty()) return s;
   std::vector<double> v;
-  for (const FamilyMember& m : members) {
-    const double x = value(m.audit);
+  for (const auto& [seed, x] : seed_values) {
     v.push_back(x);
     if (x <= target) ++s.within_target;
-    if (v.size() == 1 || x > s.worst) s.worst = x, s.worst_seed = m.seed;
+    if (v.size() == 1 || x > s.worst) s.worst = x, s.worst_seed = seed;
   }
   std::sort(v.begin(), v.end());
   // Nearest-rank percentiles: values a reader can find in the per-seed table.
@@ -171,6 +186,7 @@ std::string family_markdown(const std::vector<FamilyMember>& members, const Fami
       md << " | ";
     md << " |\n";
   }
+  md << "\nWithin all three targets at once: " << within_all_targets(members) << " / " << members.size() << ".\n";
   const bool bound = settings.offline_bound;
   md << "\n| seed | scenario | degraded | triangles / oracle"
      << (bound ? " (the future known: a better policy; a perfect tracker)" : "")
@@ -201,6 +217,7 @@ std::string family_json(const std::vector<FamilyMember>& members, const FamilySe
     spreads[key.substr(key.find_first_not_of(' '))] = e;
   }
   j["distribution"] = spreads;
+  j["within_all_targets"] = within_all_targets(members);
   j["members"] = nlohmann::json::array();
   for (const FamilyMember& m : members)
     j["members"].push_back({{"seed", m.seed}, {"scenario", m.summary}, {"audit", audit_json(m.audit)}});
@@ -219,6 +236,7 @@ struct FamilyFlags {
   double tracker_offset_deg = 0.0;
   bool list = false;
   bool bound = false;
+  std::string against;
 };
 
 // "A-B" (inclusive) or "A".
@@ -251,6 +269,12 @@ int run_eval_family(const FamilyFlags& flags, Io io) {
     return 0;
   }
   const auto [first, count] = seed_range(flags.seeds);
+  // An earlier run to compare with: read and checked before any seed runs.
+  std::optional<FamilyBaseline> base;
+  if (!flags.against.empty()) {
+    base = read_family_baseline(flags.against);
+    check_same_seeds(*base, first, count);
+  }
   const auto started = std::chrono::steady_clock::now();
   const auto progress = [&](const std::string& line) {
     const auto s = std::chrono::duration_cast<std::chrono::seconds>(std::chrono::steady_clock::now() - started).count();
@@ -263,11 +287,19 @@ int run_eval_family(const FamilyFlags& flags, Io io) {
   if (settings.ideal.any()) command += " --ideal " + flags.ideal;
   if (flags.tracker_offset_deg > 0.0) command += " --tracker-offset " + fmt("%g", flags.tracker_offset_deg);
   if (flags.bound) command += " --bound";
-  const std::string md = family_markdown(members, settings, command);
+  if (base) command += " --against " + flags.against;
+  std::string md = family_markdown(members, settings, command);
+  std::string json = family_json(members, settings);
+  if (base) {
+    md += against_markdown(members, *base);
+    nlohmann::json j = nlohmann::json::parse(json);
+    j["against"] = against_json(members, *base);
+    json = j.dump(2) + "\n";
+  }
   std::error_code ec;
   std::filesystem::create_directories(flags.out, ec);
   if (ec) throw UsageError("--out: cannot create '" + flags.out + "': " + ec.message());
-  write_report(flags.out, {{"family.md", md}, {"family.json", family_json(members, settings)}});
+  write_report(flags.out, {{"family.md", md}, {"family.json", json}});
   io.out << md << "\nfiles: " << (std::filesystem::path(flags.out) / "family.md").string() << ", family.json\n";
   return 0;
 }
@@ -293,6 +325,9 @@ EvalSubcommand add_eval_family(CLI::App& eval) {
                 "Also each seed's offline optimum: the fewest triangles at the policy's own switches with the run's "
                 "future known, never coarser than the plugin's perceptual level nor the oracle's (a better policy), "
                 "and than the oracle's alone (a perfect tracker too; run/offline_bound.hpp)");
+  app->add_option("--against", flags->against,
+                  "An earlier run's family.json of the same seeds: which seeds entered or left each target, and "
+                  "how each figure's distribution moved");
   app->add_flag("--list-settings", flags->list, "Print the settings --set understands, with their values");
   app->add_option("--out", flags->out, "Folder for family.md and family.json");
   app->add_option("--work", flags->work, "Folder for each seed's scenario (default: a temporary one, removed)");

@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace gazelod::cli {
@@ -27,6 +28,11 @@ namespace gazelod::cli {
 inline constexpr double kTargetDegradedShare = 0.005;
 inline constexpr double kTargetTriangleRatio = 1.35;
 inline constexpr double kTargetSwitchesPerObjectS = 1.0;
+
+// The audit figure each target bounds (kTarget...), for the report and the comparison.
+double degraded_figure(const AuditSummary& a);  // degraded_share
+double triangle_figure(const AuditSummary& a);  // triangle_ratio
+double switch_figure(const AuditSummary& a);    // switches_fixation.per_object_s
 
 struct FamilyMember {
   std::uint64_t seed = 0;
@@ -63,6 +69,10 @@ struct Spread {
 };
 // Distribution of `value` over the members (larger is worse).
 Spread spread(const std::vector<FamilyMember>& members, double (*value)(const AuditSummary&), double target);
+// The same over (seed, value) pairs.
+Spread spread_of(const std::vector<std::pair<std::uint64_t, double>>& seed_values, double target);
+// The members within all three targets at once.
+int within_all_targets(const std::vector<FamilyMember>& members);
 
 // The report (markdown) and its JSON twin.
 std::string family_markdown(const std::vector<FamilyMember>& members, const FamilySettings& settings,

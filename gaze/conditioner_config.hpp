@@ -196,10 +196,10 @@ struct ConditionerConfig {
   // degrees ahead that stayed fine after the landing (the switch policy holds a coarsening),
   // while the frames it covered were mostly within the true suppression (a latency after the
   // newest sample, the eye is still in flight or landed less than ~50 ms before). Chosen on
-  // seeds 1000-1099 of the scenario family from 0.25, 0.5, 0.75, 1, 2 and off, with floors of
-  // 0, 1 and 2 deg (docs/evaluation.md, "Scenario family", item 14): 0.5-0.75 and every floor
-  // gave 86-87 seeds within all three targets against 82 without, 0.25 and below let seed
-  // 1080 pass 0.5 % degradations. 0: off.
+  // seeds 1000-1099 of the scenario family from 0.25, 0.5, 0.75, 1, 2 and off, and at 0.5 with
+  // floors of 0 and 2 deg too (docs/evaluation.md, "Scenario family", item 14): 0.5-0.75 gave
+  // 86-87 seeds within all three targets against 82 without; 0.25, and the floor alone, let
+  // seed 1080 pass 0.5 % degradations. 0: off (not the floor alone).
   double saccade_ahead_of_travelled = 0.5;
   // Cap: the eye-in-head oculomotor range is about +-50 deg (Guitton & Volle 1987), so
   // beyond that the estimate carries no information.
@@ -215,8 +215,9 @@ struct ConditionerConfig {
 // max_uncertainty_deg >= accuracy_deg.
 [[nodiscard]] std::string validate_conditioner_config(const ConditionerConfig& config);
 
-// The least path ahead saccade_ahead_of_travelled leaves a saccade, deg: about the tracker's
-// accuracy, so a saccade just detected still gets a cone over its next samples.
+// The floor of saccade_ahead_of_travelled's cap, deg (the path ahead is the lesser of speed x
+// age and the cap): about the tracker's accuracy, so a saccade just detected, with little
+// path behind it, still gets a cone over its next samples.
 inline constexpr double kSaccadeAheadFloorDeg = 1.0;
 
 }  // namespace gazelod::gaze

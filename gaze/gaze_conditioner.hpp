@@ -42,8 +42,8 @@
 //   clamp(sqrt(accuracy^2 + (age_growth * h)^2 + s^2), accuracy, max_uncertainty)
 // with the speed term s = 0 in fixation and loss, |omega| (velocity_error_fraction * min(h, H)
 // + max(0, h - H)) in pursuit, and speed * h in a saccade ((1 + saccade_path_margin) / 2 of it
-// with saccade_cone_ahead, the path at most saccade_ahead_of_travelled of the path so far;
-// plus angle(held estimate, newest sample) when it is held);
+// with saccade_cone_ahead, the path at most saccade_ahead_of_travelled of the path so far
+// plus kSaccadeAheadFloorDeg; plus angle(held estimate, newest sample) when it is held);
 // max_uncertainty when !valid. GazeSample::confidence is not used (sources mark
 // unusable samples invalid).
 //

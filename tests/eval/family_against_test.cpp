@@ -68,20 +68,31 @@ TEST(FamilyAgainst, CountsWhoEnteredAndWhoLeftEachTarget) {
   EXPECT_EQ(md.find("| 11 |"), std::string::npos) << "11 stayed where it was\n" << md;
 }
 
-TEST(FamilyAgainst, SeedsMustBeTheSameRange) {
+TEST(FamilyAgainst, SeedsAndDurationMustBeTheSame) {
   FamilyBaseline base;
   base.source = "b.json";
+  base.duration_s = 20.0;
   base.rows = {{5, 0, 1, 0}, {6, 0, 1, 0}};
-  EXPECT_NO_THROW(check_same_seeds(base, 5, 2));
+  EXPECT_NO_THROW(check_same_run(base, 5, 2, 20.0));
   try {
-    check_same_seeds(base, 5, 3);
+    check_same_run(base, 5, 3, 20.0);
     FAIL() << "a seed missing from the earlier run";
   } catch (const UsageError& e) {
     EXPECT_STREQ(e.what(),
                  "--against: b.json: its seeds are 5-6 (2 seeds), this run's 5-7 (3 seeds): compare runs of "
                  "the same seeds");
   }
-  EXPECT_THROW(check_same_seeds(base, 6, 2), UsageError);
+  EXPECT_THROW(check_same_run(base, 6, 2, 20.0), UsageError);
+  try {
+    check_same_run(base, 5, 2, 3.0);
+    FAIL() << "the same seeds run for another time are other scenarios";
+  } catch (const UsageError& e) {
+    EXPECT_STREQ(e.what(),
+                 "--against: b.json: its scenarios last 20 s, this run's 3 s: the same seeds would be other "
+                 "scenarios");
+  }
+  // The comparison itself refuses members that are not the baseline's seeds.
+  EXPECT_THROW(against_json({member(5, 0, 1, 0)}, base), UsageError);
 }
 
 Result cli(const std::vector<std::string>& args) {
@@ -106,6 +117,7 @@ TEST(FamilyAgainst, AgainstItselfNothingMovesAndAgainstAChangeTheCountsAgree) {
                                       "--duration", "3",      "--out",   (dir / "a").string()};
   ASSERT_EQ(cli(base).rc, 0);
   const std::string a = (dir / "a" / "family.json").string();
+  EXPECT_EQ(nlohmann::json::parse(read(dir / "a" / "family.json")).at("duration_s"), 3.0);
   const Result same =
       cli({"eval", "family", "--seeds", "3-5", "--duration", "3", "--against", a, "--out", (dir / "b").string()});
   ASSERT_EQ(same.rc, 0) << same.err;
@@ -152,29 +164,50 @@ TEST(FamilyAgainst, AnUnusableEarlierReportIsRefusedBeforeAnySeedRuns) {
       R"({"visible_degradations": {"share": 0.001}, "triangles_in_view": {"drawn_over_oracle": 1.2},
     "switches": {"outside_suppression": {"per_object_second": 0.3}}})";
   const auto doc = [&](const std::string& members) {
-    return R"({"settings_changed": [], "members": [)" + members + "]}";
+    return R"({"settings_changed": [], "duration_s": 3, "members": [)" + members + "]}";
   };
   const std::string one = R"({"seed": 1, "audit": )" + audit + "}";
   const std::string two = R"({"seed": 2, "audit": )" + audit + "}";
-  refused("{\n  \"members\": [,]\n}", "base.json:2:15: JSON syntax error");
+  refused("{\n  \"members\": [,]\n}", "base.json:2:15: JSON syntax error: syntax error while parsing value");
   refused(R"({"settings_changed": [], "settings_changed": []})", "base.json: settings_changed: ");
   refused("[]", "base.json: (top level): expected an object, got array");
   refused(R"({"members": []})", "base.json: settings_changed: missing");
+  refused(R"({"settings_changed": [], "members": []})", "base.json: duration_s: missing");
+  refused(R"({"settings_changed": [], "duration_s": 0, "members": []})",
+          "base.json: duration_s: expected a number > 0, got 0");
   refused(doc(""), "base.json: members: expected a non-empty array");
-  refused(doc(R"({"seed": -1, "audit": {}})"), "base.json: members[0].seed: expected an integer >= 0, got number");
+  refused(doc(R"({"seed": -1, "audit": {}})"), "base.json: members[0].seed: expected an integer >= 0, got -1");
+  refused(doc(R"({"seed": 1.5, "audit": {}})"), "base.json: members[0].seed: expected an integer >= 0, got 1.5");
   refused(doc(R"({"seed": 1})"), "base.json: members[0].audit: missing");
   refused(doc(one + R"(, {"seed": 2, "audit": {"visible_degradations": {"share": "0.1"}}})"),
           "base.json: members[1].audit.visible_degradations.share: expected a number >= 0, got string");
+  refused(doc(R"({"seed": 1, "audit": {"visible_degradations": {"share": -0.1}}})"),
+          "members[0].audit.visible_degradations.share: expected a number >= 0, got a negative or non-finite one");
+  refused(doc(R"({"seed": 1, "audit": {"visible_degradations": {"share": 1e400}}})"),
+          "base.json: JSON error: number overflow parsing '1e400'");
   refused(doc(R"({"seed": 1, "audit": {"visible_degradations": {"share": 0}, "triangles_in_view": {}}})"),
           "base.json: members[0].audit.triangles_in_view.drawn_over_oracle: missing");
   refused(doc(two + ", " + one), "base.json: members[1].seed: seeds must increase (1 after 2)");
   refused(doc(one + ", " + two), "its seeds are 1-2 (2 seeds), this run's 1-3 (3 seeds)", "1-3");
-  const Result missing = cli({"eval", "family", "--seeds", "1", "--against", (dir / "none.json").string()});
-  EXPECT_EQ(missing.rc, 2);
-  EXPECT_NE(missing.err.find("none.json: no such file"), std::string::npos) << missing.err;
-  const Result folder = cli({"eval", "family", "--seeds", "1", "--against", dir.string()});
-  EXPECT_EQ(folder.rc, 2);
-  EXPECT_NE(folder.err.find("not a regular file"), std::string::npos) << folder.err;
+  // Another duration: the same seeds, other scenarios.
+  refused(R"({"settings_changed": [], "duration_s": 20, "members": [)" + one + ", " + two + "]}",
+          "its scenarios last 20 s, this run's 3 s");
+  // Before it is read: missing, a folder, too large (a sparse file), an empty path.
+  const auto file_refused = [&](const std::string& path, const std::string& expected) {
+    const auto out = dir / "out";
+    const Result r =
+        cli({"eval", "family", "--seeds", "1", "--duration", "3", "--against", path, "--out", out.string()});
+    EXPECT_EQ(r.rc, 2) << path;
+    EXPECT_NE(r.err.find(expected), std::string::npos) << "expected: " << expected << "\ngot: " << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out)) << "nothing written";
+  };
+  file_refused((dir / "none.json").string(), "none.json: no such file");
+  file_refused(dir.string(), "not a regular file");
+  const auto big = dir / "big.json";
+  std::ofstream(big).close();
+  std::filesystem::resize_file(big, kMaxBaselineBytes + 1);
+  file_refused(big.string(), "big.json: larger than 256 MiB");
+  file_refused("", "--against: expected a family.json, got an empty path");
 }
 
 }  // namespace

@@ -169,7 +169,10 @@ ConeCheck check_cone(const std::vector<Sample>& samples, const std::vector<std::
     ++out.saccade_frames;
     out.cone_sum += g.uncertainty_deg;
     // The landing of this saccade: Pupil's first fixation start after the newest sample (the eye
-    // was in flight there), if it comes within 150 ms of it.
+    // was in flight there), if it comes within 150 ms of it. (A frame whose newest sample lies
+    // already past Pupil's landing, or in a saccade Pupil does not end within 150 ms, is not
+    // counted; one followed within 150 ms by a fixation after a fixation Pupil missed would be
+    // matched to that later one.)
     const auto it = std::lower_bound(landings.begin(), landings.end(), g.sample_t_ns);
     if (it == landings.end() || *it > g.sample_t_ns + 150'000'000) continue;
     if (shown <= *it + 50'000'000) continue;  // vision still suppressed
@@ -214,6 +217,11 @@ TEST(ConditionerRealLanding, TheCappedSaccadeConeStillHoldsRealLandings) {
     }
     EXPECT_GE(capped.held, far.held) << what;
     EXPECT_GE(20 * capped.held, 19 * capped.frames) << what;
+    // Within the cone alone the cap misses a few more (42 against 46 of 48 at 90 ms): bounded
+    // here, so that a tighter cap shows. (At 20 ms no saccade frame is shown after vision is
+    // back, the reading having ended by then: that case checks only that both read the same
+    // saccade frames.)
+    EXPECT_GE(10 * capped.held_tight, 8 * capped.frames) << what;
     if (latency >= 0.05) {
       EXPECT_LT(capped.cone_sum, 0.7 * far.cone_sum) << what;
     }

@@ -87,9 +87,8 @@ TEST(ConditionerSaccadeCone, HoldsTheLandingWithASmallerCone) {
         EXPECT_EQ(ahead.landing_held, ahead.landed) << what;
         EXPECT_EQ(old.landing_held, old.landed) << what;
         EXPECT_EQ(far.landing_held, far.landed) << what;
-        // The cap shortens the path only where speed x age runs past half the path behind:
-        // never a larger cone, and a smaller one where a late tracker reads a long saccade.
-        EXPECT_LE(ahead.cone_sum, far.cone_sum) << what;
+        // The cap shortens the path where speed x age runs past half the path behind: where a
+        // late tracker reads a long saccade.
         if (amplitude >= 10.0 && latency >= 0.05) {
           EXPECT_LT(ahead.cone_sum, 0.9 * far.cone_sum) << what;
         }

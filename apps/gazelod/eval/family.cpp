@@ -203,9 +203,10 @@ std::string family_markdown(const std::vector<FamilyMember>& members, const Fami
   return md.str();
 }
 
-std::string family_json(const std::vector<FamilyMember>& members, const FamilySettings& settings) {
+std::string family_json(const std::vector<FamilyMember>& members, const FamilySettings& settings, double duration_s) {
   nlohmann::json j;
   j["settings_changed"] = settings.changed;
+  j["duration_s"] = duration_s;
   nlohmann::json spreads = nlohmann::json::object();
   std::vector<Metric> metrics(std::begin(kMetrics), std::end(kMetrics));
   if (settings.offline_bound) metrics.insert(metrics.end(), std::begin(kBoundMetrics), std::end(kBoundMetrics));
@@ -237,6 +238,7 @@ struct FamilyFlags {
   bool list = false;
   bool bound = false;
   std::string against;
+  bool against_given = false;  // --against, even empty (refused then, not ignored)
 };
 
 // "A-B" (inclusive) or "A".
@@ -271,9 +273,9 @@ int run_eval_family(const FamilyFlags& flags, Io io) {
   const auto [first, count] = seed_range(flags.seeds);
   // An earlier run to compare with: read and checked before any seed runs.
   std::optional<FamilyBaseline> base;
-  if (!flags.against.empty()) {
+  if (flags.against_given) {
     base = read_family_baseline(flags.against);
-    check_same_seeds(*base, first, count);
+    check_same_run(*base, first, count, flags.duration_s);
   }
   const auto started = std::chrono::steady_clock::now();
   const auto progress = [&](const std::string& line) {
@@ -289,7 +291,7 @@ int run_eval_family(const FamilyFlags& flags, Io io) {
   if (flags.bound) command += " --bound";
   if (base) command += " --against " + flags.against;
   std::string md = family_markdown(members, settings, command);
-  std::string json = family_json(members, settings);
+  std::string json = family_json(members, settings, flags.duration_s);
   if (base) {
     md += against_markdown(members, *base);
     nlohmann::json j = nlohmann::json::parse(json);
@@ -331,7 +333,10 @@ EvalSubcommand add_eval_family(CLI::App& eval) {
   app->add_flag("--list-settings", flags->list, "Print the settings --set understands, with their values");
   app->add_option("--out", flags->out, "Folder for family.md and family.json");
   app->add_option("--work", flags->work, "Folder for each seed's scenario (default: a temporary one, removed)");
-  return {app, [flags](Io io) { return run_eval_family(*flags, io); }};
+  return {app, [flags, app](Io io) {
+            flags->against_given = app->count("--against") > 0;
+            return run_eval_family(*flags, io);
+          }};
 }
 
 }  // namespace gazelod::cli

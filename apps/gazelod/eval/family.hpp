@@ -77,7 +77,7 @@ int within_all_targets(const std::vector<FamilyMember>& members);
 // The report (markdown) and its JSON twin.
 std::string family_markdown(const std::vector<FamilyMember>& members, const FamilySettings& settings,
                             const std::string& command);
-std::string family_json(const std::vector<FamilyMember>& members, const FamilySettings& settings);
+std::string family_json(const std::vector<FamilyMember>& members, const FamilySettings& settings, double duration_s);
 
 // Adds `family` to the `eval` command.
 EvalSubcommand add_eval_family(CLI::App& eval);

@@ -48,18 +48,36 @@ double figure(const nlohmann::json& object, std::string path, std::initializer_l
 }
 
 std::string text_of(const std::string& path) {
+  if (path.empty()) throw UsageError("--against: expected a family.json, got an empty path");
   std::error_code ec;
   const auto status = std::filesystem::status(path, ec);
-  if (ec || !std::filesystem::exists(status)) throw UsageError("--against: " + path + ": no such file");
+  if (!std::filesystem::exists(status)) throw UsageError("--against: " + path + ": no such file");
+  if (ec) throw UsageError("--against: " + path + ": " + ec.message());
   if (!std::filesystem::is_regular_file(status))
     throw UsageError("--against: " + path + ": not a regular file (a directory, FIFO or device)");
   const std::uintmax_t size = std::filesystem::file_size(path, ec);
-  if (ec || size > kMaxBaselineBytes)
+  if (ec) throw UsageError("--against: " + path + ": " + ec.message());
+  if (size > kMaxBaselineBytes)
     throw UsageError("--against: " + path + ": larger than " + std::to_string(kMaxBaselineBytes >> 20) +
                      " MiB (a family.json of 10000 seeds is ~60 MB)");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw UsageError("--against: " + path + ": cannot open");
   return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+// nlohmann's message without its "[json.exception.NAME.ID] " tag and "parse error at line L,
+// column C: " (the position is given once, ours).
+std::string json_message(const std::exception& e) {
+  std::string m = e.what();
+  if (m.starts_with("[json.exception.")) {
+    const std::size_t end = m.find("] ");
+    if (end != std::string::npos) m.erase(0, end + 2);
+  }
+  if (m.starts_with("parse error")) {
+    const std::size_t colon = m.find(": ");
+    if (colon != std::string::npos) m.erase(0, colon + 2);
+  }
+  return m;
 }
 
 std::string fmt(const char* f, double v) {
@@ -92,6 +110,9 @@ struct Standing {
   std::vector<std::uint64_t> entered, left;
 };
 std::vector<Standing> standings(const std::vector<FamilyMember>& members, const FamilyBaseline& base) {
+  bool same = members.size() == base.rows.size();
+  for (std::size_t i = 0; same && i < members.size(); ++i) same = members[i].seed == base.rows[i].seed;
+  if (!same) throw UsageError("--against: " + base.source + ": not the seeds of this run");
   std::vector<Standing> s(kTargetCount + 1);
   for (std::size_t i = 0; i < members.size(); ++i) {
     const AuditSummary& a = members[i].audit;
@@ -141,9 +162,9 @@ FamilyBaseline read_family_baseline(const std::string& path) {
     fail(path, e.path().empty() ? aux::kJsonTopLevel : std::string_view(e.path()), e.message());
   } catch (const nlohmann::json::parse_error& e) {
     throw UsageError("--against: " + path + ":" + aux::json_line_column(text, e.byte > 0 ? e.byte - 1 : 0) +
-                     ": JSON syntax error: " + e.what());
-  } catch (const nlohmann::json::exception& e) {  // e.g. a number too large
-    throw UsageError("--against: " + path + ": JSON error: " + e.what());
+                     ": JSON syntax error: " + json_message(e));
+  } catch (const nlohmann::json::exception& e) {  // e.g. a number too large for a double
+    throw UsageError("--against: " + path + ": JSON error: " + json_message(e));
   }
   FamilyBaseline base;
   base.source = path;
@@ -156,6 +177,11 @@ FamilyBaseline read_family_baseline(const std::string& path) {
            "expected a string, got " + aux::json_type_name(changed[i]));
     base.settings_changed.push_back(changed[i].get<std::string>());
   }
+  const nlohmann::json& duration = member(doc, "", "duration_s", path);
+  if (!duration.is_number() || !(duration.get<double>() > 0.0) || !std::isfinite(duration.get<double>()))
+    fail(path, "duration_s",
+         "expected a number > 0, got " + (duration.is_number() ? duration.dump() : aux::json_type_name(duration)));
+  base.duration_s = duration.get<double>();
   const nlohmann::json& members = member(doc, "", "members", path);
   if (!members.is_array() || members.empty())
     fail(path, "members", "expected a non-empty array, got " + aux::json_type_name(members));
@@ -163,7 +189,8 @@ FamilyBaseline read_family_baseline(const std::string& path) {
     const std::string at = aux::json_element_path("members", i);
     const nlohmann::json& seed = member(members[i], at, "seed", path);
     if (!seed.is_number_unsigned())
-      fail(path, aux::json_member_path(at, "seed"), "expected an integer >= 0, got " + aux::json_type_name(seed));
+      fail(path, aux::json_member_path(at, "seed"),
+           "expected an integer >= 0, got " + (seed.is_number() ? seed.dump() : aux::json_type_name(seed)));
     BaselineRow r;
     r.seed = seed.get<std::uint64_t>();
     const std::string audit = aux::json_member_path(at, "audit");
@@ -179,7 +206,10 @@ FamilyBaseline read_family_baseline(const std::string& path) {
   return base;
 }
 
-void check_same_seeds(const FamilyBaseline& base, std::uint64_t first, int count) {
+void check_same_run(const FamilyBaseline& base, std::uint64_t first, int count, double duration_s) {
+  if (base.duration_s != duration_s)
+    throw UsageError("--against: " + base.source + ": its scenarios last " + fmt("%g", base.duration_s) +
+                     " s, this run's " + fmt("%g", duration_s) + " s: the same seeds would be other scenarios");
   const auto range = [](std::uint64_t a, std::uint64_t b, std::size_t n) {
     return std::to_string(a) + "-" + std::to_string(b) + " (" + std::to_string(n) + " seeds)";
   };

@@ -5,7 +5,7 @@
 // one past the degradation target is a trade, and the report should say so without a script.
 //
 //   FamilyBaseline base = read_family_baseline("before/family.json");  // before any seed runs
-//   check_same_seeds(base, first, count);
+//   check_same_run(base, first, count, duration_s);
 //   ... run_family(...) -> members ...
 //   std::string md = against_markdown(members, base);  nlohmann::json j = against_json(members, base);
 //
@@ -39,6 +39,7 @@ struct BaselineRow {
 struct FamilyBaseline {
   std::string source;                         // the file, as given
   std::vector<std::string> settings_changed;  // that run's --set and what-ifs
+  double duration_s = 0.0;                    // seconds per scenario
   std::vector<BaselineRow> rows;              // in seed order
 };
 
@@ -46,11 +47,14 @@ struct FamilyBaseline {
 // file, one over kMaxBaselineBytes, bad JSON, a missing or mistyped figure, a seed twice.
 FamilyBaseline read_family_baseline(const std::string& path);
 
-// Throws UsageError unless the baseline holds exactly seeds [first, first + count): figures of
-// other seeds would compare other scenarios.
-void check_same_seeds(const FamilyBaseline& base, std::uint64_t first, int count);
+// Throws UsageError unless the baseline ran scenarios of duration_s and holds exactly seeds
+// [first, first + count): figures of other seeds, or of the same seeds run for another time,
+// would compare other scenarios. (What-ifs such as --ideal or --set may differ: comparing them
+// is the point.)
+void check_same_run(const FamilyBaseline& base, std::uint64_t first, int count, double duration_s);
 
-// The comparison section of family.md: per target, how many seeds are within before and now, and
+// The comparison section of family.md (members: the seeds of the baseline, in order, else
+// UsageError): per target, how many seeds are within before and now, and
 // which entered or left it; each figure's median, 90th percentile and worst before and now; the
 // seeds whose standing changed, with their figures.
 std::string against_markdown(const std::vector<FamilyMember>& members, const FamilyBaseline& base);

@@ -3,8 +3,8 @@
 // ground truth (Simulator::eye_truth_at), the audit's outputs and their consistency (summary.json
 // against frames.csv), what a perfect tracker gives, the --decisions file, and that the audit
 // never changes what the plugin decides.
+#include "apps/gazelod/run/audit.hpp"
 #include "run_test_util.hpp"
-
 #include "sim/simulator.hpp"
 
 #include <glm/geometric.hpp>
@@ -337,6 +337,26 @@ TEST(RunAudit, BreakdownAddsTheOfflineOptimum) {
   EXPECT_GE(oracle.at("over_oracle").get<double>(), 1.0);
   EXPECT_LE(perceptual.at("triangles_lower_bound").get<double>(),
             static_cast<double>(perceptual.at("triangles").get<std::uint64_t>()));
+
+  // The same two at the switch target's pop rate: the budget is the target's rate over the
+  // audit's own object-seconds. Here the policy switched less than that (0.09 per object-second
+  // against 1), so the wider budget can only buy triangles: never more than at the policy's own.
+  const auto& at = bound.at("at_switch_target");
+  const double object_s = audit.at("switches").at("outside_suppression").at("object_seconds").get<double>();
+  const std::int64_t target_budget = at.at("max_switches").get<std::int64_t>();
+  EXPECT_EQ(target_budget, static_cast<std::int64_t>(std::floor(cli::kTargetSwitchesPerObjectS * object_s)));
+  ASSERT_GT(target_budget, budget);
+  const auto& perceptual_at = at.at("better_policy");
+  const auto& oracle_at = at.at("perfect_tracker");
+  ASSERT_TRUE(perceptual_at.at("available").get<bool>()) << at.dump(2);
+  ASSERT_TRUE(oracle_at.at("available").get<bool>()) << at.dump(2);
+  EXPECT_LE(perceptual_at.at("switches").get<std::int64_t>(), target_budget);
+  EXPECT_LE(perceptual_at.at("per_object_s").get<double>(), cli::kTargetSwitchesPerObjectS);
+  EXPECT_LE(perceptual_at.at("triangles").get<std::uint64_t>(), perceptual.at("triangles").get<std::uint64_t>());
+  EXPECT_LE(oracle_at.at("triangles").get<std::uint64_t>(), oracle.at("triangles").get<std::uint64_t>());
+  EXPECT_GE(oracle_at.at("over_oracle").get<double>(), 1.0);
+  EXPECT_EQ(perceptual_at.at("degraded").get<std::int64_t>(), 0) << "never coarser than the oracle";
+  EXPECT_NE(r.out.find("offline         at the switch target's"), std::string::npos) << r.out;
 
   const CliResult plain = run_cli({"run", "--no-render", "--quiet", "--frames", "30", "--out", (dir / "p").string()});
   ASSERT_EQ(plain.rc, 0) << plain.err;

@@ -23,13 +23,8 @@
 
 namespace gazelod::cli {
 
-// The targets for every scenario (degraded share of fixation object-frames, drawn
-// triangles over the oracle's, switches per object-second outside suppression).
-inline constexpr double kTargetDegradedShare = 0.005;
-inline constexpr double kTargetTriangleRatio = 1.35;
-inline constexpr double kTargetSwitchesPerObjectS = 1.0;
-
-// The audit figure each target bounds (kTarget...), for the report and the comparison.
+// The audit figure each target bounds (kTarget..., run/audit.hpp), for the report and the
+// comparison.
 double degraded_figure(const AuditSummary& a);  // degraded_share
 double triangle_figure(const AuditSummary& a);  // triangle_ratio
 double switch_figure(const AuditSummary& a);    // switches_fixation.per_object_s
@@ -73,6 +68,9 @@ Spread spread(const std::vector<FamilyMember>& members, double (*value)(const Au
 Spread spread_of(const std::vector<std::pair<std::uint64_t, double>>& seed_values, double target);
 // The members within all three targets at once.
 int within_all_targets(const std::vector<FamilyMember>& members);
+// With --bound: the members whose offline optimum at the switch target's pop rate (a better
+// policy, or with perfect_tracker a perfect tracker too) meets all three targets.
+int within_all_targets_known(const std::vector<FamilyMember>& members, bool perfect_tracker = false);
 
 // The report (markdown) and its JSON twin.
 std::string family_markdown(const std::vector<FamilyMember>& members, const FamilySettings& settings,

@@ -44,9 +44,15 @@ nlohmann::json bound_point_json(const OfflinePoint& p, const AuditSummary& s) {
 // summary.json's "offline_optimum" (run/offline_bound.hpp): null unless asked for.
 nlohmann::json bound_json(const AuditSummary& s) {
   if (s.bound_max_switches < 0) return nullptr;
-  return {{"max_switches", s.bound_max_switches},
-          {"better_policy", bound_point_json(s.bound_policy, s)},
-          {"perfect_tracker", bound_point_json(s.bound_oracle, s)}};
+  nlohmann::json j = {{"max_switches", s.bound_max_switches},
+                      {"better_policy", bound_point_json(s.bound_policy, s)},
+                      {"perfect_tracker", bound_point_json(s.bound_oracle, s)}};
+  if (s.bound_target_switches >= 0)
+    j["at_switch_target"] = {{"switches_per_object_s", kTargetSwitchesPerObjectS},
+                             {"max_switches", s.bound_target_switches},
+                             {"better_policy", bound_point_json(s.bound_policy_at_target, s)},
+                             {"perfect_tracker", bound_point_json(s.bound_oracle_at_target, s)}};
+  return j;
 }
 
 void add_rate(SwitchRate& r, const AuditFrame& f) {
@@ -219,6 +225,16 @@ void print_audit(const AuditSummary& s, std::ostream& out, bool breakdown) {
       std::snprintf(line, sizeof line, "offline         no offline optimum (%s)\n",
                     (s.bound_policy.available ? s.bound_oracle : s.bound_policy).reason.c_str());
     out << line;
+    if (s.bound_target_switches >= 0 && s.bound_policy_at_target.available && s.bound_oracle_at_target.available) {
+      std::snprintf(
+          line, sizeof line,
+          "offline         at the switch target's %lld (%g per object-second): %.3f for a better switch "
+          "policy, %.3f with a perfect tracker too\n",
+          static_cast<long long>(s.bound_target_switches), kTargetSwitchesPerObjectS,
+          ratio(static_cast<double>(s.bound_policy_at_target.triangles), static_cast<double>(s.oracle_triangles)),
+          ratio(static_cast<double>(s.bound_oracle_at_target.triangles), static_cast<double>(s.oracle_triangles)));
+      out << line;
+    }
   }
   if (breakdown) print_breakdown(s.breakdown, out);
 }

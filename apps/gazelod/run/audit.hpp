@@ -30,6 +30,13 @@
 
 namespace gazelod::cli {
 
+// The targets the audit's figures are held to (the issue's, for every scenario): the degraded
+// share of fixation object-frames, drawn triangles over the oracle's, switches per
+// object-second outside suppression.
+inline constexpr double kTargetDegradedShare = 0.005;
+inline constexpr double kTargetTriangleRatio = 1.35;
+inline constexpr double kTargetSwitchesPerObjectS = 1.0;
+
 // Visual sensitivity stays reduced for about this long after a saccade lands.
 inline constexpr double kSuppressionAfterSaccadeMs = 50.0;
 
@@ -111,6 +118,12 @@ struct AuditSummary {
   // when asked for (--breakdown, eval family --bound).
   std::int64_t bound_max_switches = -1;  // -1: not asked for
   OfflinePoint bound_policy, bound_oracle;
+  // The same two at the switch target's pop rate instead (bound_target_switches: the most
+  // switches within kTargetSwitchesPerObjectS over switches_fixation's object-seconds), which
+  // may be more or fewer than the policy's own: whether any policy, knowing the future, could
+  // have met the triangle and switch targets together on the plugin's perceptual levels.
+  std::int64_t bound_target_switches = -1;  // -1: not asked for
+  OfflinePoint bound_policy_at_target, bound_oracle_at_target;
   // The pursued object over pursuit frames where it is in view.
   std::int64_t pursuit_frames = 0;
   std::int64_t pursuit_degraded = 0;

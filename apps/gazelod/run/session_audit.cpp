@@ -4,6 +4,7 @@
 #include "apps/gazelod/commands/command.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace gazelod::cli {
@@ -110,11 +111,17 @@ void SessionAudit::finish(RunSummary& summary, const std::string& no_truth_reaso
     // At the policy's own switches outside suppression: what a policy knowing the run's future
     // could have drawn with the same pops.
     const std::int64_t budget = summary.audit.switches_fixation.switches;
+    // And at the switch target's pop rate: could a policy meet both targets at once?
+    const double at_target = std::floor(kTargetSwitchesPerObjectS * summary.audit.switches_fixation.object_s);
+    const std::int64_t target_budget =
+        std::isfinite(at_target) && at_target > 0.0 ? static_cast<std::int64_t>(std::min(at_target, 9.0e18)) : 0;
     OfflineBoundInput in{chains_.size(), &chains_, kept_perceptual_, kept_in_view_, kept_suppressed_, kept_oracle_};
     AuditSummary& a = summary.audit;
     a.bound_max_switches = budget;
+    a.bound_target_switches = target_budget;
     if (!bound_reason_.empty()) {
       a.bound_policy.reason = a.bound_oracle.reason = bound_reason_;
+      a.bound_policy_at_target.reason = a.bound_oracle_at_target.reason = bound_reason_;
     } else {
       // A better policy: never coarser than the plugin allowed, and never visibly coarse (the
       // perceptual level is at times coarser than the truth; the plugin's hold hides much of
@@ -123,8 +130,10 @@ void SessionAudit::finish(RunSummary& summary, const std::string& no_truth_reaso
       for (std::size_t j = 0; j < finer.size(); ++j) finer[j] = std::min(kept_perceptual_[j], kept_oracle_[j]);
       in.ceiling = finer;
       a.bound_policy = offline_bound(in, budget);
+      a.bound_policy_at_target = offline_bound(in, target_budget);
       in.ceiling = kept_oracle_;
       a.bound_oracle = offline_bound(in, budget);
+      a.bound_oracle_at_target = offline_bound(in, target_budget);
     }
   }
   if (!oracle_) {

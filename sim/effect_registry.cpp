@@ -8,6 +8,8 @@
 
 #include <array>
 #include <cmath>
+#include <filesystem>
+#include <optional>
 #include <string>
 
 namespace gazelod::sim {
@@ -19,10 +21,11 @@ struct Entry {
   Maker make;
 };
 
-constexpr std::array<Entry, 13> kEffects{{
+constexpr std::array<Entry, 14> kEffects{{
     {"head_sweep", effects::make_head_sweep},
     {"head_turn", effects::make_head_turn},
     {"head_track", effects::make_head_track},
+    {"gaze_track", effects::make_gaze_track},
     {"saccades", effects::make_saccades},
     {"vor", effects::make_vor},
     {"smooth_pursuit", effects::make_smooth_pursuit},
@@ -86,6 +89,20 @@ std::size_t object_index(const Scenario& scenario, JsonFields& params, const std
   for (std::size_t i = 0; i < scenario.objects.size(); ++i)
     if (scenario.objects[i].name == name) return i;
   params.fail(key, "no scene object named \"" + name + "\"");
+}
+
+TraceParam trace_param(EffectInit& init) {
+  TraceParam t;
+  t.name = init.params.required_string("file");
+  const std::string fmt_name = init.params.string("format", "gazelod");
+  const std::optional<gaze::TraceFormat> fmt = gaze::parse_trace_format(fmt_name);
+  if (!fmt) init.params.fail("format", "unknown trace format \"" + fmt_name + "\"");
+  t.format = *fmt;
+  const std::filesystem::path p(t.name), src(init.source);
+  t.path = !p.is_absolute() && std::filesystem::is_regular_file(src) && !std::filesystem::exists(p)
+               ? (src.parent_path() / p).string()
+               : t.name;
+  return t;
 }
 
 std::vector<std::unique_ptr<Effect>> make_gaze_effects_before(const EffectInit& init) {

@@ -2,8 +2,10 @@
 // The effect makers, one per file in this folder; effect_registry.cpp maps names to them.
 #pragma once
 
+#include "gaze/trace_open.hpp"
 #include "sim/effect.hpp"
 
+#include <string>
 #include <vector>
 
 namespace gazelod::sim::effects {
@@ -11,6 +13,7 @@ namespace gazelod::sim::effects {
 std::unique_ptr<Effect> make_head_sweep(EffectInit& init);
 std::unique_ptr<Effect> make_head_turn(EffectInit& init);
 std::unique_ptr<Effect> make_head_track(EffectInit& init);
+std::unique_ptr<Effect> make_gaze_track(EffectInit& init);
 std::unique_ptr<Effect> make_saccades(EffectInit& init);
 std::unique_ptr<Effect> make_vor(EffectInit& init);
 std::unique_ptr<Effect> make_smooth_pursuit(EffectInit& init);
@@ -24,6 +27,16 @@ std::unique_ptr<Effect> make_object_motion(EffectInit& init);
 
 // Index of the scenario object called `name`; fails at params' key when there is none.
 std::size_t object_index(const Scenario& scenario, JsonFields& params, const std::string& key, const std::string& name);
+
+// The trace a replay effect reads (head_track, gaze_track): its "file" parameter, resolved
+// against the scenario file's folder when it is relative and not found as given, and its
+// "format" (default gazelod). Fails at the parameter on an unknown format.
+struct TraceParam {
+  std::string name;  // as the scenario wrote it, for messages
+  std::string path;  // where to open it
+  gaze::TraceFormat format = gaze::TraceFormat::gazelod;
+};
+TraceParam trace_param(EffectInit& init);
 
 // Fresh copies of the gaze-stage effects listed before the one being made (same specs, same
 // random streams, so the same values at any time), for an effect that must know the incoming

@@ -16,28 +16,17 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <optional>
 #include <vector>
 
 namespace gazelod::sim::effects {
 namespace {
 
-std::string resolve(const std::string& file, const std::string& source) {
-  const std::filesystem::path p(file);
-  if (p.is_absolute()) return file;
-  const std::filesystem::path src(source);
-  if (std::filesystem::is_regular_file(src) && !std::filesystem::exists(p)) return (src.parent_path() / p).string();
-  return file;
-}
-
 class HeadTrack final : public Effect {
  public:
   explicit HeadTrack(EffectInit& in) {
-    const std::string file = in.params.required_string("file");
-    const std::string fmt_name = in.params.string("format", "gazelod");
-    const std::optional<gaze::TraceFormat> fmt = gaze::parse_trace_format(fmt_name);
-    if (!fmt) in.params.fail("format", "unknown trace format \"" + fmt_name + "\"");
+    const TraceParam trace = trace_param(in);
+    const std::string& file = trace.name;
     loop_ = in.params.boolean("loop", false);
     const bool relative = in.params.boolean("relative", false);
     const bool has_offset = in.params.has("offset_s");
@@ -45,7 +34,7 @@ class HeadTrack final : public Effect {
     const double start_s = in.params.number("start_s", 0.0, -1e6, 1e6);
     std::optional<std::int64_t> first_row_ns;
     try {
-      std::unique_ptr<gaze::RecordStream> stream = gaze::open_trace(resolve(file, in.source), *fmt);
+      std::unique_ptr<gaze::RecordStream> stream = gaze::open_trace(trace.path, trace.format);
       if (!stream->has_head()) in.params.fail("file", file + ": the trace has no head columns");
       gaze::TraceRecord r;
       while (stream->next(r)) {

@@ -99,7 +99,11 @@ std::vector<FamilyMember> run_family(std::uint64_t first, int count, double dura
   std::vector<FamilyMember> members;
   for (int k = 0; k < count; ++k) {
     const std::uint64_t seed = first + static_cast<std::uint64_t>(k);
-    const sim::FamilyScenario f = sim::family_scenario(seed, duration_s, settings.ideal, settings.tracker_offset_deg);
+    sim::FamilyScenario f = sim::family_scenario(seed, duration_s, settings.ideal, settings.tracker_offset_deg);
+    if (settings.recording) {
+      f.json = with_recording(f.json, *settings.recording);
+      f.summary = recording_summary(f.summary, *settings.recording);
+    }
     const std::filesystem::path dir = work.path() / ("seed-" + std::to_string(seed));
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
@@ -117,6 +121,7 @@ std::vector<FamilyMember> run_family(std::uint64_t first, int count, double dura
     o.switching = settings.switching;
     o.conditioning = settings.conditioning;
     o.offline_bound = settings.offline_bound;
+    o.criteria = settings.criteria;
     RunSummary summary;
     o.result = &summary;
     std::ostringstream out, err;
@@ -271,6 +276,9 @@ struct FamilyFlags {
   bool bound = false;
   std::string against;
   bool against_given = false;  // --against, even empty (refused then, not ignored)
+  std::string recording;
+  std::string recording_format = "auto";
+  std::string criteria = "all";
 };
 
 // "A-B" (inclusive) or "A".
@@ -298,32 +306,45 @@ int run_eval_family(const FamilyFlags& flags, Io io) {
   settings.offline_bound = flags.bound;
   if (flags.tracker_offset_deg > 0.0)
     settings.changed.push_back("tracker_offset_deg=" + fmt("%g", flags.tracker_offset_deg));
+  settings.criteria = parse_criteria(flags.criteria);
+  if (flags.criteria != "all") settings.changed.push_back("criteria=" + flags.criteria);
+  const std::optional<gaze::TraceFormat> recording_format = gaze::parse_trace_format(flags.recording_format);
+  if (!recording_format) throw UsageError("--recording-format: unknown trace format '" + flags.recording_format + "'");
+  if (!flags.recording.empty() && !flags.list) {
+    settings.recording = read_family_recording(flags.recording, *recording_format);
+    settings.changed.push_back("recording=" + flags.recording);
+  }
   if (flags.list) {
     io.out << settings_list(settings);
     return 0;
   }
   const auto [first, count] = seed_range(flags.seeds);
+  const double duration_s =
+      settings.recording ? recording_duration_s(flags.duration_s, *settings.recording) : flags.duration_s;
   // An earlier run to compare with: read and checked before any seed runs.
   std::optional<FamilyBaseline> base;
   if (flags.against_given) {
     base = read_family_baseline(flags.against);
-    check_same_run(*base, first, count, flags.duration_s);
+    check_same_run(*base, first, count, duration_s);
   }
   const auto started = std::chrono::steady_clock::now();
   const auto progress = [&](const std::string& line) {
     const auto s = std::chrono::duration_cast<std::chrono::seconds>(std::chrono::steady_clock::now() - started).count();
     io.err << "gazelod eval family [" << s << " s]: " << line << "\n" << std::flush;
   };
-  const std::vector<FamilyMember> members = run_family(first, count, flags.duration_s, settings, flags.work, progress);
+  const std::vector<FamilyMember> members = run_family(first, count, duration_s, settings, flags.work, progress);
   std::string command = "gazelod eval family --seeds " + flags.seeds;
   if (flags.duration_s != 20.0) command += " --duration " + fmt("%g", flags.duration_s);
   for (const std::string& s : flags.set) command += " --set " + s;
   if (settings.ideal.any()) command += " --ideal " + flags.ideal;
   if (flags.tracker_offset_deg > 0.0) command += " --tracker-offset " + fmt("%g", flags.tracker_offset_deg);
   if (flags.bound) command += " --bound";
+  if (!flags.recording.empty()) command += " --recording " + flags.recording;
+  if (flags.recording_format != "auto") command += " --recording-format " + flags.recording_format;
+  if (flags.criteria != "all") command += " --criteria " + flags.criteria;
   if (base) command += " --against " + flags.against;
   std::string md = family_markdown(members, settings, command);
-  std::string json = family_json(members, settings, flags.duration_s);
+  std::string json = family_json(members, settings, duration_s);
   if (base) {
     md += against_markdown(members, *base);
     nlohmann::json j = nlohmann::json::parse(json);
@@ -360,6 +381,13 @@ EvalSubcommand add_eval_family(CLI::App& eval) {
                 "future known, never coarser than the plugin's perceptual level nor the oracle's (a better policy), "
                 "and than the oracle's alone (a perfect tracker too; run/offline_bound.hpp); and both again at the "
                 "switch target's pop rate, with the seeds where they meet all three targets");
+  app->add_option("--recording", flags->recording,
+                  "A gaze trace (any layout `gazelod trace` reads) replayed as every seed's true eye, and head when "
+                  "it has poses, under the seeds' own displays, trackers and fields (docs/evaluation.md, \"Real "
+                  "eyes\")");
+  app->add_option("--recording-format", flags->recording_format,
+                  "The recording's layout: auto (default: from its header) or any `gazelod trace --format`");
+  app->add_option("--criteria", flags->criteria, "all (default), none, or a comma list of size,eccentricity,velocity");
   app->add_option("--against", flags->against,
                   "An earlier run's family.json of the same seeds: which seeds entered or left each target, and "
                   "how each figure's distribution moved");

@@ -10,6 +10,7 @@
 #pragma once
 
 #include "apps/gazelod/clusters/eval.hpp"
+#include "apps/gazelod/eval/family_recording.hpp"
 #include "apps/gazelod/run/audit.hpp"
 #include "gaze/gaze_conditioner.hpp"
 #include "lod/switch_policy.hpp"
@@ -17,6 +18,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -38,10 +40,12 @@ struct FamilyMember {
 struct FamilySettings {
   lod::SwitchPolicyConfig switching;
   gaze::ConditionerConfig conditioning;
-  sim::IdealTracker ideal;           // --ideal: what each seed's tracker costs (its scenario with parts made ideal)
-  double tracker_offset_deg = 0.0;   // --tracker-offset: each seed's tracker off by this much (a calibration error)
-  bool offline_bound = false;        // --bound: each seed's offline optimum (run/offline_bound.hpp)
-  std::vector<std::string> changed;  // "switch.coarsen_hold_s=0.3", as given
+  sim::IdealTracker ideal;          // --ideal: what each seed's tracker costs (its scenario with parts made ideal)
+  double tracker_offset_deg = 0.0;  // --tracker-offset: each seed's tracker off by this much (a calibration error)
+  bool offline_bound = false;       // --bound: each seed's offline optimum (run/offline_bound.hpp)
+  std::optional<FamilyRecording> recording;  // --recording: its eyes and head instead (family_recording.hpp)
+  EnabledCriteria criteria;                  // --criteria (all by default)
+  std::vector<std::string> changed;          // "switch.coarsen_hold_s=0.3", as given
 };
 
 // Applies one "name=value" (names: `gazelod eval family --list-settings`). Throws UsageError

@@ -11,7 +11,10 @@
 // is made: a saccade wherever the recording's own I-VT labels (Salvucci & Goldberg 2000;
 // gaze/ivt_classifier.hpp, at `saccade_threshold_deg_s`) call one, classified in the world
 // when the trace has head poses, since in the head a reflex holding the world still through a
-// head turn moves as fast as a small saccade; a blink over each run of invalid samples. The
+// head turn moves as fast as a small saccade; a blink over each run of invalid samples, with a
+// saccade in it where the eye reopens more than `blink_saccade_deg` (2) away, in the head and
+// in the world (people often blink as they make a saccade; post-saccadic suppression then runs
+// from the reopening, as the audit counts it after any saccade). The
 // tracker effects then act on this gaze; a tracker sample taken inside an invalid run is
 // invalid, as the recording was.
 //
@@ -28,6 +31,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 namespace gazelod::sim::effects {
@@ -49,6 +53,7 @@ class GazeTrack final : public Effect {
     gaze::IvtOptions ivt;
     ivt.saccade_threshold_deg_s =
         in.params.number("saccade_threshold_deg_s", gaze::main_sequence::kIvtThreshold_deg_s, 5.0, 1000.0);
+    const double blink_saccade_deg = in.params.number("blink_saccade_deg", 2.0, 0.1, 90.0);
     std::vector<gaze::GazeSample> rows;   // in the head: what the eye did
     std::vector<gaze::GazeSample> world;  // the same in the world, for the labels
     try {
@@ -94,6 +99,12 @@ class GazeTrack final : public Effect {
       while (j < rows.size() && !rows[j].valid) ++j;
       // Closed from the first invalid sample to the next valid one (or on, after the last row).
       blinks_.push_back({rows[i].t_ns, j < rows.size() ? rows[j].t_ns : INT64_MAX});
+      // The eye moved while closed, in the head and in the world alike (a reflex or a head
+      // carrying the eye moves it in only one): a saccade in the blink, over when it reopens.
+      if (i > 0 && j < rows.size() && rows[i - 1].valid && world[i - 1].valid && world[j].valid &&
+          angle_deg(rows[i - 1].direction, rows[j].direction) > blink_saccade_deg &&
+          angle_deg(world[i - 1].direction, world[j].direction) > blink_saccade_deg)
+        blink_saccade_ends_.push_back(rows[j].t_ns);
       i = j;
     }
   }
@@ -116,6 +127,9 @@ class GazeTrack final : public Effect {
     const auto it = std::upper_bound(saccades_.begin(), saccades_.end(), t_ns,
                                      [](std::int64_t t, const Interval& s) { return t < s.end_ns; });
     truth.last_saccade_end_ns = it == saccades_.begin() ? INT64_MIN : std::prev(it)->end_ns;
+    const auto b = std::upper_bound(blink_saccade_ends_.begin(), blink_saccade_ends_.end(), t_ns);
+    if (b != blink_saccade_ends_.begin())
+      truth.last_saccade_end_ns = std::max(truth.last_saccade_end_ns, *std::prev(b));
   }
 
  private:
@@ -152,6 +166,10 @@ class GazeTrack final : public Effect {
     return slerp_unit(dir_[i], dir_[i + 1], f);
   }
 
+  static double angle_deg(const glm::dvec3& a, const glm::dvec3& b) {
+    return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b)) * 180.0 / std::numbers::pi;
+  }
+
   // Great-circle interpolation between unit vectors (atan2 for the angle: exact near 0).
   static glm::dvec3 slerp_unit(const glm::dvec3& a, const glm::dvec3& b, double f) {
     const glm::dvec3 axis = glm::cross(a, b);
@@ -167,6 +185,7 @@ class GazeTrack final : public Effect {
   std::vector<std::int64_t> t_ns_;  // valid samples only, increasing
   std::vector<glm::dvec3> dir_;     // unit, head space
   std::vector<Interval> saccades_, blinks_;
+  std::vector<std::int64_t> blink_saccade_ends_;  // where a blink with a saccade in it reopens
 };
 
 }  // namespace

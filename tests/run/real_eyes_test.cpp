@@ -82,8 +82,8 @@ void expect_within_targets(const nlohmann::json& a, double min_suppressed) {
 }
 
 // HTC Vive Pro Eye (SRanipal through Unity, 120 Hz, 13.9 s, head poses): fixations held by the
-// reflex through head turns. Measured: 0.13 % degraded, 1.08 times the oracle's triangles,
-// 0.08 switches per object-second.
+// reflex through head turns. Measured: 0.01 % degraded, 1.08 times the oracle's triangles,
+// 0.08 switches per object-second, 30 % of the frames suppressed.
 TEST(RealEyes, ViveProEyeWithItsHeadMeetsTheTargets) {
   if (!fs::is_regular_file(recording("htc_vive_pro_eye_unity_log.csv")))
     GAZELOD_SKIP_OR_FAIL("no " << recording("htc_vive_pro_eye_unity_log.csv") << " (../shared/data/gaze)");
@@ -91,7 +91,9 @@ TEST(RealEyes, ViveProEyeWithItsHeadMeetsTheTargets) {
 }
 
 // Pupil Invisible (Pupil Cloud export, 200 Hz, 43 s, no head pose: a still head here): 206
-// saccades. Measured: 0.04 % degraded, 1.20 times the oracle's triangles, 0.20 switches.
+// I-VT saccades (noise among them) and long invalid runs: 79 % of the frames suppressed, so
+// this judges the fifth outside them. Measured: 0.00 % degraded, 1.20 times the oracle's
+// triangles, 0.20 switches.
 TEST(RealEyes, PupilInvisibleMeetsTheTargets) {
   if (!fs::is_regular_file(recording("pupil_cloud_invisible_gaze.csv")))
     GAZELOD_SKIP_OR_FAIL("no " << recording("pupil_cloud_invisible_gaze.csv") << " (../shared/data/gaze)");

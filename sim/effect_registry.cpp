@@ -98,10 +98,13 @@ TraceParam trace_param(EffectInit& init) {
   const std::optional<gaze::TraceFormat> fmt = gaze::parse_trace_format(fmt_name);
   if (!fmt) init.params.fail("format", "unknown trace format \"" + fmt_name + "\"");
   t.format = *fmt;
+  // Relative to the scenario file, as sim/scenarios/README.md says; as given (from the working
+  // folder) only where the scenario's folder has no such file, or the scenario is no file.
   const std::filesystem::path p(t.name), src(init.source);
-  t.path = !p.is_absolute() && std::filesystem::is_regular_file(src) && !std::filesystem::exists(p)
-               ? (src.parent_path() / p).string()
-               : t.name;
+  std::error_code ec;
+  const bool beside = !p.is_absolute() && std::filesystem::is_regular_file(src, ec) &&
+                      std::filesystem::exists(src.parent_path() / p, ec);
+  t.path = beside ? (src.parent_path() / p).string() : t.name;
   return t;
 }
 

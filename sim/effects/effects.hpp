@@ -29,7 +29,7 @@ std::unique_ptr<Effect> make_object_motion(EffectInit& init);
 std::size_t object_index(const Scenario& scenario, JsonFields& params, const std::string& key, const std::string& name);
 
 // The trace a replay effect reads (head_track, gaze_track): its "file" parameter, resolved
-// against the scenario file's folder when it is relative and not found as given, and its
+// against the scenario file's folder when it is relative and there, else as given, and its
 // "format" (default gazelod). Fails at the parameter on an unknown format.
 struct TraceParam {
   std::string name;  // as the scenario wrote it, for messages

@@ -56,26 +56,36 @@ class GazeTrack final : public Effect {
     const double blink_saccade_deg = in.params.number("blink_saccade_deg", 2.0, 0.1, 90.0);
     std::vector<gaze::GazeSample> rows;   // in the head: what the eye did
     std::vector<gaze::GazeSample> world;  // the same in the world, for the labels
+    std::size_t poses = 0;
     try {
       std::unique_ptr<gaze::RecordStream> stream = gaze::open_trace(trace.path, trace.format);
       gaze::TraceRecord r;
       while (stream->next(r)) {
-        if (!rows.empty() && r.gaze.t_ns <= rows.back().t_ns) continue;  // strictly increasing times
         gaze::GazeSample s = r.gaze;
         const double len = glm::length(s.direction);
         s.valid = s.valid && std::isfinite(len) && len > 1e-9;
         if (s.valid) s.direction /= len;
-        rows.push_back(s);
         gaze::GazeSample w = s;
-        if (r.has_head && r.head.valid)
-          w.direction = glm::normalize(r.head.orientation) * s.direction;
-        else if (stream->has_head())
-          w.valid = false;  // no pose: no world direction to label
+        const bool posed = r.has_head && r.head.valid;
+        if (posed) w.direction = glm::normalize(r.head.orientation) * s.direction;
+        w.valid = s.valid && posed;  // no pose: no world direction to label
+        // Strictly increasing times (the reader refuses a time going back): of two rows at one
+        // time, a valid one wins, so that a duplicate makes no blink the recording has not.
+        if (!rows.empty() && s.t_ns <= rows.back().t_ns) {
+          if (!s.valid || rows.back().valid) continue;
+          poses -= world.back().valid ? 1 : 0;
+          rows.pop_back(), world.pop_back();
+        }
+        poses += w.valid ? 1 : 0;
+        rows.push_back(s);
         world.push_back(w);
       }
     } catch (const gaze::TraceError& e) {
       in.params.fail("file", e.what());
     }
+    // Without two posed samples there is no world to label in: the head it is (a recording
+    // whose head stood still, or one with head columns but no pose).
+    if (poses < 2) world = rows;
     const auto valid = [](const gaze::GazeSample& s) { return s.valid; };
     if (std::none_of(rows.begin(), rows.end(), valid)) in.params.fail("file", file + ": no valid gaze sample");
     const std::int64_t origin = has_offset ? aux::ns_from_seconds(offset_s) : rows.front().t_ns;
@@ -88,8 +98,12 @@ class GazeTrack final : public Effect {
     }
     label(world, ivt);
     // Keep the valid samples for the direction; invalid ones only mark their runs.
-    for (const gaze::GazeSample& s : rows)
-      if (s.valid) t_ns_.push_back(s.t_ns), dir_.push_back(s.direction);
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      if (!rows[i].valid) continue;
+      t_ns_.push_back(rows[i].t_ns);
+      dir_.push_back(rows[i].direction);
+      next_valid_.push_back(i + 1 < rows.size() && rows[i + 1].valid);
+    }
     for (std::size_t i = 0; i < rows.size();) {
       if (rows[i].valid) {
         ++i;
@@ -160,8 +174,9 @@ class GazeTrack final : public Effect {
     const auto it = std::upper_bound(t_ns_.begin(), t_ns_.end(), t_ns);
     if (it == t_ns_.begin()) return dir_.front();
     const std::size_t i = static_cast<std::size_t>(it - t_ns_.begin()) - 1;
-    // After the last sample, or across a run of invalid ones: the last valid direction holds.
-    if (it == t_ns_.end() || inside(blinks_, t_ns)) return dir_[i];
+    // After the last sample, or from the last valid sample before an invalid run to the next
+    // valid one: the last valid direction holds (not drifting toward where the eye reopens).
+    if (it == t_ns_.end() || !next_valid_[i]) return dir_[i];
     const double f = static_cast<double>(t_ns - t_ns_[i]) / static_cast<double>(t_ns_[i + 1] - t_ns_[i]);
     return slerp_unit(dir_[i], dir_[i + 1], f);
   }
@@ -184,6 +199,7 @@ class GazeTrack final : public Effect {
 
   std::vector<std::int64_t> t_ns_;  // valid samples only, increasing
   std::vector<glm::dvec3> dir_;     // unit, head space
+  std::vector<bool> next_valid_;    // the recording's next row is valid too: interpolate to it
   std::vector<Interval> saccades_, blinks_;
   std::vector<std::int64_t> blink_saccade_ends_;  // where a blink with a saccade in it reopens
 };

@@ -72,6 +72,65 @@ TEST(FamilyRecording, TheSeedKeepsItsTrackerDisplayAndFieldAndTakesTheRecordedEy
             "recorded eyes and head, psvr2, 120 Hz 35 ms 0.80 deg, deep field");
 }
 
+// A walking seed's walk is the field coming toward the viewer: with a recorded head the field
+// stands still (the pursuit target keeps its own crossing motion).
+TEST(FamilyRecording, AWalkingSeedStopsWalking) {
+  const sim::FamilyScenario f = sim::family_scenario(2001);
+  ASSERT_TRUE(f.summary.starts_with("walk ")) << f.summary;
+  const nlohmann::json before = nlohmann::json::parse(f.json);
+  const double walk = before.at("scene").at("generators")[0].at("forward_speed_m_s").get<double>();
+  ASSERT_GT(walk, 0.5);
+  FamilyRecording rec;
+  rec.path = "/data/vive.csv";
+  rec.has_head = true;
+  rec.span_s = 13.86;
+  const nlohmann::json after = nlohmann::json::parse(with_recording(f.json, rec));
+  EXPECT_EQ(after.at("scene").at("generators")[0].at("forward_speed_m_s").get<double>(), 0.0);
+  const nlohmann::json& v0 = before.at("scene").at("objects")[0].at("velocity_m_s");
+  const nlohmann::json& v1 = after.at("scene").at("objects")[0].at("velocity_m_s");
+  EXPECT_DOUBLE_EQ(v0[2].get<double>(), -walk);
+  EXPECT_DOUBLE_EQ(v1[2].get<double>(), 0.0);
+  EXPECT_DOUBLE_EQ(v1[0].get<double>(), v0[0].get<double>());
+  EXPECT_EQ(recording_summary(f.summary, rec).find("walk"), std::string::npos);
+}
+
+// What read_family_recording makes of odd but readable traces.
+TEST(FamilyRecording, TheRecordingsSpanIsItsValidSamplesAndItsHeadItsPoses) {
+  const fs::path dir = testing::scratch("family-recording.");
+  const auto write = [&](const std::string& name, const std::string& rows, bool head) {
+    const fs::path p = dir / name;
+    std::ofstream(p) << "# gazelod-trace 1\nt_ns,gaze_x,gaze_y,gaze_z,valid"
+                     << (head ? ",head_qw,head_qx,head_qy,head_qz,head_px,head_py,head_pz,head_valid" : "") << "\n"
+                     << rows;
+    return p.string();
+  };
+  // Negative times, 1.5 s apart.
+  const FamilyRecording neg = read_family_recording(
+      write("neg.csv", "-5000000000,0,0,-1,1\n-3500000000,0,0,-1,1\n", false), gaze::TraceFormat::gazelod);
+  EXPECT_DOUBLE_EQ(neg.span_s, 1.5);
+  EXPECT_FALSE(neg.has_head);
+  // One valid sample, or valid samples 10 ms apart and 20 s of invalid ones after them.
+  EXPECT_THROW(
+      read_family_recording(write("one.csv", "0,0,0,-1,1\n1000000000,0,0,-1,0\n", false), gaze::TraceFormat::gazelod),
+      UsageError);
+  try {
+    read_family_recording(write("tail.csv", "0,0,0,-1,1\n10000000,0,0,-1,1\n20000000000,0,0,-1,0\n", false),
+                          gaze::TraceFormat::gazelod);
+    FAIL() << "a recording that is all blink was accepted";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("valid samples span less than 1 s"), std::string::npos) << e.what();
+  }
+  // Head columns, no valid pose: no head to replay.
+  const FamilyRecording unposed = read_family_recording(
+      write("unposed.csv", "0,0,0,-1,1,1,0,0,0,0,0,0,0\n2000000000,0,0,-1,1,1,0,0,0,0,0,0,0\n", true),
+      gaze::TraceFormat::gazelod);
+  EXPECT_FALSE(unposed.has_head);
+  const FamilyRecording posed = read_family_recording(
+      write("posed.csv", "0,0,0,-1,1,1,0,0,0,0,0,0,1\n2000000000,0,0,-1,1,1,0,0,0,0,0,0,1\n", true),
+      gaze::TraceFormat::gazelod);
+  EXPECT_TRUE(posed.has_head);
+}
+
 TEST(FamilyRecording, AnUnreadableRecordingIsRefusedBeforeAnySeed) {
   const fs::path dir = testing::scratch("family-recording.");
   testing::use_simulated_runtime();
@@ -94,6 +153,12 @@ TEST(FamilyRecording, AnUnreadableRecordingIsRefusedBeforeAnySeed) {
                                       "--recording-format", "tobii", "--out", (dir / "out").string()});
   EXPECT_EQ(format.rc, 2);
   EXPECT_NE(format.err.find("--recording-format"), std::string::npos) << format.err;
+
+  const Result empty =
+      testing::cli({"eval", "family", "--seeds", "1-2", "--recording", "", "--out", (dir / "out").string()});
+  EXPECT_EQ(empty.rc, 2) << "refused, not ignored";
+  EXPECT_NE(empty.err.find("--recording"), std::string::npos) << empty.err;
+  EXPECT_FALSE(fs::exists(dir / "out" / "family.json"));
 }
 
 // The Vive Pro Eye log (13.9 s, head poses) under ten held-out seeds' trackers: over 2000-2099
@@ -106,12 +171,20 @@ TEST(FamilyRecording, ViveProEyeUnderTheFamilysTrackers) {
   if (!fs::is_regular_file(file)) GAZELOD_SKIP_OR_FAIL("no " << file << " (../shared/data/gaze)");
   const fs::path dir = testing::scratch("family-recording.");
   testing::use_simulated_runtime();
-  const Result r =
-      testing::cli({"eval", "family", "--seeds", "2000-2009", "--recording", file.string(), "--criteria",
-                    "size,eccentricity", "--work", (dir / "work").string(), "--out", (dir / "out").string()});
+  // Size and eccentricity by default with a recording (its noise is no eye's velocity).
+  const Result r = testing::cli({"eval", "family", "--seeds", "2000-2009", "--recording", file.string(), "--work",
+                                 (dir / "work").string(), "--out", (dir / "out").string()});
   ASSERT_EQ(r.rc, 0) << r.err;
   std::ifstream in(dir / "out" / "family.json");
   const nlohmann::json j = nlohmann::json::parse(in);
+  const std::string abs = fs::absolute(file).lexically_normal().string();
+  EXPECT_EQ(j.at("settings_changed")[0], "criteria=size,eccentricity");
+  EXPECT_EQ(j.at("settings_changed")[1], "recording=" + abs);
+  // Another run of the same seeds with the family's own eyes is other scenarios: refused.
+  const Result own = testing::cli({"eval", "family", "--seeds", "2000-2009", "--duration", "13.8", "--out",
+                                   (dir / "own").string(), "--against", (dir / "out" / "family.json").string()});
+  EXPECT_EQ(own.rc, 2);
+  EXPECT_NE(own.err.find("its eyes were " + abs + ", this run's the family's own"), std::string::npos) << own.err;
   EXPECT_DOUBLE_EQ(j.at("duration_s").get<double>(), 13.8);
   ASSERT_EQ(j.at("members").size(), 10u);
   for (const nlohmann::json& m : j.at("members"))

@@ -4,8 +4,8 @@
 // (gaze_track; the Vive Pro Eye log's head too, head_track), seen through a simulated 120 Hz
 // tracker 50 ms late with 0.5 deg of noise, and the plugin held to the targets against
 // the oracle at the recorded gaze. Size and eccentricity only: the recordings' own noise,
-// differentiated, is no eye's velocity (the oracle's own switch rate with velocity on is 8-14
-// per object-second, docs/evaluation.md, "Real eyes").
+// differentiated, is no eye's velocity (the oracle's own switch rate with velocity on is 7.6
+// and 12.5 per object-second, docs/evaluation.md, "Real eyes").
 #include "apps/gazelod/run/audit.hpp"
 #include "run_test_util.hpp"
 #include "tests/skip_or_fail.hpp"
@@ -70,10 +70,14 @@ nlohmann::json audit_of(const char* name, bool head, double duration_s, const ch
   return nlohmann::json::parse(read_text(dir / "out" / "summary.json")).at("audit");
 }
 
-void expect_within_targets(const nlohmann::json& a, double min_suppressed) {
+void expect_within_targets(const nlohmann::json& a, double min_suppressed, double max_suppressed) {
   ASSERT_TRUE(a.at("available").get<bool>()) << a.dump(2);
-  // The recording's own saccades and blinks make the suppression windows.
-  EXPECT_GT(a.at("suppression_window").at("share_of_frames").get<double>(), min_suppressed) << a.dump(2);
+  // The recording's own saccades and blinks make the suppression windows, and enough is left
+  // outside them to judge.
+  const double suppressed = a.at("suppression_window").at("share_of_frames").get<double>();
+  EXPECT_GT(suppressed, min_suppressed) << a.dump(2);
+  EXPECT_LT(suppressed, max_suppressed) << a.dump(2);
+  EXPECT_GT(a.at("visible_degradations").at("object_frames").get<std::int64_t>(), 50000);
   EXPECT_LE(a.at("visible_degradations").at("share").get<double>(), cli::kTargetDegradedShare);
   EXPECT_LE(a.at("triangles_in_view").at("drawn_over_oracle").get<double>(), cli::kTargetTriangleRatio);
   EXPECT_GE(a.at("triangles_in_view").at("drawn_over_oracle").get<double>(), 1.0);
@@ -87,7 +91,7 @@ void expect_within_targets(const nlohmann::json& a, double min_suppressed) {
 TEST(RealEyes, ViveProEyeWithItsHeadMeetsTheTargets) {
   if (!fs::is_regular_file(recording("htc_vive_pro_eye_unity_log.csv")))
     GAZELOD_SKIP_OR_FAIL("no " << recording("htc_vive_pro_eye_unity_log.csv") << " (../shared/data/gaze)");
-  expect_within_targets(audit_of("htc_vive_pro_eye_unity_log.csv", true, 13.5, "viveproeye"), 0.15);
+  expect_within_targets(audit_of("htc_vive_pro_eye_unity_log.csv", true, 13.5, "viveproeye"), 0.15, 0.45);
 }
 
 // Pupil Invisible (Pupil Cloud export, 200 Hz, 43 s, no head pose: a still head here): 206
@@ -97,7 +101,7 @@ TEST(RealEyes, ViveProEyeWithItsHeadMeetsTheTargets) {
 TEST(RealEyes, PupilInvisibleMeetsTheTargets) {
   if (!fs::is_regular_file(recording("pupil_cloud_invisible_gaze.csv")))
     GAZELOD_SKIP_OR_FAIL("no " << recording("pupil_cloud_invisible_gaze.csv") << " (../shared/data/gaze)");
-  expect_within_targets(audit_of("pupil_cloud_invisible_gaze.csv", false, 40.0, "questpro"), 0.15);
+  expect_within_targets(audit_of("pupil_cloud_invisible_gaze.csv", false, 40.0, "questpro"), 0.15, 0.85);
 }
 
 }  // namespace

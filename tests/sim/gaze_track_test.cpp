@@ -130,6 +130,72 @@ TEST(GazeTrack, AReflexHeldTurnIsNoSaccade) {
   }
 }
 
+// A hand-written trace: the eye at A until 100 ms, closed from 110 to 290 ms, open at B (20 deg
+// right) from 300 ms; at 400 ms an invalid row and a valid one share a time.
+TEST(GazeTrack, HoldsThroughABlinkAndEndsTheSaccadeInItWhereTheEyeReopens) {
+  const std::string path = std::string(GAZELOD_BINARY_DIR) + "/tests/sim/gaze_track_blink.csv";
+  const double b_rad = 20.0 * 3.14159265358979323846 / 180.0;
+  const glm::dvec3 a(0, 0, -1), b(std::sin(b_rad), 0, -std::cos(b_rad));
+  {
+    std::ofstream out(path);
+    out << "# gazelod-trace 1\nt_ns,gaze_x,gaze_y,gaze_z,valid\n";
+    for (int ms = 0; ms <= 600; ms += 10) {
+      const glm::dvec3 d = ms < 300 ? a : b;
+      if (ms == 400) out << ms * kMs << ",0,0,-1,0\n";  // the invalid twin comes first
+      out << ms * kMs << "," << d.x << "," << d.y << "," << d.z << "," << (ms > 100 && ms < 300 ? 0 : 1) << "\n";
+    }
+  }
+  Simulator sim = make_sim(base_scenario({{{"type", "gaze_track"}, {"file", path}}}));
+  EXPECT_LT(angle_deg(sim.true_gaze_at(50 * kMs).direction, a), 1e-9);
+  // Between the last valid row and the blink, and in it: held, not drifting toward B.
+  EXPECT_LT(angle_deg(sim.true_gaze_at(105 * kMs).direction, a), 1e-9);
+  EXPECT_LT(angle_deg(sim.true_gaze_at(200 * kMs).direction, a), 1e-9);
+  EXPECT_TRUE(sim.eye_truth_at(200 * kMs).in_blink);
+  EXPECT_FALSE(sim.eye_truth_at(200 * kMs).in_saccade);
+  EXPECT_LT(angle_deg(sim.true_gaze_at(305 * kMs).direction, b), 1e-3);  // (6 digits in the file)
+  // The eye reopened 20 deg away: a saccade in the blink, over at 300 ms.
+  EXPECT_FALSE(sim.eye_truth_at(300 * kMs).in_blink);
+  EXPECT_EQ(sim.eye_truth_at(350 * kMs).last_saccade_end_ns, 300 * kMs);
+  EXPECT_EQ(sim.eye_truth_at(250 * kMs).last_saccade_end_ns, INT64_MIN) << "not before it reopens";
+  // The duplicate's valid row wins: no blink at 400 ms, and a tracker sample there is valid.
+  EXPECT_FALSE(sim.eye_truth_at(400 * kMs).in_blink);
+  EXPECT_TRUE(sim.tracker_at(400 * kMs).valid);
+
+  // A blink the eye reopens from where it closed holds no saccade.
+  nlohmann::json near = base_scenario({{{"type", "gaze_track"}, {"file", path}, {"blink_saccade_deg", 25}}});
+  EXPECT_EQ(make_sim(near).eye_truth_at(350 * kMs).last_saccade_end_ns, INT64_MIN);
+}
+
+// A trace with head columns but no valid pose: no world to label in, so the head it is (the
+// saccades are still found; before, every world sample was invalid and none was).
+TEST(GazeTrack, HeadColumnsWithoutAPoseAreLabelledInTheHead) {
+  nlohmann::json j = scripted();
+  j["effects"].erase(0);  // no head sweep: head and world agree
+  Simulator original = make_sim(j);
+  const std::string path = record(original, "gaze_track_no_pose.csv");
+  std::ifstream in(path);
+  std::string text, line;
+  while (std::getline(in, line)) {
+    if (!line.empty() && line[0] != '#' && line.back() == '1' && line.find("t_ns") == std::string::npos)
+      line.back() = '0';  // head_valid, the last column
+    text += line + "\n";
+  }
+  in.close();
+  std::ofstream(path) << text;
+  ASSERT_NE(text.find("head_valid"), std::string::npos);
+  Simulator sim = make_sim(base_scenario({{{"type", "gaze_track"}, {"file", path}}}));
+  int frames = 0, agree = 0, saccade_frames = 0;
+  for (std::int64_t t = 20 * kMs; t < 5980 * kMs; t += kMs) {
+    const EyeTruth a = original.eye_truth_at(t), b = sim.eye_truth_at(t);
+    if (a.in_blink) continue;
+    ++frames;
+    agree += a.in_saccade == b.in_saccade ? 1 : 0;
+    saccade_frames += b.in_saccade ? 1 : 0;
+  }
+  EXPECT_GT(saccade_frames, 200);
+  EXPECT_GT(agree, frames * 97 / 100);
+}
+
 TEST(GazeTrack, ABadFileIsRefusedAtTheEffect) {
   const std::string path = std::string(GAZELOD_BINARY_DIR) + "/tests/sim/gaze_track_invalid.csv";
   {

@@ -19,16 +19,6 @@
 
 namespace gazelod::cli {
 
-double degraded_figure(const AuditSummary& a) {
-  return a.degraded_share;
-}
-double triangle_figure(const AuditSummary& a) {
-  return a.triangle_ratio;
-}
-double switch_figure(const AuditSummary& a) {
-  return a.switches_fixation.per_object_s;
-}
-
 namespace {
 
 double visible(const AuditSummary& a) {
@@ -36,10 +26,6 @@ double visible(const AuditSummary& a) {
 }
 double oracle_own(const AuditSummary& a) {
   return a.oracle_switches_fixation.per_object_s;
-}
-// The offline optimum at the policy's switches (--bound), over the oracle's triangles.
-double bound_ratio(const OfflinePoint& p, const AuditSummary& a) {
-  return a.oracle_triangles > 0 ? static_cast<double>(p.triangles) / static_cast<double>(a.oracle_triangles) : 0.0;
 }
 double bound_policy(const AuditSummary& a) {
   return bound_ratio(a.bound_policy, a);
@@ -129,6 +115,9 @@ std::vector<FamilyMember> run_family(std::uint64_t first, int count, double dura
     if (rc != 0) throw UsageError("family seed " + std::to_string(seed) + ": the run failed: " + err.str(), rc);
     if (!summary.audit.available)
       throw UsageError("family seed " + std::to_string(seed) + ": no audit: " + summary.audit.reason, 1);
+    // Zeros over nothing would read as a perfect score (a recording that is all blinks).
+    if (summary.audit.object_frames == 0)
+      throw UsageError("family seed " + std::to_string(seed) + ": no object in view outside suppression", 1);
     const AuditSummary& b = summary.audit;
     if (settings.offline_bound && !(b.bound_policy.available && b.bound_oracle.available &&
                                     b.bound_policy_at_target.available && b.bound_oracle_at_target.available))
@@ -145,55 +134,13 @@ std::vector<FamilyMember> run_family(std::uint64_t first, int count, double dura
   return members;
 }
 
-Spread spread(const std::vector<FamilyMember>& members, double (*value)(const AuditSummary&), double target) {
-  std::vector<std::pair<std::uint64_t, double>> v;
-  for (const FamilyMember& m : members) v.emplace_back(m.seed, value(m.audit));
-  return spread_of(v, target);
-}
-
-int within_all_targets(const std::vector<FamilyMember>& members) {
-  return static_cast<int>(std::count_if(members.begin(), members.end(), [](const FamilyMember& m) {
-    return degraded_figure(m.audit) <= kTargetDegradedShare && triangle_figure(m.audit) <= kTargetTriangleRatio &&
-           switch_figure(m.audit) <= kTargetSwitchesPerObjectS;
-  }));
-}
-
-int within_all_targets_known(const std::vector<FamilyMember>& members, bool perfect_tracker) {
-  // The sequences are never coarser than the oracle (no degradation) and keep to the switch
-  // target's budget, so the triangle target decides.
-  return static_cast<int>(std::count_if(members.begin(), members.end(), [&](const FamilyMember& m) {
-    const OfflinePoint& p = perfect_tracker ? m.audit.bound_oracle_at_target : m.audit.bound_policy_at_target;
-    return p.available && m.audit.bound_target_switches >= 0 && p.switches <= m.audit.bound_target_switches &&
-           bound_ratio(p, m.audit) <= kTargetTriangleRatio;
-  }));
-}
-
-Spread spread_of(const std::vector<std::pair<std::uint64_t, double>>& seed_values, double target) {
-  Spread s;
-  if (seed_values.empty()) return s;
-  std::vector<double> v;
-  for (const auto& [seed, x] : seed_values) {
-    v.push_back(x);
-    if (x <= target) ++s.within_target;
-    if (v.size() == 1 || x > s.worst) s.worst = x, s.worst_seed = seed;
-  }
-  std::sort(v.begin(), v.end());
-  // Nearest-rank percentiles: values a reader can find in the per-seed table.
-  const auto rank = [&](double p) {
-    const auto k = static_cast<std::size_t>(std::ceil(p * static_cast<double>(v.size())));
-    return v[std::min(v.size() - 1, k > 0 ? k - 1 : 0)];
-  };
-  s.median = rank(0.5);
-  s.p90 = rank(0.9);
-  return s;
-}
-
 std::string family_markdown(const std::vector<FamilyMember>& members, const FamilySettings& settings,
-                            const std::string& command) {
+                            const std::string& command, double duration_s) {
   std::ostringstream md;
   md << "<!-- written by: " << command << " -->\n\n";
   md << "Seeds " << (members.empty() ? 0 : members.front().seed) << " to "
-     << (members.empty() ? 0 : members.back().seed) << " (" << members.size() << " scenarios)";
+     << (members.empty() ? 0 : members.back().seed) << " (" << members.size() << " scenarios of "
+     << fmt("%g", duration_s) << " s)";
   if (!settings.changed.empty()) {
     md << "; settings changed:";
     for (const std::string& c : settings.changed) md << " `" << c << "`";
@@ -277,8 +224,9 @@ struct FamilyFlags {
   std::string against;
   bool against_given = false;  // --against, even empty (refused then, not ignored)
   std::string recording;
+  bool recording_given = false;  // --recording, even empty (refused then)
   std::string recording_format = "auto";
-  std::string criteria = "all";
+  std::string criteria;  // "": all, or size,eccentricity with a recording
 };
 
 // "A-B" (inclusive) or "A".
@@ -306,26 +254,20 @@ int run_eval_family(const FamilyFlags& flags, Io io) {
   settings.offline_bound = flags.bound;
   if (flags.tracker_offset_deg > 0.0)
     settings.changed.push_back("tracker_offset_deg=" + fmt("%g", flags.tracker_offset_deg));
-  settings.criteria = parse_criteria(flags.criteria);
-  if (flags.criteria != "all") settings.changed.push_back("criteria=" + flags.criteria);
-  const std::optional<gaze::TraceFormat> recording_format = gaze::parse_trace_format(flags.recording_format);
-  if (!recording_format) throw UsageError("--recording-format: unknown trace format '" + flags.recording_format + "'");
-  if (!flags.recording.empty() && !flags.list) {
-    settings.recording = read_family_recording(flags.recording, *recording_format);
-    settings.changed.push_back("recording=" + flags.recording);
-  }
   if (flags.list) {
     io.out << settings_list(settings);
     return 0;
   }
   const auto [first, count] = seed_range(flags.seeds);
+  apply_recording_flags(flags.recording_given ? &flags.recording : nullptr, flags.recording_format, flags.criteria,
+                        settings);
   const double duration_s =
       settings.recording ? recording_duration_s(flags.duration_s, *settings.recording) : flags.duration_s;
   // An earlier run to compare with: read and checked before any seed runs.
   std::optional<FamilyBaseline> base;
   if (flags.against_given) {
     base = read_family_baseline(flags.against);
-    check_same_run(*base, first, count, duration_s);
+    check_same_run(*base, first, count, duration_s, settings.recording ? "recording=" + settings.recording->path : "");
   }
   const auto started = std::chrono::steady_clock::now();
   const auto progress = [&](const std::string& line) {
@@ -339,11 +281,11 @@ int run_eval_family(const FamilyFlags& flags, Io io) {
   if (settings.ideal.any()) command += " --ideal " + flags.ideal;
   if (flags.tracker_offset_deg > 0.0) command += " --tracker-offset " + fmt("%g", flags.tracker_offset_deg);
   if (flags.bound) command += " --bound";
-  if (!flags.recording.empty()) command += " --recording " + flags.recording;
+  if (flags.recording_given) command += " --recording " + flags.recording;
   if (flags.recording_format != "auto") command += " --recording-format " + flags.recording_format;
-  if (flags.criteria != "all") command += " --criteria " + flags.criteria;
+  if (!flags.criteria.empty()) command += " --criteria " + flags.criteria;
   if (base) command += " --against " + flags.against;
-  std::string md = family_markdown(members, settings, command);
+  std::string md = family_markdown(members, settings, command, duration_s);
   std::string json = family_json(members, settings, duration_s);
   if (base) {
     md += against_markdown(members, *base);
@@ -387,7 +329,9 @@ EvalSubcommand add_eval_family(CLI::App& eval) {
                   "eyes\")");
   app->add_option("--recording-format", flags->recording_format,
                   "The recording's layout: auto (default: from its header) or any `gazelod trace --format`");
-  app->add_option("--criteria", flags->criteria, "all (default), none, or a comma list of size,eccentricity,velocity");
+  app->add_option("--criteria", flags->criteria,
+                  "all, none, or a comma list of size,eccentricity,velocity (default: all; with --recording "
+                  "size,eccentricity, since a recording's noise is no eye's velocity)");
   app->add_option("--against", flags->against,
                   "An earlier run's family.json of the same seeds: which seeds entered or left each target, and "
                   "how each figure's distribution moved");
@@ -396,6 +340,7 @@ EvalSubcommand add_eval_family(CLI::App& eval) {
   app->add_option("--work", flags->work, "Folder for each seed's scenario (default: a temporary one, removed)");
   return {app, [flags, app](Io io) {
             flags->against_given = app->count("--against") > 0;
+            flags->recording_given = app->count("--recording") > 0;
             return run_eval_family(*flags, io);
           }};
 }

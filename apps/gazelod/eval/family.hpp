@@ -30,6 +30,8 @@ namespace gazelod::cli {
 double degraded_figure(const AuditSummary& a);  // degraded_share
 double triangle_figure(const AuditSummary& a);  // triangle_ratio
 double switch_figure(const AuditSummary& a);    // switches_fixation.per_object_s
+// An offline optimum's triangles (--bound) over the oracle's (0 without oracle triangles).
+double bound_ratio(const OfflinePoint& p, const AuditSummary& a);
 
 struct FamilyMember {
   std::uint64_t seed = 0;
@@ -53,6 +55,13 @@ struct FamilySettings {
 void apply_setting(const std::string& assignment, FamilySettings& settings);
 // The settings --set understands, one per line with its current (default) value.
 std::string settings_list(const FamilySettings& settings);
+
+// --recording (null: not given; "" is refused), --recording-format and --criteria ("": all, or
+// size,eccentricity with a recording) into settings, each change named in settings.changed
+// ("recording=" with the recording's absolute path). Throws UsageError for a bad format or
+// criteria list, and (exit 1) for a recording read_family_recording refuses.
+void apply_recording_flags(const std::string* recording, const std::string& format, const std::string& criteria,
+                           FamilySettings& settings);
 
 // Runs seeds [first, first + count) with `settings`; progress gets one line per seed. Settings
 // the switch policy or the conditioner refuse throw UsageError (exit 2, naming the setting and
@@ -78,7 +87,7 @@ int within_all_targets_known(const std::vector<FamilyMember>& members, bool perf
 
 // The report (markdown) and its JSON twin.
 std::string family_markdown(const std::vector<FamilyMember>& members, const FamilySettings& settings,
-                            const std::string& command);
+                            const std::string& command, double duration_s);
 std::string family_json(const std::vector<FamilyMember>& members, const FamilySettings& settings, double duration_s);
 
 // Adds `family` to the `eval` command.

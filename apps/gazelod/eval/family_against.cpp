@@ -206,7 +206,16 @@ FamilyBaseline read_family_baseline(const std::string& path) {
   return base;
 }
 
-void check_same_run(const FamilyBaseline& base, std::uint64_t first, int count, double duration_s) {
+void check_same_run(const FamilyBaseline& base, std::uint64_t first, int count, double duration_s,
+                    const std::string& recording) {
+  std::string base_recording;
+  for (const std::string& c : base.settings_changed)
+    if (c.starts_with("recording=")) base_recording = c;
+  if (base_recording != recording) {
+    const auto eyes = [](const std::string& r) { return r.empty() ? std::string("the family's own") : r.substr(10); };
+    throw UsageError("--against: " + base.source + ": its eyes were " + eyes(base_recording) + ", this run's " +
+                     eyes(recording) + ": the same seeds would be other scenarios");
+  }
   if (base.duration_s != duration_s)
     throw UsageError("--against: " + base.source + ": its scenarios last " + fmt("%g", base.duration_s) +
                      " s, this run's " + fmt("%g", duration_s) + " s: the same seeds would be other scenarios");

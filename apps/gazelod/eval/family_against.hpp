@@ -49,9 +49,12 @@ FamilyBaseline read_family_baseline(const std::string& path);
 
 // Throws UsageError unless the baseline ran scenarios of duration_s and holds exactly seeds
 // [first, first + count): figures of other seeds, or of the same seeds run for another time,
-// would compare other scenarios. (What-ifs such as --ideal or --set may differ: comparing them
-// is the point.)
-void check_same_run(const FamilyBaseline& base, std::uint64_t first, int count, double duration_s);
+// would compare other scenarios. So would other eyes: `recording` is this run's
+// "recording=PATH" entry of settings_changed ("" for the family's own eyes), and the
+// baseline's must be the same. (What-ifs such as --ideal, --criteria or --set may differ:
+// comparing them is the point.)
+void check_same_run(const FamilyBaseline& base, std::uint64_t first, int count, double duration_s,
+                    const std::string& recording = "");
 
 // The comparison section of family.md (members: the seeds of the baseline, in order, else
 // UsageError): per target, how many seeds are within before and now, and

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "apps/gazelod/eval/family_recording.hpp"
 
+#include "apps/gazelod/eval/family.hpp"
+#include "apps/gazelod/run/session.hpp"
+
 #include "apps/gazelod/commands/command.hpp"
 #include "auxiliary/time.hpp"
 #include "gaze/trace_error.hpp"
@@ -10,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <vector>
@@ -31,24 +35,27 @@ FamilyRecording read_family_recording(const std::string& path, gaze::TraceFormat
   const std::filesystem::path abs = std::filesystem::absolute(path, ec);
   r.path = ec ? path : abs.lexically_normal().string();
   r.format = format;
-  std::int64_t first = 0, last = 0;
-  int valid = 0;
+  // The span between the first and the last VALID samples: rows after the last valid one would
+  // replay as one long blink, every frame suppressed and nothing audited.
+  std::int64_t first_valid_ns = 0, last_valid_ns = 0;
+  int valid = 0, poses = 0;
   try {
     std::unique_ptr<gaze::RecordStream> stream = gaze::open_trace(r.path, format);
-    r.has_head = stream->has_head();
     gaze::TraceRecord rec;
-    bool any = false;
     while (stream->next(rec)) {
-      if (!any) first = rec.gaze.t_ns, any = true;
-      last = std::max(last, rec.gaze.t_ns);
-      valid += rec.gaze.valid ? 1 : 0;
+      poses += rec.has_head && rec.head.valid ? 1 : 0;
+      if (!rec.gaze.valid) continue;
+      if (valid++ == 0) first_valid_ns = rec.gaze.t_ns;
+      last_valid_ns = rec.gaze.t_ns;
     }
   } catch (const gaze::TraceError& e) {
     throw UsageError(std::string("--recording: ") + e.what(), 1);
   }
-  if (valid < 2) throw UsageError("--recording: " + path + ": fewer than two valid gaze samples", 1);
-  r.span_s = aux::seconds_from_ns(last - first);
-  if (!(r.span_s >= 1.0)) throw UsageError("--recording: " + path + ": shorter than 1 s", 1);
+  if (valid < 2) throw UsageError("--recording: " + r.path + ": fewer than two valid gaze samples", 1);
+  // head_track needs two poses; with fewer the head stands still and gaze_track labels in it.
+  r.has_head = poses >= 2;
+  r.span_s = aux::seconds_from_ns(last_valid_ns - first_valid_ns);
+  if (!(r.span_s >= 1.0)) throw UsageError("--recording: " + r.path + ": its valid samples span less than 1 s", 1);
   return r;
 }
 
@@ -66,6 +73,15 @@ std::string with_recording(const std::string& scenario_json, const FamilyRecordi
   for (const nlohmann::json& e : j.at("effects"))
     if (!kReplaced.count(e.at("type").get<std::string>())) effects.push_back(e);
   j["effects"] = effects;
+  // A walking seed's walk is the field coming toward the viewer (and the pursuit target with
+  // it), not an effect: the recorded head moves as it moved, so the field stands still.
+  nlohmann::json& scene = j.at("scene");
+  double walk_m_s = 0.0;
+  for (nlohmann::json& g : scene["generators"])
+    if (g.contains("forward_speed_m_s")) walk_m_s = g["forward_speed_m_s"].get<double>(), g["forward_speed_m_s"] = 0.0;
+  if (walk_m_s != 0.0)
+    for (nlohmann::json& o : scene["objects"])
+      if (o.contains("velocity_m_s")) o["velocity_m_s"][2] = o["velocity_m_s"][2].get<double>() + walk_m_s;
   j["duration_s"] = recording_duration_s(j.at("duration_s").get<double>(), recording);
   return j.dump(2);
 }
@@ -86,6 +102,19 @@ std::string recording_summary(const std::string& summary, const FamilyRecording&
   if (k < parts.size() && parts[k].rfind("pursuit", 0) == 0) ++k;
   for (; k < parts.size(); ++k) out << ", " << parts[k];
   return out.str();
+}
+
+void apply_recording_flags(const std::string* recording, const std::string& format, const std::string& criteria,
+                           FamilySettings& settings) {
+  const std::optional<gaze::TraceFormat> parsed = gaze::parse_trace_format(format);
+  if (!parsed) throw UsageError("--recording-format: unknown trace format '" + format + "'");
+  if (recording && recording->empty()) throw UsageError("--recording: expected a file, got ''");
+  const std::string chosen = !criteria.empty() ? criteria : recording ? "size,eccentricity" : "all";
+  settings.criteria = parse_criteria(chosen);
+  if (chosen != "all") settings.changed.push_back("criteria=" + chosen);
+  if (!recording) return;
+  settings.recording = read_family_recording(*recording, *parsed);
+  settings.changed.push_back("recording=" + settings.recording->path);
 }
 
 }  // namespace gazelod::cli

@@ -3,7 +3,8 @@
 // poses) under the family's displays, trackers and object fields. Each seed's scenario keeps
 // its display, its tracker (rate, latency, noise, dropouts, a calibration offset) and its
 // field; its scripted head motion, eye movements and blinks give way to the recording, replayed
-// by head_track and gaze_track (sim/scenarios/README.md). The truth is then the recording's:
+// by head_track and gaze_track (sim/scenarios/README.md), and a walking seed's field stops
+// coming toward the viewer (the recorded head moves as it moved). The truth is then the recording's:
 // see docs/evaluation.md, "Real eyes", for what that does and does not measure.
 #pragma once
 

@@ -5,8 +5,12 @@
 # (XR_EXT_conformance_automation) and the eye-gaze tests. Needs ../shared beside the checkout
 # (../shared/tools/openxr-cts/run-cts.sh builds the CTS once, about 12 minutes on 2 cores,
 # cached in ~/.cache/gazelod-cts). docs/runtime.md, "Conformance", lists what it runs.
+# Khronos's Vulkan validation layer watches every run: a Vulkan call the runtime gets wrong is
+# undefined behaviour that lavapipe survives most of the time, so a passing test case alone does
+# not show it (one CI run crashed in SwapchainsRender; the layer then showed sRGB storage images
+# the device cannot make).
 #
-#   bash scripts/cts.sh [OUT_DIR]     exit 0 when no test case failed
+#   bash scripts/cts.sh [OUT_DIR]     exit 0 when no test case failed and no Vulkan call was invalid
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cts=../shared/tools/openxr-cts/run-cts.sh
@@ -16,4 +20,12 @@ bash scripts/install-deps.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j"$(nproc 2>/dev/null || echo 2)" --target gazelod_xr_runtime
 echo "cts: running the conformance suite on build/sim/runtime (results in $out)" >&2
-bash "$cts" build/sim/runtime/gazelod_xr_runtime.json "$out"
+status=0
+VK_INSTANCE_LAYERS=VK_LAYER_KHRONOS_validation bash "$cts" build/sim/runtime/gazelod_xr_runtime.json "$out" || status=$?
+invalid=$(cat "$out"/*.out "$out"/*.err 2>/dev/null | grep -c "Validation Error" || true)
+if [ "$invalid" -gt 0 ]; then
+  echo "cts: $invalid Vulkan validation errors (in $out/*.out), the first:" >&2
+  cat "$out"/*.out "$out"/*.err | grep -m 3 "Validation Error" | cut -c1-400 >&2
+  status=1
+fi
+exit "$status"

@@ -147,6 +147,7 @@ struct Action {
 struct SwapchainImage {
   VkImage image = VK_NULL_HANDLE;
   VkDeviceMemory memory = VK_NULL_HANDLE;
+  bool laid_out = false;  // moved to the attachment layout (at its first acquire)
 };
 
 struct Swapchain {

@@ -93,6 +93,9 @@ XrResult AcquireSwapchainImage(XrSwapchain swapchain, const XrSwapchainImageAcqu
     const bool is_static = sc->info.createFlags & XR_SWAPCHAIN_CREATE_STATIC_IMAGE_BIT;
     if (is_static && sc->static_acquired) return XR_ERROR_CALL_ORDER_INVALID;
     if (sc->acquired.size() >= sc->images.size()) return XR_ERROR_CALL_ORDER_INVALID;
+    const Session* s = runtime().sessions.find(sc->session_id);
+    if (s == nullptr) return XR_ERROR_HANDLE_INVALID;
+    if (XrResult r = prepare_vulkan_image(*s, *sc, sc->next_index); r != XR_SUCCESS) return r;
     *index = sc->next_index;
     sc->acquired.push_back(sc->next_index);
     sc->next_index = (sc->next_index + 1) % static_cast<std::uint32_t>(sc->images.size());

@@ -45,8 +45,22 @@ bool find_memory_type(VkPhysicalDevice pd, std::uint32_t type_bits, std::uint32_
   return false;
 }
 
-// Moves every image to the layout the application finds at acquire time.
-VkResult transition_layouts(const Session& s, const Swapchain& sc, VkImageLayout layout, VkImageAspectFlags aspect) {
+// The layout the application finds an image in when xrWaitSwapchainImage returns
+// (XR_KHR_vulkan_enable "Swapchain Image Resource State"); UNDEFINED when the image is neither a
+// colour nor a depth attachment, where there is no such promise.
+VkImageLayout attachment_layout(const XrSwapchainCreateInfo& info, VkImageAspectFlags* aspect) {
+  *aspect = VK_IMAGE_ASPECT_COLOR_BIT;
+  if (info.usageFlags & XR_SWAPCHAIN_USAGE_COLOR_ATTACHMENT_BIT) return VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+  if (!(info.usageFlags & XR_SWAPCHAIN_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT)) return VK_IMAGE_LAYOUT_UNDEFINED;
+  *aspect = VK_IMAGE_ASPECT_DEPTH_BIT;
+  const auto format = static_cast<VkFormat>(info.format);
+  if (format == VK_FORMAT_D24_UNORM_S8_UINT || format == VK_FORMAT_D32_SFLOAT_S8_UINT)
+    *aspect |= VK_IMAGE_ASPECT_STENCIL_BIT;
+  return VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+}
+
+// Moves one image from UNDEFINED to `layout` on the application's queue, and waits.
+VkResult transition_layout(const Session& s, VkImage image, VkImageLayout layout, VkImageAspectFlags aspect) {
   VkQueue queue = VK_NULL_HANDLE;
   vkGetDeviceQueue(s.vk_device, s.vk_queue_family, s.vk_queue_index, &queue);
   VkCommandPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
@@ -65,17 +79,15 @@ VkResult transition_layouts(const Session& s, const Swapchain& sc, VkImageLayout
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     vkBeginCommandBuffer(cmd, &begin);
-    for (const SwapchainImage& img : sc.images) {
-      VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
-      b.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-      b.newLayout = layout;
-      b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-      b.image = img.image;
-      b.subresourceRange = {aspect, 0, VK_REMAINING_MIP_LEVELS, 0, VK_REMAINING_ARRAY_LAYERS};
-      b.dstAccessMask = 0;
-      vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0, 0, nullptr,
-                           0, nullptr, 1, &b);
-    }
+    VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+    b.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    b.newLayout = layout;
+    b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    b.image = image;
+    b.subresourceRange = {aspect, 0, VK_REMAINING_MIP_LEVELS, 0, VK_REMAINING_ARRAY_LAYERS};
+    b.dstAccessMask = 0;
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0, 0, nullptr, 0,
+                         nullptr, 1, &b);
     vkEndCommandBuffer(cmd);
     VkFenceCreateInfo fence_info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
     r = vkCreateFence(s.vk_device, &fence_info, nullptr, &fence);
@@ -123,6 +135,16 @@ XrResult create_vulkan_images(const Session& s, Swapchain& sc, std::uint32_t cou
   ici.usage = vk_usage(info.usageFlags);
   ici.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
   ici.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+  // Creating an image the device cannot make is undefined behaviour, not an error code (lavapipe
+  // crashed now and then on sRGB storage images): ask first, and refuse the usage instead.
+  VkImageFormatProperties limits{};
+  if (vkGetPhysicalDeviceImageFormatProperties(s.vk_physical_device, ici.format, ici.imageType, ici.tiling, ici.usage,
+                                               ici.flags, &limits) != VK_SUCCESS)
+    return XR_ERROR_FEATURE_UNSUPPORTED;
+  if (ici.mipLevels > limits.maxMipLevels || ici.arrayLayers > limits.maxArrayLayers ||
+      ici.extent.width > limits.maxExtent.width || ici.extent.height > limits.maxExtent.height ||
+      !(limits.sampleCounts & ici.samples))
+    return XR_ERROR_FEATURE_UNSUPPORTED;
   for (std::uint32_t i = 0; i < count; ++i) {
     SwapchainImage img;
     VkResult r = vkCreateImage(s.vk_device, &ici, nullptr, &img.image);
@@ -144,24 +166,22 @@ XrResult create_vulkan_images(const Session& s, Swapchain& sc, std::uint32_t cou
       return XR_ERROR_RUNTIME_FAILURE;
     }
   }
-  VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;
-  VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT;
-  if (info.usageFlags & XR_SWAPCHAIN_USAGE_COLOR_ATTACHMENT_BIT) {
-    layout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-  } else if (info.usageFlags & XR_SWAPCHAIN_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT) {
-    layout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
-    aspect = VK_IMAGE_ASPECT_DEPTH_BIT;
-    if (format == VK_FORMAT_D24_UNORM_S8_UINT || format == VK_FORMAT_D32_SFLOAT_S8_UINT)
-      aspect |= VK_IMAGE_ASPECT_STENCIL_BIT;
-  }
+  return XR_SUCCESS;
+}
+
+XrResult prepare_vulkan_image(const Session& s, Swapchain& sc, std::uint32_t index) {
+  SwapchainImage& img = sc.images[index];
+  if (img.laid_out) return XR_SUCCESS;
+  VkImageAspectFlags aspect = 0;
+  const VkImageLayout layout = attachment_layout(sc.info, &aspect);
   if (layout != VK_IMAGE_LAYOUT_UNDEFINED) {
-    if (VkResult r = transition_layouts(s, sc, layout, aspect); r != VK_SUCCESS) {
+    if (VkResult r = transition_layout(s, img.image, layout, aspect); r != VK_SUCCESS) {
       std::fprintf(stderr, "gazelod_xr_runtime: swapchain layout transition failed (VkResult %d)\n",
                    static_cast<int>(r));
-      destroy_vulkan_images(s, sc);
       return XR_ERROR_RUNTIME_FAILURE;
     }
   }
+  img.laid_out = true;
   return XR_SUCCESS;
 }
 

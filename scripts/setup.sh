@@ -11,6 +11,8 @@ cd "$(dirname "$0")/.."
 what="${1:-}"
 [ $# -gt 0 ] && shift
 jobs="$(nproc 2>/dev/null || echo 2)"
+# Each step's header says how long the run has taken so far (CI has a time limit to keep under).
+step() { echo "== $1 (at $((SECONDS / 60)) min $((SECONDS % 60)) s) =="; }
 
 bash scripts/install-deps.sh
 
@@ -37,9 +39,9 @@ case "$what" in
   test)
     build build -DGAZELOD_BUILD_TESTS=ON -DGAZELOD_BUILD_BENCH=ON
     bash scripts/install-gltf-validator.sh build/gltf-validator
-    echo "== tests (release) =="
+    step "tests (release)"
     ctest --test-dir build --output-on-failure -j"$jobs" --timeout 600
-    echo "== unit tests under AddressSanitizer + UndefinedBehaviorSanitizer =="
+    step "unit tests under AddressSanitizer + UndefinedBehaviorSanitizer"
     # -O1 -g1: sanitizer builds compile fast and still give line numbers in reports.
     # GAZELOD_NO_CLONES: the selection kernels' baseline x86-64 code, which the release
     # build's load-time dispatch never runs on a machine with AVX2 or AVX-512.
@@ -47,7 +49,7 @@ case "$what" in
       "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -g1 -DGAZELOD_NO_CLONES" -- gazelod_unit_tests
     ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
       ctest --test-dir build-asan --output-on-failure -j"$jobs" -L unit --timeout 600
-    echo "== HID reader thread, the cluster bake's and selection's thread pools and the C ABI's threads under ThreadSanitizer =="
+    step "HID reader thread, the cluster bake's and selection's thread pools and the C ABI's threads under ThreadSanitizer"
     # GAZELOD_NO_CLONES here too: the selection kernels' ifunc resolvers would run inside
     # libgazelod.so before the ThreadSanitizer runtime is set up (test_capi crashed loading it).
     build build-tsan -DGAZELOD_TSAN=ON -DGAZELOD_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=Debug \
@@ -67,8 +69,9 @@ case "$what" in
     TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 ./build-tsan/tests/plugin/test_plugin_cluster_policy --gtest_brief=1
     TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 ./build-tsan/tests/bake/test_bake_clusters \
       --gtest_filter='ClusterBuild.SameHierarchyOnAnyThreadCount*:ClusterBuild.OpenGridSimplifiesItsRimWithoutCrack:SharedPositions.TiledTerrainKeepsTileSeamsAndSimplifiesTheRim:ClusterGltf.SideBySideBuildsWriteTheSameFile'
-    echo "== every libFuzzer target builds (clang, ASan+UBSan) and runs 10 s from its seeds =="
+    step "every libFuzzer target builds (clang, ASan+UBSan) and runs 10 s from its seeds"
     FUZZ_SECONDS=10 bash scripts/fuzz.sh
+    step "done"
     ;;
   *)
     echo "usage: bash scripts/setup.sh run|test" >&2

@@ -2,6 +2,9 @@
 // VkImage creation for swapchains (see vulkan_images.hpp).
 #include "sim/runtime/vulkan_images.hpp"
 
+#include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <cstdio>
 
 namespace gazelod::xrrt {
@@ -59,6 +62,8 @@ VkImageLayout attachment_layout(const XrSwapchainCreateInfo& info, VkImageAspect
   return VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
 }
 
+constexpr std::uint64_t kTransitionTimeout_ns = 5'000'000'000;
+
 // Moves one image from UNDEFINED to `layout` on the application's queue, and waits.
 VkResult transition_layout(const Session& s, VkImage image, VkImageLayout layout, VkImageAspectFlags aspect) {
   VkQueue queue = VK_NULL_HANDLE;
@@ -96,7 +101,15 @@ VkResult transition_layout(const Session& s, VkImage image, VkImageLayout layout
       submit.commandBufferCount = 1;
       submit.pCommandBuffers = &cmd;
       r = vkQueueSubmit(queue, 1, &submit, fence);
-      if (r == VK_SUCCESS) r = vkWaitForFences(s.vk_device, 1, &fence, VK_TRUE, UINT64_MAX);
+      // Behind whatever the application queued before it, under the runtime's lock: bounded, so
+      // that work which never finishes fails this call instead of hanging every other one.
+      if (r == VK_SUCCESS) r = vkWaitForFences(s.vk_device, 1, &fence, VK_TRUE, kTransitionTimeout_ns);
+      if (r == VK_TIMEOUT) {
+        // Still pending: destroying the fence or the pool now would be invalid, so both are
+        // left to the device's destruction.
+        std::fprintf(stderr, "gazelod_xr_runtime: swapchain layout change still pending after 5 s\n");
+        return r;
+      }
       vkDestroyFence(s.vk_device, fence, nullptr);
     }
   }
@@ -129,7 +142,14 @@ XrResult create_vulkan_images(const Session& s, Swapchain& sc, std::uint32_t cou
   ici.format = format;
   ici.extent = {info.width, info.height, 1};
   ici.mipLevels = info.mipCount;
-  ici.arrayLayers = info.arraySize * info.faceCount;
+  // Requests no Vulkan image can meet on any device: a cube's faces are square, and a chain has
+  // at most floor(log2(largest side)) + 1 levels.
+  if ((info.faceCount == 6 && info.width != info.height) ||
+      info.mipCount > static_cast<std::uint32_t>(std::bit_width(std::max(info.width, info.height))))
+    return XR_ERROR_VALIDATION_FAILURE;
+  const std::uint64_t layers = std::uint64_t{info.arraySize} * info.faceCount;  // no 32-bit wrap
+  if (layers > UINT32_MAX) return XR_ERROR_FEATURE_UNSUPPORTED;
+  ici.arrayLayers = static_cast<std::uint32_t>(layers);
   ici.samples = static_cast<VkSampleCountFlagBits>(info.sampleCount);
   ici.tiling = VK_IMAGE_TILING_OPTIMAL;
   ici.usage = vk_usage(info.usageFlags);

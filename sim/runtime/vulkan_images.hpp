@@ -13,9 +13,10 @@ namespace gazelod::xrrt {
 
 // Formats the session's physical device can render to (colour first, in preference order).
 std::vector<std::int64_t> vulkan_swapchain_formats(const Session& session);
-// Creates `count` images for the swapchain's create info. XR_ERROR_FEATURE_UNSUPPORTED when the
-// device cannot make such an image (a usage the format does not allow, a limit passed);
-// XR_ERROR_RUNTIME_FAILURE (with a message on stderr) when Vulkan refuses.
+// Creates `count` images for the swapchain's create info. XR_ERROR_VALIDATION_FAILURE for an
+// image no device can make (a cube with unequal sides, more mip levels than the full chain);
+// XR_ERROR_FEATURE_UNSUPPORTED when this device cannot (a usage the format does not allow, a
+// limit passed); XR_ERROR_RUNTIME_FAILURE (with a message on stderr) when Vulkan refuses.
 XrResult create_vulkan_images(const Session& session, Swapchain& swapchain, std::uint32_t count);
 // Moves image `index` to its attachment layout the first time it is acquired (queue work, so
 // only from xrAcquireSwapchainImage).

@@ -235,6 +235,39 @@ TEST(RuntimeVulkan, SwapchainsOfRealImagesOnLavapipe) {
   rig.destroy();
 }
 
+// Records and runs, on the application's queue, a barrier that says `image` is in `layout`: the
+// validation layer checks that claim against the layout it has tracked for the image.
+void claim_layout(const VulkanRig& rig, VkImage image, VkImageLayout layout, VkImageAspectFlags aspect) {
+  VkQueue queue = VK_NULL_HANDLE;
+  vkGetDeviceQueue(rig.device, rig.family, 0, &queue);
+  VkCommandPoolCreateInfo pci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+  pci.queueFamilyIndex = rig.family;
+  VkCommandPool pool = VK_NULL_HANDLE;
+  ASSERT_EQ(vkCreateCommandPool(rig.device, &pci, nullptr, &pool), VK_SUCCESS);
+  VkCommandBufferAllocateInfo cai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+  cai.commandPool = pool;
+  cai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+  cai.commandBufferCount = 1;
+  VkCommandBuffer cmd = VK_NULL_HANDLE;
+  ASSERT_EQ(vkAllocateCommandBuffers(rig.device, &cai, &cmd), VK_SUCCESS);
+  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  vkBeginCommandBuffer(cmd, &begin);
+  VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+  b.oldLayout = b.newLayout = layout;
+  b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  b.image = image;
+  b.subresourceRange = {aspect, 0, VK_REMAINING_MIP_LEVELS, 0, VK_REMAINING_ARRAY_LAYERS};
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0, 0, nullptr, 0,
+                       nullptr, 1, &b);
+  vkEndCommandBuffer(cmd);
+  VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+  submit.commandBufferCount = 1;
+  submit.pCommandBuffers = &cmd;
+  EXPECT_EQ(vkQueueSubmit(queue, 1, &submit, VK_NULL_HANDLE), VK_SUCCESS);
+  EXPECT_EQ(vkQueueWaitIdle(queue), VK_SUCCESS);
+  vkDestroyCommandPool(rig.device, pool, nullptr);
+}
+
 // An image the device cannot make (storage use of an sRGB format on lavapipe, too many array
 // layers) is refused with XR_ERROR_FEATURE_UNSUPPORTED, never created: creating it is undefined
 // behaviour in Vulkan, and the conformance suite crashed on it now and then. The layout change
@@ -285,24 +318,55 @@ TEST(RuntimeVulkan, ImagesTheDeviceCannotMakeAreRefusedNotCreated) {
     ++created;
     std::uint32_t count = 0, index = 0;
     ASSERT_EQ(xrEnumerateSwapchainImages(sc, 0, &count, nullptr), XR_SUCCESS);
+    std::vector<XrSwapchainImageVulkan2KHR> images(count, {XR_TYPE_SWAPCHAIN_IMAGE_VULKAN2_KHR});
+    ASSERT_EQ(
+        xrEnumerateSwapchainImages(sc, count, &count, reinterpret_cast<XrSwapchainImageBaseHeader*>(images.data())),
+        XR_SUCCESS);
     XrSwapchainImageWaitInfo wait{XR_TYPE_SWAPCHAIN_IMAGE_WAIT_INFO};
     wait.timeout = XR_INFINITE_DURATION;
     for (std::uint32_t i = 0; i < count; ++i) {
       ASSERT_EQ(xrAcquireSwapchainImage(sc, nullptr, &index), XR_SUCCESS);
       ASSERT_EQ(xrWaitSwapchainImage(sc, &wait), XR_SUCCESS);
+      // The specification's promise once the wait returns: the attachment layout.
+      const VkImageAspectFlags aspect =
+          !depth ? VK_IMAGE_ASPECT_COLOR_BIT
+                 : VK_IMAGE_ASPECT_DEPTH_BIT |
+                       (vk_format == VK_FORMAT_D24_UNORM_S8_UINT || vk_format == VK_FORMAT_D32_SFLOAT_S8_UINT
+                            ? VK_IMAGE_ASPECT_STENCIL_BIT
+                            : 0);
+      ASSERT_NO_FATAL_FAILURE(claim_layout(
+          rig, images[index].image,
+          depth ? VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL : VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, aspect));
       ASSERT_EQ(xrReleaseSwapchainImage(sc, nullptr), XR_SUCCESS);
     }
-    // Past the device's array-layer limit: refused as well.
-    sci.arraySize = props.maxArrayLayers + 1;
-    XrSwapchain too_many = XR_NULL_HANDLE;
-    EXPECT_EQ(xrCreateSwapchain(rig.session, &sci, &too_many), XR_ERROR_FEATURE_UNSUPPORTED);
+    // Past the device's array-layer limit, or so many that arraySize x 6 faces wraps in 32 bits:
+    // refused as well. A cube with unequal sides and more mip levels than 32 x 32 has (6) are no
+    // image at all.
+    XrSwapchain refused_sc = XR_NULL_HANDLE;
+    XrSwapchainCreateInfo bad = sci;
+    bad.arraySize = props.maxArrayLayers + 1;
+    EXPECT_EQ(xrCreateSwapchain(rig.session, &bad, &refused_sc), XR_ERROR_FEATURE_UNSUPPORTED);
+    bad = sci;
+    bad.faceCount = 6;
+    bad.arraySize = 0x2AAAAAABu;  // x 6 = 2^32 + 2
+    EXPECT_EQ(xrCreateSwapchain(rig.session, &bad, &refused_sc), XR_ERROR_FEATURE_UNSUPPORTED);
+    bad = sci;
+    bad.faceCount = 6;
+    bad.height = 16;
+    EXPECT_EQ(xrCreateSwapchain(rig.session, &bad, &refused_sc), XR_ERROR_VALIDATION_FAILURE);
+    bad = sci;
+    bad.mipCount = 7;
+    EXPECT_EQ(xrCreateSwapchain(rig.session, &bad, &refused_sc), XR_ERROR_VALIDATION_FAILURE);
+    bad.mipCount = 6;  // the full chain of 32 x 32
+    ASSERT_EQ(xrCreateSwapchain(rig.session, &bad, &refused_sc), XR_SUCCESS);
+    EXPECT_EQ(xrDestroySwapchain(refused_sc), XR_SUCCESS);
     EXPECT_EQ(xrDestroySwapchain(sc), XR_SUCCESS);
   }
   // Both branches ran: lavapipe has formats with storage use (UNORM) and without (sRGB).
   EXPECT_GT(refused, 0);
   EXPECT_GT(created, 0);
+  rig.destroy();  // the layer reports what was left alive when the device goes
   for (const std::string& e : rig.validation_errors) ADD_FAILURE() << "Vulkan validation: " << e;
-  rig.destroy();
 }
 
 // xrRequestExitSession before the first xrWaitFrame: STOPPING follows only SYNCHRONIZED

@@ -3,6 +3,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -12,6 +13,18 @@ namespace {
 const char* const kGaze[3] = {"gaze_point_3d_x", "gaze_point_3d_y", "gaze_point_3d_z"};
 const char* const kEye0[3] = {"eye_center0_3d_x", "eye_center0_3d_y", "eye_center0_3d_z"};
 const char* const kEye1[3] = {"eye_center1_3d_x", "eye_center1_3d_y", "eye_center1_3d_z"};
+
+// An eye centre is centimetres from the scene camera; a metre bounds any headset's geometry and
+// keeps target - origin far from overflow.
+constexpr double kMaxEyeCentreMm = 1000.0;
+
+// |d| without overflow: a gaze point near the double range (finite, so accepted as a number)
+// would square to infinity and normalise to NaN.
+double scaled_length(const glm::dvec3& d) {
+  const double m = std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z)});
+  if (!(m > 0.0) || !std::isfinite(m)) return m;
+  return m * glm::length(d / m);
+}
 
 }  // namespace
 
@@ -75,6 +88,10 @@ void PupilReader::parse_row(TraceRecord& out) {
   for (const auto& [cols, names] : {std::pair{eye0_, kEye0}, std::pair{eye1_, kEye1}}) {
     if (!cols) continue;
     if (auto e = point_mm(*cols, names)) {
+      for (int k = 0; k < 3; ++k)
+        if (!(std::abs((*e)[k]) <= kMaxEyeCentreMm))
+          c.fail(c.fields()[(*cols)[static_cast<std::size_t>(k)]].column,
+                 std::string(names[k]) + ": outside +-1000 mm of the scene camera (not an eye centre)");
       origin_mm += *e;
       ++eyes;
     }
@@ -85,7 +102,7 @@ void PupilReader::parse_row(TraceRecord& out) {
   out.gaze.origin_m = pupil_camera_to_openxr_m(origin_mm);
   if (!target) return;  // missing 3D gaze point: invalid sample
   const glm::dvec3 d = pupil_camera_to_openxr_m(*target - origin_mm);
-  const double len = glm::length(d);
+  const double len = scaled_length(d);
   if (!(len > 1e-9)) {
     if (conf >= pupil_.min_confidence) c.fail(c.fields()[gaze_[0]].column, "gaze point coincides with the eye centre");
     return;

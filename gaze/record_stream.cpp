@@ -13,8 +13,12 @@ bool CsvRecordStream::next(TraceRecord& out) {
     try {
       TraceRecord rec;
       parse_row(rec);
+      const std::size_t col = time_field_ < cursor_.fields().size() ? cursor_.fields()[time_field_].column : 0;
+      // Within +-2^62 ns (146 years) any two times' difference fits in 64 bits: every reader
+      // downstream subtracts them.
+      if (rec.gaze.t_ns >= kMaxTraceTimeNs || rec.gaze.t_ns <= -kMaxTraceTimeNs)
+        cursor_.fail(col, "time " + std::to_string(rec.gaze.t_ns) + " ns is not within +-2^62 ns (146 years)");
       if (have_last_ && rec.gaze.t_ns < last_t_ns_) {
-        const std::size_t col = time_field_ < cursor_.fields().size() ? cursor_.fields()[time_field_].column : 0;
         cursor_.fail(col, "time goes backwards: " + std::to_string(rec.gaze.t_ns) + " ns after " +
                               std::to_string(last_t_ns_) + " ns");
       }

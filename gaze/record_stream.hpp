@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // A stream of trace records read one at a time from a CSV file: gazelod's own format or an
 // imported layout. Strict mode throws TraceError at the first bad line; lenient mode skips bad
-// lines and lists them in skipped() (never silent). Time must never go backwards.
+// lines and lists them in skipped() (never silent). Time must never go backwards, and stays
+// within +-kMaxTraceTimeNs.
 #pragma once
 
 #include "gaze/csv_cursor.hpp"
@@ -12,6 +13,10 @@
 #include <string>
 
 namespace gazelod::gaze {
+
+// 2^62 ns, about 146 years: times a reader accepts lie strictly within it, so the difference
+// of any two fits in 64 bits.
+inline constexpr std::int64_t kMaxTraceTimeNs = std::int64_t{1} << 62;
 
 struct ReadOptions {
   bool lenient = false;  // skip bad lines (counted and listed) instead of failing

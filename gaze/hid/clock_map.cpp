@@ -28,6 +28,7 @@ void ClockMap::restart(std::uint64_t raw, std::int64_t host_receive_ns) {
   windows_.clear();
   windows_.push_back({0, static_cast<double>(host_receive_ns)});
   refit();
+  last_mapped_ns_ = host_receive_ns;
 }
 
 std::int64_t ClockMap::map(std::uint64_t device_us, std::int64_t host_receive_ns) {
@@ -51,6 +52,12 @@ std::int64_t ClockMap::map(std::uint64_t device_us, std::int64_t host_receive_ns
 
   const double offset = static_cast<double>(host_receive_ns - device_ns_);
   if (device_ns_ - window_start_ns_ >= config_.window_ns) {
+    // The window just completed. A minimum well under what the fit predicts proves the earlier
+    // minima inflated (offsets only overestimate: a reader thread running behind for a while);
+    // kept, they would tilt the line and extrapolate under the true offset.
+    const Window& done = windows_.back();
+    if (windows_.size() >= 2 && done.offset_ns < offset_at(done.device_ns) - static_cast<double>(config_.stale_drop_ns))
+      windows_.erase(windows_.begin(), windows_.end() - 1);
     window_start_ns_ = device_ns_;
     windows_.push_back({device_ns_, offset});
     while (windows_.size() > config_.max_windows) windows_.pop_front();
@@ -58,9 +65,17 @@ std::int64_t ClockMap::map(std::uint64_t device_us, std::int64_t host_receive_ns
     windows_.back() = {device_ns_, offset};
   }
   refit();
-  const double mapped = static_cast<double>(device_ns_) + offset_at(device_ns_);
-  // The sample cannot have been taken after it arrived.
-  return std::min(static_cast<std::int64_t>(std::llround(mapped)), host_receive_ns);
+  // The newest windows' minima bound the offset from above as well (a transfer only adds
+  // latency). After the latency drops (a host busy at start-up), the fit over up to
+  // max_windows earlier windows stays high for as long; they correct it at once.
+  double offset_used = std::min(offset_at(device_ns_), windows_.back().offset_ns);
+  if (windows_.size() >= 2) offset_used = std::min(offset_used, windows_[windows_.size() - 2].offset_ns);
+  const auto mapped = static_cast<std::int64_t>(std::llround(static_cast<double>(device_ns_) + offset_used));
+  // The sample cannot have been taken after it arrived, nor before the previous sample (device
+  // times only increase; an offset lowered since then would otherwise place it earlier, and a
+  // recorded trace would go backwards in time).
+  last_mapped_ns_ = std::min(std::max(mapped, last_mapped_ns_), host_receive_ns);
+  return last_mapped_ns_;
 }
 
 void ClockMap::refit() {

@@ -23,6 +23,7 @@ struct ClockMapConfig {
   std::size_t max_windows = 40;                      // fit over the last ~20 s
   double max_drift_ppm = 1000.0;                     // crystals are within ~100 ppm; clamp the fit
   std::int64_t max_forward_gap_ns = 10'000'000'000;  // a larger jump means a restarted device
+  std::int64_t stale_drop_ns = 1'000'000;            // a window's minimum this far under the fit: earlier ones dropped
 };
 
 class ClockMap {
@@ -30,7 +31,8 @@ class ClockMap {
   explicit ClockMap(ClockMapConfig config = {});
 
   // Feeds one report: its device timestamp and when the host received it. Returns the host
-  // time at which the sample was taken (never later than `host_receive_ns`).
+  // time at which the sample was taken: never later than `host_receive_ns`, never before the
+  // previous sample's (after a restart of the device clock, its receive time).
   std::int64_t map(std::uint64_t device_us, std::int64_t host_receive_ns);
 
   // Forgets everything (after a reconnect the device clock may have restarted).
@@ -59,6 +61,7 @@ class ClockMap {
   std::uint64_t last_raw_ = 0;
   std::int64_t device_ns_ = 0;
   std::int64_t window_start_ns_ = 0;
+  std::int64_t last_mapped_ns_ = 0;
   std::deque<Window> windows_;                            // completed windows, then the current one at the back
   double fit_x_ns_ = 0.0, fit_y_ns_ = 0.0, slope_ = 0.0;  // offset(x) = fit_y + slope (x - fit_x)
   std::size_t clock_resets_ = 0;

@@ -105,6 +105,7 @@ void HidTracker::run() {
       continue;
     }
     if (n > 0) handle_report(buf.data(), static_cast<std::size_t>(n), now);
+    check_silence(now);  // Status, malformed or unknown reports carry no gaze either
   }
   if (dev_) close_device(false);
 }
@@ -112,8 +113,12 @@ void HidTracker::run() {
 bool HidTracker::try_open() {
   std::string path = config_.path;
   if (path.empty()) {
-    const auto found = list_trackers();
-    if (!found.empty()) path = found.front().path;
+    // The first eye tracker: a head tracker (usage 2) on the same page gives no gaze.
+    for (const TrackerInfo& t : list_trackers())
+      if (t.usage == kUsageEyeTracker) {
+        path = t.path;
+        break;
+      }
   }
   // Only a hidraw device reaches hidapi: it crashes reading the udev parent of anything else.
   // (A path hidapi enumerated is one; a configured path is the user's word.)
@@ -150,11 +155,37 @@ bool HidTracker::try_open() {
   if (hid_send_feature_report(dev_, control.data(), control.size()) < 0)
     log("could not send the Control report (mode request): " + to_utf8(hid_error(dev_)));
   const DeviceState st = device_state();
-  set_status(st.screen ? "ok" : "connected, but no screen size (configure one)");
-  log("opened " + path + (st.screen ? "" : "; no screen size known, samples are invalid"));
+  last_tracking_ns_ = config_.host_now_ns();
+  said_silent_ = false;
+  set_status(open_status());
+  std::string why;
+  if (!st.screen)
+    why = "; no screen size known, samples are invalid";
+  else if (st.status && st.status->configuration_status != ConfigurationStatus::kReady)
+    why = std::string("; tracker not ready (") + to_string(st.status->configuration_status) +
+          "), samples are invalid until it is";
+  log("opened " + path + why);
   // Published last: whoever sees connected() then sees this connection's status and log line.
   connected_ = true;
   return true;
+}
+
+std::string HidTracker::open_status() const {
+  const DeviceState st = device_state();
+  if (!st.screen) return "connected, but no screen size (configure one)";
+  if (st.status && st.status->configuration_status != ConfigurationStatus::kReady)
+    return std::string("connected, tracker not ready (") + to_string(st.status->configuration_status) + ")";
+  return "ok";
+}
+
+void HidTracker::check_silence(std::int64_t now_ns) {
+  if (said_silent_ || !dev_) return;
+  const std::int64_t silent_ns = now_ns - last_tracking_ns_;
+  if (silent_ns < std::int64_t{config_.silence_ms} * 1'000'000) return;
+  said_silent_ = true;
+  const std::string line = "connected, but no gaze reports for " + std::to_string(config_.silence_ms) + " ms";
+  set_status(line);  // before the log line, as elsewhere
+  log(line + " (device still open); gaze unavailable until they resume");
 }
 
 void HidTracker::read_features() {
@@ -249,6 +280,12 @@ void HidTracker::handle_report(const std::uint8_t* data, std::size_t size, std::
       if (!d) return bad_report(counters_.malformed, d.error->to_string());
       const std::size_t resets_before = clock_.clock_resets();
       const std::int64_t t_ns = clock_.map(d.value->timestamp_us, host_ns);
+      last_tracking_ns_ = host_ns;
+      if (said_silent_) {
+        said_silent_ = false;
+        set_status(open_status());
+        log("gaze reports resumed");
+      }
       const DeviceState st = device_state();
       GazeSample s = st.screen ? gaze_from_screen(*d.value, *st.screen) : GazeSample{};
       // A tracker that says it is not ready (calibrating, needs setup) is not trusted.
@@ -270,8 +307,10 @@ void HidTracker::handle_report(const std::uint8_t* data, std::size_t size, std::
         before = state_.status;
         state_.status = *d.value;
       }
-      if (!before || before->configuration_status != d.value->configuration_status)
+      if (!before || before->configuration_status != d.value->configuration_status) {
+        if (!said_silent_) set_status(open_status());  // before its log line
         log(std::string("tracker status: ") + to_string(d.value->configuration_status));
+      }
       return;
     }
     default:

@@ -42,6 +42,9 @@ struct HidTrackerConfig {
   std::size_t queue_capacity = 256;  // ~1 s at 250 Hz
   int read_timeout_ms = 20;          // how often the thread checks for stop()
   int reopen_interval_ms = 250;
+  // No Tracking Data report for this long while the device stays open: the status says so and
+  // one line is logged (a tracker can stop streaming without being unplugged).
+  int silence_ms = 1000;
   // Where log lines go ("gazelod hid: " is prepended). Default: stderr. Called on the thread.
   std::function<void(const std::string&)> log;
   // Host clock in ns (the frame loop's clock). Default: std::chrono::steady_clock.
@@ -84,7 +87,9 @@ class HidTracker {
   bool drain(std::vector<GazeSample>& out) { return queue_.drain(out); }
   HidCounters counters() const;
   DeviceState device_state() const;
-  std::string status() const;  // one line: "ok", "no device", "unplugged", ...
+  // One line: "ok", "no device", "unplugged", "connected, tracker not ready (...)",
+  // "connected, but no gaze reports for 1 s", ...
+  std::string status() const;
 
  private:
   void run();
@@ -95,6 +100,8 @@ class HidTracker {
   void bad_report(std::uint64_t& counter, const std::string& line);
   void log(const std::string& line);
   void set_status(std::string s);
+  std::string open_status() const;  // the status of an open device, from what it said
+  void check_silence(std::int64_t now_ns);
   bool wait_for_stop(int ms);
 
   HidTrackerConfig config_;
@@ -108,6 +115,8 @@ class HidTracker {
 
   ::hid_device_* dev_ = nullptr;  // only touched on the thread
   bool said_no_device_ = false;
+  std::int64_t last_tracking_ns_ = 0;  // host time of the last Tracking Data report (or the open)
+  bool said_silent_ = false;
 
   mutable std::mutex state_mutex_;  // guards state_, status_, counters_
   DeviceState state_;

@@ -5,6 +5,7 @@
 #include "gaze/trace_open.hpp"
 #include "tests/gaze/trace_test_util.hpp"
 
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -94,6 +95,22 @@ TEST(Pupil, LenientCountsBadLines) {
   ASSERT_EQ(r.skipped().skipped, 1u);
   EXPECT_EQ(r.skipped().first[0].line, 3u);
   EXPECT_EQ(r.skipped().first[0].column, 7u);
+}
+
+// Numbers near the double range are numbers: they must give a unit direction or a located
+// error, never a NaN or zero direction marked valid (squaring 1e200 overflows).
+TEST(Pupil, HugeCoordinatesGiveUnitDirectionsOrErrors) {
+  const auto r = read_all<PupilReader>(std::string(kPupilHeader) + "1,0,0.9,0,0,x,1e200,0,0,,,,,,\n" +
+                                       "1.1,0,0.9,0,0,x,0,1.7e308,1e300,-30,0,-20,30,0,-20\n");
+  ASSERT_EQ(r.size(), 2u);
+  for (const auto& rec : r) {
+    ASSERT_TRUE(rec.gaze.valid);
+    EXPECT_NEAR(glm::length(rec.gaze.direction), 1.0, 1e-12);
+  }
+  EXPECT_NEAR(r[0].gaze.direction.x, 1.0, 1e-12);
+  EXPECT_NEAR(r[1].gaze.direction.y, -1.0, 1e-12);  // camera +y (down) -> OpenXR -y
+  const std::string e = error_of<PupilReader>(std::string(kPupilHeader) + "1,0,0.9,0,0,x,1e308,0,500,-1e308,0,0,,,\n");
+  EXPECT_NE(e.find("in.csv:2:27: eye_center0_3d_x: outside +-1000 mm"), std::string::npos) << e;
 }
 
 TEST(TraceOpen, FormatsAndMissingFile) {

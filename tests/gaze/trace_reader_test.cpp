@@ -135,6 +135,11 @@ TEST(TraceReader, ErrorsNameLineAndColumn) {
       << error_of(h + "1,0,0,-1,1\n2,0,abc,-1,1\n");
   EXPECT_NE(error_of(h + "1,0,nan,-1,1\n").find("t.csv:2:5: gaze_y: NaN"), std::string::npos);
   EXPECT_NE(error_of(h + "5,0,0,-1,1\n4,0,0,-1,1\n").find("t.csv:3:1: time goes backwards"), std::string::npos);
+  // Times whose difference would overflow 64 bits (every consumer subtracts two of them).
+  EXPECT_NE(error_of(h + "-9223372036854775808,0,0,-1,1\n9223372036854775807,0,0,-1,1\n")
+                .find("t.csv:2:1: time -9223372036854775808 ns is not within +-2^62 ns"),
+            std::string::npos);
+  EXPECT_EQ(error_of(h + "-4611686018427387903,0,0,-1,1\n4611686018427387903,0,0,-1,1\n"), "");
   EXPECT_NE(error_of(h + "1,0,0,0,1\n").find("t.csv:2:3: zero gaze vector"), std::string::npos);
   EXPECT_NE(error_of(h + "1,0,0,-2,1\n").find("t.csv:2:3: gaze vector is not unit"), std::string::npos);
   EXPECT_NE(error_of(h + "1,0,0,-1,2\n").find("t.csv:2:10: valid"), std::string::npos);

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <climits>
 #include <cmath>
 #include <cstdint>
 
@@ -43,6 +44,35 @@ TEST(HidClockMap, RecoversOffsetAndDriftFromNoisyLatency) {
   EXPECT_LT(worst_ns, 200'000);
   EXPECT_NEAR(map.drift_ppm(), 80.0, 5.0);
   EXPECT_EQ(map.clock_resets(), 0u);
+}
+
+// A reader thread 20 ms behind for the first second (every report read 20 ms late), which then
+// catches up: the backlog arrives at one read, after which USB latency is 1-4 ms. The mapped
+// times must never go backwards (a recorded trace would be rejected), and the device's own
+// timing must be back at once: the fit over earlier windows alone stays 20 ms high until they
+// age out (20 s), leaving every sample at its jittered receive time.
+TEST(HidClockMap, CaughtUpBacklogNeitherReversesTimeNorLingers) {
+  for (const int rate_hz : {120, 250, 1000}) {
+    ClockMap map;
+    Latency lat{777, 1'000'000, 3'000'000};
+    const std::int64_t period_us = 1'000'000 / rate_hz;
+    const std::int64_t start_ns = 7'000'000'000, caught_up_ns = start_ns + 1'001'000'000;
+    std::int64_t previous = INT64_MIN, previous_recv = INT64_MIN, worst_ns = 0;
+    for (int i = 0; i < rate_hz * 5; ++i) {
+      const std::int64_t dev_us = i * period_us;
+      const std::int64_t true_host_ns = start_ns + dev_us * 1000;
+      std::int64_t recv = true_host_ns + 20'000'000;
+      if (recv >= caught_up_ns) recv = std::max(caught_up_ns, true_host_ns + lat.next(i));
+      recv = std::max(recv, previous_recv);  // one reader: reports arrive in order
+      previous_recv = recv;
+      const std::int64_t mapped = map.map(static_cast<std::uint64_t>(dev_us), recv);
+      ASSERT_GE(mapped, previous) << rate_hz << " Hz, sample " << i;
+      ASSERT_LE(mapped, recv);
+      previous = mapped;
+      if (dev_us >= 1'600'000) worst_ns = std::max(worst_ns, std::abs(mapped - (true_host_ns + 1'000'000)));
+    }
+    EXPECT_LT(worst_ns, 200'000) << rate_hz << " Hz";
+  }
 }
 
 TEST(HidClockMap, ThirtyTwoBitCounterWrapsWithoutAJump) {

@@ -81,17 +81,20 @@ class HidTrackerTest : public ::testing::Test {
 };
 
 TEST_F(HidTrackerTest, FindsTheTrackerByUsagePageAndRequestsGazeMode) {
-  fake_hid::plug({"/dev/hidraw-fake-kbd", 0x01, 0x06});  // a keyboard: not ours
+  fake_hid::plug({"/dev/hidraw-fake-kbd", 0x01, 0x06});     // a keyboard: not ours
+  fake_hid::plug({"/dev/hidraw-fake-a-head", 0x12, 0x02});  // a head tracker, listed first: no gaze
   plug_tracker();
   const auto listed = list_trackers();
-  ASSERT_EQ(listed.size(), 1u);
-  EXPECT_EQ(listed[0].path, kPath);
-  EXPECT_EQ(listed[0].product, "Fake Eye Tracker");
+  ASSERT_EQ(listed.size(), 2u);
+  EXPECT_EQ(listed[0].path, "/dev/hidraw-fake-a-head");
+  EXPECT_EQ(listed[1].path, kPath);
+  EXPECT_EQ(listed[1].product, "Fake Eye Tracker");
 
   HidTracker t(test_config(log));
   t.start();
   ASSERT_TRUE(wait_until([&] { return t.connected(); }));
   EXPECT_EQ(fake_hid::open_count("/dev/hidraw-fake-kbd"), 0);
+  EXPECT_EQ(fake_hid::open_count("/dev/hidraw-fake-a-head"), 0);
   const auto sent = fake_hid::sent_features(kPath);
   ASSERT_EQ(sent.size(), 1u);
   EXPECT_EQ(sent[0], (std::vector<std::uint8_t>{0x14, 0x07}));  // gaze | eye | head position
@@ -214,6 +217,30 @@ TEST_F(HidTrackerTest, NotReadyStatusMakesSamplesInvalidUntilReady) {
   EXPECT_FALSE(got[0].valid);
   EXPECT_TRUE(got[1].valid);
   EXPECT_EQ(log.count("tracker status: ready"), 1);
+}
+
+// The status says why gaze is missing: a tracker that needs calibration at open, and one that
+// stays plugged in but stops streaming (its other reports do not count as gaze).
+TEST_F(HidTrackerTest, StatusSaysNotReadyAndSilenceUntilGazeResumes) {
+  plug_tracker(4);  // user calibration needed
+  HidTrackerConfig c = test_config(log);
+  c.silence_ms = 300;
+  HidTracker t(c);
+  t.start();
+  ASSERT_TRUE(wait_until([&] { return t.connected(); }));
+  EXPECT_EQ(t.status(), "connected, tracker not ready (user calibration needed)");
+  EXPECT_EQ(log.count("tracker not ready (user calibration needed), samples are invalid"), 1);
+  fake_hid::push_input(kPath, Bytes{}.u8(kReportStatus).u8(1).u16(250).b);  // now ready
+  ASSERT_TRUE(wait_until([&] { return log.count("tracker status: ready") == 1; }));
+  ASSERT_TRUE(wait_until([&] { return t.status().find("no gaze reports for 300 ms") != std::string::npos; }));
+  fake_hid::push_input(kPath, Bytes{}.u8(0x42).pad(12).b);  // an unknown report is no gaze
+  ASSERT_TRUE(wait_until([&] { return t.counters().unknown == 1; }));
+  EXPECT_NE(t.status().find("no gaze reports"), std::string::npos);
+  fake_hid::push_input(kPath, gaze_at(1000, 263520));
+  ASSERT_TRUE(wait_until([&] { return t.status() == "ok"; }));
+  EXPECT_EQ(log.count("no gaze reports for 300 ms (device still open)"), 1);
+  EXPECT_EQ(log.count("gaze reports resumed"), 1);
+  EXPECT_TRUE(t.connected());
 }
 
 TEST_F(HidTrackerTest, WithoutAScreenSizeSamplesAreInvalidUnlessOneIsConfigured) {

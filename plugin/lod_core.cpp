@@ -61,12 +61,22 @@ void LodCore::set_primary(gaze::GazeSource* primary, GazeSourceKind kind, std::s
 
 std::uint32_t LodCore::add_object(const ObjectDesc& d) {
   const std::uint32_t id = store_.add(d.center_m, d.radius_m, d.velocity_m_s, d.lods);
-  chains_.push_back(d.lods);
-  importance_.push_back(d.importance);
+  try {
+    chains_.push_back(d.lods);
+    importance_.push_back(d.importance);
+    resize_outputs();
+  } catch (...) {
+    // Out of memory part-way: undone, so that the store and every per-object array keep one
+    // length (the C ABI's handle tables are sized by it). Shrinking allocates nothing.
+    chains_.resize(id);
+    importance_.resize(id);
+    store_.remove(id);
+    resize_outputs();
+    throw;
+  }
   budget_.reset();  // rebuilt with the new object at the next frame
   switch_costs_.mark_stale();
   switch_unstarted_ = true;
-  resize_outputs();
   return id;
 }
 

@@ -126,9 +126,30 @@ std::optional<gaze::GazeSample> PushedGazeSource::sample_at(std::int64_t t_ns) {
     status_ = "ok";
     return s;
   }
-  status_ = count_ == 0 ? "no sample pushed yet"
-                        : "no sample pushed in the last " + std::to_string(aux::whole_ms_from_ns(max_age_ns_)) + " ms";
+  status_ = count_ == 0 ? none_status_ : stale_status_;  // copies into status_'s own room: no allocation
   return std::nullopt;
+}
+
+void PushedGazeSource::frame_time(std::int64_t t_ns) {
+  const bool first = !have_frame_;
+  frame_t_ns_ = t_ns;
+  have_frame_ = true;
+  if (!first) return;
+  std::size_t dropped = 0;
+  while (count_ > 0) {
+    const std::size_t newest = (next_ + kSamples - 1) % kSamples;
+    if (ring_[newest].sample.t_ns <= t_ns + lead_ns_) break;
+    next_ = newest;
+    --count_;
+    ++dropped;
+  }
+  if (dropped == 0) return;
+  have_last_t_ = count_ > 0;
+  if (have_last_t_) last_t_ns_ = ring_[(next_ + kSamples - 1) % kSamples].sample.t_ns;
+  none_status_ = std::to_string(dropped) + " sample(s) pushed before the first frame were stamped more than " +
+                 std::to_string(aux::whole_ms_from_ns(lead_ns_)) +
+                 " ms after its display time (another clock?) and were dropped; stamp samples on the frame loop's "
+                 "clock";
 }
 
 }  // namespace gazelod::plugin

@@ -46,16 +46,18 @@ class PushedGazeSource final : public gaze::GazeSource {
   // max_age_ns: a frame uses the newest sample at most this old; lead_ns: how far past the last
   // frame's display time a sample may be stamped before it counts as from another clock.
   PushedGazeSource(const HeadHistory& heads, std::int64_t max_age_ns, std::int64_t lead_ns = aux::ns_from_seconds(1.0))
-      : heads_(heads), max_age_ns_(max_age_ns), lead_ns_(lead_ns) {}
+      : heads_(heads),
+        max_age_ns_(max_age_ns),
+        lead_ns_(lead_ns),
+        stale_status_("no sample pushed in the last " + std::to_string(aux::whole_ms_from_ns(max_age_ns)) + " ms") {}
 
   // Checks and stores a sample; on refusal `why` says what is wrong ("gazelod: ..."), nothing
   // is stored. Allocates nothing on success.
   PushResult push(const PushedSample& s, std::string& why);
-  // The display time of the frame being decided (the future check's clock).
-  void frame_time(std::int64_t t_ns) {
-    frame_t_ns_ = t_ns;
-    have_frame_ = true;
-  }
+  // The display time of the frame being decided (the future check's clock). At the first
+  // frame, samples pushed before it that the check would have refused are dropped (and the
+  // status says so): kept, their time would make every later sample out of order.
+  void frame_time(std::int64_t t_ns);
 
   std::string name() const override { return "pushed"; }
   // The newest sample stamped at or before t_ns and at most max_age old, in head space.
@@ -77,6 +79,8 @@ class PushedGazeSource final : public gaze::GazeSource {
   std::int64_t frame_t_ns_ = 0;
   std::optional<glm::dquat> last_head_;
   std::string status_ = "no sample pushed yet";
+  std::string stale_status_;  // "no sample pushed in the last N ms", made once: frames do not allocate
+  std::string none_status_ = "no sample pushed yet";
 };
 
 }  // namespace gazelod::plugin

@@ -94,6 +94,9 @@ void op_frame(Bytes& in, Model& m) {
   if (r != GZL_SUCCESS) return;
   check(!m.have_frame || f.display_time_ns > m.last_frame_t,
         "gzl_begin_frame_data accepted a frame not after the last one");
+  // The first frame drops samples pushed before it more than 1 s after its time (another
+  // clock): which of them stay, the model does not follow; it stops checking their order.
+  if (!m.have_frame && m.have_sample && m.last_sample_t > f.display_time_ns + 1'000 * kMs) m.have_sample = false;
   m.have_frame = true;
   m.last_frame_t = f.display_time_ns;
   ++m.frames;

@@ -133,8 +133,8 @@ gzl_object pick_handle(Bytes& in, const Model& m) {
   switch (k % 4) {
     case 0:
       return GZL_NULL_OBJECT;
-    case 1:
-      return m.max_handle + 1;
+    case 1:  // the newest handle's tag and generation, a row never made
+      return (m.max_handle & ~gzl_object{0xffffffff}) | 0xfffffffe;
     case 2:
       return std::numeric_limits<gzl_object>::max();
     default:

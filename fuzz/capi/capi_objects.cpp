@@ -2,6 +2,8 @@
 // The C ABI fuzzer's calls that create a plugin and add, remove, enable, move objects and push gaze.
 #include "fuzz/capi/capi_fuzz.hpp"
 
+#include <algorithm>
+
 namespace gazelod::fuzz::capi_fuzz {
 
 const XrResult kFakeFailure = XR_ERROR_FUNCTION_UNSUPPORTED;
@@ -121,8 +123,8 @@ void op_add(Bytes& in, Model& m) {
     check(m.shut_down || h == GZL_NULL_OBJECT, "a failed gzl_add_object did not write GZL_NULL_OBJECT");
     return;
   }
-  check(h != GZL_NULL_OBJECT && h > m.max_handle, "gzl_add_object reused a handle (or gave 0)");
-  m.max_handle = h;
+  check(h != GZL_NULL_OBJECT && m.find(h) == nullptr, "gzl_add_object reused a handle (or gave 0)");
+  m.max_handle = std::max(m.max_handle, h);
   Obj o;
   o.handle = h;
   for (const gzl_level& l : levels) o.triangles.push_back(l.triangles);

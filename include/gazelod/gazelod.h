@@ -79,7 +79,7 @@ typedef enum gzl_result {
   GZL_ERROR_OPENXR_CALL = -9,       /* an OpenXR call failed; the message names it and its XrResult */
   GZL_ERROR_OPENXR_FUNCTION = -10,  /* xrGetInstanceProcAddr gave no pointer for a function gazelod needs */
   GZL_ERROR_CAPACITY = -11,         /* an output array is too small (the needed count is written) */
-  GZL_ERROR_SHUT_DOWN = -12,        /* the plugin was shut down (gzl_shutdown): only gzl_destroy remains */
+  GZL_ERROR_SHUT_DOWN = -12, /* the plugin was shut down (gzl_shutdown): only the readers and gzl_destroy remain */
   GZL_ERROR_OUT_OF_MEMORY = -13,
   GZL_ERROR_INTERNAL = -14, /* a bug in gazelod: please report the message */
   GZL_RESULT_MAX_ENUM = 0x7fffffff
@@ -108,7 +108,8 @@ typedef enum gzl_structure_type {
 
 typedef struct gzl_plugin_T* gzl_plugin;
 
-/* A stable object handle: never reused, 0 is no object. */
+/* A stable object handle: never reused, 0 is no object. Opaque: not an index, and not ordered
+ * (a handle from another plugin is refused with GZL_ERROR_OBJECT_INVALID). */
 typedef uint64_t gzl_object;
 #define GZL_NULL_OBJECT ((gzl_object)0)
 
@@ -431,8 +432,10 @@ typedef struct gzl_frame_record {
   gzl_head_pose head;
   uint32_t view_count;
   gzl_view views[GZL_MAX_VIEWS];
-  gzl_bool32 has_gaze_sample;  /* a sample was read from the gaze input this frame */
-  gzl_gaze_sample gaze_sample; /* in head space, with the head's orientation at its time */
+  gzl_bool32 has_gaze_sample;  /* the gaze input has given a sample (this frame or earlier) */
+  gzl_gaze_sample gaze_sample; /* in head space, with the head's orientation at its time; a frame that
+                                * read none repeats the last with GZL_GAZE_SAMPLE_VALID cleared, as a
+                                * replay must push it */
 } gzl_frame_record;
 
 GZL_API gzl_result gzl_get_frame_record(gzl_plugin plugin, gzl_frame_record* record);

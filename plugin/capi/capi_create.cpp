@@ -4,6 +4,7 @@
 #include "plugin/capi/capi_errors.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cstring>
 
 using namespace gazelod;
@@ -44,8 +45,23 @@ void need_plugin(gzl_plugin p) {
 
 void need_live(gzl_plugin p) {
   need_plugin(p);
-  if (p->shut_down)
-    throw Refusal{GZL_ERROR_SHUT_DOWN, "gazelod: the plugin was shut down (gzl_shutdown); only gzl_destroy remains"};
+  if (p->shut_down.load())
+    throw Refusal{GZL_ERROR_SHUT_DOWN,
+                  "gazelod: the plugin was shut down (gzl_shutdown); only its readers and gzl_destroy remain"};
+}
+
+std::unique_lock<std::mutex> lock_live(gzl_plugin p) {
+  need_plugin(p);
+  std::unique_lock<std::mutex> lock(p->mu);
+  need_live(p);  // again: a gzl_shutdown on another thread may have run since the caller's check
+  return lock;
+}
+
+std::uint16_t next_plugin_tag() {
+  static std::atomic<std::uint16_t> counter{0};
+  std::uint16_t tag = 0;
+  while (tag == 0) tag = ++counter;  // 0 is skipped when the counter wraps
+  return tag;
 }
 
 }  // namespace gazelod::capi

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <cstring>
 #include <exception>
+#include <mutex>
 #include <new>
 #include <string>
 
@@ -58,6 +59,8 @@ inline void need_time(std::int64_t t_ns, const char* what) {
 // The common checks of an entry point that takes a plugin and an input struct.
 void need_plugin(gzl_plugin p);
 void need_live(gzl_plugin p);  // need_plugin, and not shut down
+// The plugin lock for a call that changes the plugin, with need_live checked again under it.
+std::unique_lock<std::mutex> lock_live(gzl_plugin p);
 template <typename T>
 void need_struct(const T* s, gzl_structure_type type, const char* what) {
   if (s == nullptr) throw Refusal{GZL_ERROR_NULL_POINTER, std::string("gazelod: ") + what + " is NULL"};

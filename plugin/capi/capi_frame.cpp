@@ -40,7 +40,7 @@ GZL_API gzl_result gzl_get_gaze_binding(gzl_plugin p, gzl_gaze_binding* b) {
     if (b->type != GZL_TYPE_GAZE_BINDING)
       throw Refusal{GZL_ERROR_STRUCT_TYPE, "gazelod: binding->type must be GZL_TYPE_GAZE_BINDING"};
     need_openxr(p, "gzl_get_gaze_binding");
-    std::lock_guard lock(p->mu);
+    const auto lock = lock_live(p);
     if (p->gaze_input != GZL_GAZE_INPUT_MERGE_BINDING || p->xr->action_set() == XR_NULL_HANDLE)
       throw Refusal{GZL_ERROR_WRONG_MODE,
                     "gazelod: this plugin has no binding to merge: create it with GZL_GAZE_INPUT_MERGE_BINDING on a "
@@ -57,7 +57,7 @@ GZL_API gzl_result gzl_action_sets_attached(gzl_plugin p) {
   return guarded(p, [&]() -> gzl_result {
     need_live(p);
     need_openxr(p, "gzl_action_sets_attached");
-    std::lock_guard lock(p->mu);
+    const auto lock = lock_live(p);
     p->xr->action_sets_attached();
     return GZL_SUCCESS;
   });
@@ -67,7 +67,7 @@ GZL_API gzl_result gzl_set_gaze_space(gzl_plugin p, uint64_t gaze_space, uint64_
   return guarded(p, [&]() -> gzl_result {
     need_live(p);
     need_openxr(p, "gzl_set_gaze_space");
-    std::lock_guard lock(p->mu);
+    const auto lock = lock_live(p);
     p->xr->set_gaze_space(from_handle<XrSpace>(gaze_space), from_handle<XrAction>(gaze_action));
     return GZL_SUCCESS;
   });
@@ -80,7 +80,7 @@ GZL_API gzl_result gzl_on_session_state(gzl_plugin p, int32_t state, int64_t tim
     if (state < XR_SESSION_STATE_UNKNOWN || state > XR_SESSION_STATE_EXITING)
       throw Refusal{GZL_ERROR_INVALID_ARGUMENT,
                     "gazelod: session state " + std::to_string(state) + " is not an XrSessionState"};
-    std::lock_guard lock(p->mu);
+    const auto lock = lock_live(p);
     p->core().session_state(state == XR_SESSION_STATE_FOCUSED, time_ns);
     return GZL_SUCCESS;
   });
@@ -90,7 +90,7 @@ GZL_API gzl_result gzl_set_base_space(gzl_plugin p, uint64_t space) {
   return guarded(p, [&]() -> gzl_result {
     need_live(p);
     need_openxr(p, "gzl_set_base_space");
-    std::lock_guard lock(p->mu);
+    const auto lock = lock_live(p);
     p->xr->set_base_space(from_handle<XrSpace>(space));
     return GZL_SUCCESS;
   });
@@ -99,7 +99,7 @@ GZL_API gzl_result gzl_set_base_space(gzl_plugin p, uint64_t space) {
 GZL_API gzl_result gzl_set_view_resolution(gzl_plugin p, uint32_t view, uint32_t width_px, uint32_t height_px) {
   return guarded(p, [&]() -> gzl_result {
     need_live(p);
-    std::lock_guard lock(p->mu);
+    const auto lock = lock_live(p);
     if (view >= p->view_count)
       throw Refusal{GZL_ERROR_INVALID_ARGUMENT, "gazelod: view " + std::to_string(view) +
                                                     " out of range: the plugin has " + std::to_string(p->view_count) +
@@ -126,7 +126,7 @@ GZL_API gzl_result gzl_push_gaze_sample(gzl_plugin p, const gzl_gaze_sample* s) 
                     "gazelod: sample->flags has bits that are not gzl_gaze_sample_flag_bits"};
     const plugin::PushedSample ps = to_pushed(*s);
     std::string why;
-    std::lock_guard lock(p->mu);
+    const auto lock = lock_live(p);
     check_push(p->openxr ? p->xr->push_gaze(ps, why) : p->data->pushed.push(ps, why), why);
     return GZL_SUCCESS;
   });
@@ -137,7 +137,7 @@ GZL_API gzl_result gzl_begin_frame_openxr(gzl_plugin p, int64_t t) {
     need_live(p);
     need_openxr(p, "gzl_begin_frame_openxr");
     need_time(t, "predicted_display_time");
-    std::lock_guard lock(p->mu);
+    const auto lock = lock_live(p);
     if (p->frames > 0 && t <= p->pub.info.display_time_ns)
       throw Refusal{GZL_ERROR_TIME_OUT_OF_ORDER,
                     "gazelod: predicted_display_time " + std::to_string(t) +
@@ -160,7 +160,7 @@ GZL_API gzl_result gzl_begin_frame_data(gzl_plugin p, const gzl_frame_input* in)
     bool angular = false, linear = false;
     const plugin::HeadMotion given = to_head(in->head, angular, linear);
     const std::uint32_t n = check_views(in->view_count, in->views, "input->views", true);
-    std::lock_guard lock(p->mu);
+    const auto lock = lock_live(p);
     DataFront& f = *p->data;
     if (f.have_frame && in->display_time_ns <= f.last_t_ns)
       throw Refusal{GZL_ERROR_TIME_OUT_OF_ORDER,
@@ -189,7 +189,7 @@ GZL_API gzl_result gzl_end_frame(gzl_plugin p, double measured_frame_ms) {
     need_live(p);
     if (!std::isfinite(measured_frame_ms) || measured_frame_ms < 0.0 || measured_frame_ms > 60'000.0)
       throw Refusal{GZL_ERROR_INVALID_ARGUMENT, "gazelod: measured_frame_ms must be finite, in [0, 60000]"};
-    std::lock_guard lock(p->mu);
+    const auto lock = lock_live(p);
     p->core().end_frame(measured_frame_ms);
     return GZL_SUCCESS;
   });

@@ -14,14 +14,13 @@ GZL_API gzl_result gzl_get_levels(gzl_plugin p, uint32_t count, const gzl_object
     if (objects == nullptr || levels == nullptr)
       throw Refusal{GZL_ERROR_NULL_POINTER, "gazelod: objects and levels must not be NULL when count > 0"};
     std::lock_guard lock(p->out_mu);
-    const std::size_t issued = p->pub.state_by_handle.size();
     for (std::uint32_t i = 0; i < count; ++i) {
       const gzl_object h = objects[i];
-      if (h == GZL_NULL_OBJECT || h > issued || p->pub.state_by_handle[h - 1] == kHandleRemoved)
+      const std::string why = p->pub.rows.refuse(h, p->tag);
+      if (!why.empty())
         throw Refusal{GZL_ERROR_OBJECT_INVALID,
-                      "gazelod: objects[" + std::to_string(i) + "] = " + std::to_string(h) +
-                          (h == GZL_NULL_OBJECT || h > issued ? " was never issued by this plugin" : " was removed")};
-      levels[i] = p->pub.level_by_handle[h - 1];
+                      "gazelod: objects[" + std::to_string(i) + "] = " + std::to_string(h) + " " + why};
+      levels[i] = p->pub.level_by_row[split_handle(h).index];
     }
     return GZL_SUCCESS;
   });
@@ -40,10 +39,10 @@ GZL_API gzl_result gzl_get_frame_info(gzl_plugin p, gzl_frame_info* info) {
     // Triangles of the published levels, summed here rather than in every frame.
     const Published& pub = p->pub;
     info->triangles_drawn = info->triangles_full = 0;
-    for (std::size_t h = 0; h < pub.decided_handles; ++h) {
-      if (pub.state_by_handle[h] == kHandleRemoved || pub.level_by_handle[h] == GZL_LEVEL_DISABLED) continue;
-      const std::uint32_t* tri = pub.level_triangles.data() + pub.triangles_first_by_handle[h];
-      info->triangles_drawn += tri[pub.level_by_handle[h]];
+    for (std::size_t r = 0; r < pub.level_by_row.size(); ++r) {
+      if (!pub.rows.live[r] || !pub.decided_by_row[r] || pub.level_by_row[r] == GZL_LEVEL_DISABLED) continue;
+      const std::uint32_t* tri = pub.level_triangles.data() + pub.triangles_first_by_row[r];
+      info->triangles_drawn += tri[pub.level_by_row[r]];
       info->triangles_full += tri[0];
     }
     return GZL_SUCCESS;

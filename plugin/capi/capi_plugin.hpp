@@ -6,11 +6,13 @@
 
 #include "auxiliary/time.hpp"
 #include "gazelod/gazelod.h"
+#include "plugin/capi/capi_handles.hpp"
 #include "plugin/lod_core.hpp"
 #include "plugin/lod_plugin.hpp"
 #include "plugin/pushed_gaze.hpp"
 
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <mutex>
@@ -37,15 +39,15 @@ struct DataFront {
   std::int64_t last_t_ns = 0;
 };
 
-inline constexpr std::uint8_t kHandleIssued = 0, kHandleRemoved = 2;
-
 struct Published {
-  std::vector<std::uint8_t> level_by_handle;  // index = handle - 1
-  std::vector<std::uint8_t> state_by_handle;  // kHandleIssued or kHandleRemoved
-  std::size_t decided_handles = 0;            // handles [0, this) existed when the frame was decided
-  // Each handle's triangles per level, back to back (written at registration), so a frame
-  // publishes only its levels and gzl_get_frame_info sums triangles when asked.
-  std::vector<std::uint32_t> triangles_first_by_handle;
+  HandleRows rows;                           // by handle row (capi_handles.hpp)
+  std::vector<std::uint8_t> level_by_row;    // the published level (0 until a frame decides)
+  std::vector<std::uint8_t> decided_by_row;  // 1 when the published frame decided the row's object
+  // Each row's triangles per level, in a block of level_triangles (written at registration, and
+  // reused by the row's next object when its levels fit), so a frame publishes only its levels
+  // and gzl_get_frame_info sums triangles when asked.
+  std::vector<std::uint32_t> triangles_first_by_row;
+  std::vector<std::uint8_t> triangles_room_by_row;  // levels the row's block holds
   std::vector<std::uint32_t> level_triangles;
   gzl_frame_info info{};
   std::array<gzl_foveal_cone, GZL_MAX_VIEWS> cones{};
@@ -66,17 +68,22 @@ struct gzl_plugin_T {
 
   bool openxr = false;
   gzl_gaze_input gaze_input = GZL_GAZE_INPUT_NONE;  // OpenXR mode's
-  bool shut_down = false;
+  // Set under mu by gzl_shutdown; read without it for an early refusal, and again under it
+  // (lock_live) by every call that changes the plugin.
+  std::atomic<bool> shut_down{false};
   std::unique_ptr<gazelod::LodPlugin> xr;          // OpenXR mode
   std::unique_ptr<gazelod::capi::DataFront> data;  // data mode
   std::uint32_t view_count = 0;
   std::array<gzl_view, GZL_MAX_VIEWS> data_views{};
   gazelod::PluginConfig config;
 
-  // Stable handles over the engine's dense ids: handle h has index h - 1, never reused.
-  std::vector<std::uint32_t> slot_of_handle;  // UINT32_MAX once removed
-  std::vector<std::uint32_t> handle_index_of_slot;
-  // While no object was ever removed, handle index == engine id, and with none disabled a
+  // Object handles over the engine's dense ids (capi_handles.hpp): each row's engine id
+  // (kNoSlot while free), each id's row, and the free rows, reused last-freed first.
+  std::uint16_t tag = gazelod::capi::next_plugin_tag();
+  std::vector<std::uint32_t> slot_of_row;
+  std::vector<std::uint32_t> row_of_slot;
+  std::vector<std::uint32_t> free_rows;
+  // While no object was ever removed, row == engine id, and with none disabled a
   // frame's levels are published with one copy.
   bool dense = true;
   std::uint32_t disabled = 0;

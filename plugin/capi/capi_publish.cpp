@@ -63,13 +63,15 @@ void publish(gzl_plugin p, const FrameDecisions& d, std::int64_t t_ns) {
   std::lock_guard lock(p->out_mu);
   Published& pub = p->pub;
   if (p->dense && p->disabled == 0) {
-    std::copy(d.lod.begin(), d.lod.end(), pub.level_by_handle.begin());
+    std::copy(d.lod.begin(), d.lod.end(), pub.level_by_row.begin());
+    std::fill(pub.decided_by_row.begin(), pub.decided_by_row.end(), std::uint8_t{1});
   } else {
-    for (std::size_t s = 0; s < d.lod.size(); ++s)
-      pub.level_by_handle[p->handle_index_of_slot[s]] =
-          core.object_enabled(static_cast<std::uint32_t>(s)) ? d.lod[s] : GZL_LEVEL_DISABLED;
+    for (std::size_t s = 0; s < d.lod.size(); ++s) {
+      const std::uint32_t row = p->row_of_slot[s];
+      pub.level_by_row[row] = core.object_enabled(static_cast<std::uint32_t>(s)) ? d.lod[s] : GZL_LEVEL_DISABLED;
+      pub.decided_by_row[row] = 1;
+    }
   }
-  pub.decided_handles = p->slot_of_handle.size();
   ++p->frames;
   gzl_frame_info& i = pub.info;
   i.frame_index = p->frames;

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 #include <thread>
 
 namespace gazelod::test {
@@ -284,6 +285,35 @@ TEST(CApiThreads, ApplicationThreadBesideRenderThread) {
   render.join();
   app.join();
   EXPECT_EQ(failures.load(), 0) << last_error(p);
+  gzl_destroy(p);
+}
+
+// gzl_shutdown on one thread while another registers: the flag is read under the lock a change
+// takes (ThreadSanitizer in CI saw it read without), so once a call has been refused no later
+// one succeeds, and no registration runs after gzl_shutdown has returned.
+TEST(CApiThreads, ShutdownBesideRegistration) {
+  gzl_plugin p = make_data_plugin();
+  ASSERT_NE(p, nullptr);
+  std::atomic<bool> shut{false};
+  std::atomic<int> wrong{0};
+  std::thread app([&] {
+    bool refused = false;
+    for (int i = 0; !refused; ++i) {  // until gzl_shutdown (below) refuses one
+      gzl_object o = 0;
+      gzl_object_desc d = object_at(i % 40 - 20.0, 0, 2);
+      const bool was_shut = shut.load();  // gzl_shutdown had returned before this call began
+      const gzl_result r = gzl_add_object(p, &d, &o);
+      if (r == GZL_ERROR_SHUT_DOWN)
+        refused = true;
+      else if (r != GZL_SUCCESS || was_shut)
+        ++wrong;
+    }
+  });
+  std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  ASSERT_EQ(gzl_shutdown(p), GZL_SUCCESS);
+  shut = true;
+  app.join();
+  EXPECT_EQ(wrong.load(), 0);
   gzl_destroy(p);
 }
 

@@ -5,13 +5,15 @@
 // are the gaze actions: active after an xrSyncActions that found fresh gaze with their set
 // active and the session focused. The eye-gaze profile becomes /user/eyes_ext's current one at
 // the first xrSyncActions after attaching (the only place a profile may change), which queues
-// XrEventDataInteractionProfileChanged.
+// XrEventDataInteractionProfileChanged. The actions' states are read in action_state.cpp.
 #include "layer/entry_points.hpp"
 #include "layer/layer_state.hpp"
 
 #include <algorithm>
 #include <cstring>
+#include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace gazelod::layer {
@@ -23,19 +25,18 @@ EmulatedInstance* emulated() {
   return layer_state().emulated.get();
 }
 
-// The session's gaze action `action`, if it is one (not destroyed).
-GazeActionState* gaze_action(EmulatedInstance& e, XrSession session, XrAction action, SessionRecord** record) {
-  auto s = e.sessions.find(session);
-  if (s == e.sessions.end()) return nullptr;
-  if (record != nullptr) *record = &s->second;
-  auto a = s->second.gaze_actions.find(action);
-  if (a == s->second.gaze_actions.end() || a->second.destroyed) return nullptr;
-  return &a->second;
-}
-
+// xrDestroyActionSet: the set's actions can never be synced again.
 void forget_action(EmulatedInstance& e, XrAction action) {
   e.actions.erase(action);
   std::erase(e.eye_bindings, action);
+  for (auto& [handle, s] : e.sessions)
+    if (auto it = s.gaze_actions.find(action); it != s.gaze_actions.end()) it->second.destroyed = true;
+}
+
+// xrDestroyAction: the handle may no longer be passed, but the action stays in its set (its
+// gaze spaces keep locating while the set is synced).
+void destroy_action_handle(EmulatedInstance& e, XrAction action) {
+  if (auto it = e.actions.find(action); it != e.actions.end()) it->second.handle_destroyed = true;
   for (auto& [handle, s] : e.sessions)
     if (auto it = s.gaze_actions.find(action); it != s.gaze_actions.end()) it->second.destroyed = true;
 }
@@ -130,7 +131,7 @@ XrResult DestroyAction(XrAction action) {
     const XrResult r = next(action);
     if (XR_SUCCEEDED(r)) {
       Lock lock(layer_state().mutex);
-      if (EmulatedInstance* e = emulated()) forget_action(*e, action);
+      if (EmulatedInstance* e = emulated()) destroy_action_handle(*e, action);
     }
     return r;
   });
@@ -151,12 +152,12 @@ XrResult SuggestInteractionProfileBindings(XrInstance instance, const XrInteract
         std::vector<XrAction> actions;
         for (uint32_t i = 0; i < suggested->countSuggestedBindings; ++i) {
           const XrActionSuggestedBinding& b = suggested->suggestedBindings[i];
-          auto it = e->actions.find(b.action);
-          if (it == e->actions.end()) return XR_ERROR_HANDLE_INVALID;
-          if (auto set = e->action_sets.find(it->second.set); set != e->action_sets.end() && set->second)
+          const ActionRecord* it = live_action(*e, b.action);
+          if (it == nullptr) return XR_ERROR_HANDLE_INVALID;
+          if (auto set = e->action_sets.find(it->set); set != e->action_sets.end() && set->second)
             return XR_ERROR_ACTIONSETS_ALREADY_ATTACHED;
           // The profile has one input, a pose.
-          if (b.binding != e->paths.gaze_pose || it->second.type != XR_ACTION_TYPE_POSE_INPUT)
+          if (b.binding != e->paths.gaze_pose || it->type != XR_ACTION_TYPE_POSE_INPUT)
             return XR_ERROR_PATH_UNSUPPORTED;
           actions.push_back(b.action);
         }
@@ -201,13 +202,30 @@ XrResult AttachSessionActionSets(XrSession session, const XrSessionActionSetsAtt
 XrResult SyncActions(XrSession session, const XrActionsSyncInfo* syncInfo) {
   return guarded(XR_ERROR_RUNTIME_FAILURE, [&]() -> XrResult {
     PFN_xrSyncActions next = nullptr;
+    XrPath eyes = XR_NULL_PATH;
     {
       Lock lock(layer_state().mutex);
       EmulatedInstance* e = emulated();
       if (e == nullptr) return XR_ERROR_HANDLE_INVALID;
       next = e->next.SyncActions;
+      eyes = e->paths.eyes_user;
     }
-    const XrResult r = next(session, syncInfo);
+    // A set made active for /user/eyes_ext only: the runtime knows no such path, and none of
+    // its own bindings are under it, so that entry does not go down.
+    XrActionsSyncInfo down_info{};
+    std::vector<XrActiveActionSet> down_sets;
+    const XrActionsSyncInfo* down = syncInfo;
+    if (syncInfo != nullptr && syncInfo->activeActionSets != nullptr && eyes != XR_NULL_PATH) {
+      for (uint32_t i = 0; i < syncInfo->countActiveActionSets; ++i)
+        if (syncInfo->activeActionSets[i].subactionPath != eyes) down_sets.push_back(syncInfo->activeActionSets[i]);
+      if (down_sets.size() != syncInfo->countActiveActionSets) {
+        down_info = *syncInfo;
+        down_info.countActiveActionSets = static_cast<uint32_t>(down_sets.size());
+        down_info.activeActionSets = down_sets.empty() ? nullptr : down_sets.data();
+        down = &down_info;
+      }
+    }
+    const XrResult r = next(session, down);
     if (XR_FAILED(r) || syncInfo == nullptr) return r;
     Lock lock(layer_state().mutex);
     EmulatedInstance* e = emulated();
@@ -225,37 +243,13 @@ XrResult SyncActions(XrSession session, const XrActionsSyncInfo* syncInfo) {
         set_active = set_active || (active.actionSet == a->second.set && (active.subactionPath == XR_NULL_PATH ||
                                                                           active.subactionPath == e->paths.eyes_user));
       }
-      state.active = fresh && set_active && !state.destroyed;
+      state.active = fresh && set_active;  // a destroyed handle's action still syncs
     }
     if (!rec.profile_current && e->gaze_available) {
       rec.profile_current = true;
       e->profile_events.push_back(session);
     }
     return r;
-  });
-}
-
-XrResult GetActionStatePose(XrSession session, const XrActionStateGetInfo* getInfo, XrActionStatePose* state) {
-  return guarded(XR_ERROR_RUNTIME_FAILURE, [&]() -> XrResult {
-    PFN_xrGetActionStatePose next = nullptr;
-    {
-      Lock lock(layer_state().mutex);
-      EmulatedInstance* e = emulated();
-      if (e == nullptr) return XR_ERROR_HANDLE_INVALID;
-      next = e->next.GetActionStatePose;
-      const GazeActionState* g = getInfo ? gaze_action(*e, session, getInfo->action, nullptr) : nullptr;
-      const XrPath sub = getInfo ? getInfo->subactionPath : XR_NULL_PATH;
-      if (g != nullptr && (sub == XR_NULL_PATH || sub == e->paths.eyes_user)) {
-        if (state == nullptr || state->type != XR_TYPE_ACTION_STATE_POSE) return XR_ERROR_VALIDATION_FAILURE;
-        if (sub == e->paths.eyes_user && !g->eyes_subaction) return XR_ERROR_PATH_UNSUPPORTED;
-        // Gaze inactive: the runtime may still have a binding of its own for the action.
-        if (g->active || sub != XR_NULL_PATH) {
-          state->isActive = g->active ? XR_TRUE : XR_FALSE;
-          return XR_SUCCESS;
-        }
-      }
-    }
-    return next(session, getInfo, state);
   });
 }
 

@@ -13,13 +13,16 @@ namespace gazelod::layer {
 
 // X(name) for each core command the layer calls: one list, so the table, its lookup and the
 // check that nothing is missing cannot drift apart.
-#define GAZELOD_LAYER_NEXT_COMMANDS(X)                                                                        \
-  X(DestroyInstance)                                                                                          \
-  X(GetSystemProperties) X(PollEvent) X(StringToPath) X(CreateSession) X(DestroySession) X(WaitFrame)         \
-      X(CreateReferenceSpace) X(CreateActionSpace) X(LocateSpace) X(DestroySpace) X(CreateActionSet)          \
-          X(DestroyActionSet) X(CreateAction) X(DestroyAction) X(SuggestInteractionProfileBindings)           \
-              X(AttachSessionActionSets) X(SyncActions) X(GetActionStatePose) X(GetCurrentInteractionProfile) \
-                  X(EnumerateBoundSourcesForAction) X(GetInputSourceLocalizedName)
+#define GAZELOD_LAYER_NEXT_COMMANDS(X)                                                                         \
+  X(DestroyInstance)                                                                                           \
+  X(GetSystemProperties)                                                                                       \
+  X(PollEvent)                                                                                                 \
+  X(StringToPath)                                                                                              \
+  X(CreateSession) X(DestroySession) X(WaitFrame) X(CreateReferenceSpace) X(CreateActionSpace) X(LocateSpace)  \
+      X(DestroySpace) X(CreateActionSet) X(DestroyActionSet) X(CreateAction) X(DestroyAction)                  \
+          X(SuggestInteractionProfileBindings) X(AttachSessionActionSets) X(SyncActions) X(GetActionStatePose) \
+              X(GetActionStateBoolean) X(GetActionStateFloat) X(GetActionStateVector2f)                        \
+                  X(GetCurrentInteractionProfile) X(EnumerateBoundSourcesForAction) X(GetInputSourceLocalizedName)
 
 struct NextDispatch {
   PFN_xrGetInstanceProcAddr GetInstanceProcAddr = nullptr;

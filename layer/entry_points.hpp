@@ -2,7 +2,7 @@
 // Every OpenXR command the layer implements, with the exact signature of its PFN_xr* type
 // (negotiate.cpp checks each at compile time). One file per concept defines them: instance and
 // system (instance.cpp), sessions and frames (session.cpp), actions and bindings (actions.cpp),
-// gaze spaces (gaze_space.cpp).
+// action states (action_state.cpp), gaze spaces (gaze_space.cpp).
 #pragma once
 
 #include "layer/xr_headers.hpp"
@@ -36,7 +36,14 @@ XrResult SuggestInteractionProfileBindings(XrInstance instance,
                                            const XrInteractionProfileSuggestedBinding* suggestedBindings);
 XrResult AttachSessionActionSets(XrSession session, const XrSessionActionSetsAttachInfo* attachInfo);
 XrResult SyncActions(XrSession session, const XrActionsSyncInfo* syncInfo);
+
+// action_state.cpp
 XrResult GetActionStatePose(XrSession session, const XrActionStateGetInfo* getInfo, XrActionStatePose* state);
+XrResult GetActionStateBoolean(XrSession session, const XrActionStateGetInfo* getInfo, XrActionStateBoolean* state);
+XrResult GetActionStateFloat(XrSession session, const XrActionStateGetInfo* getInfo, XrActionStateFloat* state);
+XrResult GetActionStateVector2f(XrSession session, const XrActionStateGetInfo* getInfo, XrActionStateVector2f* state);
+
+// actions.cpp
 XrResult GetCurrentInteractionProfile(XrSession session, XrPath topLevelUserPath,
                                       XrInteractionProfileState* interactionProfile);
 XrResult EnumerateBoundSourcesForAction(XrSession session, const XrBoundSourcesForActionEnumerateInfo* enumerateInfo,

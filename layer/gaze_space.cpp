@@ -68,11 +68,17 @@ XrResult CreateActionSpace(XrSession session, const XrActionSpaceCreateInfo* cre
       auto s = e->sessions.find(session);
       if (createInfo == nullptr || s == e->sessions.end()) return next(session, createInfo, space);
       auto a = s->second.gaze_actions.find(createInfo->action);
-      if (a == s->second.gaze_actions.end() || a->second.destroyed) return next(session, createInfo, space);
+      const bool gaze = a != s->second.gaze_actions.end() && !a->second.destroyed;
       const XrPath sub = createInfo->subactionPath;
-      if (sub != XR_NULL_PATH && sub != e->paths.eyes_user) return next(session, createInfo, space);
+      // /user/eyes_ext is this layer's: any pose action created with it gets its space here (one
+      // that is not a gaze action is never located), and the runtime never sees the path.
+      const bool eyes = sub != XR_NULL_PATH && sub == e->paths.eyes_user;
+      if (!eyes && !(gaze && sub == XR_NULL_PATH)) return next(session, createInfo, space);
+      auto rec = e->actions.find(createInfo->action);
+      if (rec == e->actions.end() || rec->second.handle_destroyed) return next(session, createInfo, space);
       if (createInfo->type != XR_TYPE_ACTION_SPACE_CREATE_INFO || space == nullptr) return XR_ERROR_VALIDATION_FAILURE;
-      if (sub == e->paths.eyes_user && !a->second.eyes_subaction) return XR_ERROR_PATH_UNSUPPORTED;
+      if (rec->second.type != XR_ACTION_TYPE_POSE_INPUT) return XR_ERROR_ACTION_TYPE_MISMATCH;
+      if (eyes && !rec->second.eyes_subaction) return XR_ERROR_PATH_UNSUPPORTED;
       if (!is_unit_orientation(createInfo->poseInActionSpace)) return XR_ERROR_POSE_INVALID;
       create_view = e->next.CreateReferenceSpace;
     }

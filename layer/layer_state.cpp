@@ -18,4 +18,18 @@ void log_line(const std::string& line) {
   std::fflush(stderr);
 }
 
+GazeActionState* gaze_action(EmulatedInstance& e, XrSession session, XrAction action, SessionRecord** record) {
+  auto s = e.sessions.find(session);
+  if (s == e.sessions.end()) return nullptr;
+  if (record != nullptr) *record = &s->second;
+  auto a = s->second.gaze_actions.find(action);
+  if (a == s->second.gaze_actions.end() || a->second.destroyed) return nullptr;
+  return &a->second;
+}
+
+const ActionRecord* live_action(const EmulatedInstance& e, XrAction action) {
+  auto it = e.actions.find(action);
+  return it == e.actions.end() || it->second.handle_destroyed ? nullptr : &it->second;
+}
+
 }  // namespace gazelod::layer

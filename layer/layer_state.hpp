@@ -32,11 +32,14 @@ struct ActionRecord {
   XrActionSet set = XR_NULL_HANDLE;
   XrActionType type = XR_ACTION_TYPE_POSE_INPUT;
   bool eyes_subaction = false;  // created with /user/eyes_ext among its subaction paths
+  // xrDestroyAction: the handle is gone, the action is not (its spaces stay locatable and it
+  // still takes part in xrSyncActions, as the specification requires).
+  bool handle_destroyed = false;
 };
 
 struct GazeActionState {
   bool active = false;     // as of the last xrSyncActions
-  bool destroyed = false;  // its handle was destroyed; spaces made from it live on
+  bool destroyed = false;  // its handle was destroyed (xrDestroyAction); it and its spaces live on
   bool eyes_subaction = false;
 };
 
@@ -79,6 +82,11 @@ struct LayerState {
 };
 
 LayerState& layer_state();
+
+// The session's gaze action `action`, if it is one whose handle is valid (record: its session).
+GazeActionState* gaze_action(EmulatedInstance& e, XrSession session, XrAction action, SessionRecord** record);
+// The action's record while its handle is valid.
+const ActionRecord* live_action(const EmulatedInstance& e, XrAction action);
 
 // One line on stderr: "gazelod layer: <line>".
 void log_line(const std::string& line);

@@ -22,7 +22,8 @@ struct Entry {
     "xr" #name, reinterpret_cast<PFN_xrVoidFunction>(static_cast<PFN_xr##name>(&name)) \
   }
 
-// Commands the emulation takes over (instance.cpp, session.cpp, actions.cpp, gaze_space.cpp).
+// Commands the emulation takes over (instance.cpp, session.cpp, actions.cpp, action_state.cpp,
+// gaze_space.cpp).
 const Entry kEmulated[] = {
     GAZELOD_LAYER_ENTRY(GetSystemProperties),
     GAZELOD_LAYER_ENTRY(PollEvent),
@@ -37,6 +38,9 @@ const Entry kEmulated[] = {
     GAZELOD_LAYER_ENTRY(AttachSessionActionSets),
     GAZELOD_LAYER_ENTRY(SyncActions),
     GAZELOD_LAYER_ENTRY(GetActionStatePose),
+    GAZELOD_LAYER_ENTRY(GetActionStateBoolean),
+    GAZELOD_LAYER_ENTRY(GetActionStateFloat),
+    GAZELOD_LAYER_ENTRY(GetActionStateVector2f),
     GAZELOD_LAYER_ENTRY(GetCurrentInteractionProfile),
     GAZELOD_LAYER_ENTRY(EnumerateBoundSourcesForAction),
     GAZELOD_LAYER_ENTRY(GetInputSourceLocalizedName),

@@ -187,6 +187,60 @@ TEST(LayerGazeClient, BadSuggestionsAreRefusedLikeARuntimeWould) {
   hs.destroy();
 }
 
+// /user/eyes_ext is the layer's own top-level path: the runtime under it never learns it, so it
+// must never reach the runtime (which would answer XR_ERROR_PATH_UNSUPPORTED for a path the
+// application did declare). And xrDestroyAction removes the handle, not the action: its gaze
+// space keeps locating while its set is synced (the specification's xrDestroyAction).
+TEST(LayerGazeClient, EyesSubactionStaysInTheLayerAndADestroyedActionStillLocates) {
+  const std::string dir = scratch_dir();
+  write_trace(dir + "/trace.csv", 3.0);
+  LayerSetup setup;
+  setup.trace = dir + "/trace.csv";
+  apply(setup);
+  GazeRig rig;
+  rig.create(/*eyes_subaction=*/true, /*extras=*/true);
+  if (HasFatalFailure()) return;
+  XrPath left = XR_NULL_PATH;
+  ASSERT_EQ(xrStringToPath(rig.hs.instance, "/user/hand/left", &left), XR_SUCCESS);
+  XrActionSpaceCreateInfo space_info{XR_TYPE_ACTION_SPACE_CREATE_INFO};
+  space_info.action = rig.other_pose;
+  space_info.subactionPath = rig.eyes;
+  space_info.poseInActionSpace.orientation.w = 1.0f;
+  XrSpace other_space = XR_NULL_HANDLE;
+  ASSERT_EQ(xrCreateActionSpace(rig.hs.session, &space_info, &other_space), XR_SUCCESS);
+  int located = 0;
+  for (int f = 0; f < 40; ++f) {
+    const XrTime t = rig.frame();
+    ASSERT_EQ(rig.sync(rig.eyes), XR_SUCCESS) << "frame " << f;
+    XrActionStateGetInfo get{XR_TYPE_ACTION_STATE_GET_INFO};
+    get.action = rig.button;
+    get.subactionPath = rig.eyes;
+    XrActionStateBoolean button{XR_TYPE_ACTION_STATE_BOOLEAN};
+    button.isActive = XR_TRUE;
+    ASSERT_EQ(xrGetActionStateBoolean(rig.hs.session, &get, &button), XR_SUCCESS);
+    EXPECT_EQ(button.isActive, XR_FALSE);  // nothing but a pose is bound under /user/eyes_ext
+    get.subactionPath = left;
+    ASSERT_EQ(xrGetActionStateBoolean(rig.hs.session, &get, &button), XR_SUCCESS);  // the runtime's
+    get.action = rig.other_pose;
+    get.subactionPath = rig.eyes;
+    XrActionStatePose pose{XR_TYPE_ACTION_STATE_POSE};
+    ASSERT_EQ(xrGetActionStatePose(rig.hs.session, &get, &pose), XR_SUCCESS);
+    EXPECT_EQ(pose.isActive, XR_FALSE);
+    EXPECT_EQ(rig.locate(other_space, rig.local, t).flags, 0u);
+    located += rig.active(rig.eyes) && rig.locate(rig.gaze_space, rig.local, t).flags == kAll ? 1 : 0;
+  }
+  EXPECT_GT(located, 30);
+  ASSERT_EQ(xrDestroyAction(rig.gaze), XR_SUCCESS);
+  located = 0;
+  for (int f = 0; f < 20; ++f) {
+    const XrTime t = rig.frame();
+    ASSERT_EQ(rig.sync(), XR_SUCCESS);
+    located += rig.locate(rig.gaze_space, rig.local, t).flags == kAll ? 1 : 0;
+  }
+  EXPECT_GT(located, 15) << "the gaze space stopped locating when its action's handle was destroyed";
+  rig.destroy();
+}
+
 // A headless client locating the gaze in LOCAL for `frames` frames.
 std::vector<GazeRig::Located> run_client(const LayerSetup& setup, int frames) {
   apply(setup);

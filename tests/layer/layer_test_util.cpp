@@ -118,7 +118,7 @@ int count_lines_with(const std::string& text, const std::string& needle) {
   return n;
 }
 
-void GazeRig::create(bool eyes_subaction) {
+void GazeRig::create(bool eyes_subaction, bool extras) {
   hs.create({XR_EXT_EYE_GAZE_INTERACTION_EXTENSION_NAME});
   ASSERT_NE(hs.session, XR_NULL_HANDLE);
   XrSystemEyeGazeInteractionPropertiesEXT eye{XR_TYPE_SYSTEM_EYE_GAZE_INTERACTION_PROPERTIES_EXT};
@@ -143,6 +143,21 @@ void GazeRig::create(bool eyes_subaction) {
     action_info.subactionPaths = &eyes;
   }
   XRRT_ASSERT_XR(xrCreateAction(set, &action_info, &gaze));
+  if (extras) {
+    XrPath two[2] = {eyes, XR_NULL_PATH};
+    XRRT_ASSERT_XR(xrStringToPath(hs.instance, "/user/hand/left", &two[1]));
+    XrActionCreateInfo info{XR_TYPE_ACTION_CREATE_INFO};
+    info.countSubactionPaths = 2;
+    info.subactionPaths = two;
+    info.actionType = XR_ACTION_TYPE_BOOLEAN_INPUT;
+    std::strcpy(info.actionName, "button");
+    std::strcpy(info.localizedActionName, "Button");
+    XRRT_ASSERT_XR(xrCreateAction(set, &info, &button));
+    info.actionType = XR_ACTION_TYPE_POSE_INPUT;
+    std::strcpy(info.actionName, "other_pose");
+    std::strcpy(info.localizedActionName, "Other pose");
+    XRRT_ASSERT_XR(xrCreateAction(set, &info, &other_pose));
+  }
   const XrActionSuggestedBinding b{gaze, pose_path};
   XrInteractionProfileSuggestedBinding suggested{XR_TYPE_INTERACTION_PROFILE_SUGGESTED_BINDING};
   suggested.interactionProfile = profile;
@@ -175,7 +190,11 @@ XrTime GazeRig::frame() {
 }
 
 XrResult GazeRig::sync() {
-  XrActiveActionSet active{set, XR_NULL_PATH};
+  return sync(XR_NULL_PATH);
+}
+
+XrResult GazeRig::sync(XrPath subaction) {
+  XrActiveActionSet active{set, subaction};
   XrActionsSyncInfo info{XR_TYPE_ACTIONS_SYNC_INFO};
   info.countActiveActionSets = 1;
   info.activeActionSets = &active;

@@ -60,9 +60,14 @@ struct GazeRig {
   XrBool32 supported = XR_FALSE;
   XrTime first_frame = 0;
 
+  // With `extras`: a boolean action and a pose action in the same set, neither bound to the
+  // eye-gaze profile, both listing /user/eyes_ext and /user/hand/left as subaction paths.
+  XrAction button = XR_NULL_HANDLE, other_pose = XR_NULL_HANDLE;
+
   // Instance (eye gaze + headless), system check, action set / action / binding, attach, spaces,
   // begin. `eyes_subaction`: the action lists /user/eyes_ext as a subaction path.
-  void create(bool eyes_subaction = false);
+  void create(bool eyes_subaction = false, bool extras = false);
+  XrResult sync(XrPath subaction);
   XrTime frame();  // wait, begin, end (no layers); records the first predicted display time
   XrResult sync();
   bool active(XrPath subaction = XR_NULL_PATH);

@@ -70,8 +70,9 @@ class ObjectStore {
   std::uint32_t add(const glm::dvec3& center_m, double radius_m, const glm::dvec3& velocity_m_s,
                     std::span<const LodLevel> levels);
   void set_motion(std::uint32_t id, const glm::dvec3& center_m, const glm::dvec3& velocity_m_s);
-  // Removes object `id`: the last object moves into its place (ids stay dense). Linear in the
-  // objects' levels (registration time, not per frame). Throws std::out_of_range.
+  // Removes object `id`: the last object moves into its place (ids stay dense). Its levels are
+  // left as a hole, packed out when holes are half the levels: amortised constant time. Throws
+  // std::out_of_range.
   void remove(std::uint32_t id);
   void reserve(std::size_t objects, std::size_t levels);
   std::size_t size() const { return radius_.size(); }
@@ -83,6 +84,8 @@ class ObjectStore {
   std::vector<DetailKind> kind_;
   std::vector<std::uint32_t> first_;
   std::vector<std::uint8_t> count_;
+  std::size_t dead_levels_ = 0;  // entries of weight_ that no object's chain covers
+  void pack_levels() noexcept;
 };
 
 }  // namespace gazelod::lod

@@ -23,6 +23,11 @@
 namespace gazelod::bake {
 namespace {
 
+// Limits that keep the recursive walks (tinygltf's JSON parser, the node walks of bake and
+// run) off the end of the stack, far above what real files use.
+constexpr std::size_t kMaxNodeDepth = 1024;
+constexpr int kMaxJsonDepth = 256;
+
 // tinygltf image callback: keep the encoded bytes as they are (Image::as_is).
 bool keep_image_bytes(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
                       const unsigned char* bytes, int size, void*) {
@@ -120,11 +125,18 @@ void check_scene_graph(const std::string& path, const tinygltf::Model& m) {
       fail(at, n.matrix.size() == 16 ? "matrix is singular (zero or collapsing scale): nothing could be drawn from it"
                                      : "scale or rotation collapses the node (a zero scale or rotation)");
   }
-  for (std::size_t s = 0; s < m.scenes.size(); ++s)
-    for (std::size_t k = 0; k < m.scenes[s].nodes.size(); ++k) {
-      const int r = m.scenes[s].nodes[k];
-      if (r < 0 || static_cast<std::size_t>(r) >= nodes)
-        fail("/scenes/" + std::to_string(s) + "/nodes/" + std::to_string(k), "no node " + std::to_string(r));
+  // glTF 2.0: a node has at most one parent and a scene lists only roots. A node shared by two
+  // parents (or listed twice by one) makes every walk over the graph visit it once per path:
+  // 32 nodes each listing the next twice meant 2^32 visits.
+  std::vector<int> parent(nodes, -1);
+  for (std::size_t i = 0; i < nodes; ++i)
+    for (std::size_t k = 0; k < m.nodes[i].children.size(); ++k) {
+      const auto c = static_cast<std::size_t>(m.nodes[i].children[k]);
+      if (parent[c] >= 0)
+        fail("/nodes/" + std::to_string(i) + "/children/" + std::to_string(k),
+             "node " + std::to_string(c) + " is already a child of node " + std::to_string(parent[c]) +
+                 " (glTF 2.0: a node has at most one parent)");
+      parent[c] = static_cast<int>(i);
     }
   // A cycle: a node reached again while it is on the current path (depth-first, iterative so a
   // deep chain cannot overflow the stack).
@@ -151,6 +163,38 @@ void check_scene_graph(const std::string& path, const tinygltf::Model& m) {
       }
     }
   }
+  // Depth below the root, up the parent links (one each, no cycle): the walks after this one
+  // recurse, so it is bounded (a chain of 20 000 nodes overflowed them; real scenes are tens
+  // deep).
+  std::vector<std::size_t> depth(nodes, 0);  // 0: not known yet; a root is 1
+  std::vector<std::size_t> up;
+  for (std::size_t i = 0; i < nodes; ++i) {
+    std::size_t n = i;
+    up.clear();
+    while (depth[n] == 0 && parent[n] >= 0) {
+      up.push_back(n);
+      n = static_cast<std::size_t>(parent[n]);
+    }
+    if (depth[n] == 0) depth[n] = 1;  // a root
+    for (auto it = up.rbegin(); it != up.rend(); ++it) {
+      depth[*it] = depth[static_cast<std::size_t>(parent[*it])] + 1;
+      if (depth[*it] > kMaxNodeDepth)
+        fail("/nodes/" + std::to_string(*it),
+             "node graph deeper than " + std::to_string(kMaxNodeDepth) + " levels (gazelod's limit)");
+    }
+  }
+  for (std::size_t s = 0; s < m.scenes.size(); ++s)
+    for (std::size_t k = 0; k < m.scenes[s].nodes.size(); ++k) {
+      const int r = m.scenes[s].nodes[k];
+      const std::string at = "/scenes/" + std::to_string(s) + "/nodes/" + std::to_string(k);
+      if (r < 0 || static_cast<std::size_t>(r) >= nodes) fail(at, "no node " + std::to_string(r));
+      if (parent[static_cast<std::size_t>(r)] >= 0)
+        fail(at, "node " + std::to_string(r) + " is a child of node " +
+                     std::to_string(parent[static_cast<std::size_t>(r)]) + ", not a root (glTF 2.0)");
+    }
+  if (m.defaultScene >= 0 && static_cast<std::size_t>(m.defaultScene) >= m.scenes.size())
+    fail("/scene",
+         "no scene " + std::to_string(m.defaultScene) + " (the file has " + std::to_string(m.scenes.size()) + ")");
 }
 
 std::uint32_t le32(const unsigned char* p) {
@@ -171,8 +215,17 @@ void refuse_compressed_geometry(const std::string& path, const std::vector<unsig
     if (bytes.size() < 20) return;
     begin = 20, end = std::min<std::size_t>(bytes.size(), 20 + std::size_t{le32(bytes.data() + 12)});
   }
+  // tinygltf parses JSON recursively: 30 000 nested arrays in "extras" overflowed its stack.
+  int depth = 0;
+  const nlohmann::json::parser_callback_t deepest = [&](int d, nlohmann::json::parse_event_t, nlohmann::json&) {
+    depth = std::max(depth, d);
+    return true;
+  };
   const nlohmann::json doc = nlohmann::json::parse(bytes.begin() + static_cast<std::ptrdiff_t>(begin),
-                                                   bytes.begin() + static_cast<std::ptrdiff_t>(end), nullptr, false);
+                                                   bytes.begin() + static_cast<std::ptrdiff_t>(end), deepest, false);
+  if (depth > kMaxJsonDepth)
+    throw BakeError(path + ": JSON nested deeper than " + std::to_string(kMaxJsonDepth) +
+                    " levels of arrays and objects (gazelod's limit; glTF itself needs about 8)");
   if (!doc.is_object()) return;  // tinygltf says what is wrong with it
   const auto required = doc.find("extensionsRequired");
   if (required == doc.end() || !required->is_array()) return;

@@ -240,6 +240,13 @@ TEST(BakeErrors, BadOptions) {
 namespace gazelod::bake {
 namespace {
 
+// A node without a mesh (tinygltf writes a node with no field set as null, not {}).
+tinygltf::Node named_node() {
+  tinygltf::Node n;
+  n.name = "empty";
+  return n;
+}
+
 // The scene graph `run --scene` needs, checked by the loader both bakes share: the same
 // BakeError from chains and --clusters, and no output (they wrote such files with exit 0).
 TEST(BakeErrors, SceneGraphProblemsAreRefusedByBothBakes) {
@@ -257,6 +264,37 @@ TEST(BakeErrors, SceneGraphProblemsAreRefusedByBothBakes) {
        },
        "node graph has a cycle"},
       {"child", [](tinygltf::Model& m) { m.nodes[0].children = {7}; }, "/nodes/0/children/0: no node 7"},
+      // glTF 2.0 allows one parent per node: shared children made the walks exponential.
+      {"two_parents",
+       [](tinygltf::Model& m) {
+         m.nodes.push_back(named_node());
+         m.nodes[0].children = {1, 1};
+       },
+       "/nodes/0/children/1: node 1 is already a child of node 0"},
+      {"scene_child",
+       [](tinygltf::Model& m) {
+         m.nodes.push_back(named_node());
+         m.nodes[0].children = {1};
+         m.scenes[0].nodes.push_back(1);
+       },
+       "node 1 is a child of node 0, not a root"},
+      {"default_scene", [](tinygltf::Model& m) { m.defaultScene = 3; }, "/scene: no scene 3 (the file has 1)"},
+      // Deep enough to overflow the stack of the walks after loading (20 000 did).
+      {"deep",
+       [](tinygltf::Model& m) {
+         for (int i = 1; i <= 1100; ++i) {
+           m.nodes.push_back(named_node());
+           m.nodes[static_cast<std::size_t>(i - 1)].children = {i};
+         }
+       },
+       "node graph deeper than 1024 levels"},
+      {"deep_json",
+       [](tinygltf::Model& m) {
+         tinygltf::Value v(1.0);
+         for (int i = 0; i < 300; ++i) v = tinygltf::Value(tinygltf::Value::Array{v});
+         m.nodes[0].extras = v;
+       },
+       "JSON nested deeper than 256 levels"},
       {"scene", [](tinygltf::Model& m) { m.scenes[0].nodes.push_back(9); }, "/scenes/0/nodes/1: no node 9"},
       {"mesh", [](tinygltf::Model& m) { m.nodes[0].mesh = 5; }, "/nodes/0/mesh: no mesh 5"},
       {"zero_scale",

@@ -112,6 +112,7 @@ TEST(RunCli, DecisionsCannotReplaceTheReportAndNoPhantomFramePng) {
     EXPECT_EQ(r.rc, 2) << r.err;
     EXPECT_NE(r.err.find(std::string("is the run's ") + report), std::string::npos) << r.err;
     EXPECT_FALSE(std::filesystem::exists(dir / report)) << "refused before anything was written";
+    EXPECT_FALSE(std::filesystem::exists(dir / "scenario.json")) << "refused before anything was written";
   }
   const CliResult r = run_cli({"run", "--frames", "6", "--quiet", "--capture-frame", "50", "--out", dir.string()});
   ASSERT_EQ(r.rc, 0) << r.err;
@@ -119,6 +120,54 @@ TEST(RunCli, DecisionsCannotReplaceTheReportAndNoPhantomFramePng) {
   EXPECT_EQ(r.out.find("frame.png"), std::string::npos) << r.out;
   EXPECT_NE(r.err.find("no frame.png: --capture-frame 50 is past the run's last frame (6 frames)"), std::string::npos)
       << r.err;
+}
+
+// The run's inputs cannot be its outputs: a scenario kept as --out/scenario.json or a trace as
+// --out/frames.csv was replaced by the report (exit 0). And a scenario too deep or with a key
+// twice is refused on the --hmd path as on the plain one (--hmd crashed on 200 000 levels).
+TEST(RunCli, InputsAreNeverReplacedByTheReportAndHmdParsesStrictly) {
+  const auto dir = scratch_dir();
+  use_simulated_runtime("");
+  CliResult r = run_cli({"scenario", "print", "--default"});
+  ASSERT_EQ(r.rc, 0) << r.err;
+  const std::string scenario = r.out;
+  { std::ofstream(dir / "scenario.json") << scenario; }
+  r = run_cli({"run", "--frames", "5", "--no-render", "--quiet", "--scenario", (dir / "scenario.json").string(),
+               "--out", dir.string()});
+  EXPECT_EQ(r.rc, 2);
+  EXPECT_NE(r.err.find("is where the run writes its scenario.json"), std::string::npos) << r.err;
+  EXPECT_EQ(read_text(dir / "scenario.json"), scenario) << "the input was replaced";
+  r = run_cli({"scenario", "record", "--default", "--out", (dir / "frames.csv").string(), "--duration", "0.5"});
+  ASSERT_EQ(r.rc, 0) << r.err;
+  const std::string trace = read_text(dir / "frames.csv");
+  r = run_cli({"run", "--frames", "5", "--no-render", "--quiet", "--trace", (dir / "frames.csv").string(), "--out",
+               dir.string()});
+  EXPECT_EQ(r.rc, 2);
+  EXPECT_NE(r.err.find("is where the run writes its frames.csv"), std::string::npos) << r.err;
+  EXPECT_EQ(read_text(dir / "frames.csv"), trace) << "the input was replaced";
+
+  const auto bad = dir / "bad";
+  std::filesystem::create_directories(bad);
+  {
+    std::ofstream(bad / "deep.json") << "{\"version\":1,\"x\":" << std::string(100000, '[') << std::string(100000, ']')
+                                     << "}";
+  }
+  std::string twice = scenario;
+  twice.insert(twice.find('{') + 1, "\"duration_s\": 5, \"duration_s\": 100000,");
+  { std::ofstream(bad / "twice.json") << twice; }
+  for (const char* hmd : {"", "index"}) {
+    std::vector<std::string> args = {"run", "--frames", "5", "--no-render", "--quiet", "--out", (bad / "out").string()};
+    if (*hmd) args.insert(args.end(), {"--hmd", hmd});
+    auto deep = args, dup = args;
+    deep.insert(deep.end(), {"--scenario", (bad / "deep.json").string()});
+    dup.insert(dup.end(), {"--scenario", (bad / "twice.json").string()});
+    r = run_cli(deep);
+    EXPECT_EQ(r.rc, 2) << hmd;
+    EXPECT_NE(r.err.find("nesting must be at most 64 levels"), std::string::npos) << r.err;
+    r = run_cli(dup);
+    EXPECT_EQ(r.rc, 2) << hmd;
+    EXPECT_NE(r.err.find("duration_s: the key appears twice"), std::string::npos) << r.err;
+  }
 }
 
 TEST(RunCli, WithoutEyeGazeFallsBackToHeadFixedAndSaysSo) {

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // Ctrl-C or SIGTERM during `gazelod run` (the program, as a user runs it): the run stops at a
 // frame boundary, ends the session, writes the report of the frames done marked interrupted,
-// commits --decisions, leaves no temporary file, and exits 128 + the signal.
+// commits --decisions, leaves no temporary file, and exits 128 + the signal. `gazelod eval
+// family` stops with no report and no work folder left.
 #include "run_test_util.hpp"
 
 #include <gtest/gtest.h>
@@ -13,6 +14,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <thread>
@@ -22,20 +24,17 @@ extern char** environ;
 namespace gazelod::test {
 namespace {
 
-// Starts `gazelod run` for far more frames than it will get, signals it once it has run a
-// second, returns the exit status.
-int run_and_signal(const std::filesystem::path& out, int signal) {
+// Starts `gazelod ARGS`, signals it once it has run a second and a half, returns the exit
+// status; its output goes to log.
+int spawn_and_signal(std::vector<std::string> args, const std::string& log, int signal) {
   const std::string program = std::string(GAZELOD_BINARY_DIR) + "/apps/gazelod/gazelod";
-  const std::string out_dir = out.string(), decisions = (out / "decisions.csv").string();
-  std::vector<std::string> args = {program,   "run",   "--frames", "1000000",     "--no-render",
-                                   "--quiet", "--out", out_dir,    "--decisions", decisions};
+  args.insert(args.begin(), program);
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
   pid_t pid = 0;
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
-  const std::string log = (out.parent_path() / "run.log").string();
   posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   posix_spawn_file_actions_adddup2(&actions, 1, 2);
   EXPECT_EQ(posix_spawn(&pid, program.c_str(), &actions, nullptr, argv.data(), environ), 0);
@@ -49,9 +48,16 @@ int run_and_signal(const std::filesystem::path& out, int signal) {
   if (waitpid(pid, &status, WNOHANG) == 0) {
     kill(pid, SIGKILL);
     waitpid(pid, &status, 0);
-    ADD_FAILURE() << "gazelod run did not stop within 30 s of the signal";
+    ADD_FAILURE() << "gazelod " << args[1] << " did not stop within 30 s of the signal";
   }
   return WIFEXITED(status) ? WEXITSTATUS(status) : 1000 + WTERMSIG(status);
+}
+
+// `gazelod run` for far more frames than it will get.
+int run_and_signal(const std::filesystem::path& out, int signal) {
+  return spawn_and_signal({"run", "--frames", "1000000", "--no-render", "--quiet", "--out", out.string(), "--decisions",
+                           (out / "decisions.csv").string()},
+                          (out.parent_path() / "run.log").string(), signal);
 }
 
 TEST(RunSignals, FirstSignalStopsWithAReportMarkedInterrupted) {
@@ -72,6 +78,27 @@ TEST(RunSignals, FirstSignalStopsWithAReportMarkedInterrupted) {
     for (const auto& e : std::filesystem::directory_iterator(out))
       EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
     EXPECT_NE(read_text(dir / "run.log").find("ending the session and writing the report"), std::string::npos);
+  }
+}
+
+// `gazelod eval family` stops too: between seeds or in a seed's run, with a message, exit 128 +
+// the signal, no report, and its temporary work folder removed (it died with 143 and left it).
+TEST(RunSignals, EvalFamilyStopsWithoutAReportAndRemovesItsWork) {
+  for (int signal : {SIGINT, SIGTERM}) {
+    const auto dir = scratch_dir() / (signal == SIGINT ? "family_int" : "family_term");
+    std::filesystem::create_directories(dir / "tmp");
+    use_simulated_runtime("");
+    ASSERT_EQ(setenv("TMPDIR", (dir / "tmp").c_str(), 1), 0);
+    const int rc =
+        spawn_and_signal({"eval", "family", "--seeds", "1-500", "--duration", "2", "--out", (dir / "out").string()},
+                         (dir / "family.log").string(), signal);
+    unsetenv("TMPDIR");
+    const std::string log = read_text(dir / "family.log");
+    EXPECT_EQ(rc, 128 + signal) << log;
+    EXPECT_NE(log.find(std::string("stopped by ") + (signal == SIGINT ? "SIGINT" : "SIGTERM")), std::string::npos)
+        << log;
+    EXPECT_FALSE(std::filesystem::exists(dir / "out" / "family.json"));
+    EXPECT_TRUE(std::filesystem::is_empty(dir / "tmp")) << "the work folder was left in " << (dir / "tmp");
   }
 }
 

@@ -4,6 +4,7 @@
 #include "apps/gazelod/eval/work.hpp"
 #include "apps/gazelod/run/report.hpp"
 #include "apps/gazelod/run/session.hpp"
+#include "apps/gazelod/run/signals.hpp"
 #include "auxiliary/atomic_file.hpp"
 #include "auxiliary/time.hpp"
 #include "sim/scenario_family.hpp"
@@ -82,8 +83,20 @@ std::vector<FamilyMember> run_family(std::uint64_t first, int count, double dura
   if (const std::string bad = gaze::validate_conditioner_config(settings.conditioning); !bad.empty())
     throw UsageError("--set: conditioner." + bad);
   WorkDir work(work_dir, "gazelod-eval-family");
+  // Ctrl-C or SIGTERM stops between seeds, or the seed's run at its next frame: no report (a
+  // family cut short is no distribution), the work folder removed as the stack unwinds.
+  StopOnSignal stop;
+  const auto stop_if_asked = [&](int done) {
+    if (const int sig = stop.requested()) {
+      stop.acted_on();
+      throw UsageError("stopped by " + std::string(StopOnSignal::name(sig)) + " after " + std::to_string(done) +
+                           " of " + std::to_string(count) + " seeds; no report written",
+                       128 + sig);
+    }
+  };
   std::vector<FamilyMember> members;
   for (int k = 0; k < count; ++k) {
+    stop_if_asked(k);
     const std::uint64_t seed = first + static_cast<std::uint64_t>(k);
     sim::FamilyScenario f = sim::family_scenario(seed, duration_s, settings.ideal, settings.tracker_offset_deg);
     if (settings.recording) {
@@ -112,6 +125,7 @@ std::vector<FamilyMember> run_family(std::uint64_t first, int count, double dura
     o.result = &summary;
     std::ostringstream out, err;
     const int rc = run_session(o, Io{out, err});
+    stop_if_asked(k);
     if (rc != 0) throw UsageError("family seed " + std::to_string(seed) + ": the run failed: " + err.str(), rc);
     if (!summary.audit.available)
       throw UsageError("family seed " + std::to_string(seed) + ": no audit: " + summary.audit.reason, 1);
@@ -274,6 +288,12 @@ int run_eval_family(const FamilyFlags& flags, Io io) {
     const auto s = std::chrono::duration_cast<std::chrono::seconds>(std::chrono::steady_clock::now() - started).count();
     io.err << "gazelod eval family [" << s << " s]: " << line << "\n" << std::flush;
   };
+  // --out first: a folder that cannot be made would otherwise be found after every seed ran.
+  std::error_code out_ec;
+  std::filesystem::create_directories(flags.out, out_ec);
+  if (out_ec || !std::filesystem::is_directory(flags.out))
+    throw UsageError("--out: cannot create the folder '" + flags.out + "'" +
+                     (out_ec ? ": " + out_ec.message() : std::string(": a file is in the way")));
   const std::vector<FamilyMember> members = run_family(first, count, duration_s, settings, flags.work, progress);
   std::string command = "gazelod eval family --seeds " + flags.seeds;
   if (flags.duration_s != 20.0) command += " --duration " + fmt("%g", flags.duration_s);

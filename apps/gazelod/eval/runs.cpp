@@ -15,8 +15,9 @@ EvalRun eval_run(const ReddyScenario& scenario, const std::string& criteria, boo
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   // The scenario goes to a file because the simulated runtime, loaded by the OpenXR loader,
-  // reads it from one; the run itself is a function call.
-  const auto scenario_path = dir / "scenario.json";
+  // reads it from one; the run itself is a function call. Not scenario.json: that is the run's
+  // own record of the scenario as run, which it may not write over its input.
+  const auto scenario_path = dir / "reddy.json";
   {
     std::ofstream f(scenario_path);
     f << reddy_scenario_json(scenario);

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "apps/gazelod/run/scenario.hpp"
 
+#include "auxiliary/json_strict.hpp"
+
 #include "auxiliary/atomic_file.hpp"
 #include "bake/baked_scene.hpp"
 #include "bake/bake_error.hpp"
@@ -37,6 +39,19 @@ void set_env(const char* name, const std::string& value) {
 
 // --scene: the baked glTF's objects and LOD chains replace the scenario's scene objects, in the
 // scenario text itself, so the simulated runtime and this process step the same scenario.
+// The scenario's text for a patch (--hmd, --scene), parsed as strictly as the scenario loader
+// reads it (nesting depth, repeated keys): the patched text is what it reads, and dump()
+// recurses as deep as the text nests.
+nlohmann::json parse_scenario_text(const std::string& text, const std::string& label) {
+  try {
+    return aux::parse_json_strict(text);
+  } catch (const aux::JsonStrictError& e) {
+    throw UsageError(label + ": " + (e.path().empty() ? e.message() : std::string(e.what())));
+  } catch (const nlohmann::json::exception& e) {
+    throw UsageError(label + ": not JSON: " + e.what());
+  }
+}
+
 // Placement "in-front" moves the scene in front of the viewer's start (its bounding sphere's
 // centre 2 radii + 1 m down -Z, at eye height); "file" keeps the glTF's coordinates (glTF +Y up
 // and OpenXR LOCAL +Y up agree; the glTF origin is LOCAL's). `shift` gets the translation.
@@ -45,12 +60,7 @@ void set_env(const char* name, const std::string& value) {
 std::string with_baked_scene(const std::string& text, const std::string& label, const bake::BakedScene& scene_file,
                              const std::string& placement, glm::dvec3& shift_out) {
   const std::vector<bake::BakedObject>& baked = scene_file.objects;
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::exception& e) {
-    throw UsageError(label + ": not JSON: " + e.what());
-  }
+  nlohmann::json j = parse_scenario_text(text, label);
   glm::dvec3 lo(1e300), hi(-1e300);
   for (const auto& b : baked) {
     lo = glm::min(lo, b.center_m - glm::dvec3(b.radius_m));
@@ -121,7 +131,7 @@ std::string with_trace_head(const std::string& text, const std::string& trace_pa
     throw UsageError(std::string("--trace: ") + e.what());
   }
   if (!head) return text;
-  nlohmann::json j = nlohmann::json::parse(text);  // loaded once already: valid JSON
+  nlohmann::json j = aux::parse_json_strict(text);  // loaded once already: valid, strict JSON
   nlohmann::json kept = nlohmann::json::array();
   std::string dropped;
   for (const auto& e : j.value("effects", nlohmann::json::array())) {
@@ -145,7 +155,40 @@ std::string with_trace_head(const std::string& text, const std::string& trace_pa
 
 }  // namespace
 
+// No file the run reads or writes elsewhere may be one of the report's files in --out: the run
+// would replace its own input (a scenario named scenario.json, a trace named frames.csv), or
+// one output another. Checked before anything is written.
+void check_run_paths(const RunOptions& opt) {
+  const auto same_file = [](const std::filesystem::path& a, const std::filesystem::path& b) {
+    std::error_code e1, e2;
+    return std::filesystem::weakly_canonical(a, e1) == std::filesystem::weakly_canonical(b, e2) && !e1 && !e2;
+  };
+  const std::pair<std::string, const char*> inputs[] = {
+      {opt.scenario_path, "--scenario"}, {opt.trace_path, "--trace"}, {opt.scene_path, "--scene"}};
+  for (const auto& [path, option] : inputs) {
+    if (path.empty()) continue;
+    for (const char* report : kRunReportFiles)
+      if (same_file(path, opt.out_dir / report))
+        throw UsageError(std::string(option) + ": '" + path + "' is where the run writes its " + report +
+                         " (in --out); choose another --out, or copy the file elsewhere first");
+  }
+  for (const auto& [path, option] :
+       {std::pair{opt.decisions_path, "--decisions"}, std::pair{opt.cluster_decisions_path, "--cluster-decisions"}}) {
+    if (path.empty()) continue;
+    for (const char* report : kRunReportFiles)
+      if (same_file(path, opt.out_dir / report))
+        throw UsageError(std::string(option) + ": '" + path + "' is the run's " + report +
+                         " (in --out); write the decisions to another file");
+    for (const auto& [in, in_option] : inputs)
+      if (!in.empty() && same_file(path, in))
+        throw UsageError(std::string(option) + ": '" + path + "' is the run's " + in_option + " input");
+  }
+  if (!opt.decisions_path.empty() && same_file(opt.decisions_path, opt.cluster_decisions_path))
+    throw UsageError("--cluster-decisions: the same file as --decisions");
+}
+
 PreparedScenario prepare_scenario(const RunOptions& opt) {
+  check_run_paths(opt);
   PreparedScenario p;
   p.label = opt.scenario_path.empty() ? "default" : opt.scenario_path;
   std::string text =
@@ -155,12 +198,7 @@ PreparedScenario prepare_scenario(const RunOptions& opt) {
   if (!opt.hmd.empty()) {
     if (lod::find_display_preset(opt.hmd) == nullptr)
       throw UsageError("--hmd: unknown HMD '" + opt.hmd + "' (see gazelod hmds)");
-    nlohmann::json j;
-    try {
-      j = nlohmann::json::parse(text);
-    } catch (const nlohmann::json::exception& e) {
-      throw UsageError(p.label + ": not JSON: " + e.what());
-    }
+    nlohmann::json j = parse_scenario_text(text, p.label);
     if (!j.is_object()) throw UsageError(p.label + ": the scenario must be a JSON object");
     j["display"] = opt.hmd;
     text = j.dump(2);

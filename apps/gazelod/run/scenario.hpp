@@ -37,6 +37,10 @@ struct PreparedScenario {
 };
 
 // Throws UsageError naming the scenario file / JSON path, the scene file, or the output folder.
+// The files a run writes in --out (the report, and the scenario as run).
+inline constexpr const char* kRunReportFiles[] = {"summary.json", "frames.csv", "frames.svg",
+                                                  "audit.svg",    "frame.png",  "scenario.json"};
+
 PreparedScenario prepare_scenario(const RunOptions& options);
 
 // Sets XR_RUNTIME_JSON (the simulated runtime built with this program, unless the caller

@@ -10,27 +10,6 @@
 #include <cstdio>
 
 namespace gazelod::cli::run_steps {
-namespace {
-
-// Neither decisions file may replace one of the report's files, nor the other.
-void check_decisions_paths(const RunOptions& opt) {
-  const auto same_file = [](const std::filesystem::path& a, const std::filesystem::path& b) {
-    std::error_code e1, e2;
-    return std::filesystem::weakly_canonical(a, e1) == std::filesystem::weakly_canonical(b, e2) && !e1 && !e2;
-  };
-  for (const auto& [path, option] :
-       {std::pair{opt.decisions_path, "--decisions"}, std::pair{opt.cluster_decisions_path, "--cluster-decisions"}}) {
-    if (path.empty()) continue;
-    for (const char* report : {"summary.json", "frames.csv", "frames.svg", "audit.svg", "frame.png", "scenario.json"})
-      if (same_file(path, opt.out_dir / report))
-        throw UsageError(std::string(option) + ": '" + path + "' is the run's " + report +
-                         " (in --out); write the decisions to another file");
-  }
-  if (!opt.decisions_path.empty() && same_file(opt.decisions_path, opt.cluster_decisions_path))
-    throw UsageError("--cluster-decisions: the same file as --decisions");
-}
-
-}  // namespace
 
 // The scenario: the runtime serves it; this process also steps it for object motion.
 Session::Session(const RunOptions& opt, Io io)
@@ -62,7 +41,6 @@ void Session::split_objects() {
 // Opened before the session so that a bad path fails at once; committed (renamed into place)
 // only after the last frame.
 void Session::open_decision_files() {
-  check_decisions_paths(opt_);
   if (!opt_.decisions_path.empty()) {
     std::vector<std::string> names;
     for (std::size_t i : plain_) names.push_back(scenario_.objects[i].name);

@@ -2,6 +2,8 @@
 // Ctrl-C and SIGTERM during `gazelod run`: the first asks the run to stop at the next frame
 // boundary (end the session, write the report of the frames done, marked interrupted, remove
 // temporaries); a second one ends the process at once with the signal's default action.
+// Stoppers nest (`gazelod eval family` holds one around its runs): the outermost owns the
+// handlers, and every one sees the same request. Not for use from several threads.
 #pragma once
 
 namespace gazelod::cli {

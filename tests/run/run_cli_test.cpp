@@ -122,10 +122,11 @@ TEST(RunCli, DecisionsCannotReplaceTheReportAndNoPhantomFramePng) {
       << r.err;
 }
 
-// The run's inputs cannot be its outputs: a scenario kept as --out/scenario.json or a trace as
-// --out/frames.csv was replaced by the report (exit 0). And a scenario too deep or with a key
-// twice is refused on the --hmd path as on the plain one (--hmd crashed on 200 000 levels).
-TEST(RunCli, InputsAreNeverReplacedByTheReportAndHmdParsesStrictly) {
+// Refused before the run: inputs that are its outputs (a scenario kept as --out/scenario.json or
+// a trace as --out/frames.csv was replaced by the report, exit 0), a plan whose records would
+// not fit in memory (it only warned), and a scenario too deep or with a key twice on the --hmd
+// path as on the plain one (--hmd crashed on 200 000 levels).
+TEST(RunCli, BadInputsAndPlansAreRefusedBeforeTheRun) {
   const auto dir = scratch_dir();
   use_simulated_runtime("");
   CliResult r = run_cli({"scenario", "print", "--default"});
@@ -145,6 +146,16 @@ TEST(RunCli, InputsAreNeverReplacedByTheReportAndHmdParsesStrictly) {
   EXPECT_EQ(r.rc, 2);
   EXPECT_NE(r.err.find("is where the run writes its frames.csv"), std::string::npos) << r.err;
   EXPECT_EQ(read_text(dir / "frames.csv"), trace) << "the input was replaced";
+
+  // A plan whose per-frame records alone would need more than half the machine's memory.
+  nlohmann::json huge = nlohmann::json::parse(scenario);
+  huge["duration_s"] = 1e6;
+  huge["frame_rate_hz"] = 1000;
+  { std::ofstream(dir / "huge.json") << huge.dump(); }
+  r = run_cli(
+      {"run", "--no-render", "--quiet", "--scenario", (dir / "huge.json").string(), "--out", (dir / "huge").string()});
+  EXPECT_EQ(r.rc, 2);
+  EXPECT_NE(r.err.find("1000000000 frames would keep about 1624 GB"), std::string::npos) << r.err;
 
   const auto bad = dir / "bad";
   std::filesystem::create_directories(bad);

@@ -6,6 +6,8 @@
 #include "gaze/hid/hid_gaze_source.hpp"
 #include "render/lod_palette.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cstdio>
 
@@ -179,7 +181,20 @@ void Session::plan_frames() {
   // Every frame keeps a record for the report: say so before a run that will hold gigabytes
   // (a scenario of hours at 1 kHz), and reserve at most 65,536 up front (a reserve of
   // the whole plan failed with std::bad_alloc before the first frame).
+  // A plan past half the machine's memory is refused before it starts: it would run for hours
+  // and end killed, or swapping, with nothing written.
   const double record_gb = static_cast<double>(planned_) * static_cast<double>(sizeof(FrameRecord) + 32) / 1e9;
+  const long pages = ::sysconf(_SC_PHYS_PAGES), page_size = ::sysconf(_SC_PAGESIZE);
+  const double memory_gb =
+      pages > 0 && page_size > 0 ? static_cast<double>(pages) * static_cast<double>(page_size) / 1e9 : 0.0;
+  if (memory_gb > 0.0 && record_gb > 0.5 * memory_gb) {
+    char line[256];
+    std::snprintf(line, sizeof line,
+                  "%lld frames would keep about %.0f GB of per-frame records for the report, more than half of this "
+                  "machine's %.0f GB; bound the run with --frames",
+                  static_cast<long long>(planned_), record_gb, memory_gb);
+    throw UsageError(line);
+  }
   if (record_gb > 2.0)
     io_.err << "gazelod run: " << planned_ << " frames will keep about " << static_cast<int>(record_gb + 0.5)
             << " GB of per-frame records for the report; bound the run with --frames\n";

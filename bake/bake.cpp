@@ -186,6 +186,7 @@ BakeReport bake_model(tinygltf::Model& m, const BakeOptions& o) {
 BakeReport bake_file(const std::string& in, const std::string& out, const BakeOptions& o) {
   const auto t0 = Clock::now();
   LoadedGltf loaded = load_gltf(in, o.load);
+  refuse_output_over_input(in, loaded, out);  // before the bake, not after its minutes
   BakeReport report;
   try {
     report = bake_model(loaded.model, o);

@@ -87,6 +87,8 @@ struct Reader {
   BakedLevelMesh level_mesh(int mesh) const {
     BakedLevelMesh out;
     for (std::size_t p = 0; p < m.meshes[static_cast<std::size_t>(mesh)].primitives.size(); ++p) {
+      // Points and lines (bake --clusters carries them over) have no levels: not drawn here.
+      if (!draws_triangles(m.meshes[static_cast<std::size_t>(mesh)].primitives[p])) continue;
       PrimitiveGeometry g;
       try {
         g = extract_primitive(m, mesh, static_cast<int>(p));
@@ -149,9 +151,17 @@ struct Reader {
     if (std::string e = lod::validate_chain(o.lods); !e.empty())
       fail("/nodes/" + std::to_string(node), "LOD chain: " + e);
     if (level_geometry)
-      for (int mesh : meshes) {
+      for (std::size_t l = 0; l < meshes.size(); ++l) {
+        const int mesh = meshes[l];
         if (static_cast<std::size_t>(mesh) >= m.meshes.size()) fail("/meshes", "no mesh " + std::to_string(mesh));
         o.level_meshes.push_back(level_mesh(mesh));
+        // A baked chain's level must be the level drawn (a primitive turned to points or lines
+        // is no longer drawn, and the report's triangles would be wrong). A cluster mesh's one
+        // level counts its hierarchy's triangles, without the degenerate ones the bake dropped.
+        const std::size_t drawn = o.level_meshes.back().indices.size() / 3;
+        if (cluster_mesh_of[static_cast<std::size_t>(mesh)] < 0 && drawn != o.lods[l].triangles)
+          throw BakeError(path + ": " + mesh_label(m, mesh) + ": level " + std::to_string(l) + " draws " +
+                          std::to_string(drawn) + " triangles, its chain says " + std::to_string(o.lods[l].triangles));
       }
     sphere(node, world, o);
     o.world = world;
@@ -168,7 +178,10 @@ struct Reader {
     if (n.mesh >= 0) {
       if (static_cast<std::size_t>(n.mesh) >= m.meshes.size())
         fail("/nodes/" + std::to_string(node) + "/mesh", "no such mesh");
-      object(node, world, out);
+      // A mesh of points or lines only, which bake --clusters carries over unbaked: no object.
+      const auto& prims = m.meshes[static_cast<std::size_t>(n.mesh)].primitives;
+      if (std::any_of(prims.begin(), prims.end(), [](const tinygltf::Primitive& p) { return draws_triangles(p); }))
+        object(node, world, out);
     }
     for (int c : n.children) visit(c, world, on_path, out);
     on_path[static_cast<std::size_t>(node)] = false;

@@ -53,6 +53,7 @@ std::vector<unsigned char> read_all(const std::string& path) {
 struct UriPolicy {
   std::filesystem::path folder;  // canonical
   GltfLoadOptions options;
+  std::vector<std::filesystem::path>* read = nullptr;  // every file read, resolved
 };
 
 bool uri_exists(const std::string&, void*) {
@@ -91,6 +92,7 @@ bool read_uri(std::vector<unsigned char>* out, std::string* err, const std::stri
   if (size > kMaxExternalBytes) return fail("larger than 4 GiB");
   std::ifstream in(real, std::ios::binary);
   if (!in) return fail(std::string("cannot open (") + std::strerror(errno) + ")");
+  if (policy.read != nullptr) policy.read->push_back(real);
   out->resize(static_cast<std::size_t>(size));
   if (size > 0 && !in.read(reinterpret_cast<char*>(out->data()), static_cast<std::streamsize>(size)))
     return fail("read error");
@@ -260,7 +262,7 @@ LoadedGltf load_gltf(const std::string& path, GltfLoadOptions options) {
   std::string base_dir = std::filesystem::path(path).parent_path().string();
   if (base_dir.empty()) base_dir = ".";
   std::error_code ec;
-  UriPolicy policy{std::filesystem::weakly_canonical(base_dir, ec), options};
+  UriPolicy policy{std::filesystem::weakly_canonical(base_dir, ec), options, &out.external_files};
   if (ec) throw BakeError(path + ": cannot resolve its folder (" + ec.message() + ")");
   tinygltf::FsCallbacks fs{&uri_exists, &uri_as_given, &read_uri, &no_writes, &policy};
   loader.SetFsCallbacks(fs);
@@ -283,6 +285,18 @@ LoadedGltf load_gltf(const std::string& path, GltfLoadOptions options) {
   for (std::string line; std::getline(w, line);)
     if (!line.empty()) out.warnings.push_back(path + ": " + line);
   return out;
+}
+
+void refuse_output_over_input(const std::string& in, const LoadedGltf& loaded, const std::string& out) {
+  std::error_code ec;
+  const std::filesystem::path target = std::filesystem::weakly_canonical(out, ec);
+  if (ec) return;  // the write says what is wrong with the path
+  for (const std::filesystem::path& f : loaded.external_files) {
+    std::error_code same_ec;
+    if (f == target || std::filesystem::equivalent(f, target, same_ec))
+      throw BakeError(out + ": is " + f.string() + ", which " + in +
+                      " reads (a buffer or image): the bake would write over its own input; write it elsewhere");
+  }
 }
 
 }  // namespace gazelod::bake

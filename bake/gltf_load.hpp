@@ -6,6 +6,7 @@
 
 #include <tiny_gltf.h>
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -13,7 +14,8 @@ namespace gazelod::bake {
 
 struct LoadedGltf {
   tinygltf::Model model;
-  std::vector<std::string> warnings;  // tinygltf's, e.g. an external image it could not read
+  std::vector<std::string> warnings;                  // tinygltf's, e.g. an external image it could not read
+  std::vector<std::filesystem::path> external_files;  // the buffers and images read, resolved
 };
 
 // How a glTF's external files (buffer and image `uri`s) may be read. By default only regular
@@ -26,5 +28,9 @@ struct GltfLoadOptions {
 
 // Throws BakeError "PATH: ..." for an unreadable, truncated or malformed file.
 LoadedGltf load_gltf(const std::string& path, GltfLoadOptions options = {});
+
+// Throws BakeError when `out` is one of the files `in` was read from (itself, a buffer, an
+// image, by any name): the bake would write over its own input.
+void refuse_output_over_input(const std::string& in, const LoadedGltf& loaded, const std::string& out);
 
 }  // namespace gazelod::bake

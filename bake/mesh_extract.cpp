@@ -160,7 +160,7 @@ std::vector<float> read_positions(const tinygltf::Model& m, int accessor, const 
       if (std::fabs(out[3 * i + c]) > kMaxPositionM) {
         std::ostringstream msg;
         msg << where << ": POSITION " << i << " is out of range: a coordinate of " << out[3 * i + c] << " m (at most "
-          << kMaxPositionM << " m)";
+            << kMaxPositionM << " m)";
         throw BakeError(msg.str());
       }
     }

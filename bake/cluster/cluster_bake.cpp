@@ -251,6 +251,7 @@ ClusterBakeReport bake_clusters_model(tinygltf::Model& m, const ClusterBakeOptio
 ClusterBakeReport bake_clusters_file(const std::string& in, const std::string& out, const ClusterBakeOptions& o) {
   const auto t0 = Clock::now();
   LoadedGltf loaded = load_gltf(in, o.load);
+  refuse_output_over_input(in, loaded, out);  // before the bake, not after its minutes
   ClusterBakeReport report;
   try {
     report = bake_clusters_model(loaded.model, o);

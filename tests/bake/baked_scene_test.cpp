@@ -2,6 +2,7 @@
 // Round trip: bake the generated scene, read it back with load_baked_scene.
 #include "bake/bake.hpp"
 #include "bake/bake_error.hpp"
+#include "bake/cluster/cluster_bake.hpp"
 #include "bake/baked_scene.hpp"
 #include "bake/gltf_load.hpp"
 #include "lod/object_set.hpp"
@@ -62,6 +63,32 @@ TEST(BakedScene, RoundTripGivesOneObjectPerMeshNode) {
   }
   EXPECT_EQ(objs[0].lods[0].triangles, 5120u);
   EXPECT_EQ(objs[0].lods[0].vertices, 2562u);  // 10 * 4^4 + 2
+}
+
+// bake --clusters carries points and lines over unbaked (docs/bake.md); run --scene then
+// refused the file ("extras/gazelod_lod: missing") or, drawing, the lines primitive. A mesh of
+// lines only is no object; a mixed mesh's level geometry is its triangles.
+TEST(BakedScene, PointsAndLinesCarriedOverByClustersAreSkipped) {
+  const std::string dir = testing::temp_dir("lines_clusters");
+  tinygltf::Model m = testing::single_mesh_model(testing::icosphere(2, 1.0));
+  tinygltf::Primitive lines = m.meshes[0].primitives[0];
+  lines.mode = TINYGLTF_MODE_LINE;  // the icosphere's 960 indices, read as 480 segments
+  tinygltf::Mesh only_lines;
+  only_lines.name = "Wire";
+  only_lines.primitives = {lines};
+  m.meshes.push_back(only_lines);
+  m.meshes[0].primitives.push_back(lines);  // mixed: triangles, then lines
+  tinygltf::Node wire;
+  wire.name = "WireNode";
+  wire.mesh = 1;
+  m.nodes.push_back(wire);
+  m.scenes[0].nodes.push_back(static_cast<int>(m.nodes.size() - 1));
+  const std::string in = testing::write_model(m, dir + "/in.glb");
+  bake_clusters_file(in, dir + "/out.glb", ClusterBakeOptions{});
+  const BakedScene scene = load_baked(dir + "/out.glb", BakedLoad::with_level_geometry);
+  ASSERT_EQ(scene.objects.size(), 1u) << "the lines-only mesh is no object";
+  ASSERT_FALSE(scene.objects[0].level_meshes.empty());
+  EXPECT_EQ(scene.objects[0].level_meshes[0].indices.size(), 960u) << "the triangles, not the lines";
 }
 
 TEST(BakedScene, BoundingSpheresAreInWorldSpace) {

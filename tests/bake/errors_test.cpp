@@ -240,6 +240,29 @@ TEST(BakeErrors, BadOptions) {
 namespace gazelod::bake {
 namespace {
 
+// The output may not be a file the input reads: a .gltf's own .bin was overwritten (exit 0) and
+// the next bake of that input failed on the buffer's size. Both bakes, before they bake.
+TEST(BakeErrors, OutputOverTheInputsBufferIsRefused) {
+  const std::string dir = testing::temp_dir("err_over_buffer");
+  tinygltf::Model m = testing::single_mesh_model(testing::icosphere(2, 1.0));
+  m.buffers[0].uri = "in.bin";
+  tinygltf::TinyGLTF w;
+  ASSERT_TRUE(w.WriteGltfSceneToFile(&m, dir + "/in.gltf", true, false, true, false));
+  ASSERT_TRUE(fs::exists(dir + "/in.bin"));
+  const auto size = fs::file_size(dir + "/in.bin");
+  EXPECT_HAS(bake_error(dir + "/in.gltf", dir + "/./in.bin"), "the bake would write over its own input");
+  std::string msg;
+  try {
+    bake_clusters_file(dir + "/in.gltf", dir + "/in.bin", ClusterBakeOptions{});
+  } catch (const BakeError& e) {
+    msg = e.what();
+  }
+  EXPECT_HAS(msg, "the bake would write over its own input");
+  EXPECT_EQ(fs::file_size(dir + "/in.bin"), size) << "the buffer was written over";
+  bake_file(dir + "/in.gltf", dir + "/out.glb", BakeOptions{});  // still bakes elsewhere
+  EXPECT_TRUE(fs::exists(dir + "/out.glb"));
+}
+
 // A node without a mesh (tinygltf writes a node with no field set as null, not {}).
 tinygltf::Node named_node() {
   tinygltf::Node n;

@@ -98,14 +98,18 @@ TraceParam trace_param(EffectInit& init) {
   const std::optional<gaze::TraceFormat> fmt = gaze::parse_trace_format(fmt_name);
   if (!fmt) init.params.fail("format", "unknown trace format \"" + fmt_name + "\"");
   t.format = *fmt;
+  t.path = trace_file_path(t.name, init.source);
+  return t;
+}
+
+std::string trace_file_path(const std::string& file, const std::string& scenario_source) {
   // Relative to the scenario file, as sim/scenarios/README.md says; as given (from the working
   // folder) only where the scenario's folder has no such file, or the scenario is no file.
-  const std::filesystem::path p(t.name), src(init.source);
+  const std::filesystem::path p(file), src(scenario_source);
   std::error_code ec;
   const bool beside = !p.is_absolute() && std::filesystem::is_regular_file(src, ec) &&
                       std::filesystem::exists(src.parent_path() / p, ec);
-  t.path = beside ? (src.parent_path() / p).string() : t.name;
-  return t;
+  return beside ? (src.parent_path() / p).string() : file;
 }
 
 std::vector<std::unique_ptr<Effect>> make_gaze_effects_before(const EffectInit& init) {

@@ -6,6 +6,9 @@
 #include "gaze/trace_writer.hpp"
 
 #include <cmath>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
 
 namespace gazelod::sim {
 
@@ -13,6 +16,14 @@ RecordStats record_trace(Simulator& sim, std::ostream& out, const RecordOptions&
   const double step_hz = options.step_hz > 0.0 ? options.step_hz : sim.scenario().frame_rate_hz;
   const double duration_s = options.duration_s > 0.0 ? options.duration_s : sim.scenario().duration_s;
   const auto end_ns = aux::ns_from_seconds(duration_s);
+  if (!(duration_s * step_hz <= kMaxRecordSteps)) {
+    char why[160];
+    std::snprintf(why, sizeof why,
+                  "duration x rate asks the tracker %.3g times; at most 1e8 (a shorter --duration "
+                  "or a lower --rate)",
+                  duration_s * step_hz);
+    throw std::invalid_argument(why);
+  }
   gaze::TraceWriter writer(out);
   RecordStats stats;
   bool any = false;
@@ -21,6 +32,8 @@ RecordStats record_trace(Simulator& sim, std::ostream& out, const RecordOptions&
     // Integer frame times from the index (no accumulated rounding).
     const auto t_ns = aux::ns_rounded(static_cast<double>(k) * static_cast<double>(aux::kNsPerSecond) / step_hz);
     if (t_ns >= end_ns) break;
+    if (options.progress && (k & 0xffff) == 0 && k > 0 && !options.progress(aux::seconds_from_ns(t_ns), duration_s))
+      throw RecordStopped{};
     if (!options.true_gaze && t_ns < sim.first_tracker_sample_ns()) continue;  // nothing delivered yet
     const gaze::GazeSample g = options.true_gaze ? sim.true_gaze_at(t_ns) : sim.tracker_at(t_ns);
     if (any && g.t_ns <= last_ns) continue;  // the tracker has nothing newer

@@ -6,6 +6,7 @@
 #include "auxiliary/json_strict.hpp"
 #include "auxiliary/time.hpp"
 #include "sim/effect.hpp"
+#include "sim/effects/effects.hpp"
 #include "sim/json_fields.hpp"
 #include "sim/scene_json.hpp"
 #include "sim/simulator.hpp"
@@ -134,27 +135,14 @@ RuntimeOptions read_runtime(const nlohmann::json& j, JsonFields& top) {
   return r;
 }
 
-// The trace file a head_track effect will load, resolved as the effect resolves it (relative
-// paths: from the working directory, else from the scenario file's folder); "" when unknown.
-std::string head_track_file(const nlohmann::json& e, const std::string& source) {
-  namespace fs = std::filesystem;
+// Estimated memory of a replay effect (head_track, gaze_track): 4 bytes per byte of its trace,
+// whatever its format (a row of a few dozen characters becomes a 64-byte pose or sample), for
+// the file the effect will open (effects::trace_file_path); 0 when that is not a readable
+// regular file (the effect reports that itself).
+std::size_t track_bytes(const nlohmann::json& e, const std::string& source) {
   const auto file = e.find("file");
-  if (file == e.end() || !file->is_string()) return {};
-  const auto format = e.find("format");
-  if (format != e.end() && !(format->is_string() && format->get<std::string>() == "gazelod")) return {};
-  const fs::path p(file->get<std::string>());
-  std::error_code ec;
-  if (p.is_absolute()) return p.string();
-  const fs::path src(source);
-  if (fs::is_regular_file(src, ec) && !fs::exists(p, ec)) return (src.parent_path() / p).string();
-  return p.string();
-}
-
-// Estimated memory of a head_track effect: 4 bytes per byte of its trace (a row of a few dozen
-// characters becomes a 64-byte pose); 0 when the file is not a readable regular file (the
-// effect reports that itself).
-std::size_t head_track_bytes(const nlohmann::json& e, const std::string& source) {
-  const std::string path = head_track_file(e, source);
+  if (file == e.end() || !file->is_string()) return 0;
+  const std::string path = effects::trace_file_path(file->get<std::string>(), source);
   struct stat st {};
   if (path.empty() || ::stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) return 0;
   const auto size = static_cast<std::size_t>(st.st_size);
@@ -214,8 +202,8 @@ Scenario load_scenario_json(std::string_view json_text, std::string_view source_
       spec.json_path = aux::json_element_path("effects", i);
       JsonFields ef(e, spec.json_path, source);
       spec.type = ef.required_string("type");
-      if (spec.type == "head_track") {  // its trace is loaded into memory: counted before it is read
-        const std::size_t bytes = head_track_bytes(e, source);
+      if (spec.type == "head_track" || spec.type == "gaze_track") {  // loaded whole: counted before
+        const std::size_t bytes = track_bytes(e, source);
         if (bytes > kMaxScenarioMemoryBytes - tally.memory_bytes)
           ef.fail("file", "must take at most " + bytes_text(kMaxScenarioMemoryBytes - tally.memory_bytes) +
                               " (a scenario's estimated memory is at most " + bytes_text(kMaxScenarioMemoryBytes) +

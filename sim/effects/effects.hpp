@@ -37,6 +37,9 @@ struct TraceParam {
   gaze::TraceFormat format = gaze::TraceFormat::gazelod;
 };
 TraceParam trace_param(EffectInit& init);
+// Where a replay effect's "file" is opened (trace_param's rule), also for the scenario loader's
+// memory estimate, which must count the file the effect will read.
+std::string trace_file_path(const std::string& file, const std::string& scenario_source);
 
 // Fresh copies of the gaze-stage effects listed before the one being made (same specs, same
 // random streams, so the same values at any time), for an effect that must know the incoming

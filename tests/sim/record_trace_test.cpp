@@ -9,6 +9,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -60,6 +61,31 @@ TEST(RecordTrace, OneRowPerTrackerSampleWithTheHeadAtThatTime) {
     const glm::dquat q = sim.head_at(r.gaze.t_ns).orientation;
     EXPECT_NEAR(std::abs(glm::dot(q, r.head.orientation)), 1.0, 1e-12);
   }
+}
+
+// A recording is bounded before it starts (1e11 rows ran on, unbounded), and one stopped on the
+// way (Ctrl-C in `gazelod scenario record`) leaves no file, partial or temporary.
+TEST(RecordTrace, BoundedUpFrontAndAStoppedOneLeavesNoFile) {
+  Simulator sim = make_sim(base_scenario(nlohmann::json::array()));
+  RecordOptions o;
+  o.duration_s = 1e6;
+  o.step_hz = 1e5;
+  std::ostringstream out;
+  EXPECT_THROW(record_trace(sim, out, o), std::invalid_argument);
+  EXPECT_TRUE(out.str().empty());
+  const std::string dir = std::string(GAZELOD_BINARY_DIR) + "/tests/sim/record_stopped";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  o.duration_s = 100;
+  o.step_hz = 2000;  // 200 000 steps: asked three times
+  int asked = 0;
+  o.progress = [&](double done_s, double total_s) {
+    EXPECT_LT(done_s, total_s);
+    return ++asked < 2;
+  };
+  EXPECT_THROW(record_trace_file(sim, dir + "/t.csv", o), RecordStopped);
+  EXPECT_EQ(asked, 2);
+  EXPECT_TRUE(std::filesystem::is_empty(dir)) << "a stopped recording left a file";
 }
 
 TEST(RecordTrace, HeadTrackReplaysARecordedHead) {

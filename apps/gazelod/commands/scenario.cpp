@@ -3,13 +3,16 @@
 // with its generated objects written out), and record what a scenario simulates as a gazelod
 // gaze trace.
 #include "apps/gazelod/commands/command.hpp"
+#include "apps/gazelod/run/signals.hpp"
 #include "auxiliary/atomic_file.hpp"
 #include "auxiliary/text.hpp"
 #include "sim/record_trace.hpp"
 #include "sim/scenario_family.hpp"
 #include "sim/simulator.hpp"
 
+#include <chrono>
 #include <memory>
+#include <stdexcept>
 
 namespace gazelod::cli {
 namespace {
@@ -63,11 +66,31 @@ int run_record(const Options& o, Io io) {
   ro.step_hz = o.rate_hz;
   ro.true_gaze = o.truth;
   ro.duration_s = o.duration_s;
+  // Progress every few seconds; Ctrl-C or SIGTERM stops it with no file written.
+  StopOnSignal stop;
+  auto last = std::chrono::steady_clock::now();
+  ro.progress = [&](double done_s, double total_s) {
+    if (stop.requested()) return false;
+    const auto now = std::chrono::steady_clock::now();
+    if (now - last > std::chrono::seconds(2)) {
+      last = now;
+      io.err << "gazelod scenario record: " << static_cast<long long>(done_s) << " of "
+             << static_cast<long long>(total_s) << " s simulated\n"
+             << std::flush;
+    }
+    return true;
+  };
   sim::RecordStats st;
   try {  // written atomically: a failure leaves no file behind, partial or temporary
     st = sim::record_trace_file(simulator, o.out, ro);
   } catch (const aux::WriteError& e) {
     throw UsageError(std::string("--out: ") + e.what(), 1);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  } catch (const sim::RecordStopped&) {
+    stop.acted_on();
+    throw UsageError(std::string("stopped by ") + StopOnSignal::name(stop.requested()) + "; nothing written",
+                     128 + stop.requested());
   }
   io.out << "wrote " << st.rows << " rows (" << st.invalid_rows << " invalid) to " << o.out << "\n";
   return 0;

@@ -23,6 +23,9 @@ TEST(StrictOptions, NumbersListsAndSourcesAreRefusedWithTheOption) {
       {{"run", "--frames", "0x10", "--no-render"}, "--frames: '0x10' is not a decimal integer"},
       {{"run", "--frames", "1e3", "--no-render"}, "--frames: "},  // the range check refuses it first
       {{"scene", "generate", "terrain", "/tmp/gazelod-never.glb", "--seed", "-1"}, "--seed: '-1' is negative"},
+      // Past 64 bits: CLI11 saturated to 2^64 - 1 and ran.
+      {{"scenario", "family", "--seed", "18446744073709551616"},
+       "--seed: '18446744073709551616' is out of range (64 bits)"},
       {{"scenario", "record", "--rate", "nan", "--out", "/tmp/gazelod-never.csv"},
        "--rate: 'nan' is not a finite number"},
       {{"scenario", "record", "--duration", "inf", "--out", "/tmp/gazelod-never.csv"}, "--duration: "},

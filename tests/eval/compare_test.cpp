@@ -110,6 +110,11 @@ TEST(Compare, UnknownHmdIsAnErrorNamingIt) {
   EXPECT_NE(r.rc, 0);
   EXPECT_NE(r.err.find("nosuchhmd"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "questpro")) << "no run before every name is checked";
+  // A known preset a run cannot use (one view) is refused up front too, naming --hmd.
+  const Result d = cli({"compare", "--hmd", "questpro", "--hmd", "desktop", "--out", dir.string()});
+  EXPECT_EQ(d.rc, 2);
+  EXPECT_NE(d.err.find("--hmd: the preset 'desktop' has 1 view"), std::string::npos) << d.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "questpro")) << "no run before every preset is checked";
 }
 
 TEST(Compare, SharesHaveOneDefinition) {

@@ -163,6 +163,9 @@ TEST(ScenarioLimits, EffectsNestingAndSize) {
   // Nesting: refused while parsing, however deep.
   const std::string deep = "{\"version\": 1, \"x\": " + std::string(100'000, '[') + std::string(100'000, ']') + "}";
   EXPECT_THAT(error_of(deep), HasSubstr("bad.json: JSON nesting must be at most 64 levels"));
+  // A number past a double's range: located, not nlohmann's raw text.
+  EXPECT_THAT(error_of(std::string("{\"version\": 1,\n  \"frame_rate_hz\": 1e999}")),
+              HasSubstr("bad.json:2:20: the number 1e999 is past the range of a double"));
   // Size.
   const std::string big = "{\"version\": 1, \"name\": \"" + std::string(kMaxScenarioBytes, 'x') + "\"}";
   EXPECT_THAT(error_of(big), HasSubstr("bad.json: (top level): must be at most 64 MiB of JSON, got 64 MiB"));

@@ -2,6 +2,7 @@
 #include "apps/gazelod/commands/command.hpp"
 
 #include <charconv>
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <exception>
@@ -49,6 +50,13 @@ void strict_numbers(CLI::App& app) {
         const std::size_t start = !text.empty() && text[0] == '-' ? 1 : 0;
         if (text.size() == start || text.find_first_not_of("0123456789", start) != std::string::npos)
           return "'" + text + "' is not a decimal integer";
+        // Past 64 bits CLI11 saturates (a seed of 2^64 ran as 2^64 - 1): refused instead.
+        errno = 0;
+        if (start == 1)
+          (void)std::strtoll(text.c_str(), nullptr, 10);
+        else
+          (void)std::strtoull(text.c_str(), nullptr, 10);
+        if (errno == ERANGE) return "'" + text + "' is out of range (64 bits)";
         return "";
       },
       "");

@@ -8,8 +8,13 @@
 namespace gazelod::cli {
 
 void check_hmd(const std::string& hmd) {
-  if (lod::find_display_preset(hmd) == nullptr)
-    throw UsageError("--hmd: unknown display preset '" + hmd + "' (see gazelod hmds)");
+  const lod::DisplaySpec* d = lod::find_display_preset(hmd);
+  if (d == nullptr) throw UsageError("--hmd: unknown display preset '" + hmd + "' (see gazelod hmds)");
+  // What the run's scenario loader requires of a display, said before any run (a one-view
+  // preset failed after the presets before it had run, leaving their folders).
+  if (d->view_count != 2)
+    throw UsageError("--hmd: the preset '" + hmd + "' has " + std::to_string(d->view_count) +
+                     " view; a run needs a display with 2 (an HMD, not a desktop)");
 }
 
 HmdComparison comparison_from_run(const std::string& hmd, const RunSummary& run) {

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 namespace gazelod::bake {
 namespace {
@@ -113,8 +114,21 @@ struct Reader {
       const std::string where = "/nodes/" + std::to_string(node) + " mesh primitive " + std::to_string(p);
       if (it == mesh.primitives[p].attributes.end()) fail(where, "has no POSITION");
       const std::vector<float> xyz = read_positions(m, it->second, path + ": " + where);
-      for (std::size_t i = 0; i + 2 < xyz.size(); i += 3)
+      for (std::size_t i = 0; i + 2 < xyz.size(); i += 3) {
         pts.push_back(glm::dvec3(world * glm::dvec4(xyz[i], xyz[i + 1], xyz[i + 2], 1.0)));
+        // The node's transform (its scale, matrix or translation, or a parent's) can put a
+        // vertex past any meaningful distance, or make it inf or NaN (1e200 squared): the
+        // sphere would then be NaN, so the node is named here.
+        const glm::dvec3& q = pts.back();
+        for (int c = 0; c < 3; ++c)
+          if (!std::isfinite(q[c]) || std::fabs(q[c]) > kMaxPositionM) {
+            std::ostringstream msg;
+            msg << "vertex " << i / 3 << " of its mesh's primitive " << p << " lands at " << q[c]
+                << " m in the world (at most " << kMaxPositionM
+                << " m): check the scale, rotation, translation or matrix of this node and its parents";
+            fail("/nodes/" + std::to_string(node), msg.str());
+          }
+      }
     }
     if (pts.empty()) return;
     glm::dvec3 lo = pts[0], hi = pts[0];

@@ -123,7 +123,8 @@ void check_scene_graph(const std::string& path, const tinygltf::Model& m) {
         std::hypot(std::hypot(n.rotation[0], n.rotation[1]), std::hypot(n.rotation[2], n.rotation[3])) < 1e-6)
       fail(at + "/rotation", "a zero quaternion is no rotation (glTF requires a unit one)");
     const double det = glm::determinant(node_local_matrix(n));
-    if (!std::isfinite(det) || std::abs(det) < 1e-300)
+    if (!std::isfinite(det)) fail(at, "scale or matrix too large: the transform's determinant overflows a double");
+    if (std::abs(det) < 1e-300)
       fail(at, n.matrix.size() == 16 ? "matrix is singular (zero or collapsing scale): nothing could be drawn from it"
                                      : "scale or rotation collapses the node (a zero scale or rotation)");
   }
@@ -229,6 +230,15 @@ void refuse_compressed_geometry(const std::string& path, const std::vector<unsig
     throw BakeError(path + ": JSON nested deeper than " + std::to_string(kMaxJsonDepth) +
                     " levels of arrays and objects (gazelod's limit; glTF itself needs about 8)");
   if (!doc.is_object()) return;  // tinygltf says what is wrong with it
+  // tinygltf reads a glTF 1.0 file (objects keyed by id where 2.0 has arrays) as a 2.0 one
+  // with nothing in it, and the bake then said "nothing to bake".
+  if (const auto asset = doc.find("asset"); asset != doc.end() && asset->is_object())
+    if (const auto v = asset->find("version"); v != asset->end() && v->is_string()) {
+      const std::string version = v->get<std::string>();
+      if (version.rfind("2.", 0) != 0)
+        throw BakeError(path + ": /asset/version: \"" + version +
+                        "\": gazelod reads glTF 2.0 only; convert the file to glTF 2.0 first");
+    }
   const auto required = doc.find("extensionsRequired");
   if (required == doc.end() || !required->is_array()) return;
   for (const nlohmann::json& e : *required)
@@ -246,6 +256,9 @@ LoadedGltf load_gltf(const std::string& path, GltfLoadOptions options) {
   if (glb) {
     if (bytes.size() < 20)
       throw BakeError(path + ": truncated GLB: " + std::to_string(bytes.size()) + " bytes, the header alone needs 20");
+    if (const std::uint32_t version = le32(bytes.data() + 4); version != 2)
+      throw BakeError(path + ": GLB container version " + std::to_string(version) +
+                      " (byte 4): gazelod reads glTF 2.0 (GLB version 2) only; convert the file first");
     const std::uint32_t declared = le32(bytes.data() + 8);
     if (declared > bytes.size())
       throw BakeError(path + ": truncated GLB: header (byte 8) declares " + std::to_string(declared) +

@@ -212,7 +212,56 @@ PrimitiveGeometry extract_primitive(const tinygltf::Model& m, int mesh, int prim
   if (p.mode == TINYGLTF_MODE_TRIANGLE_FAN) g.indices = fan_to_list(g.indices);
   if (g.indices.size() % 3 != 0)
     throw BakeError(where + ": " + std::to_string(g.indices.size()) + " indices is not a whole number of triangles");
+  check_carried_accessors(m, mesh, primitive);
   return g;
+}
+
+void check_carried_accessors(const tinygltf::Model& m, int mesh, int primitive) {
+  const std::string where = primitive_label(m, mesh, primitive);
+  const tinygltf::Primitive& p =
+      m.meshes.at(static_cast<std::size_t>(mesh)).primitives.at(static_cast<std::size_t>(primitive));
+  // The vertex count every attribute must have (glTF 2.0 3.7.2.1): POSITION's, else the first's.
+  std::size_t vcount = 0;
+  bool have_count = false;
+  const auto count_of = [&](const std::string& name, int accessor) {
+    if (accessor < 0 || static_cast<std::size_t>(accessor) >= m.accessors.size())
+      throw BakeError(where + ": " + name + " accessor " + std::to_string(accessor) + " does not exist");
+    return m.accessors[static_cast<std::size_t>(accessor)].count;
+  };
+  if (const auto pos = p.attributes.find("POSITION"); pos != p.attributes.end()) {
+    vcount = count_of("POSITION", pos->second);
+    have_count = true;
+  }
+  const auto check = [&](const std::string& name, int accessor) {
+    const std::size_t count = count_of(name, accessor);
+    const tinygltf::Accessor& a = m.accessors[static_cast<std::size_t>(accessor)];
+    const int component_bytes = tinygltf::GetComponentSizeInBytes(static_cast<std::uint32_t>(a.componentType));
+    const int components = tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(a.type));
+    if (component_bytes <= 0 || components <= 0)
+      throw BakeError(where + ": " + name + " accessor " + std::to_string(accessor) + " has component type " +
+                      std::to_string(a.componentType) + " and type " + std::to_string(a.type) +
+                      ", which glTF 2.0 does not define");
+    if (!have_count) {
+      vcount = count;
+      have_count = true;
+    } else if (count != vcount) {
+      throw BakeError(where + ": " + name + " accessor " + std::to_string(accessor) + " has " + std::to_string(count) +
+                      " elements, but the primitive has " + std::to_string(vcount) +
+                      " vertices (all attributes must have the same count)");
+    }
+    // A sparse accessor without a bufferView is valid glTF and is carried as it is; the
+    // simplifier never reads one (POSITION refuses them).
+    if (a.sparse.isSparse) return;
+    // The unpadded element size: matrices of 1- and 2-byte components are padded per column,
+    // so this bound is at most a few bytes lenient there.
+    (void)checked_view(m, accessor, static_cast<std::size_t>(component_bytes) * static_cast<std::size_t>(components),
+                       where + " " + name);
+  };
+  for (const auto& [name, accessor] : p.attributes)
+    if (name != "POSITION") check(name, accessor);
+  for (std::size_t t = 0; t < p.targets.size(); ++t)
+    for (const auto& [name, accessor] : p.targets[t]) check("morph target " + std::to_string(t) + " " + name, accessor);
+  if (p.indices >= 0 && !draws_triangles(p)) (void)read_index_accessor(m, p.indices, vcount, where);
 }
 
 }  // namespace gazelod::bake

@@ -40,6 +40,13 @@ std::string mode_label(int mode);
 // multiple of 3.
 PrimitiveGeometry extract_primitive(const tinygltf::Model& model, int mesh, int primitive);
 
+// The accessors the bakes copy into their output unread (attributes other than POSITION,
+// morph targets; a point or line primitive's indices): each in its buffer and of the
+// primitive's vertex count, so that no bake writes a file that reads past its data (tinygltf
+// checks neither). extract_primitive calls it; a bake that carries a primitive over
+// unsimplified calls it itself. Throws BakeError "<label>: ...".
+void check_carried_accessors(const tinygltf::Model& model, int mesh, int primitive);
+
 // Triangles that cover an area: not two corners at one position (by index or coordinates).
 // The cluster builder drops the others; a file with none left has nothing to bake, in either
 // bake (kNothingLeftToBake, the message both give).

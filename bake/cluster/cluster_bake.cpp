@@ -119,6 +119,7 @@ ClusterBakeReport bake_clusters_model(tinygltf::Model& m, const ClusterBakeOptio
           geometry[mi].push_back(extract_primitive(m, mesh, prim));
           continue;
         }
+        check_carried_accessors(m, mesh, prim);
         geometry[mi].emplace_back();
         report.warnings.push_back(primitive_label(m, mesh, prim) + ": " + mode_label(m.meshes[mi].primitives[p].mode) +
                                   " kept as it is (only triangles get a cluster hierarchy)");

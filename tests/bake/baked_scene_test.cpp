@@ -150,6 +150,21 @@ TEST(BakedScene, BrokenIdsAndChainsAreNamedByJsonPath) {
   EXPECT_HAS(load_error(dir + "/none.glb"), "none.glb: cannot open for reading");
 }
 
+// A finite but extreme scale (1e100 on the root; 1e200 along x, squared to inf by a child's)
+// made the sphere huge or NaN, refused later without the node's name.
+TEST(BakedScene, TransformPastAnyDistanceNamesTheNode) {
+  const std::string path = baked("far");
+  const std::string dir = path.substr(0, path.rfind('/'));
+  tinygltf::Model m = load_gltf(path).model;
+  m.nodes[0].scale = {1e100, 1e100, 1e100};
+  testing::write_model(m, dir + "/far.glb");
+  EXPECT_HAS(load_error(dir + "/far.glb"), "far.glb: /nodes/1: vertex 0 of its mesh's primitive 0 lands at");
+  m.nodes[0].scale = {1e200, 1.0, 1.0};
+  m.nodes[1].scale = {1e200, 1.0, 1.0};
+  testing::write_model(m, dir + "/inf.glb");
+  EXPECT_HAS(load_error(dir + "/inf.glb"), "m in the world (at most 1e+09 m): check the scale");
+}
+
 // With the level geometry (what `gazelod run` draws): one triangle list per level, as many
 // triangles as the chain says, in the mesh's own space (the sphere mesh within radius 0.5);
 // none without it; a level mesh that is not triangles is named.

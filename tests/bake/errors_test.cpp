@@ -56,13 +56,9 @@ std::string read_bytes(const std::string& path) {
 
 #define EXPECT_HAS(msg, part) EXPECT_NE((msg).find(part), std::string::npos) << (msg)
 
-// The same edit refused by the chain bake and the cluster bake with `message`, no output left.
-void expect_both_bakes_refuse(const std::string& name, const std::function<void(tinygltf::Model&)>& edit,
-                              const std::string& message) {
-  EXPECT_HAS(bake_edited(name, edit), message);
+// The cluster bake's BakeError message for model `m` ("" when none), no output left.
+std::string clusters_error(const std::string& name, const tinygltf::Model& m) {
   const std::string dir = testing::temp_dir(name + "_clusters");
-  tinygltf::Model m = testing::single_mesh_model(testing::icosphere(2, 1.0));
-  edit(m);
   const std::string in = testing::write_model(m, dir + "/in.glb");
   std::string msg;
   try {
@@ -70,8 +66,17 @@ void expect_both_bakes_refuse(const std::string& name, const std::function<void(
   } catch (const BakeError& e) {
     msg = e.what();
   }
-  EXPECT_HAS(msg, message);
   EXPECT_FALSE(fs::exists(dir + "/out.glb")) << name;
+  return msg;
+}
+
+// The same edit refused by the chain bake and the cluster bake with `message`, no output left.
+void expect_both_bakes_refuse(const std::string& name, const std::function<void(tinygltf::Model&)>& edit,
+                              const std::string& message) {
+  EXPECT_HAS(bake_edited(name, edit), message);
+  tinygltf::Model m = testing::single_mesh_model(testing::icosphere(2, 1.0));
+  edit(m);
+  EXPECT_HAS(clusters_error(name, m), message);
 }
 
 TEST(BakeErrors, MissingFile) {
@@ -172,6 +177,35 @@ TEST(BakeErrors, AccessorPastItsBuffer) {
     g.accessors[std::size_t(g.meshes[0].primitives[0].attributes["POSITION"])].count += 10;
   });
   EXPECT_HAS(m, "POSITION (accessor 0): reads past the end of its bufferView 0");
+}
+
+// Attributes the bakes copy unread (here TEXCOORD_0 over the positions' bytes) are checked too:
+// before, a bake wrote them out as they were, a file that reads past its buffer.
+TEST(BakeErrors, CarriedAttributesAreChecked) {
+  const auto texcoord = [](std::size_t byte_offset, std::size_t count) {
+    return [=](tinygltf::Model& g) {
+      tinygltf::Accessor uv = g.accessors[0];
+      uv.type = TINYGLTF_TYPE_VEC2, uv.byteOffset = byte_offset, uv.count = count;
+      uv.minValues.clear(), uv.maxValues.clear();
+      g.accessors.push_back(uv);
+      g.meshes[0].primitives[0].attributes["TEXCOORD_0"] = int(g.accessors.size() - 1);
+    };
+  };
+  // POSITION: 162 VEC3 floats, 1944 bytes; 162 VEC2 floats from byte 652 end 4 bytes past them.
+  expect_both_bakes_refuse("uv_past", texcoord(652, 162),
+                           "TEXCOORD_0 (accessor 2): reads past the end of its bufferView 0");
+  expect_both_bakes_refuse("uv_count", texcoord(0, 161),
+                           "TEXCOORD_0 accessor 2 has 161 elements, but the primitive has 162");
+  // A line primitive the cluster bake carries over: its indices are checked as well.
+  tinygltf::Model m = testing::single_mesh_model(testing::icosphere(2, 1.0));
+  tinygltf::Primitive lines = m.meshes[0].primitives[0];
+  lines.mode = TINYGLTF_MODE_LINE;
+  const auto& bv = m.bufferViews[std::size_t(m.accessors[std::size_t(lines.indices)].bufferView)];
+  const std::uint32_t bad = 999;
+  std::memcpy(m.buffers[0].data.data() + bv.byteOffset + 4 * 3, &bad, 4);
+  m.meshes[0].primitives.push_back(lines);
+  m.meshes[0].primitives[0].indices = -1;  // the triangles stay valid, unindexed
+  EXPECT_HAS(clusters_error("lines", m), "mesh 0 'M' primitive 1: index 3 is 999, but there are only 162 vertices");
 }
 
 TEST(BakeErrors, NonFloatPositionAndNonFinite) {
@@ -325,6 +359,11 @@ TEST(BakeErrors, SceneGraphProblemsAreRefusedByBothBakes) {
          m.nodes[0].scale = {1.0, 0.0, 1.0};
        },
        "collapses the node"},
+      {"huge_scale",
+       [](tinygltf::Model& m) {
+         m.nodes[0].scale = {1e200, 1e200, 1e200};
+       },
+       "scale or matrix too large"},
       {"zero_matrix", [](tinygltf::Model& m) { m.nodes[0].matrix.assign(16, 0.0); }, "matrix is singular"},
       // (No NaN case: JSON cannot carry one; a rotation of zeros collapses the node too.)
       {"zero_rotation",

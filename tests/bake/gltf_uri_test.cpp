@@ -5,6 +5,7 @@
 #include "bake/bake_error.hpp"
 #include "bake/gltf_load.hpp"
 #include "tests/bake/test_meshes.hpp"
+#include "tests/skip_or_fail.hpp"
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>
@@ -72,6 +73,21 @@ TEST(GltfUris, FifoAndDirectoryAreRefusedWithoutBlocking) {
   EXPECT_HAS(load_error(triangle_gltf(dir, "f.gltf", "pipe.bin")), "not a regular file");
   EXPECT_HAS(load_error(triangle_gltf(dir, "d.gltf", "folder.bin")), "not a regular file");
   EXPECT_HAS(load_error(triangle_gltf(dir, "m.gltf", "missing.bin")), "no such file");
+}
+
+// glTF 1.0 (its objects keyed by id) was read by tinygltf as an empty 2.0 file, and the bake
+// said "nothing to bake". Named by its version now: written here, and Debian's
+// assimp-testmodels' own glTF 1.0 box, as text and as a binary glTF 1.0.
+TEST(GltfVersion, Gltf1IsRefusedByItsVersion) {
+  const std::string dir = testing::temp_dir("gltf1");
+  std::ofstream(dir + "/v1.gltf") << R"({"asset":{"version":"1.0"},"meshes":{"m":{"primitives":[]}}})";
+  EXPECT_HAS(load_error(dir + "/v1.gltf"),
+             "v1.gltf: /asset/version: \"1.0\": gazelod reads glTF 2.0 only; convert the file to glTF 2.0 first");
+  const std::string models = "/usr/share/assimp/models/glTF/BoxTextured-glTF";
+  if (!fs::exists(models + "/BoxTextured.gltf")) GAZELOD_SKIP_OR_FAIL("no assimp-testmodels at " << models);
+  EXPECT_HAS(load_error(models + "/BoxTextured.gltf"), "BoxTextured.gltf: /asset/version: \"1.0\"");
+  const std::string glb = "/usr/share/assimp/models/glTF/BoxTextured-glTF-Binary/BoxTextured.glb";
+  EXPECT_HAS(load_error(glb), "BoxTextured.glb: GLB container version 1 (byte 4): gazelod reads glTF 2.0");
 }
 
 }  // namespace

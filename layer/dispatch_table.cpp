@@ -20,6 +20,8 @@ std::string load_next_dispatch(PFN_xrGetInstanceProcAddr next_gipa, XrInstance i
 #undef GAZELOD_LAYER_NEXT_LOAD
   if (want_timespec && get("xrConvertTimespecTimeToTimeKHR", fn))
     table.ConvertTimespecTimeToTimeKHR = reinterpret_cast<PFN_xrConvertTimespecTimeToTimeKHR>(fn);
+  if (get("xrLocateSpacesKHR", fn)) table.LocateSpacesKHR = reinterpret_cast<PFN_xrLocateSpacesKHR>(fn);
+  if (get("xrLocateSpaces", fn)) table.LocateSpaces = reinterpret_cast<PFN_xrLocateSpaces>(fn);
   return "";
 }
 

@@ -2,7 +2,8 @@
 // Every OpenXR command the layer implements, with the exact signature of its PFN_xr* type
 // (negotiate.cpp checks each at compile time). One file per concept defines them: instance and
 // system (instance.cpp), sessions and frames (session.cpp), actions and bindings (actions.cpp),
-// action states (action_state.cpp), gaze spaces (gaze_space.cpp).
+// action states (action_state.cpp), gaze spaces (gaze_space.cpp) and the other commands that
+// take a space (locate_spaces.cpp, end_frame.cpp).
 #pragma once
 
 #include "layer/xr_headers.hpp"
@@ -55,5 +56,15 @@ XrResult GetInputSourceLocalizedName(XrSession session, const XrInputSourceLocal
 XrResult CreateActionSpace(XrSession session, const XrActionSpaceCreateInfo* createInfo, XrSpace* space);
 XrResult LocateSpace(XrSpace space, XrSpace baseSpace, XrTime time, XrSpaceLocation* location);
 XrResult DestroySpace(XrSpace space);
+
+// locate_spaces.cpp: xrLocateSpaces(KHR) and xrLocateViews with gaze spaces
+XrResult LocateSpacesKHR(XrSession session, const XrSpacesLocateInfoKHR* locateInfo,
+                         XrSpaceLocationsKHR* spaceLocations);
+XrResult LocateSpaces(XrSession session, const XrSpacesLocateInfoKHR* locateInfo, XrSpaceLocationsKHR* spaceLocations);
+XrResult LocateViews(XrSession session, const XrViewLocateInfo* viewLocateInfo, XrViewState* viewState,
+                     uint32_t viewCapacityInput, uint32_t* viewCountOutput, XrView* views);
+
+// end_frame.cpp: composition layers in gaze spaces
+XrResult EndFrame(XrSession session, const XrFrameEndInfo* frameEndInfo);
 
 }  // namespace gazelod::layer

@@ -6,8 +6,10 @@
 // tracker-in-head offset and the space's poseInActionSpace); XrEyeGazeSampleTimeEXT in the
 // location's chain gets the time the gaze sample is for. Located only while the action is
 // active (last xrSyncActions) and a fresh sample exists; velocities are not reported.
+// locate_pair is that composition for one pair of spaces (gaze_space.hpp), which
+// xrLocateSpaces(KHR) uses too.
+#include "layer/gaze_space.hpp"
 #include "layer/entry_points.hpp"
-#include "layer/layer_state.hpp"
 
 namespace gazelod::layer {
 namespace {
@@ -18,12 +20,17 @@ constexpr XrSpaceLocationFlags kAllLocationBits =
     XR_SPACE_LOCATION_ORIENTATION_VALID_BIT | XR_SPACE_LOCATION_POSITION_VALID_BIT |
     XR_SPACE_LOCATION_ORIENTATION_TRACKED_BIT | XR_SPACE_LOCATION_POSITION_TRACKED_BIT;
 
-// A gaze space's eye pose in its head (VIEW) space at a time, when it has one.
-struct EyeAt {
-  bool is_gaze = false;
-  std::optional<Pose> eye;  // tracker offset * sample * poseInActionSpace
-  std::int64_t sample_time_ns = 0;
-};
+// Fills what the application chained: the sample time, and no velocity for gaze.
+void fill_chain(XrSpaceLocation* location, bool gaze, std::int64_t sample_time_ns) {
+  for (auto* n = static_cast<XrBaseOutStructure*>(location->next); n != nullptr; n = n->next) {
+    if (n->type == XR_TYPE_EYE_GAZE_SAMPLE_TIME_EXT)
+      reinterpret_cast<XrEyeGazeSampleTimeEXT*>(n)->time = static_cast<XrTime>(sample_time_ns);
+    else if (gaze && n->type == XR_TYPE_SPACE_VELOCITY)
+      reinterpret_cast<XrSpaceVelocity*>(n)->velocityFlags = 0;
+  }
+}
+
+}  // namespace
 
 EyeAt eye_at(EmulatedInstance& e, XrSpace space, std::int64_t t_ns) {
   EyeAt out;
@@ -44,17 +51,32 @@ EyeAt eye_at(EmulatedInstance& e, XrSpace space, std::int64_t t_ns) {
   return out;
 }
 
-// Fills what the application chained: the sample time, and no velocity for gaze.
-void fill_chain(XrSpaceLocation* location, bool gaze, std::int64_t sample_time_ns) {
-  for (auto* n = static_cast<XrBaseOutStructure*>(location->next); n != nullptr; n = n->next) {
-    if (n->type == XR_TYPE_EYE_GAZE_SAMPLE_TIME_EXT)
-      reinterpret_cast<XrEyeGazeSampleTimeEXT*>(n)->time = static_cast<XrTime>(sample_time_ns);
-    else if (gaze && n->type == XR_TYPE_SPACE_VELOCITY)
-      reinterpret_cast<XrSpaceVelocity*>(n)->velocityFlags = 0;
+XrResult locate_pair(PFN_xrLocateSpace next, XrSpace space, XrSpace baseSpace, XrTime time, const EyeAt& of_space,
+                     const EyeAt& of_base, XrSpaceLocation* location) {
+  if (!of_space.is_gaze && !of_base.is_gaze) {
+    const XrResult r = next(space, baseSpace, time, location);
+    if (XR_SUCCEEDED(r) && location != nullptr) fill_chain(location, false, 0);
+    return r;
   }
+  if (location == nullptr || location->type != XR_TYPE_SPACE_LOCATION) return XR_ERROR_VALIDATION_FAILURE;
+  // The heads (the gaze spaces' VIEW handles) located by the runtime, without the app's chain.
+  XrSpaceLocation heads{XR_TYPE_SPACE_LOCATION};
+  const XrResult r = next(space, baseSpace, time, &heads);
+  if (XR_FAILED(r)) return r;
+  const bool located = (!of_space.is_gaze || of_space.eye) && (!of_base.is_gaze || of_base.eye);
+  location->locationFlags = 0;
+  location->pose = XrPosef{{0.0f, 0.0f, 0.0f, 1.0f}, {0.0f, 0.0f, 0.0f}};
+  if (located && (heads.locationFlags & XR_SPACE_LOCATION_ORIENTATION_VALID_BIT) != 0) {
+    Pose p = from_xr(heads.pose);                            // space's head (or space) in base's head (or base)
+    if (of_space.eye) p = compose(p, *of_space.eye);         // ... the eye in its head
+    if (of_base.eye) p = compose(inverse(*of_base.eye), p);  // ... in the base's eye
+    location->pose = to_xr(p);
+    location->locationFlags = heads.locationFlags & kAllLocationBits;
+  }
+  const EyeAt& gaze = of_space.is_gaze ? of_space : of_base;
+  fill_chain(location, true, location->locationFlags != 0 ? gaze.sample_time_ns : 0);
+  return XR_SUCCESS;
 }
-
-}  // namespace
 
 XrResult CreateActionSpace(XrSession session, const XrActionSpaceCreateInfo* createInfo, XrSpace* space) {
   return guarded(XR_ERROR_RUNTIME_FAILURE, [&]() -> XrResult {
@@ -122,29 +144,7 @@ XrResult LocateSpace(XrSpace space, XrSpace baseSpace, XrTime time, XrSpaceLocat
         of_base = eye_at(*e, baseSpace, static_cast<std::int64_t>(time));
       }
     }
-    if (!of_space.is_gaze && !of_base.is_gaze) {
-      const XrResult r = next(space, baseSpace, time, location);
-      if (XR_SUCCEEDED(r) && location != nullptr) fill_chain(location, false, 0);
-      return r;
-    }
-    if (location == nullptr || location->type != XR_TYPE_SPACE_LOCATION) return XR_ERROR_VALIDATION_FAILURE;
-    // The heads (the gaze spaces' VIEW handles) located by the runtime, without the app's chain.
-    XrSpaceLocation heads{XR_TYPE_SPACE_LOCATION};
-    const XrResult r = next(space, baseSpace, time, &heads);
-    if (XR_FAILED(r)) return r;
-    const bool located = (!of_space.is_gaze || of_space.eye) && (!of_base.is_gaze || of_base.eye);
-    location->locationFlags = 0;
-    location->pose = XrPosef{{0.0f, 0.0f, 0.0f, 1.0f}, {0.0f, 0.0f, 0.0f}};
-    if (located && (heads.locationFlags & XR_SPACE_LOCATION_ORIENTATION_VALID_BIT) != 0) {
-      Pose p = from_xr(heads.pose);                            // space's head (or space) in base's head (or base)
-      if (of_space.eye) p = compose(p, *of_space.eye);         // ... the eye in its head
-      if (of_base.eye) p = compose(inverse(*of_base.eye), p);  // ... in the base's eye
-      location->pose = to_xr(p);
-      location->locationFlags = heads.locationFlags & kAllLocationBits;
-    }
-    const EyeAt& gaze = of_space.is_gaze ? of_space : of_base;
-    fill_chain(location, true, location->locationFlags != 0 ? gaze.sample_time_ns : 0);
-    return XR_SUCCESS;
+    return locate_pair(next, space, baseSpace, time, of_space, of_base, location);
   });
 }
 

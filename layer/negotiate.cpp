@@ -23,7 +23,7 @@ struct Entry {
   }
 
 // Commands the emulation takes over (instance.cpp, session.cpp, actions.cpp, action_state.cpp,
-// gaze_space.cpp).
+// gaze_space.cpp, locate_spaces.cpp, end_frame.cpp).
 const Entry kEmulated[] = {
     GAZELOD_LAYER_ENTRY(GetSystemProperties),
     GAZELOD_LAYER_ENTRY(PollEvent),
@@ -47,6 +47,19 @@ const Entry kEmulated[] = {
     GAZELOD_LAYER_ENTRY(CreateActionSpace),
     GAZELOD_LAYER_ENTRY(LocateSpace),
     GAZELOD_LAYER_ENTRY(DestroySpace),
+    GAZELOD_LAYER_ENTRY(LocateViews),
+    GAZELOD_LAYER_ENTRY(EndFrame),
+};
+
+// Commands the runtime may lack (an extension the application did not enable, a 1.0 runtime):
+// taken over only when the next layer gives them, else left to it (which refuses them).
+struct OptionalEntry {
+  Entry entry;
+  PFN_xrLocateSpacesKHR NextDispatch::*next;
+};
+const OptionalEntry kEmulatedIfBelow[] = {
+    {GAZELOD_LAYER_ENTRY(LocateSpacesKHR), &NextDispatch::LocateSpacesKHR},
+    {GAZELOD_LAYER_ENTRY(LocateSpaces), &NextDispatch::LocateSpaces},
 };
 #undef GAZELOD_LAYER_ENTRY
 
@@ -83,6 +96,11 @@ XrResult GetInstanceProcAddr(XrInstance instance, const char* name, PFN_xrVoidFu
         for (const Entry& e : kEmulated)
           if (wanted == e.name) {
             *function = e.fn;
+            return XR_SUCCESS;
+          }
+        for (const OptionalEntry& o : kEmulatedIfBelow)
+          if (wanted == o.entry.name && st.emulated->next.*o.next != nullptr) {
+            *function = o.entry.fn;
             return XR_SUCCESS;
           }
         next = st.emulated->next.GetInstanceProcAddr;

@@ -12,7 +12,7 @@
 namespace gazelod::xrrt {
 namespace {
 
-enum class Needs : std::uint8_t { global, core, vulkan, vulkan2, timespec, automation, simulator_state };
+enum class Needs : std::uint8_t { global, core, vulkan, vulkan2, timespec, automation, simulator_state, locate_spaces };
 
 struct Entry {
   const char* name;
@@ -102,6 +102,8 @@ const Entry kEntries[] = {
     XRRT_ENTRY(SetInputDeviceStateVector2fEXT, Needs::automation),
     XRRT_ENTRY(SetInputDeviceLocationEXT, Needs::automation),
     XRRT_ENTRY(GetSimulatorStateGAZELOD, Needs::simulator_state),
+    XRRT_ENTRY(EnumerateSubmittedLayersGAZELOD, Needs::simulator_state),
+    XRRT_ENTRY(LocateSpacesKHR, Needs::locate_spaces),
 };
 #undef XRRT_ENTRY
 
@@ -120,6 +122,8 @@ bool enabled(const Instance& inst, Needs needs) {
       return inst.ext_timespec;
     case Needs::automation:
       return inst.ext_automation;
+    case Needs::locate_spaces:
+      return inst.ext_locate_spaces;
   }
   return false;
 }

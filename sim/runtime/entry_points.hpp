@@ -55,6 +55,9 @@ XrResult GetReferenceSpaceBoundsRect(XrSession session, XrReferenceSpaceType typ
 XrResult CreateActionSpace(XrSession session, const XrActionSpaceCreateInfo* createInfo, XrSpace* space);
 XrResult LocateSpace(XrSpace space, XrSpace baseSpace, XrTime time, XrSpaceLocation* location);
 XrResult DestroySpace(XrSpace space);
+// (XR_KHR_locate_spaces)
+XrResult LocateSpacesKHR(XrSession session, const XrSpacesLocateInfoKHR* locateInfo,
+                         XrSpaceLocationsKHR* spaceLocations);
 
 // views.cpp
 XrResult LocateViews(XrSession session, const XrViewLocateInfo* info, XrViewState* viewState, uint32_t capacity,
@@ -130,5 +133,7 @@ XrResult SetInputDeviceLocationEXT(XrSession session, XrPath topLevelPath, XrPat
 
 // simulator_state.cpp (XR_GAZELOD_simulator_state)
 XrResult GetSimulatorStateGAZELOD(XrSession session, XrSimulatorStateGAZELOD* state);
+XrResult EnumerateSubmittedLayersGAZELOD(XrSession session, uint32_t capacity, uint32_t* count,
+                                         XrSubmittedLayerGAZELOD* layers);
 
 }  // namespace gazelod::xrrt

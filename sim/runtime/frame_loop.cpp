@@ -6,6 +6,7 @@
 #include "sim/runtime/pose_math.hpp"
 #include "sim/runtime/system_info.hpp"
 
+#include <algorithm>
 #include <thread>
 
 namespace gazelod::xrrt {
@@ -50,6 +51,45 @@ XrResult check_layer(const Instance& inst, const Session& s, const XrComposition
     return check_sub_image(s, q->subImage);
   }
   return XR_ERROR_LAYER_INVALID;
+}
+
+// What XR_GAZELOD_simulator_state reports of a submitted layer: its type, space and pose(s).
+// Headless sessions' layers are not checked, so only what is there is read.
+XrSubmittedLayerGAZELOD record_layer(const XrCompositionLayerBaseHeader& layer) {
+  XrSubmittedLayerGAZELOD out{};
+  out.layerType = layer.type;
+  out.space = layer.space;
+  auto one = [&](const XrPosef& pose) {
+    out.poseCount = 1;
+    out.poses[0] = pose;
+  };
+  switch (layer.type) {
+    case XR_TYPE_COMPOSITION_LAYER_QUAD:
+      one(reinterpret_cast<const XrCompositionLayerQuad&>(layer).pose);
+      break;
+    case XR_TYPE_COMPOSITION_LAYER_CYLINDER_KHR:
+      one(reinterpret_cast<const XrCompositionLayerCylinderKHR&>(layer).pose);
+      break;
+    case XR_TYPE_COMPOSITION_LAYER_EQUIRECT_KHR:
+      one(reinterpret_cast<const XrCompositionLayerEquirectKHR&>(layer).pose);
+      break;
+    case XR_TYPE_COMPOSITION_LAYER_EQUIRECT2_KHR:
+      one(reinterpret_cast<const XrCompositionLayerEquirect2KHR&>(layer).pose);
+      break;
+    case XR_TYPE_COMPOSITION_LAYER_CUBE_KHR:
+      one(XrPosef{reinterpret_cast<const XrCompositionLayerCubeKHR&>(layer).orientation, {0.0f, 0.0f, 0.0f}});
+      break;
+    case XR_TYPE_COMPOSITION_LAYER_PROJECTION: {
+      const auto& p = reinterpret_cast<const XrCompositionLayerProjection&>(layer);
+      if (p.views == nullptr) break;
+      out.poseCount = std::min<std::uint32_t>(p.viewCount, XR_GAZELOD_SUBMITTED_LAYER_MAX_POSES);
+      for (std::uint32_t i = 0; i < out.poseCount; ++i) out.poses[i] = p.views[i].pose;
+      break;
+    }
+    default:
+      break;
+  }
+  return out;
 }
 
 }  // namespace
@@ -145,6 +185,9 @@ XrResult EndFrame(XrSession session, const XrFrameEndInfo* info) {
     s->frame_begun = false;
     ++s->frames_submitted;
     s->layers_submitted += info->layerCount;
+    s->last_layers.clear();
+    for (std::uint32_t i = 0; i < info->layerCount; ++i)
+      if (info->layers[i] != nullptr) s->last_layers.push_back(record_layer(*info->layers[i]));
     if (inst.faults.lose_session_at_frame != 0 && s->frames_submitted == inst.faults.lose_session_at_frame) {
       // Injected fault: this frame was shown; the session is lost from here on.
       s->lost = true;

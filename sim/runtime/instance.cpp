@@ -28,6 +28,7 @@ const Extension kExtensions[] = {
     {XR_EXT_EYE_GAZE_INTERACTION_EXTENSION_NAME, XR_EXT_eye_gaze_interaction_SPEC_VERSION},
     {XR_EXT_CONFORMANCE_AUTOMATION_EXTENSION_NAME, XR_EXT_conformance_automation_SPEC_VERSION},
     {XR_GAZELOD_SIMULATOR_STATE_EXTENSION_NAME, XR_GAZELOD_simulator_state_SPEC_VERSION},
+    {XR_KHR_LOCATE_SPACES_EXTENSION_NAME, XR_KHR_locate_spaces_SPEC_VERSION},
 };
 
 // GAZELOD_SIM_EYE_GAZE_EXTENSION=0 hides XR_EXT_eye_gaze_interaction, as on the many runtimes
@@ -105,6 +106,8 @@ XrResult CreateInstance(const XrInstanceCreateInfo* info, XrInstance* instance) 
         inst->ext_automation = true;
       else if (name == XR_GAZELOD_SIMULATOR_STATE_EXTENSION_NAME)
         inst->ext_simulator_state = true;
+      else if (name == XR_KHR_LOCATE_SPACES_EXTENSION_NAME)
+        inst->ext_locate_spaces = true;
       else if (name == XR_EXT_DEBUG_UTILS_EXTENSION_NAME)
         continue;  // implemented by the loader
       else

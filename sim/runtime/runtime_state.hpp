@@ -28,7 +28,7 @@ std::mutex& runtime_mutex();
 struct Instance {
   std::uint64_t id = 0;
   bool ext_vulkan = false, ext_vulkan2 = false, ext_headless = false, ext_eye_gaze = false, ext_automation = false,
-       ext_timespec = false, ext_simulator_state = false;
+       ext_timespec = false, ext_simulator_state = false, ext_locate_spaces = false;
   std::string app_name;
   std::unique_ptr<sim::Simulator> simulator;
   SimClock clock;
@@ -98,6 +98,7 @@ struct Session {
   XrTime last_predicted_time = 0;
   std::uint64_t frames_submitted = 0;  // successful xrEndFrame calls
   std::uint64_t layers_submitted = 0;
+  std::vector<XrSubmittedLayerGAZELOD> last_layers;  // of the last successful xrEndFrame
   // Actions.
   bool actions_attached = false;
   std::vector<std::uint64_t> attached_sets;

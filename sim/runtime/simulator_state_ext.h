@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 /* XR_GAZELOD_simulator_state: a vendor extension of the gazelod simulated OpenXR runtime that
  * tells tests and the plugin where the simulation stands (frame count, the XrTime of scenario
- * time 0, the scenario's duration and whether it has ended). Enable the extension at
- * xrCreateInstance and fetch xrGetSimulatorStateGAZELOD with xrGetInstanceProcAddr. */
+ * time 0, the scenario's duration and whether it has ended) and what the last frame submitted
+ * (the composition layers as the runtime received them, below every API layer). Enable the
+ * extension at xrCreateInstance and fetch xrGetSimulatorStateGAZELOD and
+ * xrEnumerateSubmittedLayersGAZELOD with xrGetInstanceProcAddr. */
 #ifndef GAZELOD_SIMULATOR_STATE_EXT_H_
 #define GAZELOD_SIMULATOR_STATE_EXT_H_
 
@@ -13,7 +15,7 @@ extern "C" {
 #endif
 
 #define XR_GAZELOD_simulator_state 1
-#define XR_GAZELOD_simulator_state_SPEC_VERSION 1
+#define XR_GAZELOD_simulator_state_SPEC_VERSION 2
 #define XR_GAZELOD_SIMULATOR_STATE_EXTENSION_NAME "XR_GAZELOD_simulator_state"
 
 typedef struct XrSimulatorStateGAZELOD {
@@ -26,6 +28,22 @@ typedef struct XrSimulatorStateGAZELOD {
 } XrSimulatorStateGAZELOD;
 
 typedef XrResult(XRAPI_PTR* PFN_xrGetSimulatorStateGAZELOD)(XrSession session, XrSimulatorStateGAZELOD* state);
+
+/* Spec version 2: one composition layer of the session's last successful xrEndFrame, in the
+ * order submitted. */
+#define XR_GAZELOD_SUBMITTED_LAYER_MAX_POSES 2
+typedef struct XrSubmittedLayerGAZELOD {
+  XrStructureType layerType; /* the layer's type, XR_TYPE_COMPOSITION_LAYER_... */
+  XrSpace space;
+  /* Quad, cylinder, equirect(2): its pose; cube: its orientation (position 0); projection: its
+   * views' poses (the first XR_GAZELOD_SUBMITTED_LAYER_MAX_POSES); other types: none. */
+  uint32_t poseCount;
+  XrPosef poses[XR_GAZELOD_SUBMITTED_LAYER_MAX_POSES];
+} XrSubmittedLayerGAZELOD;
+
+/* The two-call idiom; none before the session's first xrEndFrame. */
+typedef XrResult(XRAPI_PTR* PFN_xrEnumerateSubmittedLayersGAZELOD)(XrSession session, uint32_t capacity,
+                                                                   uint32_t* count, XrSubmittedLayerGAZELOD* layers);
 
 #ifdef __cplusplus
 }

@@ -119,7 +119,9 @@ int count_lines_with(const std::string& text, const std::string& needle) {
 }
 
 void GazeRig::create(bool eyes_subaction, bool extras) {
-  hs.create({XR_EXT_EYE_GAZE_INTERACTION_EXTENSION_NAME});
+  std::vector<const char*> enabled = extensions;
+  enabled.push_back(XR_EXT_EYE_GAZE_INTERACTION_EXTENSION_NAME);
+  hs.create(enabled);
   ASSERT_NE(hs.session, XR_NULL_HANDLE);
   XrSystemEyeGazeInteractionPropertiesEXT eye{XR_TYPE_SYSTEM_EYE_GAZE_INTERACTION_PROPERTIES_EXT};
   XrSystemProperties props{XR_TYPE_SYSTEM_PROPERTIES, &eye};

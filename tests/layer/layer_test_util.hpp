@@ -60,6 +60,9 @@ struct GazeRig {
   XrBool32 supported = XR_FALSE;
   XrTime first_frame = 0;
 
+  // Enabled at create besides XR_EXT_eye_gaze_interaction (and XR_MND_headless).
+  std::vector<const char*> extensions;
+
   // With `extras`: a boolean action and a pose action in the same set, neither bound to the
   // eye-gaze profile, both listing /user/eyes_ext and /user/hand/left as subaction paths.
   XrAction button = XR_NULL_HANDLE, other_pose = XR_NULL_HANDLE;

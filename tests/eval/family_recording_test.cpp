@@ -136,7 +136,7 @@ TEST(FamilyRecording, AnUnreadableRecordingIsRefusedBeforeAnySeed) {
   testing::use_simulated_runtime();
   const Result missing = testing::cli({"eval", "family", "--seeds", "1-2", "--recording", (dir / "none.csv").string(),
                                        "--out", (dir / "out").string()});
-  EXPECT_EQ(missing.rc, 1) << missing.out;
+  EXPECT_EQ(missing.rc, 2) << missing.out;  // bad input, as run --trace (it was 1)
   EXPECT_NE(missing.err.find("--recording"), std::string::npos) << missing.err;
   EXPECT_NE(missing.err.find("none.csv"), std::string::npos) << missing.err;
   EXPECT_EQ(missing.err.find("[1/2]"), std::string::npos) << "no seed ran\n" << missing.err;
@@ -146,8 +146,14 @@ TEST(FamilyRecording, AnUnreadableRecordingIsRefusedBeforeAnySeed) {
   std::ofstream(bad) << "# gazelod-trace 1\nt_ns,gaze_x,gaze_y,gaze_z,valid\n0,0,0,-1,1\nx,0,0,-1,1\n";
   const Result broken =
       testing::cli({"eval", "family", "--seeds", "1-2", "--recording", bad.string(), "--out", (dir / "out").string()});
-  EXPECT_EQ(broken.rc, 1);
+  EXPECT_EQ(broken.rc, 2);
   EXPECT_NE(broken.err.find("bad.csv:4"), std::string::npos) << "file:line\n" << broken.err;
+
+  // A folder where the recording file goes: bad input too (it was 1, run --trace DIR 2).
+  const Result folder =
+      testing::cli({"eval", "family", "--seeds", "1-2", "--recording", dir.string(), "--out", (dir / "out").string()});
+  EXPECT_EQ(folder.rc, 2);
+  EXPECT_NE(folder.err.find("is a directory"), std::string::npos) << folder.err;
 
   const Result format = testing::cli({"eval", "family", "--seeds", "1-2", "--recording", bad.string(),
                                       "--recording-format", "tobii", "--out", (dir / "out").string()});

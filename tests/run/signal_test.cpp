@@ -24,9 +24,10 @@ extern char** environ;
 namespace gazelod::test {
 namespace {
 
-// Starts `gazelod ARGS`, signals it once it has run a second and a half, returns the exit
-// status; its output goes to log.
-int spawn_and_signal(std::vector<std::string> args, const std::string& log, int signal) {
+// Starts `gazelod ARGS`, signals it once it has run a second and a half (and then at once with
+// `then`, when given), returns the exit status or 1000 + the signal that ended it; its output
+// goes to log.
+int spawn_and_signal(std::vector<std::string> args, const std::string& log, int signal, int then = 0) {
   const std::string program = std::string(GAZELOD_BINARY_DIR) + "/apps/gazelod/gazelod";
   args.insert(args.begin(), program);
   std::vector<char*> argv;
@@ -41,6 +42,7 @@ int spawn_and_signal(std::vector<std::string> args, const std::string& log, int 
   posix_spawn_file_actions_destroy(&actions);
   std::this_thread::sleep_for(std::chrono::milliseconds(1500));
   kill(pid, signal);
+  if (then != 0) kill(pid, then);  // another signal: not merged with the first while pending
   int status = 0;
   // Bounded: a run that ignored the signal is killed after 30 s and fails the test.
   for (int i = 0; i < 300 && waitpid(pid, &status, WNOHANG) == 0; ++i)
@@ -79,6 +81,23 @@ TEST(RunSignals, FirstSignalStopsWithAReportMarkedInterrupted) {
       EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
     EXPECT_NE(read_text(dir / "run.log").find("ending the session and writing the report"), std::string::npos);
   }
+}
+
+// A second signal ends the process at once, as the signal's default would; it left the
+// temporaries of the files being written (the decisions file, open the whole run; the report
+// file in progress). They are removed first: no temporary, no partial file, no report.
+TEST(RunSignals, SecondSignalEndsAtOnceAndLeavesNoTemporary) {
+  const auto dir = scratch_dir();
+  use_simulated_runtime("");
+  const auto out = dir / "out";
+  const int rc = spawn_and_signal({"run", "--frames", "1000000", "--no-render", "--quiet", "--out", out.string(),
+                                   "--decisions", (out / "decisions.csv").string()},
+                                  (dir / "run.log").string(), SIGINT, SIGTERM);
+  EXPECT_TRUE(rc == 1000 + SIGINT || rc == 1000 + SIGTERM) << rc << "\n" << read_text(dir / "run.log");
+  for (const auto& e : std::filesystem::directory_iterator(out))
+    EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
+  EXPECT_FALSE(std::filesystem::exists(out / "decisions.csv")) << "never committed";
+  EXPECT_FALSE(std::filesystem::exists(out / "summary.json"));
 }
 
 // `gazelod eval family` stops too: between seeds or in a seed's run, with a message, exit 128 +

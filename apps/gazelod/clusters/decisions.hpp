@@ -14,6 +14,7 @@
 #pragma once
 
 #include "apps/gazelod/clusters/scene.hpp"
+#include "apps/gazelod/run/signals.hpp"
 #include "auxiliary/atomic_file.hpp"
 #include "plugin/frame_output.hpp"
 
@@ -37,7 +38,7 @@ class ClusterDecisionsFile {
  private:
   [[noreturn]] void fail(const std::string& what) const;
   const ClusterScene& scene_;
-  aux::AtomicFile file_;
+  AtomicRunFile file_;  // its temporary removed by a second signal too
   std::string row_;
   std::uint64_t rows_ = 0;
 };

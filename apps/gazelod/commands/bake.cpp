@@ -51,6 +51,7 @@ std::string output_path(const Options& o) {
   if (std::filesystem::equivalent(o.input, out, ec) ||
       std::filesystem::path(o.input).lexically_normal() == std::filesystem::path(out).lexically_normal())
     throw UsageError("--output: '" + out + "' is the input file; write the bake to another file");
+  check_output_file("--output", out);  // a folder: refused before the bake (it failed after it, exit 1)
   return out;
 }
 

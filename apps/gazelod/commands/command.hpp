@@ -32,6 +32,15 @@ struct UsageError : std::runtime_error {
 // number") otherwise.
 double parse_number(const std::string& option, const std::string& text);
 
+// An output file named by `option` (its value `path`): a directory there is bad input, refused
+// before any work with UsageError "<option>: cannot write '<path>': is a directory ..." (exit 2,
+// as for an input file that is a directory).
+void check_output_file(const std::string& option, const std::string& path);
+
+// For a signed integer option whose negative values mean nothing: refuses "-7" with "'-7' is
+// negative", as every unsigned option does. Other text is the decimal-integer check's.
+CLI::Validator non_negative_integer();
+
 // Adds one sub-command to `app`. The sub-command's callback must return its exit status
 // through the returned function (called after a successful parse, only if it was selected).
 using Action = std::function<int(Io)>;

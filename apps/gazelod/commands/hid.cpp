@@ -78,6 +78,7 @@ double parse_positive(const std::string& option, const std::string& text, double
 
 int run_record(const Options& o, Io io) {
   if (o.out.empty()) throw UsageError("--out: required (the trace CSV to write)");
+  check_output_file("--out", o.out);
   if (!(o.seconds > 0.0 && o.seconds <= 86400.0))
     throw UsageError("--seconds: must be in (0, 86400], got " + std::to_string(o.seconds));
   hid::HidTrackerConfig config;

@@ -53,7 +53,9 @@ const Registrar reg(
       auto gaze_source = std::make_shared<std::string>();
       app.add_option("--gaze", *gaze_source,
                      "Gaze source for the whole run: runtime (default), hid (the first HID eye tracker) or trace:FILE");
-      app.add_option("--capture-frame", opt->capture_frame, "Frame saved as frame.png (default: the middle one)");
+      // Not given: the middle frame. A negative frame is refused (-7 meant the middle one).
+      app.add_option("--capture-frame", opt->capture_frame, "Frame saved as frame.png (default: the middle one)")
+          ->check(non_negative_integer());
       app.add_flag("--quiet", opt->quiet, "No progress lines");
       app.add_flag(
           "--breakdown", opt->breakdown,

@@ -60,6 +60,7 @@ int run_print(const Options& o, Io io) {
 }
 
 int run_record(const Options& o, Io io) {
+  check_output_file("--out", o.out);
   sim::Scenario sc = load(o);
   sim::Simulator simulator(std::move(sc));
   sim::RecordOptions ro;
@@ -102,6 +103,7 @@ int run_family(const Options& o, Io io) {
   sim::IdealTracker ideal;
   if (!sim::parse_ideal_tracker(o.ideal, ideal))
     throw UsageError(std::string("--ideal: expected ") + sim::kIdealTrackerNames + ", got '" + o.ideal + "'");
+  check_output_file("--out", o.out);
   const sim::FamilyScenario f = sim::family_scenario(o.seed, o.duration_s, ideal);
   try {
     (void)sim::load_scenario_json(f.json, "family seed " + std::to_string(o.seed));

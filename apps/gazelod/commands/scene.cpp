@@ -25,6 +25,7 @@ struct Options {
 int run_generate(const Options& o, CLI::App& sub, Io io) {
   if (o.out.size() < 5 || o.out.substr(o.out.size() - 4) != ".glb")
     throw UsageError("OUT: must name a .glb file, got '" + o.out + "'");
+  check_output_file("OUT", o.out);
   if (o.kind == "city" && sub.count("--tiles") > 0)
     throw UsageError("--tiles: only for terrain (a city is one mesh per block)");
   const auto started = std::chrono::steady_clock::now();

@@ -167,6 +167,7 @@ int run_convert(const Options& o, Io io) {
   std::error_code ec;
   if (fs::exists(o.out_file, ec) && fs::equivalent(o.file, o.out_file, ec))
     throw UsageError("OUT must not be the input file");
+  check_output_file("OUT", o.out_file);
   // Written atomically (auxiliary/atomic_file.hpp): a failure, in the input or the output, leaves
   // neither a truncated OUT nor a temporary file.
   std::size_t n = 0;

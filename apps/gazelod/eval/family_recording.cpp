@@ -49,13 +49,13 @@ FamilyRecording read_family_recording(const std::string& path, gaze::TraceFormat
       last_valid_ns = rec.gaze.t_ns;
     }
   } catch (const gaze::TraceError& e) {
-    throw UsageError(std::string("--recording: ") + e.what(), 1);
+    throw UsageError(std::string("--recording: ") + e.what());  // bad input (exit 2), as run --trace
   }
-  if (valid < 2) throw UsageError("--recording: " + r.path + ": fewer than two valid gaze samples", 1);
+  if (valid < 2) throw UsageError("--recording: " + r.path + ": fewer than two valid gaze samples");
   // head_track needs two poses; with fewer the head stands still and gaze_track labels in it.
   r.has_head = poses >= 2;
   r.span_s = aux::seconds_from_ns(last_valid_ns - first_valid_ns);
-  if (!(r.span_s >= 1.0)) throw UsageError("--recording: " + r.path + ": its valid samples span less than 1 s", 1);
+  if (!(r.span_s >= 1.0)) throw UsageError("--recording: " + r.path + ": its valid samples span less than 1 s");
   return r;
 }
 

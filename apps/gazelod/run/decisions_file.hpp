@@ -7,6 +7,7 @@
 // temporary is removed and FILE is left as it was.
 #pragma once
 
+#include "apps/gazelod/run/signals.hpp"
 #include "auxiliary/atomic_file.hpp"
 
 #include <cstdint>
@@ -33,7 +34,7 @@ class DecisionsFile {
 
  private:
   [[noreturn]] void fail(const std::string& what) const;
-  aux::AtomicFile file_;
+  AtomicRunFile file_;  // its temporary removed by a second signal too
   std::string row_;
 };
 

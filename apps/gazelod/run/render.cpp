@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "apps/gazelod/run/render.hpp"
 
+#include "apps/gazelod/run/signals.hpp"
 #include "auxiliary/atomic_file.hpp"
 #include "auxiliary/angles.hpp"
 #include "render/lod_key.hpp"
@@ -232,7 +233,7 @@ void RunRenderer::save_png(std::size_t eye, std::uint32_t image_index, const std
   // Atomically, like the run's other files: a full disk leaves no cut frame.png.
   const std::vector<unsigned char> png =
       render::encode_png(render::with_lod_key(renderer(eye).read_back(image_index), levels));
-  aux::write_file_atomic(file.string(), std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
+  write_run_file(file.string(), std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
 }
 
 std::uint64_t RunRenderer::triangles_drawn(std::size_t eye) const {

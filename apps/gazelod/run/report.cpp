@@ -3,6 +3,7 @@
 
 #include "auxiliary/text.hpp"
 
+#include "apps/gazelod/run/signals.hpp"
 #include "auxiliary/atomic_file.hpp"
 
 #include "apps/gazelod/plots/svg_plot.hpp"
@@ -233,8 +234,9 @@ void write_report_files(const std::filesystem::path& dir, const RunInfo& info, c
   j["clusters"] = cluster_run_json(s.clusters);
   // Every file goes to a temporary beside it and replaces the old one only when complete
   // (auxiliary/atomic_file.hpp): a full disk leaves no cut file, and the error says why. The
-  // largest first and the summary last, so a run that fails leaves no summary of it.
-  aux::AtomicFile csv_file((dir / "frames.csv").string());
+  // largest first and the summary last, so a run that fails leaves no summary of it. A second
+  // Ctrl-C, which ends the process at once, removes the temporary too (AtomicRunFile).
+  AtomicRunFile csv_file((dir / "frames.csv").string());
   std::ostream& csv = csv_file.stream();
   csv << "frame,t_s,frame_ms,select_ms,predicted_ms,triangles_drawn,triangles_full,"
          "triangles_size_only,triangles_size_eccentricity,triangles_size_velocity,"
@@ -289,18 +291,18 @@ void write_report_files(const std::filesystem::path& dir, const RunInfo& info, c
   plot.panels.push_back({"time (ms)", {frame, select}});
   plot.panels.push_back({"head speed (deg/s)", {head}});
   plot.marker_legend = "saccade";
-  aux::AtomicFile svg((dir / "frames.svg").string());
+  AtomicRunFile svg((dir / "frames.svg").string());
   write_svg(plot, svg.stream());
   svg.commit();
 
   std::filesystem::remove(dir / "audit.svg", ec);  // never leave an older run's plot behind
   if (s.audit.available) {
-    aux::AtomicFile audit_svg((dir / "audit.svg").string());
+    AtomicRunFile audit_svg((dir / "audit.svg").string());
     write_svg(audit_plot(info, s.audit, frames), audit_svg.stream());
     audit_svg.commit();
   }
 
-  aux::AtomicFile summary((dir / "summary.json").string());
+  AtomicRunFile summary((dir / "summary.json").string());
   summary.stream() << j.dump(2) << "\n";
   summary.commit();
 }

@@ -3,6 +3,7 @@
 
 #include "auxiliary/json_strict.hpp"
 
+#include "apps/gazelod/run/signals.hpp"
 #include "auxiliary/atomic_file.hpp"
 #include "bake/baked_scene.hpp"
 #include "bake/bake_error.hpp"
@@ -239,17 +240,35 @@ PreparedScenario prepare_scenario(const RunOptions& opt) {
     p.scenario.duration_s = static_cast<double>(opt.frames) / rate;
   }
   p.duration_s = p.scenario.duration_s;
-
-  std::error_code ec;
-  std::filesystem::create_directories(opt.out_dir, ec);
-  if (ec) throw UsageError("--out: cannot create '" + opt.out_dir.string() + "': " + ec.message());
   p.file = opt.out_dir / "scenario.json";
+  p.text = std::move(text);
+  return p;
+}
+
+bool create_out_dir(const RunOptions& opt) {
+  std::error_code ec;
+  const bool created = std::filesystem::create_directories(opt.out_dir, ec);
+  if (ec) throw UsageError("--out: cannot create '" + opt.out_dir.string() + "': " + ec.message());
+  return created;
+}
+
+void write_scenario_file(const PreparedScenario& p, const RunOptions& opt) {
+  std::error_code ec;
+  // An earlier run's report files go: one this run does not write (frame.png with --no-render,
+  // audit.svg without ground truth) was taken for this run's. Only the report's own names, and
+  // only files (a link goes, not what it points to); a folder in the way is the writer's to report.
+  for (const char* report : kRunReportFiles) {
+    const std::filesystem::path f = opt.out_dir / report;
+    const std::filesystem::file_status st = std::filesystem::symlink_status(f, ec);
+    if (ec || !(std::filesystem::is_regular_file(st) || std::filesystem::is_symlink(st))) continue;
+    if (!std::filesystem::remove(f, ec) && ec)
+      throw UsageError("--out: cannot remove the earlier run's '" + f.string() + "': " + ec.message());
+  }
   try {
-    aux::write_file_atomic(p.file.string(), text + "\n");
+    write_run_file(p.file.string(), p.text + "\n");
   } catch (const aux::WriteError& e) {
     throw UsageError(std::string("--out: ") + e.what());
   }
-  return p;
 }
 
 // The simulated runtime's manifest: beside an installed program (cmake --install puts it in

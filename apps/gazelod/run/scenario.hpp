@@ -24,7 +24,8 @@ namespace gazelod::cli {
 struct PreparedScenario {
   sim::Scenario scenario;
   std::string label;           // "default" or the file name
-  std::filesystem::path file;  // the effective scenario as the runtime reads it
+  std::filesystem::path file;  // the effective scenario as the runtime reads it (--out/scenario.json)
+  std::string text;            // its JSON, written by write_scenario_file
   double duration_s = 0.0;
   // --scene: the baked file, whose objects are the scenario's objects in the same order, and the
   // translation --scene-placement applied to them (0 for `file`).
@@ -36,12 +37,21 @@ struct PreparedScenario {
   bool trace_head = false;
 };
 
-// Throws UsageError naming the scenario file / JSON path, the scene file, or the output folder.
 // The files a run writes in --out (the report, and the scenario as run).
 inline constexpr const char* kRunReportFiles[] = {"summary.json", "frames.csv", "frames.svg",
                                                   "audit.svg",    "frame.png",  "scenario.json"};
 
+// Loads and adjusts the scenario; writes nothing. Throws UsageError naming the scenario file /
+// JSON path, the scene file, or an input that is one of the report's files in --out.
 PreparedScenario prepare_scenario(const RunOptions& options);
+
+// The first write to --out, after every refusal the run can decide up front: the folder (and
+// those above it); true when it was created. Throws UsageError naming --out.
+bool create_out_dir(const RunOptions& options);
+
+// In --out (created): removes an earlier run's report files (kRunReportFiles only: what this
+// run does not write must not pass for its own), writes scenario.json. Throws UsageError.
+void write_scenario_file(const PreparedScenario& prepared, const RunOptions& options);
 
 // Sets XR_RUNTIME_JSON (the simulated runtime built with this program, unless the caller
 // set it), GAZELOD_SIM_SCENARIO, GAZELOD_SIM_DURATION_S and GAZELOD_SIM_PACED.

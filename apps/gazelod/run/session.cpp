@@ -36,15 +36,31 @@ int Session::run() {
   // Routine notes (what the preparation did) only without --quiet; warnings always.
   if (!opt_.quiet)
     for (const std::string& note : prepared_.notes) io_.err << "gazelod run: " << note << "\n";
-  if (opt_.runtime == "sim")
-    point_loader_at_simulator(prepared_, opt_);
-  else if (opt_.runtime != "system")
+  // Every refusal decided up front comes before the first write to --out (a run refused for
+  // memory left scenario.json): the options, the objects' split, the trace, the plugin's
+  // configuration, the plan, the decisions files' paths. Then the decisions files are opened
+  // (so that a bad path fails before the session), in --out too: a folder created for them is
+  // removed again when they cannot be.
+  if (opt_.runtime != "sim" && opt_.runtime != "system")
     throw UsageError("--runtime: must be 'sim' or 'system', got '" + opt_.runtime + "'");
   split_objects();
-  open_decision_files();
+  trace_ = make_external_source(opt_);
+  if (const std::string why = validate_plugin_config(plugin_config()); !why.empty())
+    throw UsageError("plugin config: " + why);
+  plan_frames();
+  check_decision_paths();
+  const bool created_out = create_out_dir(opt_);
+  try {
+    open_decision_files();
+  } catch (...) {
+    std::error_code ec;
+    if (created_out) std::filesystem::remove(opt_.out_dir, ec);  // only when still empty
+    throw;
+  }
+  write_scenario_file(prepared_, opt_);
+  if (opt_.runtime == "sim") point_loader_at_simulator(prepared_, opt_);
   if (const int rc = open_runtime_and_plugin(); rc != 0) return rc;
   register_objects();
-  plan_frames();
   stop_.emplace();
   last_progress_ = started_ = Clock::now();
   while (handle_events_and_signals())

@@ -42,11 +42,11 @@ struct RunOptions {
   // (relative to its first pose) in place of the scenario's head effects, so the replayed
   // eye-in-head gaze and the head it was recorded with stay together. false: the scenario's head.
   bool trace_head = true;
-  bool hid_gaze = false;            // the first HID eye tracker (usage page 0x12) as the gaze source
-  std::int64_t capture_frame = -1;  // frame saved as PNG in out_dir (-1: the middle one)
-  bool quiet = false;               // no progress lines
-  bool audit = true;                // the visibility audit against the simulator's truth (run/audit.hpp)
-  bool breakdown = false;           // print the audit's breakdown (run/audit_breakdown.hpp)
+  bool hid_gaze = false;                      // the first HID eye tracker (usage page 0x12) as the gaze source
+  std::optional<std::int64_t> capture_frame;  // frame saved as PNG in out_dir (none: the middle one); >= 0
+  bool quiet = false;                         // no progress lines
+  bool audit = true;                          // the visibility audit against the simulator's truth (run/audit.hpp)
+  bool breakdown = false;                     // print the audit's breakdown (run/audit_breakdown.hpp)
   // The offline optimum at the policy's switches (run/offline_bound.hpp; on with breakdown):
   // keeps 3 bytes per object-frame, up to kMaxOfflineObjectFrames.
   bool offline_bound = false;

@@ -40,6 +40,17 @@ void Session::split_objects() {
   }
 }
 
+// Before anything is written: a path that names a folder is bad input (exit 2), as for the
+// run's input files.
+void Session::check_decision_paths() const {
+  if (!opt_.cluster_decisions_path.empty() && clusters_.empty())
+    throw UsageError(
+        "--cluster-decisions: the scene has no cluster meshes (--scene with a file from "
+        "gazelod bake --clusters)");
+  check_output_file("--decisions", opt_.decisions_path);
+  check_output_file("--cluster-decisions", opt_.cluster_decisions_path);
+}
+
 // Opened before the session so that a bad path fails at once; committed (renamed into place)
 // only after the last frame.
 void Session::open_decision_files() {
@@ -48,20 +59,15 @@ void Session::open_decision_files() {
     for (std::size_t i : plain_) names.push_back(scenario_.objects[i].name);
     decisions_.emplace(opt_.decisions_path, names);
   }
-  if (!opt_.cluster_decisions_path.empty()) {
-    if (clusters_.empty())
-      throw UsageError(
-          "--cluster-decisions: the scene has no cluster meshes (--scene with a file from "
-          "gazelod bake --clusters)");
-    cluster_decisions_.emplace(opt_.cluster_decisions_path, clusters_);
-  }
+  if (!opt_.cluster_decisions_path.empty()) cluster_decisions_.emplace(opt_.cluster_decisions_path, clusters_);
 }
 
 PluginConfig Session::plugin_config() const {
   PluginConfig config;
   // --trace: the trace is the gaze source for the whole run (from the first frame on; the
   // runtime's own gaze is not used), and the source-change lines say when it ends.
-  config.use_openxr_eye_gaze = opt_.eye_gaze && app_->eye_gaze_enabled() && opt_.trace_path.empty() && !opt_.hid_gaze;
+  config.use_openxr_eye_gaze =
+      opt_.eye_gaze && app_ && app_->eye_gaze_enabled() && opt_.trace_path.empty() && !opt_.hid_gaze;
   config.criteria = opt_.criteria;
   config.compute_breakdown = true;
   config.budget_ms = opt_.budget_ms;
@@ -87,7 +93,6 @@ int Session::open_runtime_and_plugin() {
     io_.err << "gazelod run: " << e.what() << "\n";
     return 1;
   }
-  trace_ = make_external_source(opt_);
   PluginConfig config = plugin_config();
   if (opt_.hid_gaze) {
     // The first HID eye tracker, its samples mapped onto the runtime's clock. No tracker (or
@@ -165,7 +170,9 @@ void Session::register_objects() {
 void Session::plan_frames() {
   rate_hz_ = scenario_.frame_rate_hz > 0 ? scenario_.frame_rate_hz : 90.0;
   planned_ = opt_.frames > 0 ? opt_.frames : static_cast<std::int64_t>(std::llround(scenario_.duration_s * rate_hz_));
-  capture_ = opt_.capture_frame >= 0 ? opt_.capture_frame : planned_ / 2;
+  if (opt_.capture_frame && *opt_.capture_frame < 0)  // a caller's options (the command line refuses it)
+    throw UsageError("--capture-frame: '" + std::to_string(*opt_.capture_frame) + "' is negative");
+  capture_ = opt_.capture_frame.value_or(planned_ / 2);
   // A trace shorter than the run: past its end the gaze falls back to head-fixed (and says so
   // then); say it before, with the way to bound the run.
   const double run_s = static_cast<double>(planned_) / rate_hz_;

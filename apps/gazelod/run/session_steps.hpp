@@ -61,6 +61,7 @@ class Session {
 
  private:
   void split_objects();
+  void check_decision_paths() const;  // throws UsageError
   void open_decision_files();
   int open_runtime_and_plugin();  // 0 or the exit status
   PluginConfig plugin_config() const;

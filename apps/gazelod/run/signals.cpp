@@ -3,10 +3,22 @@
 // number (async-signal-safe); the frame loop reads it between frames.
 #include "apps/gazelod/run/signals.hpp"
 
+#include <unistd.h>
+
+#include <atomic>
 #include <csignal>
+#include <cstring>
 
 namespace gazelod::cli {
 namespace {
+
+// TemporaryOnSignal's paths: written by the main thread, `held` set last (after a signal
+// fence), read by the handler.
+struct HeldPath {
+  char path[4096];
+  volatile std::sig_atomic_t held;
+};
+HeldPath g_temporaries[TemporaryOnSignal::kHeldTemporaries];
 
 volatile std::sig_atomic_t g_stop_signal = 0;
 struct sigaction g_previous_int, g_previous_term;
@@ -17,6 +29,9 @@ int g_depth = 0;
 
 extern "C" void on_stop_signal(int signal) {
   if (g_stop_signal != 0) {  // the second: leave now, as the signal's default would have
+    // No temporary left behind (unlink is async-signal-safe).
+    for (const HeldPath& t : g_temporaries)
+      if (t.held != 0) ::unlink(t.path);
     std::signal(signal, SIG_DFL);
     std::raise(signal);
     return;
@@ -45,6 +60,36 @@ StopOnSignal::~StopOnSignal() {
 
 int StopOnSignal::requested() const {
   return g_stop_signal;
+}
+
+void TemporaryOnSignal::hold(const std::string& path) {
+  release();
+  if (path.empty() || path.size() >= sizeof(HeldPath::path)) return;
+  for (int i = 0; i < kHeldTemporaries; ++i) {
+    if (g_temporaries[i].held != 0) continue;
+    std::memcpy(g_temporaries[i].path, path.c_str(), path.size() + 1);
+    std::atomic_signal_fence(std::memory_order_seq_cst);  // the whole path before `held`
+    g_temporaries[i].held = 1;
+    slot_ = i;
+    return;
+  }
+}
+
+void TemporaryOnSignal::release() {
+  if (slot_ < 0) return;
+  g_temporaries[slot_].held = 0;
+  std::atomic_signal_fence(std::memory_order_seq_cst);
+  slot_ = -1;
+}
+
+AtomicRunFile::AtomicRunFile(std::string path) : file_(std::move(path)) {
+  temporary_.hold(file_.temp_path());
+}
+
+void write_run_file(const std::string& path, std::string_view bytes) {
+  AtomicRunFile file(path);
+  file.stream().write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  file.commit();
 }
 
 const char* StopOnSignal::name(int signal) {

@@ -329,6 +329,8 @@ TEST(ClusterGltf, BadGeometryNamesFileMeshAndVertex) {
   std::memcpy(m.buffers[0].data.data() + m.bufferViews[std::size_t(ia.bufferView)].byteOffset + 4 * 5, &big, 4);
   EXPECT_HAS(bake_error(m, "cl_range"),
              "in.glb: mesh 0 'M' primitive 0: index 5 is 1000, but there are only 42 vertices");
+  // Fresh indices: the line primitive's are checked too (BakeErrors.CarriedAttributesAreChecked).
+  m = testing::single_mesh_model(testing::icosphere(1, 1.0));
   m.meshes[0].primitives[0].mode = TINYGLTF_MODE_LINE;
   EXPECT_HAS(bake_error(m, "cl_lines"), "in.glb: nothing to bake: the meshes the nodes use have no triangle primitive");
   m.nodes[0].mesh = -1;

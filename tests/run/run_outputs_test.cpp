@@ -2,6 +2,7 @@
 // What `gazelod run` leaves in --out: only this run's report (an earlier run's frame.png stayed
 // beside a --no-render report and passed for its picture), and nothing at all when the run is
 // refused up front (a plan refused for memory left scenario.json).
+#include "auxiliary/folder_lock.hpp"
 #include "run_test_util.hpp"
 
 #include <gtest/gtest.h>
@@ -104,6 +105,35 @@ TEST(RunOutputs, RefusedUpFrontWritesNothing) {
       }
     }
   }
+}
+
+// One writer per --out: with the folder locked (here by this process, as another gazelod would
+// hold it), run, compare and eval family refuse it before writing anything (exit 1); with the
+// lock gone, the run goes ahead. Before, two runs into one folder left a mix of both reports.
+TEST(RunOutputs, FolderBeingWrittenIsRefused) {
+  use_simulated_runtime("");
+  const fs::path dir = scratch_dir() / "locked";
+  fs::create_directories(dir);
+  {
+    aux::FolderLock other(dir.string());
+    const std::vector<std::vector<std::string>> commands = {
+        {"run", "--frames", "3", "--no-render", "--quiet", "--out", dir.string()},
+        {"compare", "--hmd", "questpro", "--frames", "3", "--out", dir.string()},
+        {"eval", "family", "--seeds", "1000-1000", "--duration", "1", "--out", dir.string()},
+    };
+    for (const auto& args : commands) {
+      const CliResult r = run_cli(args);
+      EXPECT_EQ(r.rc, 1) << args.front() << "\n" << r.err;
+      EXPECT_NE(r.err.find("--out: '" + dir.string() + "' is being written by another gazelod process"),
+                std::string::npos)
+          << r.err;
+      EXPECT_TRUE(fs::is_empty(dir)) << args.front() << " wrote into the locked folder";
+    }
+    EXPECT_THROW(aux::FolderLock(dir / "nosuch"), aux::FolderLockError);
+  }
+  const CliResult r = run_cli({"run", "--frames", "3", "--no-render", "--quiet", "--out", dir.string()});
+  EXPECT_EQ(r.rc, 0) << r.err;
+  EXPECT_TRUE(fs::exists(dir / "summary.json"));
 }
 
 }  // namespace

@@ -6,11 +6,13 @@
 #include "apps/gazelod/commands/command.hpp"
 #include "apps/gazelod/compare/report.hpp"
 #include "apps/gazelod/compare/runs.hpp"
+#include "auxiliary/atomic_file.hpp"
+#include "auxiliary/folder_lock.hpp"
 
 #include <nlohmann/json.hpp>
 
-#include <fstream>
 #include <memory>
+#include <optional>
 
 namespace gazelod::cli {
 namespace {
@@ -23,16 +25,27 @@ int run_compare(const CompareOptions& o, bool json, Io io) {
       if (o.hmds[j] == o.hmds[i])
         throw UsageError("--hmd: '" + o.hmds[i] + "' twice (its runs would share one folder in --out)");
   }
+  // --out first, held against another gazelod writing there: a folder that cannot be made
+  // would otherwise be found after every run.
+  std::error_code ec;
+  std::filesystem::create_directories(o.out_dir, ec);
+  if (ec || !std::filesystem::is_directory(o.out_dir))
+    throw UsageError("--out: cannot create the folder '" + o.out_dir.string() + "'" +
+                     (ec ? ": " + ec.message() : std::string(": a file is in the way")));
+  std::optional<aux::FolderLock> lock;
+  try {
+    lock.emplace(o.out_dir.string());
+  } catch (const aux::FolderLockError& e) {
+    throw UsageError(std::string("--out: ") + e.what(), 1);
+  }
   std::vector<HmdComparison> results;
   for (const std::string& h : o.hmds) {
     if (!json) io.err << "gazelod compare: running " << h << "\n";
     results.push_back(run_comparison(h, o));
   }
   const nlohmann::json doc = compare_json(results);
-  std::error_code ec;
-  std::filesystem::create_directories(o.out_dir, ec);
   const auto json_path = o.out_dir / "compare.json";
-  std::ofstream(json_path) << doc.dump(2) << "\n";
+  aux::write_file_atomic(json_path.string(), doc.dump(2) + "\n");  // before, a plain ofstream, unchecked
   write_compare_chart(results, o.out_dir);
   if (json) {
     io.out << doc.dump(2) << "\n";

@@ -2,11 +2,12 @@
 #include "apps/gazelod/compare/report.hpp"
 
 #include "apps/gazelod/compare/svg.hpp"
+#include "auxiliary/atomic_file.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
-#include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 namespace gazelod::cli {
@@ -87,14 +88,9 @@ void write_compare_chart(const std::vector<HmdComparison>& results, const std::f
       chart.series[i].values.push_back(none > 0.0 ? 100.0 * static_cast<double>(s.triangles) / none : 0.0);
     }
   }
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  const auto path = dir / "compare.svg";
-  std::ofstream f(path);
-  if (!f) throw std::runtime_error("cannot write " + path.string());
-  write_bar_chart(chart, f);
-  f.close();
-  if (!f) throw std::runtime_error("error while writing " + path.string());
+  std::ostringstream svg;
+  write_bar_chart(chart, svg);
+  aux::write_file_atomic((dir / "compare.svg").string(), svg.str());  // never a partial chart
 }
 
 }  // namespace gazelod::cli

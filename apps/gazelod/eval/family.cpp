@@ -6,6 +6,7 @@
 #include "apps/gazelod/run/session.hpp"
 #include "apps/gazelod/run/signals.hpp"
 #include "auxiliary/atomic_file.hpp"
+#include "auxiliary/folder_lock.hpp"
 #include "auxiliary/time.hpp"
 #include "sim/scenario_family.hpp"
 
@@ -294,6 +295,12 @@ int run_eval_family(const FamilyFlags& flags, Io io) {
   if (out_ec || !std::filesystem::is_directory(flags.out))
     throw UsageError("--out: cannot create the folder '" + flags.out + "'" +
                      (out_ec ? ": " + out_ec.message() : std::string(": a file is in the way")));
+  std::optional<aux::FolderLock> out_lock;  // against another gazelod writing there
+  try {
+    out_lock.emplace(flags.out);
+  } catch (const aux::FolderLockError& e) {
+    throw UsageError(std::string("--out: ") + e.what(), 1);
+  }
   const std::vector<FamilyMember> members = run_family(first, count, duration_s, settings, flags.work, progress);
   std::string command = "gazelod eval family --seeds " + flags.seeds;
   if (flags.duration_s != 20.0) command += " --duration " + fmt("%g", flags.duration_s);

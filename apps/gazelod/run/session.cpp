@@ -51,6 +51,11 @@ int Session::run() {
   check_decision_paths();
   const bool created_out = create_out_dir(opt_);
   try {
+    try {
+      out_lock_.emplace(opt_.out_dir.string());
+    } catch (const aux::FolderLockError& e) {
+      throw UsageError(std::string("--out: ") + e.what(), 1);
+    }
     open_decision_files();
   } catch (...) {
     std::error_code ec;

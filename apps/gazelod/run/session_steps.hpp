@@ -15,6 +15,7 @@
 #include "apps/gazelod/run/signals.hpp"
 #include "apps/xr_host/xr_app.hpp"
 #include "auxiliary/angles.hpp"
+#include "auxiliary/folder_lock.hpp"
 #include "sim/simulator.hpp"
 
 #include <glm/geometric.hpp>
@@ -78,6 +79,8 @@ class Session {
 
   const RunOptions& opt_;
   Io io_;
+  // --out held against another gazelod writing there, until the last report file is written.
+  std::optional<aux::FolderLock> out_lock_;
   const PreparedScenario prepared_;
   sim::Simulator simulator_;
   const sim::Scenario& scenario_;

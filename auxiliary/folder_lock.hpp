@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: Apache-2.0
+// One writer per output folder. Two `gazelod run`s (or a run and a `compare`) given the same
+// --out wrote the same report files at once: each file is atomic, but the folder ended as a
+// mix of both runs. A FolderLock holds an advisory lock (flock) on the folder itself for its
+// lifetime: no lock file is left in the folder, and the kernel releases the lock when the
+// process ends, however it ends. A second holder in any process is refused at once.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace gazelod::aux {
+
+// "'DIR' is being written by another gazelod process (...)"; or the system's reason the
+// folder could not be locked.
+class FolderLockError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class FolderLock {
+ public:
+  // Locks the existing folder `dir`. Throws FolderLockError when another open of it holds the
+  // lock, or when it cannot be opened as a folder.
+  explicit FolderLock(const std::string& dir);
+  ~FolderLock();
+  FolderLock(const FolderLock&) = delete;
+  FolderLock& operator=(const FolderLock&) = delete;
+
+ private:
+  int fd_ = -1;
+};
+
+}  // namespace gazelod::aux

@@ -6,10 +6,19 @@
 // cylinder, equirect and equirect2 `pose`, cube `orientation` (a cube map has no position),
 // each projection view's `pose`. The other layers keep their pointers; only the header array and
 // the changed layers are copied. Layer types the layer does not know go down as they are.
+//
+// Every layer still reaches the runtime, so its checks (swapchains, rectangles, the layer
+// limit, the session) answer as they would without this layer: a pose that is not a unit
+// quaternion goes down as the application gave it (the runtime refuses it; composing would have
+// normalised it), and without a fresh sample at displayTime (a blink, a lost tracker, the
+// action inactive) the layer is placed by the eye it was last placed by (a reticle stays where
+// the eye last was), or as given before it ever was.
 #include "layer/entry_points.hpp"
 #include "layer/gaze_space.hpp"
 
+#include <cstdint>
 #include <deque>
+#include <optional>
 #include <vector>
 
 namespace gazelod::layer {
@@ -35,6 +44,12 @@ struct Copies {
   std::deque<std::vector<XrCompositionLayerProjectionView>> views;
 };
 
+// More than this many layers, or projection views, the layer does not read: the runtime
+// refuses such a frame (its maxLayerCount is 16 or so) without reading the arrays, and an
+// application's count past its array must not make the layer read past it first.
+constexpr std::uint32_t kMaxLayersRead = 256;
+constexpr std::uint32_t kMaxProjectionViews = 16;
+
 bool placed_here(XrStructureType type) {
   switch (type) {
     case XR_TYPE_COMPOSITION_LAYER_PROJECTION:
@@ -57,6 +72,32 @@ const T& as(const XrCompositionLayerBaseHeader* layer) {
 // `in_eye` (a pose in the gaze space) in the head.
 XrPosef in_head(const Pose& eye, const XrPosef& in_eye) {
   return to_xr(compose(eye, from_xr(in_eye)));
+}
+
+// Whether every pose `layer` gives is a unit quaternion (else it goes down unchanged), and
+// its projection views are few enough to copy (the view configurations have 1, 2 or 4).
+bool placeable(const XrCompositionLayerBaseHeader* layer) {
+  switch (layer->type) {
+    case XR_TYPE_COMPOSITION_LAYER_QUAD:
+      return is_unit_orientation(as<XrCompositionLayerQuad>(layer).pose);
+    case XR_TYPE_COMPOSITION_LAYER_CYLINDER_KHR:
+      return is_unit_orientation(as<XrCompositionLayerCylinderKHR>(layer).pose);
+    case XR_TYPE_COMPOSITION_LAYER_EQUIRECT_KHR:
+      return is_unit_orientation(as<XrCompositionLayerEquirectKHR>(layer).pose);
+    case XR_TYPE_COMPOSITION_LAYER_EQUIRECT2_KHR:
+      return is_unit_orientation(as<XrCompositionLayerEquirect2KHR>(layer).pose);
+    case XR_TYPE_COMPOSITION_LAYER_CUBE_KHR:
+      return is_unit_orientation(XrPosef{as<XrCompositionLayerCubeKHR>(layer).orientation, {0.0f, 0.0f, 0.0f}});
+    case XR_TYPE_COMPOSITION_LAYER_PROJECTION: {
+      const auto& p = as<XrCompositionLayerProjection>(layer);
+      if (p.views == nullptr || p.viewCount > kMaxProjectionViews) return false;
+      for (std::uint32_t v = 0; v < p.viewCount; ++v)
+        if (!is_unit_orientation(p.views[v].pose)) return false;
+      return true;
+    }
+    default:
+      return false;
+  }
 }
 
 // A copy of `layer` (of a type placed_here) with its pose(s) in the head.
@@ -104,7 +145,7 @@ const XrCompositionLayerBaseHeader* head_copy(const XrCompositionLayerBaseHeader
 XrResult EndFrame(XrSession session, const XrFrameEndInfo* frameEndInfo) {
   return guarded(XR_ERROR_RUNTIME_FAILURE, [&]() -> XrResult {
     PFN_xrEndFrame next = nullptr;
-    std::vector<EyeAt> eyes;  // per layer
+    std::vector<std::optional<Pose>> eyes;  // per layer: the eye to place it by, if in a gaze space
     bool gaze = false;
     {
       Lock lock(layer_state().mutex);
@@ -113,34 +154,29 @@ XrResult EndFrame(XrSession session, const XrFrameEndInfo* frameEndInfo) {
       next = e->next.EndFrame;
       const XrFrameEndInfo* info = frameEndInfo;
       if (info != nullptr && info->type == XR_TYPE_FRAME_END_INFO && info->displayTime > 0 && info->layers != nullptr &&
-          !e->gaze_spaces.empty()) {
+          info->layerCount <= kMaxLayersRead && !e->gaze_spaces.empty()) {
         eyes.resize(info->layerCount);
         for (std::uint32_t i = 0; i < info->layerCount; ++i) {
           const XrCompositionLayerBaseHeader* layer = info->layers[i];
           if (layer == nullptr || !placed_here(layer->type)) continue;
-          eyes[i] = eye_at(*e, layer->space, static_cast<std::int64_t>(info->displayTime));
-          gaze = gaze || eyes[i].is_gaze;
+          auto g = e->gaze_spaces.find(layer->space);
+          // Another session's gaze space: the runtime's to refuse.
+          if (g == e->gaze_spaces.end() || g->second.session != session || !placeable(layer)) continue;
+          const EyeAt at = eye_at(*e, layer->space, static_cast<std::int64_t>(info->displayTime));
+          if (at.eye) g->second.last_layer_eye = at.eye;
+          eyes[i] = g->second.last_layer_eye;
+          gaze = gaze || eyes[i].has_value();
         }
       }
     }
     if (!gaze) return next(session, frameEndInfo);
     Copies copies;
-    std::vector<const XrCompositionLayerBaseHeader*> layers;
-    layers.reserve(frameEndInfo->layerCount);
-    for (std::uint32_t i = 0; i < frameEndInfo->layerCount; ++i) {
-      const XrCompositionLayerBaseHeader* layer = frameEndInfo->layers[i];
-      if (!eyes[i].is_gaze)
-        layers.push_back(layer);
-      else if (eyes[i].eye)
-        layers.push_back(head_copy(layer, *eyes[i].eye, copies));
-      // No fresh gaze sample at displayTime (a blink, a lost tracker, the action inactive): the
-      // layer cannot be placed. Submitted as it is, the runtime would draw it head-locked where
-      // the eye is not looking (and in its VIEW space, not the gaze space the application asked
-      // for); so this frame goes without it, as a located-only-with-gaze reticle should.
-    }
+    std::vector<const XrCompositionLayerBaseHeader*> layers(frameEndInfo->layers,
+                                                            frameEndInfo->layers + frameEndInfo->layerCount);
+    for (std::uint32_t i = 0; i < frameEndInfo->layerCount; ++i)
+      if (eyes[i]) layers[i] = head_copy(layers[i], *eyes[i], copies);
     XrFrameEndInfo down = *frameEndInfo;
-    down.layerCount = static_cast<std::uint32_t>(layers.size());
-    down.layers = layers.empty() ? nullptr : layers.data();
+    down.layers = layers.data();
     return next(session, &down);
   });
 }

@@ -75,7 +75,7 @@ XrResult locate_pair(PFN_xrLocateSpace next, XrSpace space, XrSpace baseSpace, X
   }
   const EyeAt& gaze = of_space.is_gaze ? of_space : of_base;
   fill_chain(location, true, location->locationFlags != 0 ? gaze.sample_time_ns : 0);
-  return XR_SUCCESS;
+  return r;  // XR_SESSION_LOSS_PENDING is a success code the application must still see
 }
 
 XrResult CreateActionSpace(XrSession session, const XrActionSpaceCreateInfo* createInfo, XrSpace* space) {

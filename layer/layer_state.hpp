@@ -16,6 +16,7 @@
 #include <deque>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -49,6 +50,7 @@ struct GazeSpace {
   XrSession session = XR_NULL_HANDLE;
   XrAction action = XR_NULL_HANDLE;
   Pose pose_in_action;
+  std::optional<Pose> last_layer_eye;  // the eye a composition layer in this space was last placed by
 };
 
 struct SessionRecord {

@@ -76,18 +76,20 @@ XrResult locate_spaces(PFN_xrLocateSpacesKHR NextDispatch::*which, XrSession ses
     XrSpaceVelocitiesKHR* velocities = velocities_of(locations);
     if (velocities != nullptr && (velocities->velocityCount != n || velocities->velocities == nullptr))
       return XR_ERROR_VALIDATION_FAILURE;
+    XrResult result = XR_SUCCESS;  // or the first other success code (XR_SESSION_LOSS_PENDING)
     for (std::uint32_t i = 0; i < n; ++i) {
       XrSpaceVelocity velocity{XR_TYPE_SPACE_VELOCITY};
       XrSpaceLocation location{XR_TYPE_SPACE_LOCATION, velocities != nullptr ? &velocity : nullptr};
       const XrResult r =
           locate_pair(locate_one, info->spaces[i], info->baseSpace, info->time, of_spaces[i], of_base, &location);
       if (XR_FAILED(r)) return r;
+      if (result == XR_SUCCESS) result = r;
       locations->locations[i] = XrSpaceLocationDataKHR{location.locationFlags, location.pose};
       if (velocities != nullptr)
         velocities->velocities[i] =
             XrSpaceVelocityDataKHR{velocity.velocityFlags, velocity.linearVelocity, velocity.angularVelocity};
     }
-    return XR_SUCCESS;
+    return result;
   });
 }
 

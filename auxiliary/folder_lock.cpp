@@ -25,6 +25,11 @@ FolderLock::FolderLock(const std::string& dir) {
   if (err == EWOULDBLOCK)
     throw FolderLockError("'" + dir +
                           "' is being written by another gazelod process; wait for it to end or choose another folder");
+  if (err == EBADF || err == ENOLCK || err == EOPNOTSUPP || err == ENOSYS || err == EINVAL) {
+    why_not_ = "'" + dir + "' is not locked against another gazelod writing there (" + std::strerror(err) +
+               ": the file system cannot lock a folder)";
+    return;
+  }
   throw FolderLockError("cannot lock '" + dir + "': " + std::strerror(err));
 }
 

@@ -21,14 +21,20 @@ class FolderLockError : public std::runtime_error {
 class FolderLock {
  public:
   // Locks the existing folder `dir`. Throws FolderLockError when another open of it holds the
-  // lock, or when it cannot be opened as a folder.
+  // lock, or when it cannot be opened as a folder. Where the file system cannot lock a folder
+  // (NFS emulates flock with fcntl locks, which need a file open for writing: EBADF; or
+  // ENOLCK, EOPNOTSUPP), it goes on unlocked: locked() is false and why_not_locked() says so,
+  // for the caller to print.
   explicit FolderLock(const std::string& dir);
   ~FolderLock();
   FolderLock(const FolderLock&) = delete;
   FolderLock& operator=(const FolderLock&) = delete;
+  bool locked() const { return fd_ >= 0; }
+  const std::string& why_not_locked() const { return why_not_; }
 
  private:
   int fd_ = -1;
+  std::string why_not_;
 };
 
 }  // namespace gazelod::aux

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -51,6 +52,23 @@ TEST(RunOutputs, NoStaleReportFileFromAnEarlierRun) {
   ASSERT_EQ(r.rc, 0) << r.err;
   EXPECT_FALSE(fs::exists(dir / "frame.png"));
   EXPECT_TRUE(fs::exists(dir / "audit.svg"));
+}
+
+// A run that fails once the runtime is opening (here: no runtime at the manifest's path) keeps
+// the earlier run's report whole: before, its files were removed up front.
+TEST(RunOutputs, FailedRunKeepsTheEarlierReport) {
+  use_simulated_runtime("");
+  const fs::path scratch = scratch_dir(), dir = scratch / "kept";
+  CliResult r = run_cli({"run", "--frames", "4", "--quiet", "--out", dir.string()});
+  ASSERT_EQ(r.rc, 0) << r.err;
+  const std::string summary = read_text(dir / "summary.json");
+  ::setenv("XR_RUNTIME_JSON", (scratch / "no-runtime.json").c_str(), 1);
+  r = run_cli({"run", "--frames", "3", "--quiet", "--no-render", "--out", dir.string()});
+  use_simulated_runtime("");
+  EXPECT_NE(r.rc, 0) << r.out;
+  EXPECT_EQ(read_text(dir / "summary.json"), summary);
+  for (const char* kept : {"frames.csv", "frames.svg", "audit.svg", "frame.png"})
+    EXPECT_TRUE(fs::exists(dir / kept)) << kept;
 }
 
 // Every refusal the run can decide before its first write comes before it: --out is not created,

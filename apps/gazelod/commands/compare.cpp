@@ -4,15 +4,14 @@
 // (none, size, size+eccentricity, size+velocity, all three) and the LOD-map thesis's policy:
 // triangles, average LOD, the shares of the reduction, and the display's xi and thresholds.
 #include "apps/gazelod/commands/command.hpp"
+#include "apps/gazelod/commands/out_folder.hpp"
 #include "apps/gazelod/compare/report.hpp"
 #include "apps/gazelod/compare/runs.hpp"
 #include "auxiliary/atomic_file.hpp"
-#include "auxiliary/folder_lock.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <memory>
-#include <optional>
 
 namespace gazelod::cli {
 namespace {
@@ -27,21 +26,17 @@ int run_compare(const CompareOptions& o, bool json, Io io) {
   }
   // --out first, held against another gazelod writing there: a folder that cannot be made
   // would otherwise be found after every run.
-  std::error_code ec;
-  std::filesystem::create_directories(o.out_dir, ec);
-  if (ec || !std::filesystem::is_directory(o.out_dir))
-    throw UsageError("--out: cannot create the folder '" + o.out_dir.string() + "'" +
-                     (ec ? ": " + ec.message() : std::string(": a file is in the way")));
-  std::optional<aux::FolderLock> lock;
-  try {
-    lock.emplace(o.out_dir.string());
-  } catch (const aux::FolderLockError& e) {
-    throw UsageError(std::string("--out: ") + e.what(), 1);
-  }
+  const OutFolder out = hold_out_folder(o.out_dir, "compare", io.err);
   std::vector<HmdComparison> results;
-  for (const std::string& h : o.hmds) {
-    if (!json) io.err << "gazelod compare: running " << h << "\n";
-    results.push_back(run_comparison(h, o));
+  try {
+    for (const std::string& h : o.hmds) {
+      if (!json) io.err << "gazelod compare: running " << h << "\n";
+      results.push_back(run_comparison(h, o));
+    }
+  } catch (...) {
+    std::error_code ec;
+    if (out.created) std::filesystem::remove(o.out_dir, ec);  // a refused run: no empty folder left
+    throw;
   }
   const nlohmann::json doc = compare_json(results);
   const auto json_path = o.out_dir / "compare.json";

@@ -5,14 +5,16 @@
 // own report goes under --work. Quick by default; --full is the paper's protocol (20 layouts,
 // every frame of the 5 s paths at 72 Hz).
 #include "apps/gazelod/commands/command.hpp"
+#include "apps/gazelod/commands/out_folder.hpp"
 #include "apps/gazelod/clusters/eval.hpp"
 #include "apps/gazelod/eval/experiments.hpp"
 #include "apps/gazelod/eval/family.hpp"
 #include "apps/gazelod/eval/gltfpack.hpp"
 #include "apps/gazelod/eval/tables.hpp"
+#include "auxiliary/atomic_file.hpp"
 
 #include <chrono>
-#include <fstream>
+#include <sstream>
 #include <memory>
 
 namespace gazelod::cli {
@@ -40,9 +42,7 @@ int run_eval(const EvalFlags& flags, Io io) {
   o.radius_scale = flags.radius_scale;
   const std::filesystem::path out = flags.out;
   o.work_dir = flags.work.empty() ? out / "runs" : std::filesystem::path(flags.work);
-  std::error_code ec;
-  std::filesystem::create_directories(out, ec);
-  if (ec) throw UsageError("--out: cannot create " + out.string() + ": " + ec.message());
+  const OutFolder out_folder = hold_out_folder(out, "eval", io.err);  // made and held first
 
   const auto started = std::chrono::steady_clock::now();
   const Progress progress = [&](const std::string& line) {
@@ -54,8 +54,7 @@ int run_eval(const EvalFlags& flags, Io io) {
   const auto f5 = o.frame_rates ? run_figure5(o, progress) : std::vector<Figure5Row>{};
 
   const auto md_path = out / "eval_tables.md";
-  std::ofstream md(md_path);
-  if (!md) throw UsageError("cannot write " + md_path.string(), 1);
+  std::ostringstream md;  // written whole at the end (auxiliary/atomic_file.hpp)
   md << "<!-- written by: gazelod eval" << (flags.full ? " --full" : "") << ", " << o.layouts
      << " layouts per point, radius scale " << o.radius_scale << " -->\n\n";
   if (!f5.empty()) {
@@ -69,8 +68,11 @@ int run_eval(const EvalFlags& flags, Io io) {
   figure6_table(f6, md);
   md << "\n### Head turns (" << o.head_turn_objects << " objects around the observer, selection only)\n\n";
   head_turn_table(turns, md);
-  md.close();
-  if (!md) throw UsageError("error while writing " + md_path.string(), 1);
+  try {
+    aux::write_file_atomic(md_path.string(), md.str());
+  } catch (const aux::WriteError& e) {
+    throw UsageError(e.what(), 1);
+  }
   write_eval_plots(f5, f6, turns, out);
 
   std::ifstream back(md_path);

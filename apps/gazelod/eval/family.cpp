@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "apps/gazelod/eval/family.hpp"
+#include "apps/gazelod/commands/out_folder.hpp"
 #include "apps/gazelod/eval/family_against.hpp"
 #include "apps/gazelod/eval/work.hpp"
 #include "apps/gazelod/run/report.hpp"
 #include "apps/gazelod/run/session.hpp"
 #include "apps/gazelod/run/signals.hpp"
 #include "auxiliary/atomic_file.hpp"
-#include "auxiliary/folder_lock.hpp"
 #include "auxiliary/time.hpp"
 #include "sim/scenario_family.hpp"
 
@@ -289,18 +289,9 @@ int run_eval_family(const FamilyFlags& flags, Io io) {
     const auto s = std::chrono::duration_cast<std::chrono::seconds>(std::chrono::steady_clock::now() - started).count();
     io.err << "gazelod eval family [" << s << " s]: " << line << "\n" << std::flush;
   };
-  // --out first: a folder that cannot be made would otherwise be found after every seed ran.
-  std::error_code out_ec;
-  std::filesystem::create_directories(flags.out, out_ec);
-  if (out_ec || !std::filesystem::is_directory(flags.out))
-    throw UsageError("--out: cannot create the folder '" + flags.out + "'" +
-                     (out_ec ? ": " + out_ec.message() : std::string(": a file is in the way")));
-  std::optional<aux::FolderLock> out_lock;  // against another gazelod writing there
-  try {
-    out_lock.emplace(flags.out);
-  } catch (const aux::FolderLockError& e) {
-    throw UsageError(std::string("--out: ") + e.what(), 1);
-  }
+  // --out first, held against another gazelod writing there: a folder that cannot be made
+  // would otherwise be found after every seed ran.
+  const OutFolder out_folder = hold_out_folder(flags.out, "eval family", io.err);
   const std::vector<FamilyMember> members = run_family(first, count, duration_s, settings, flags.work, progress);
   std::string command = "gazelod eval family --seeds " + flags.seeds;
   if (flags.duration_s != 20.0) command += " --duration " + fmt("%g", flags.duration_s);
@@ -320,9 +311,6 @@ int run_eval_family(const FamilyFlags& flags, Io io) {
     j["against"] = against_json(members, *base);
     json = j.dump(2) + "\n";
   }
-  std::error_code ec;
-  std::filesystem::create_directories(flags.out, ec);
-  if (ec) throw UsageError("--out: cannot create '" + flags.out + "': " + ec.message());
   write_report(flags.out, {{"family.md", md}, {"family.json", json}});
   io.out << md << "\nfiles: " << (std::filesystem::path(flags.out) / "family.md").string() << ", family.json\n";
   return 0;

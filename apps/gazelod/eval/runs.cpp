@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "apps/gazelod/eval/runs.hpp"
+#include "auxiliary/atomic_file.hpp"
 
 #include "apps/gazelod/commands/command.hpp"
 #include "apps/gazelod/run/report.hpp"
@@ -18,10 +19,10 @@ EvalRun eval_run(const ReddyScenario& scenario, const std::string& criteria, boo
   // reads it from one; the run itself is a function call. Not scenario.json: that is the run's
   // own record of the scenario as run, which it may not write over its input.
   const auto scenario_path = dir / "reddy.json";
-  {
-    std::ofstream f(scenario_path);
-    f << reddy_scenario_json(scenario);
-    if (!f) throw UsageError("cannot write " + scenario_path.string(), 1);
+  try {
+    aux::write_file_atomic(scenario_path.string(), reddy_scenario_json(scenario));
+  } catch (const aux::WriteError& e) {
+    throw UsageError(e.what(), 1);
   }
   RunOptions o;
   o.scenario_path = scenario_path.string();

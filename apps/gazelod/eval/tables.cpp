@@ -3,9 +3,11 @@
 
 #include "apps/gazelod/compare/svg.hpp"
 #include "apps/gazelod/plots/svg_plot.hpp"
+#include "auxiliary/atomic_file.hpp"
 
 #include <cstdio>
 #include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 namespace gazelod::cli {
@@ -27,13 +29,12 @@ double ecc_vel_share_of_lod(const Figure6Row& r) {
   return ratio(r.no_size.lod_drawn - 1.0, r.all.lod_drawn - 1.0);
 }
 
+// Whole or not at all (auxiliary/atomic_file.hpp): a failed write leaves no cut plot.
 template <class Write>
 void write_file(const std::filesystem::path& path, Write write) {
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error("cannot write " + path.string());
+  std::ostringstream out;
   write(out);
-  out.close();
-  if (!out) throw std::runtime_error("error while writing " + path.string());
+  aux::write_file_atomic(path.string(), out.str());
 }
 
 }  // namespace

@@ -245,29 +245,11 @@ PreparedScenario prepare_scenario(const RunOptions& opt) {
   return p;
 }
 
-bool create_out_dir(const RunOptions& opt) {
-  std::error_code ec;
-  const bool created = std::filesystem::create_directories(opt.out_dir, ec);
-  if (ec) throw UsageError("--out: cannot create '" + opt.out_dir.string() + "': " + ec.message());
-  return created;
-}
-
-void write_scenario_file(const PreparedScenario& p, const RunOptions& opt) {
-  std::error_code ec;
-  // An earlier run's report files go: one this run does not write (frame.png with --no-render,
-  // audit.svg without ground truth) was taken for this run's. Only the report's own names, and
-  // only files (a link goes, not what it points to); a folder in the way is the writer's to report.
-  for (const char* report : kRunReportFiles) {
-    const std::filesystem::path f = opt.out_dir / report;
-    const std::filesystem::file_status st = std::filesystem::symlink_status(f, ec);
-    if (ec || !(std::filesystem::is_regular_file(st) || std::filesystem::is_symlink(st))) continue;
-    if (!std::filesystem::remove(f, ec) && ec)
-      throw UsageError("--out: cannot remove the earlier run's '" + f.string() + "': " + ec.message());
-  }
+void write_scenario_file(const PreparedScenario& p) {
   try {
     write_run_file(p.file.string(), p.text + "\n");
   } catch (const aux::WriteError& e) {
-    throw UsageError(std::string("--out: ") + e.what());
+    throw UsageError(std::string("--out: ") + e.what(), 1);  // a failure to write, not bad usage
   }
 }
 

@@ -45,13 +45,10 @@ inline constexpr const char* kRunReportFiles[] = {"summary.json", "frames.csv", 
 // JSON path, the scene file, or an input that is one of the report's files in --out.
 PreparedScenario prepare_scenario(const RunOptions& options);
 
-// The first write to --out, after every refusal the run can decide up front: the folder (and
-// those above it); true when it was created. Throws UsageError naming --out.
-bool create_out_dir(const RunOptions& options);
-
-// In --out (created): removes an earlier run's report files (kRunReportFiles only: what this
-// run does not write must not pass for its own), writes scenario.json. Throws UsageError.
-void write_scenario_file(const PreparedScenario& prepared, const RunOptions& options);
+// Writes scenario.json in --out (created). An earlier run's other report files stay until
+// this run's report replaces them (the run removes a frame.png it did not write then, and the
+// report an audit.svg). Throws UsageError.
+void write_scenario_file(const PreparedScenario& prepared);
 
 // Sets XR_RUNTIME_JSON (the simulated runtime built with this program, unless the caller
 // set it), GAZELOD_SIM_SCENARIO, GAZELOD_SIM_DURATION_S and GAZELOD_SIM_PACED.

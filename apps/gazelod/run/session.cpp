@@ -5,6 +5,7 @@
 // (run/session_steps.hpp), in the order the session takes them.
 #include "apps/gazelod/run/frame_record.hpp"
 #include "apps/gazelod/run/session_steps.hpp"
+#include "apps/gazelod/commands/out_folder.hpp"
 
 #include <algorithm>
 #include <sstream>
@@ -49,24 +50,23 @@ int Session::run() {
     throw UsageError("plugin config: " + why);
   plan_frames();
   check_decision_paths();
-  const bool created_out = create_out_dir(opt_);
+  // From the first write on, Ctrl-C / SIGTERM stop cleanly: the loop acts on a request made
+  // while the runtime was opening, and a second one removes the temporaries being written.
+  stop_.emplace();
+  // Held before anything is written there (commands/out_folder.hpp).
+  OutFolder out = hold_out_folder(opt_.out_dir, "run", io_.err);
+  out_lock_ = std::move(out.lock);
   try {
-    try {
-      out_lock_.emplace(opt_.out_dir.string());
-    } catch (const aux::FolderLockError& e) {
-      throw UsageError(std::string("--out: ") + e.what(), 1);
-    }
     open_decision_files();
   } catch (...) {
     std::error_code ec;
-    if (created_out) std::filesystem::remove(opt_.out_dir, ec);  // only when still empty
+    if (out.created) std::filesystem::remove(opt_.out_dir, ec);  // only when still empty
     throw;
   }
-  write_scenario_file(prepared_, opt_);
+  write_scenario_file(prepared_);
   if (opt_.runtime == "sim") point_loader_at_simulator(prepared_, opt_);
   if (const int rc = open_runtime_and_plugin(); rc != 0) return rc;
   register_objects();
-  stop_.emplace();
   last_progress_ = started_ = Clock::now();
   while (handle_events_and_signals())
     if (const int rc = frame(); rc != 0) return rc;
@@ -246,6 +246,16 @@ int Session::finish() {
   if (opt_.frames_result != nullptr) *opt_.frames_result = frames_;
   if (opt_.write_reports) {
     write_report_files(opt_.out_dir, info, summary, frames_);
+    // An earlier run's picture must not pass for this run's (a --no-render run, a capture frame
+    // past the end). Removed only now, with this run's report complete: a run that fails keeps
+    // the earlier report whole. A link goes, not what it points to.
+    if (!png_saved_) {
+      std::error_code ec;
+      const std::filesystem::path png = opt_.out_dir / "frame.png";
+      const auto st = std::filesystem::symlink_status(png, ec);
+      if (!ec && (std::filesystem::is_regular_file(st) || std::filesystem::is_symlink(st)))
+        std::filesystem::remove(png, ec);
+    }
     io_.out << "files: " << (opt_.out_dir / "summary.json").string() << ", frames.csv, frames.svg"
             << (summary.audit.available ? ", audit.svg" : "") << (png_saved_ ? ", frame.png" : "");
   }

@@ -80,7 +80,10 @@ class Session {
   const RunOptions& opt_;
   Io io_;
   // --out held against another gazelod writing there, until the last report file is written.
-  std::optional<aux::FolderLock> out_lock_;
+  std::unique_ptr<aux::FolderLock> out_lock_;
+  // Ctrl-C / SIGTERM: stop at a frame boundary with a report. Before the files: it goes after
+  // them, so their destructors remove their temporaries before it re-raises a pending signal.
+  std::optional<StopOnSignal> stop_;
   const PreparedScenario prepared_;
   sim::Simulator simulator_;
   const sim::Scenario& scenario_;
@@ -111,8 +114,7 @@ class Session {
   std::optional<SessionAudit> audit_;
   std::optional<ClusterMotion> cluster_motion_;
   bool layout_checked_ = false, exit_requested_ = false;
-  bool png_saved_ = false;            // --capture-frame past the last frame saves none
-  std::optional<StopOnSignal> stop_;  // Ctrl-C / SIGTERM: stop at a frame boundary with a report
+  bool png_saved_ = false;  // --capture-frame past the last frame saves none
   int interrupted_by_ = 0;
   Clock::time_point last_progress_, started_;
 };

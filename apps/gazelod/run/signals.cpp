@@ -12,12 +12,14 @@
 namespace gazelod::cli {
 namespace {
 
-// TemporaryOnSignal's paths: written by the main thread, `held` set last (after a signal
-// fence), read by the handler.
+// TemporaryOnSignal's paths: written by the main thread, `held` set last with release order,
+// read by the handler with acquire order. The handler may run on any thread (lavapipe's and the
+// runtime's threads do not block the signals), so a lock-free atomic, not a compiler fence.
 struct HeldPath {
   char path[4096];
-  volatile std::sig_atomic_t held;
+  std::atomic<int> held{0};
 };
+static_assert(std::atomic<int>::is_always_lock_free, "async-signal-safe only when lock-free");
 HeldPath g_temporaries[TemporaryOnSignal::kHeldTemporaries];
 
 volatile std::sig_atomic_t g_stop_signal = 0;
@@ -31,7 +33,7 @@ extern "C" void on_stop_signal(int signal) {
   if (g_stop_signal != 0) {  // the second: leave now, as the signal's default would have
     // No temporary left behind (unlink is async-signal-safe).
     for (const HeldPath& t : g_temporaries)
-      if (t.held != 0) ::unlink(t.path);
+      if (t.held.load(std::memory_order_acquire) != 0) ::unlink(t.path);
     std::signal(signal, SIG_DFL);
     std::raise(signal);
     return;
@@ -66,10 +68,9 @@ void TemporaryOnSignal::hold(const std::string& path) {
   release();
   if (path.empty() || path.size() >= sizeof(HeldPath::path)) return;
   for (int i = 0; i < kHeldTemporaries; ++i) {
-    if (g_temporaries[i].held != 0) continue;
+    if (g_temporaries[i].held.load(std::memory_order_relaxed) != 0) continue;
     std::memcpy(g_temporaries[i].path, path.c_str(), path.size() + 1);
-    std::atomic_signal_fence(std::memory_order_seq_cst);  // the whole path before `held`
-    g_temporaries[i].held = 1;
+    g_temporaries[i].held.store(1, std::memory_order_release);  // the whole path before `held`
     slot_ = i;
     return;
   }
@@ -77,8 +78,7 @@ void TemporaryOnSignal::hold(const std::string& path) {
 
 void TemporaryOnSignal::release() {
   if (slot_ < 0) return;
-  g_temporaries[slot_].held = 0;
-  std::atomic_signal_fence(std::memory_order_seq_cst);
+  g_temporaries[slot_].held.store(0, std::memory_order_release);
   slot_ = -1;
 }
 

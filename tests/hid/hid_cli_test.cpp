@@ -7,9 +7,14 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <signal.h>
+#include <unistd.h>
+
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 namespace gazelod::gaze::hid {
 namespace {
@@ -98,6 +103,42 @@ TEST_F(HidCliTest, DeviceThatIsNotHidrawIsRefused) {
     EXPECT_NE(r.err.find("--device: "), std::string::npos) << r.err;
     EXPECT_FALSE(std::filesystem::exists(out)) << device;
   }
+}
+
+// Ctrl-C is how a recording is usually stopped: it ends the recording, keeps the samples and
+// exits 0. Before, it killed the process and left the temporary file beside --out.
+TEST_F(HidCliTest, CtrlCEndsTheRecordingAndKeepsTheSamples) {
+  fake_hid::plug({kPath});
+  fake_hid::set_feature(kPath, Bytes{}.u8(kReportConfiguration).u16(1).u16(2).u32(3).u16(4).i32(527040).i32(296460).b);
+  fake_hid::set_feature(kPath, Bytes{}.u8(kReportStatus).u8(1).u16(250).b);
+  for (int i = 0; i < 3; ++i)
+    fake_hid::push_input(kPath,
+                         tracking_report(1000 + 4000u * i, 263520, 148230, {-32000, 0, 600000}, {32000, 0, 600000}));
+  const auto dir = std::filesystem::temp_directory_path() / "gazelod_hid_cli_ctrl_c";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const auto out = dir / "rec.csv";
+  Result r;
+  std::thread recorder([&] { r = run({"hid", "record", "--out", out.string(), "--seconds", "60"}); });
+  // The interrupt only once the command's handler is in place (the default would end the test).
+  for (int i = 0; i < 5000; ++i) {
+    struct sigaction now {};
+    ::sigaction(SIGINT, nullptr, &now);
+    if (now.sa_handler != SIG_DFL) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  const auto sent = std::chrono::steady_clock::now();
+  ::kill(::getpid(), SIGINT);
+  recorder.join();
+  EXPECT_LT(std::chrono::steady_clock::now() - sent, std::chrono::seconds(5));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("stopped by SIGINT"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("3 samples"), std::string::npos) << r.err;
+  std::size_t files = 0;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) files += e.path() == out ? 1 : 100;
+  EXPECT_EQ(files, 1u) << "a temporary was left, or no recording";
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

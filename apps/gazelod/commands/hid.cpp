@@ -7,6 +7,7 @@
 #include "gaze/hid/hid_tracker.hpp"
 #include "gaze/trace_writer.hpp"
 #include "apps/gazelod/commands/command.hpp"
+#include "apps/gazelod/run/signals.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -95,8 +96,9 @@ int run_record(const Options& o, Io io) {
     config.screen.width_m = parse_positive("--screen-mm", o.screen_mm.substr(0, x), 10000) * 1e-3;
     config.screen.height_m = parse_positive("--screen-mm", o.screen_mm.substr(x + 1), 10000) * 1e-3;
   }
-  // Atomic: a recording that fails (no tracker, a full disk) leaves no file, not a header alone.
-  std::optional<aux::AtomicFile> out_file;
+  // Atomic: a recording that fails (no tracker, a full disk) leaves no file, not a header alone;
+  // a second Ctrl-C removes the temporary too (AtomicRunFile).
+  std::optional<AtomicRunFile> out_file;
   try {
     out_file.emplace(o.out);
   } catch (const aux::WriteError& e) {
@@ -123,13 +125,21 @@ int run_record(const Options& o, Io io) {
       ++written;
     }
   };
-  while (std::chrono::steady_clock::now() < end) {
+  // Ctrl-C (or SIGTERM) ends the recording early, the usual way to stop one, and keeps what was
+  // recorded; before, it killed the process and left the temporary file.
+  StopOnSignal stop;
+  while (std::chrono::steady_clock::now() < end && stop.requested() == 0) {
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
     flush();
   }
   tracker.stop();
   flush();
   file.flush();
+  if (stop.requested() != 0) {
+    stop.acted_on();
+    io.err << "gazelod hid record: stopped by " << StopOnSignal::name(stop.requested())
+           << " before --seconds ran out; the samples so far are kept\n";
+  }
   const hid::HidCounters c = tracker.counters();
   io.err << "gazelod hid record: " << written << " samples (" << c.invalid_samples << " invalid) to " << o.out
          << "; skipped " << c.malformed << " malformed and " << c.unknown << " unknown reports; " << c.dropped

@@ -56,13 +56,18 @@ TEST_F(HidCliTest, ListShowsOnlyUsagePage0x12) {
   EXPECT_NE(none.out.find("no HID eye tracker"), std::string::npos);
 }
 
-TEST_F(HidCliTest, RecordWritesEverySampleToATrace) {
+// A configured, calibrated tracker with three tracking reports queued.
+void plug_tracker_with_three_samples() {
   fake_hid::plug({kPath});
   fake_hid::set_feature(kPath, Bytes{}.u8(kReportConfiguration).u16(1).u16(2).u32(3).u16(4).i32(527040).i32(296460).b);
   fake_hid::set_feature(kPath, Bytes{}.u8(kReportStatus).u8(1).u16(250).b);
   for (int i = 0; i < 3; ++i)
     fake_hid::push_input(kPath,
                          tracking_report(1000 + 4000u * i, 263520, 148230, {-32000, 0, 600000}, {32000, 0, 600000}));
+}
+
+TEST_F(HidCliTest, RecordWritesEverySampleToATrace) {
+  plug_tracker_with_three_samples();
   fake_hid::push_input(kPath, Bytes{}.u8(0x10).pad(5).b);  // short: skipped, not written
   const auto out = std::filesystem::temp_directory_path() / "gazelod_hid_cli_test.csv";
   const Result r = run({"hid", "record", "--out", out.string(), "--seconds", "0.3"});
@@ -108,12 +113,7 @@ TEST_F(HidCliTest, DeviceThatIsNotHidrawIsRefused) {
 // Ctrl-C is how a recording is usually stopped: it ends the recording, keeps the samples and
 // exits 0. Before, it killed the process and left the temporary file beside --out.
 TEST_F(HidCliTest, CtrlCEndsTheRecordingAndKeepsTheSamples) {
-  fake_hid::plug({kPath});
-  fake_hid::set_feature(kPath, Bytes{}.u8(kReportConfiguration).u16(1).u16(2).u32(3).u16(4).i32(527040).i32(296460).b);
-  fake_hid::set_feature(kPath, Bytes{}.u8(kReportStatus).u8(1).u16(250).b);
-  for (int i = 0; i < 3; ++i)
-    fake_hid::push_input(kPath,
-                         tracking_report(1000 + 4000u * i, 263520, 148230, {-32000, 0, 600000}, {32000, 0, 600000}));
+  plug_tracker_with_three_samples();
   const auto dir = std::filesystem::temp_directory_path() / "gazelod_hid_cli_ctrl_c";
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);

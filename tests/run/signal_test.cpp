@@ -100,6 +100,19 @@ TEST(RunSignals, SecondSignalEndsAtOnceAndLeavesNoTemporary) {
   EXPECT_FALSE(std::filesystem::exists(out / "summary.json"));
 }
 
+// `gazelod scenario record` likewise: a second signal removes the trace's temporary (it left a
+// 25 MB ".sr.csv.tmp-PID-0").
+TEST(RunSignals, ScenarioRecordSecondSignalLeavesNoTemporary) {
+  const auto dir = scratch_dir();
+  const auto out = dir / "rec";
+  std::filesystem::create_directories(out);
+  const int rc = spawn_and_signal(
+      {"scenario", "record", "--default", "--duration", "100000", "--rate", "1000", "--out", (out / "sr.csv").string()},
+      (dir / "record.log").string(), SIGINT, SIGTERM);
+  EXPECT_TRUE(rc == 1000 + SIGINT || rc == 1000 + SIGTERM) << rc << "\n" << read_text(dir / "record.log");
+  EXPECT_TRUE(std::filesystem::is_empty(out)) << "a temporary or a partial trace was left";
+}
+
 // `gazelod eval family` stops too: between seeds or in a seed's run, with a message, exit 128 +
 // the signal, no report, and its temporary work folder removed (it died with 143 and left it).
 TEST(RunSignals, EvalFamilyStopsWithoutAReportAndRemovesItsWork) {

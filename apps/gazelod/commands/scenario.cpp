@@ -82,8 +82,11 @@ int run_record(const Options& o, Io io) {
     return true;
   };
   sim::RecordStats st;
-  try {  // written atomically: a failure leaves no file behind, partial or temporary
-    st = sim::record_trace_file(simulator, o.out, ro);
+  try {  // written atomically: a failure leaves no file behind, partial or temporary; a second
+         // signal removes the temporary too (AtomicRunFile)
+    AtomicRunFile file(o.out);
+    st = sim::record_trace(simulator, file.stream(), ro);
+    file.commit();
   } catch (const aux::WriteError& e) {
     throw UsageError(std::string("--out: ") + e.what(), 1);
   } catch (const std::invalid_argument& e) {

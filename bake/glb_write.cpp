@@ -1,18 +1,15 @@
 // SPDX-License-Identifier: Apache-2.0
-// Serialise to memory with tinygltf, then write + fsync-free rename (see glb_write.hpp).
+// Serialise to memory with tinygltf, then write it as every output is written
+// (auxiliary/atomic_file.hpp: a temporary beside it, fsync, rename; see glb_write.hpp).
 #include "bake/glb_write.hpp"
 
+#include "auxiliary/atomic_file.hpp"
 #include "bake/bake_error.hpp"
 
 #include <nlohmann/json.hpp>
-#include <unistd.h>
 
-#include <cerrno>
 #include <cstdint>
-#include <cstdio>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 
 namespace gazelod::bake {
@@ -76,22 +73,10 @@ void write_glb_atomic(const tinygltf::Model& model, const std::string& path) {
     throw OutputError(path + ": tinygltf could not serialise the model");
   const std::string bytes = fill_empty_objects(glb.str(), path);
 
-  const std::string tmp = path + ".tmp-" + std::to_string(::getpid());
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw OutputError(path + ": cannot write (" + std::strerror(errno) + ")");
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    out.close();  // checked: a full disk may only show at close
-    if (!out) {
-      const std::string why = std::strerror(errno);
-      fs::remove(tmp, ec);
-      throw OutputError(path + ": write failed (" + why + ")");
-    }
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    const std::string why = std::strerror(errno);
-    fs::remove(tmp, ec);
-    throw OutputError(path + ": cannot replace the output (" + why + ")");
+  try {
+    aux::write_file_atomic(path, bytes);
+  } catch (const aux::WriteError& e) {
+    throw OutputError(path + ": " + e.reason());
   }
 }
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// Writes a model as one .glb atomically: to "<out>.tmp-<pid>" in the same folder, then
-// rename() over the destination, so a failure never leaves a partial output.
+// Writes a model as one .glb atomically (auxiliary/atomic_file.hpp: a temporary in the same
+// folder, fsynced, then renamed over the destination), so a failure never leaves a partial
+// output or a temporary.
 #pragma once
 
 #include <tiny_gltf.h>

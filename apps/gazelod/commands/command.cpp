@@ -103,12 +103,17 @@ void strict_numbers(CLI::App& app) {
         return "";
       },
       "");
+  // Added in front of the option's own checks (CLI11's transform inserts first; these change
+  // nothing): a range check that ran first read "1e3" or "5 " as a number and said "Value 1e3
+  // not in range 1 to 10000000", of a value inside the range.
   for (CLI::Option* opt : app.get_options()) {
     bool is_unsigned = false;
-    if (integer_type(*opt, is_unsigned)) opt->check(integer(is_unsigned));
-    if (is_unsigned) opt->check(non_negative_integer());
+    if (integer_type(*opt, is_unsigned)) {
+      opt->transform(integer(is_unsigned));
+      if (is_unsigned) opt->transform(non_negative_integer());  // first: "-1" is negative
+    }
     const std::string type = opt->get_type_name();
-    if (type == "FLOAT" || type.rfind("FLOAT:", 0) == 0) opt->check(finite);
+    if (type == "FLOAT" || type.rfind("FLOAT:", 0) == 0) opt->transform(finite);
   }
   for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) strict_numbers(*sub);
 }

@@ -6,13 +6,16 @@
 // process ends, however it ends. A second holder in any process is refused at once.
 #pragma once
 
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 
 namespace gazelod::aux {
 
-// "'DIR' is being written by another gazelod process (...)"; or the system's reason the
-// folder could not be locked.
+// "'DIR' is being written by another gazelod process (...)", or "... by this gazelod command"
+// where this process holds it already (one command given overlapping folders: an `eval family`
+// whose --out is one of its seeds' folders under --work); or the system's reason the folder
+// could not be locked.
 class FolderLockError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
@@ -34,6 +37,7 @@ class FolderLock {
 
  private:
   int fd_ = -1;
+  std::uint64_t device_ = 0, inode_ = 0;  // the folder, while locked: this process's holds
   std::string why_not_;
 };
 

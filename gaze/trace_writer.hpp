@@ -36,6 +36,9 @@ class TraceFileWriter {
   explicit TraceFileWriter(const std::string& path, TraceWriterOptions options = {}, aux::AtomicFileFaults faults = {});
   void write(const TraceRecord& record) { writer_.write(record); }
   void commit() { file_.commit(); }
+  // The temporary being written ("" when written in place), for a caller that must remove it
+  // from a signal handler.
+  const std::string& temp_path() const { return file_.temp_path(); }
 
  private:
   aux::AtomicFile file_;

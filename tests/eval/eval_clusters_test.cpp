@@ -2,14 +2,21 @@
 // gazelod eval clusters end to end on the simulated runtime (headless, a small generated
 // terrain, a few frames of the terrain walk): the three columns, files, and bad input.
 #include "apps/gazelod/commands/command.hpp"
+#include "tests/held_by_another_process.hpp"
+#include "tests/interrupt_when_handled.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+#include <unistd.h>
 
+#include <chrono>
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <thread>
 
 namespace gazelod::cli {
 namespace {
@@ -91,6 +98,47 @@ TEST(EvalClusters, BadInputSaysWhatAndWritesNothing) {
   EXPECT_EQ(r.rc, 2);
   EXPECT_HAS(r.err, "failed (exit 2)");
   EXPECT_FALSE(std::filesystem::exists(dir / "out" / "clusters.md"));
+}
+
+// --out is held as `run`, `compare` and `eval family` hold theirs: another gazelod writing
+// there is refused before anything is made or written.
+TEST(EvalClusters, HeldOutFolderIsRefused) {
+  const auto dir = scratch("held");
+  const auto out = dir / "out";
+  std::filesystem::create_directories(out);
+  test::HeldByAnotherProcess other(out.string());
+  ASSERT_TRUE(other.locked());
+  const Result r = cli({"eval", "clusters", "--triangles", "2000", "--frames", "3", "--render-frames", "0",
+                        "--scenario", kWalk, "--out", out.string(), "--work", (dir / "work").string()});
+  EXPECT_EQ(r.rc, 1) << r.err;
+  EXPECT_HAS(r.err, "--out: '" + out.string() + "' is being written by another gazelod process");
+  EXPECT_TRUE(std::filesystem::is_empty(out));
+  EXPECT_FALSE(std::filesystem::exists(dir / "work")) << "work began before --out was held";
+}
+
+// Ctrl-C during the bakes and runs (minutes at the default size): exit 128 + SIGINT, no
+// report, and the temporary work folder (the bakes, hundreds of MB at 20 M triangles) removed.
+// Without a handler the default action ended the process and left the folder in /tmp.
+TEST(EvalClusters, StoppedBySignalLeavesNoReportAndNoWorkFolder) {
+  ::setenv("XR_RUNTIME_JSON", GAZELOD_XR_RUNTIME_JSON, 1);
+  const auto dir = scratch("signal");
+  const auto work = std::filesystem::temp_directory_path() / ("gazelod-eval-clusters-" + std::to_string(::getpid()));
+  Result r;
+  std::thread eval([&] {
+    r = cli({"eval", "clusters", "--triangles", "20000", "--frames", "45", "--render-frames", "0", "--scenario", kWalk,
+             "--out", (dir / "out").string()});
+  });
+  EXPECT_TRUE(test::interrupt_when_handled(SIGINT));
+  eval.join();
+  EXPECT_EQ(r.rc, 128 + SIGINT) << r.err;
+  EXPECT_HAS(r.err, "stopped by SIGINT during ");
+  EXPECT_HAS(r.err, "; no report written");
+  EXPECT_FALSE(std::filesystem::exists(dir / "out" / "clusters.md"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "out" / "clusters.json"));
+  EXPECT_FALSE(std::filesystem::exists(work)) << "the temporary work folder was left";
+  struct sigaction after {};
+  ::sigaction(SIGINT, nullptr, &after);
+  EXPECT_EQ(after.sa_handler, SIG_DFL) << "the command's handler was left in place";
 }
 
 }  // namespace

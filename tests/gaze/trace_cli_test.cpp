@@ -3,14 +3,22 @@
 #include "gaze/trace_writer.hpp"
 #include "tests/cli_run.hpp"
 #include "tests/gaze/synth.hpp"
+#include "tests/interrupt_when_handled.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <glm/gtc/quaternion.hpp>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <chrono>
+#include <csignal>
 #include <cmath>
+#include <cstdio>
+#include <thread>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -231,6 +239,44 @@ TEST(TraceCli, ConvertFailuresLeaveNothingAndSayWhy) {
   r = run({"trace", "convert", in.string(), (dir / "out.csv").string()});
   ASSERT_EQ(r.rc, 0) << r.err;
   EXPECT_TRUE(fs::is_regular_file(dir / "out.csv"));
+}
+
+// Ctrl-C while converting a pipe that has not ended (a recorder still writing): the conversion
+// stops with 128 + SIGINT and leaves neither OUT nor its temporary; without a handler the
+// default action ended the process with the temporary left beside OUT.
+TEST(TraceCli, ConvertStoppedBySignalWritesNothing) {
+  const fs::path dir = temp_file("in.csv").parent_path();
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path fifo = dir / "in.csv", out = dir / "out.csv";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  Result r;
+  std::thread converter([&] { r = run({"trace", "convert", fifo.string(), out.string()}); });
+  std::FILE* w = std::fopen(fifo.c_str(), "w");  // returns once the converter has opened it
+  if (w != nullptr) {
+    std::fputs("t_ns,gaze_x,gaze_y,gaze_z\n", w);
+    for (int i = 0; i < 100; ++i) std::fprintf(w, "%d,0,0,-1\n", i * 4'000'000);
+    std::fflush(w);
+  }
+  EXPECT_TRUE(test::interrupt_when_handled(SIGINT, std::chrono::milliseconds(100)));
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  if (w != nullptr) {
+    // More samples, then the end of the input: what came after the signal must not complete it.
+    for (int i = 100; i < 200; ++i) std::fprintf(w, "%d,0,0,-1\n", i * 4'000'000);
+    std::fclose(w);
+  }
+  converter.join();
+  ASSERT_NE(w, nullptr);
+  EXPECT_EQ(r.rc, 128 + SIGINT) << r.err;
+  EXPECT_NE(r.err.find("stopped by SIGINT after "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(out.string() + " not written"), std::string::npos) << r.err;
+  std::vector<std::string> left;
+  for (const auto& e : fs::directory_iterator(dir)) left.push_back(e.path().filename().string());
+  EXPECT_EQ(left, std::vector<std::string>{"in.csv"}) << "OUT or a temporary was left";
+  // The handler was the command's: the default is back.
+  struct sigaction after {};
+  ::sigaction(SIGINT, nullptr, &after);
+  EXPECT_EQ(after.sa_handler, SIG_DFL);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include "apps/gazelod/commands/command.hpp"
 #include "tests/hid/fake_hidapi.hpp"
 #include "tests/hid/report_bytes.hpp"
+#include "tests/interrupt_when_handled.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -120,16 +121,8 @@ TEST_F(HidCliTest, CtrlCEndsTheRecordingAndKeepsTheSamples) {
   const auto out = dir / "rec.csv";
   Result r;
   std::thread recorder([&] { r = run({"hid", "record", "--out", out.string(), "--seconds", "60"}); });
-  // The interrupt only once the command's handler is in place (the default would end the test).
-  for (int i = 0; i < 5000; ++i) {
-    struct sigaction now {};
-    ::sigaction(SIGINT, nullptr, &now);
-    if (now.sa_handler != SIG_DFL) break;
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  }
-  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  EXPECT_TRUE(test::interrupt_when_handled(SIGINT, std::chrono::milliseconds(100)));
   const auto sent = std::chrono::steady_clock::now();
-  ::kill(::getpid(), SIGINT);
   recorder.join();
   EXPECT_LT(std::chrono::steady_clock::now() - sent, std::chrono::seconds(5));
   ASSERT_EQ(r.code, 0) << r.err;

@@ -3,6 +3,7 @@
 // beside a --no-render report and passed for its picture), and nothing at all when the run is
 // refused up front (a plan refused for memory left scenario.json).
 #include "auxiliary/folder_lock.hpp"
+#include "tests/held_by_another_process.hpp"
 #include "run_test_util.hpp"
 
 #include <gtest/gtest.h>
@@ -133,7 +134,8 @@ TEST(RunOutputs, FolderBeingWrittenIsRefused) {
   const fs::path dir = scratch_dir() / "locked";
   fs::create_directories(dir);
   {
-    aux::FolderLock other(dir.string());
+    test::HeldByAnotherProcess other(dir.string());
+    ASSERT_TRUE(other.locked());
     const std::vector<std::vector<std::string>> commands = {
         {"run", "--frames", "3", "--no-render", "--quiet", "--out", dir.string()},
         {"compare", "--hmd", "questpro", "--frames", "3", "--out", dir.string()},
@@ -152,6 +154,31 @@ TEST(RunOutputs, FolderBeingWrittenIsRefused) {
   const CliResult r = run_cli({"run", "--frames", "3", "--no-render", "--quiet", "--out", dir.string()});
   EXPECT_EQ(r.rc, 0) << r.err;
   EXPECT_TRUE(fs::exists(dir / "summary.json"));
+}
+
+// One command given overlapping folders (eval family's --out is one of its seeds' folders
+// under --work): the seed's run is refused by the family's own hold, and said so; it was
+// reported as "being written by another gazelod process".
+TEST(RunOutputs, OverlappingFoldersOfOneCommandAreNamedAsSuch) {
+  use_simulated_runtime("");
+  const fs::path work = scratch_dir() / "work";
+  const CliResult r = run_cli({"eval", "family", "--seeds", "1000-1000", "--duration", "1", "--work", work.string(),
+                               "--out", (work / "seed-1000").string()});
+  EXPECT_EQ(r.rc, 1) << r.err;
+  EXPECT_NE(r.err.find("is being written by this gazelod command already"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("another gazelod process"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(work / "seed-1000" / "family.md"));
+  // Held and released: the same folder is free again once the command has ended.
+  {
+    aux::FolderLock first(work.string());
+    try {
+      aux::FolderLock second(work.string());
+      ADD_FAILURE() << "a second hold in the same process was granted";
+    } catch (const aux::FolderLockError& e) {
+      EXPECT_NE(std::string(e.what()).find("by this gazelod command already"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_NO_THROW(aux::FolderLock again(work.string()));
 }
 
 }  // namespace

@@ -3,9 +3,11 @@
 
 #include "apps/gazelod/clusters/eval_baseline.hpp"
 #include "apps/gazelod/clusters/eval_report.hpp"
+#include "apps/gazelod/commands/out_folder.hpp"
 #include "apps/gazelod/eval/work.hpp"
 #include "apps/gazelod/run/report.hpp"
 #include "apps/gazelod/run/session.hpp"
+#include "apps/gazelod/run/signals.hpp"
 
 #include <unistd.h>
 
@@ -72,11 +74,22 @@ int run_eval_clusters(const ClusterEvalFlags& flags, const CLI::App& app, Io io)
   if (!flags.scene_source.empty() && !fs::is_regular_file(flags.scene_source))
     throw UsageError("--scene-source: '" + flags.scene_source + "' is not a file");
   const fs::path out = flags.out;
-  std::error_code ec;
-  fs::create_directories(out, ec);
-  if (ec) throw UsageError("--out: cannot create '" + out.string() + "': " + ec.message());
+  const OutFolder out_folder = hold_out_folder(out, "eval clusters", io.err);  // made and held first
   const WorkDir work(flags.work, "gazelod-eval-clusters");
   const fs::path& w = work.path();
+  // Ctrl-C or SIGTERM stops between steps, a run at its next frame: no report (three columns
+  // or none), the temporary work folder removed as the stack unwinds. A bake in progress
+  // finishes first (seconds to a minute at the default size); a second signal ends the
+  // process at once.
+  StopOnSignal stop;
+  const auto stop_if_asked = [&](const std::string& during) {
+    if (const int sig = stop.requested()) {
+      stop.acted_on();
+      throw UsageError(
+          std::string("stopped by ") + StopOnSignal::name(sig) + " during " + during + "; no report written",
+          128 + sig);
+    }
+  };
 
   const auto started = std::chrono::steady_clock::now();
   auto progress = [&](const std::string& line) {
@@ -84,8 +97,15 @@ int run_eval_clusters(const ClusterEvalFlags& flags, const CLI::App& app, Io io)
     io.err << "gazelod eval clusters [" << s << " s]: " << line << "\n" << std::flush;
   };
   auto step = [&](const std::vector<std::string>& args) {
+    stop_if_asked(join(args));
     progress(join(args));
-    invoke(args);
+    try {
+      invoke(args);
+    } catch (const UsageError&) {
+      stop_if_asked(join(args));  // a step the signal cut short failed: the stop says why
+      throw;
+    }
+    stop_if_asked(join(args));
   };
 
   ClusterEvalReport report;
@@ -119,6 +139,7 @@ int run_eval_clusters(const ClusterEvalFlags& flags, const CLI::App& app, Io io)
   step({"bake", source, "-o", glbs[0]});
   progress("the same chains as one cluster per level -> " + glbs[1]);
   bake_chain_as_clusters(source, glbs[1]);
+  stop_if_asked("the bake of " + glbs[1]);
   step({"bake", "--clusters", source, "-o", glbs[2]});
 
   // The runs are function calls (run_for_summary); each keeps its report in the work folder.
@@ -136,8 +157,17 @@ int run_eval_clusters(const ClusterEvalFlags& flags, const CLI::App& app, Io io)
     o.render = render;
     std::vector<FrameRecord> records;
     o.frames_result = &records;
+    const std::string what = "the run of " + glbs[i];
+    stop_if_asked(what);
     progress("run " + glbs[i] + (render ? " (rendered)" : "") + " -> " + dir.string());
-    const RunSummary summary = run_for_summary(o, "the run of " + glbs[i]);
+    RunSummary summary;
+    try {
+      summary = run_for_summary(o, what);
+    } catch (const UsageError&) {
+      stop_if_asked(what);  // the run stopped at the signal (exit 130): the stop says why
+      throw;
+    }
+    stop_if_asked(what);
     return std::pair{summary, std::move(records)};
   };
   for (std::size_t i = 0; i < 3; ++i) {

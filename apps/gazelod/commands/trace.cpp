@@ -9,6 +9,7 @@
 #include "gaze/trace_stats.hpp"
 #include "gaze/trace_writer.hpp"
 #include "apps/gazelod/commands/command.hpp"
+#include "apps/gazelod/run/signals.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -169,19 +170,36 @@ int run_convert(const Options& o, Io io) {
     throw UsageError("OUT must not be the input file");
   check_output_file("OUT", o.out_file);
   // Written atomically (auxiliary/atomic_file.hpp): a failure, in the input or the output, leaves
-  // neither a truncated OUT nor a temporary file.
+  // neither a truncated OUT nor a temporary file. Ctrl-C or SIGTERM (a pipe that does not end,
+  // a long file) stops it the same way: a conversion cut short is not the trace, so OUT is not
+  // written, and a second signal removes the temporary before the process ends.
+  StopOnSignal stop;
   std::size_t n = 0;
+  const auto stop_if_asked = [&] {
+    if (const int sig = stop.requested()) {
+      stop.acted_on();
+      throw UsageError(std::string("stopped by ") + StopOnSignal::name(sig) + " after " + std::to_string(n) +
+                           " samples; " + o.out_file + " not written",
+                       128 + sig);
+    }
+  };
   std::unique_ptr<gaze::RecordStream> stream;
   try {
     stream = gaze::open_trace(o.file, format_of(o), {.lenient = o.lenient});
+    TemporaryOnSignal temporary;  // released after the writer has removed or renamed its file
     gaze::TraceFileWriter writer(o.out_file, {.time_in_ns = o.time_unit == "ns", .write_head = stream->has_head()});
+    temporary.hold(writer.temp_path());
     gaze::TraceRecord r;
     while (stream->next(r)) {
+      stop_if_asked();
       writer.write(r);
       ++n;
     }
+    // A signal that interrupted a read from a pipe ends the input early: never committed.
+    stop_if_asked();
     writer.commit();
   } catch (const gaze::TraceError& e) {
+    stop_if_asked();  // the read the signal interrupted failed: the stop, not the input, says why
     throw UsageError(e.what());
   } catch (const aux::WriteError& e) {
     throw UsageError(e.what(), 1);

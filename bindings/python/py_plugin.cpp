@@ -2,6 +2,7 @@
 // gazelod._gazelod.Plugin: the C ABI's data mode (include/gazelod/gazelod.h) driven from Python,
 // frame by frame, with numpy arrays in and out. Every call goes through libgazelod's gzl_*
 // functions, as any other language binding's would.
+#include "bindings/python/py_arrays.hpp"
 #include "bindings/python/py_common.hpp"
 
 #include "gazelod/gazelod.h"
@@ -9,13 +10,14 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
+#include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace gazelod::python {
 namespace {
-
-using Doubles = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
 std::string last_error(gzl_plugin p) {
   std::size_t n = 0;
@@ -34,13 +36,13 @@ void check(gzl_plugin p, gzl_result r) {
 }
 
 gzl_vec3 vec(const py::object& o, const char* what) {
-  const Doubles a = py::cast<Doubles>(o);
+  const Doubles a = doubles(o, what);
   if (a.ndim() != 1 || a.shape(0) != 3) throw py::value_error(std::string(what) + " must have 3 components");
   return {a.at(0), a.at(1), a.at(2)};
 }
 
 gzl_quat quat(const py::object& o, const char* what) {
-  const Doubles a = py::cast<Doubles>(o);
+  const Doubles a = doubles(o, what);
   if (a.ndim() != 1 || a.shape(0) != 4) throw py::value_error(std::string(what) + " must be (x, y, z, w)");
   return {a.at(0), a.at(1), a.at(2), a.at(3)};
 }
@@ -69,17 +71,22 @@ class Plugin {
          const std::string& hmd_preset, double frame_budget_ms, const std::vector<std::string>& disabled_criteria) {
     std::vector<gzl_view> v;
     for (const py::handle h : views) {
-      const py::dict d = py::cast<py::dict>(h);
+      const std::string at = "views[" + std::to_string(v.size()) + "]";
+      if (!py::isinstance<py::dict>(h)) throw py::value_error(at + " must be a dict {fov, width_px, height_px, ...}");
+      const auto d = py::reinterpret_borrow<py::dict>(h);
+      for (const char* key : {"fov", "width_px", "height_px"})
+        if (!d.contains(key)) throw py::value_error(at + " has no " + key);
       gzl_view g{};
-      const Doubles fov = py::cast<Doubles>(d["fov"]);
+      const Doubles fov = doubles(d["fov"], at + ".fov");
       if (fov.ndim() != 1 || fov.shape(0) != 4)
-        throw py::value_error("a view's fov is (left, right, up, down) in radians");
+        throw py::value_error(at + ".fov is (left, right, up, down) in radians");
       g.fov = {fov.at(0), fov.at(1), fov.at(2), fov.at(3)};
-      g.width_px = py::cast<std::uint32_t>(d["width_px"]);
-      g.height_px = py::cast<std::uint32_t>(d["height_px"]);
-      if (d.contains("position_in_head_m")) g.position_in_head_m = vec(d["position_in_head_m"], "position_in_head_m");
+      g.width_px = pixel_count(d["width_px"], at + ".width_px");
+      g.height_px = pixel_count(d["height_px"], at + ".height_px");
+      if (d.contains("position_in_head_m"))
+        g.position_in_head_m = vec(d["position_in_head_m"], (at + ".position_in_head_m").c_str());
       if (d.contains("orientation_in_head_xyzw"))
-        g.orientation_in_head = quat(d["orientation_in_head_xyzw"], "orientation_in_head_xyzw");
+        g.orientation_in_head = quat(d["orientation_in_head_xyzw"], (at + ".orientation_in_head_xyzw").c_str());
       v.push_back(g);
     }
     gzl_config c{};
@@ -112,22 +119,40 @@ class Plugin {
 
   py::array_t<std::uint64_t> add_objects(const Doubles& centers, const Doubles& radii, const Doubles& levels,
                                          const std::string& metric, std::optional<Doubles> velocities,
-                                         std::optional<py::array_t<std::uint32_t>> triangles) {
+                                         const std::optional<py::object>& triangles) {
     if (centers.ndim() != 2 || centers.shape(1) != 3) throw py::value_error("centers must be an (N, 3) array");
     const py::ssize_t n = centers.shape(0);
     if (radii.ndim() != 1 || radii.shape(0) != n) throw py::value_error("radii must be an (N,) array");
     if (levels.ndim() != 2 || levels.shape(0) != n) throw py::value_error("levels must be an (N, L) array");
     if (velocities && (velocities->ndim() != 2 || velocities->shape(0) != n || velocities->shape(1) != 3))
       throw py::value_error("velocities must be an (N, 3) array");
-    if (triangles && (triangles->ndim() != 2 || triangles->shape(0) != n || triangles->shape(1) != levels.shape(1)))
-      throw py::value_error("triangles must be an (N, L) array like levels");
+    const py::ssize_t width = levels.shape(1);
+    std::vector<std::int64_t> counts;  // triangles, row-major like levels
+    if (triangles) {
+      py::array shape;
+      counts = int64s(*triangles, "triangles", &shape);
+      if (shape.ndim() != 2 || shape.shape(0) != n || shape.shape(1) != width)
+        throw py::value_error("triangles must be an (N, L) array like levels");
+      for (std::size_t k = 0; k < counts.size(); ++k)
+        if (counts[k] < 0 || counts[k] > std::numeric_limits<std::uint32_t>::max())
+          throw py::value_error("triangles[" + std::to_string(k / width) + ", " + std::to_string(k % width) +
+                                "] = " + std::to_string(counts[k]) + " is not a triangle count (0 to 4294967295)");
+    }
     py::array_t<std::uint64_t> handles(n);
     std::vector<gzl_level> chain;
     for (py::ssize_t i = 0; i < n; ++i) {
       chain.clear();
-      for (py::ssize_t j = 0; j < levels.shape(1); ++j) {
-        if (j > 0 && std::isnan(levels.at(i, j))) break;
-        chain.push_back({j == 0 ? 0.0 : levels.at(i, j), triangles ? triangles->at(i, j) : 0u});
+      for (py::ssize_t j = 0; j < width; ++j) {
+        if (j > 0 && std::isnan(levels.at(i, j))) {
+          // NaN pads a shorter chain at its end; a level after it would be dropped unseen.
+          for (py::ssize_t k = j + 1; k < width; ++k)
+            if (!std::isnan(levels.at(i, k)))
+              throw py::value_error("levels[" + std::to_string(i) + ", " + std::to_string(k) +
+                                    "] follows a NaN (NaN only pads a shorter chain at its end)");
+          break;
+        }
+        const auto tri = counts.empty() ? 0u : static_cast<std::uint32_t>(counts[i * width + j]);
+        chain.push_back({j == 0 ? 0.0 : levels.at(i, j), tri});
       }
       gzl_object_desc d{};
       d.type = GZL_TYPE_OBJECT_DESC;
@@ -151,28 +176,43 @@ class Plugin {
     return handles;
   }
 
-  void remove(const py::array_t<std::uint64_t>& handles) {
-    for (py::ssize_t i = 0; i < handles.size(); ++i) check(p_, gzl_remove_object(p_, handles.at(i)));
+  // Any shape, as levels() takes them (at(i) refused a 2-D array with "index dimension mismatch").
+  using Handles = py::array_t<std::uint64_t, py::array::c_style | py::array::forcecast>;
+  void remove(const Handles& handles) {
+    for (py::ssize_t i = 0; i < handles.size(); ++i) check(p_, gzl_remove_object(p_, handles.data()[i]));
   }
-  void set_enabled(const py::array_t<std::uint64_t>& handles, bool enabled) {
-    for (py::ssize_t i = 0; i < handles.size(); ++i) check(p_, gzl_set_object_enabled(p_, handles.at(i), enabled));
+  void set_enabled(const Handles& handles, bool enabled) {
+    for (py::ssize_t i = 0; i < handles.size(); ++i) check(p_, gzl_set_object_enabled(p_, handles.data()[i], enabled));
   }
   void session_state(int state, std::int64_t t_ns) { check(p_, gzl_on_session_state(p_, state, t_ns)); }
 
   // One sample, or arrays of them (t_ns (N,), direction (N, 3), valid (N,)).
-  void push_gaze(const py::array_t<std::int64_t>& t_ns, const Doubles& direction,
-                 std::optional<py::array_t<bool>> valid, bool in_world) {
+  // Times are integer nanoseconds: a float array (1000.9, NaN) is refused, not truncated.
+  void push_gaze(const py::object& t_ns, const Doubles& direction, const std::optional<py::object>& valid,
+                 bool in_world) {
     const bool one = direction.ndim() == 1;
+    const char* shapes = "direction is (3,) with one time, or (N, 3) with N times";
+    if ((direction.ndim() != 1 && direction.ndim() != 2) || direction.shape(one ? 0 : 1) != 3)
+      throw py::value_error(shapes);
     const py::ssize_t n = one ? 1 : direction.shape(0);
-    if ((one && direction.shape(0) != 3) || (!one && direction.shape(1) != 3) || t_ns.size() != n)
-      throw py::value_error("direction is (3,) with one time, or (N, 3) with N times");
+    py::array t_shape;
+    const std::vector<std::int64_t> times = int64s(t_ns, "t_ns", &t_shape);
+    if (t_shape.ndim() > 1 || static_cast<py::ssize_t>(times.size()) != n) throw py::value_error(shapes);
+    using Flags = py::array_t<bool, py::array::c_style | py::array::forcecast>;
+    Flags flags;
+    if (valid) {
+      flags = py::cast<Flags>(*valid);
+      if (flags.ndim() > 1 || (flags.size() != 1 && flags.size() != n))
+        throw py::value_error("valid is one flag or (N,) flags, one per sample; got " + std::to_string(flags.size()) +
+                              " for " + std::to_string(n) + " samples");
+    }
     for (py::ssize_t i = 0; i < n; ++i) {
       gzl_gaze_sample s{};
       s.type = GZL_TYPE_GAZE_SAMPLE;
-      s.time_ns = t_ns.data()[i];
+      s.time_ns = times[static_cast<std::size_t>(i)];
       const double* d = direction.data() + 3 * i;
       s.direction = {d[0], d[1], d[2]};
-      const bool ok = valid ? valid->data()[valid->size() == 1 ? 0 : i] : true;
+      const bool ok = valid ? flags.data()[flags.size() == 1 ? 0 : i] : true;
       s.flags = (ok ? static_cast<std::uint32_t>(GZL_GAZE_SAMPLE_VALID) : 0u) |
                 (in_world ? static_cast<std::uint32_t>(GZL_GAZE_SAMPLE_IN_WORLD) : 0u);
       check(p_, gzl_push_gaze_sample(p_, &s));

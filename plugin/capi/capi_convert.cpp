@@ -5,7 +5,9 @@
 #include "lod/display.hpp"
 #include "plugin/capi/capi_errors.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 namespace gazelod::capi {
@@ -20,11 +22,18 @@ bool finite(double v) {
 }
 
 // A zero (or unset) value means the default; otherwise finite and in range.
+// %g: std::to_string's %f printed 1e-310 (a unit slip) as "0.000000", as if 0 were refused.
+std::string number(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.6g", v);
+  return b;
+}
+
 double or_default(double v, double def, double lo, double hi, const char* field) {
   if (v == 0.0) return def;
   if (!finite(v) || v < lo || v > hi)
-    throw invalid(std::string("config->") + field + " = " + std::to_string(v) + " is outside [" + std::to_string(lo) +
-                  ", " + std::to_string(hi) + "] (0 means the default)");
+    throw invalid(std::string("config->") + field + " = " + number(v) + " is outside [" + number(lo) + ", " +
+                  number(hi) + "] (0 means the default)");
   return v;
 }
 
@@ -143,7 +152,12 @@ glm::dvec3 to_vec(const gzl_vec3& v, const char* what) {
 }
 
 glm::dquat to_quat(const gzl_quat& q, const char* what) {
-  const double n = std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
+  // The norm scaled by the largest component: the plain sum of squares overflows past ~1e154
+  // and refused a finite quaternion as "not finite".
+  const double m = std::max({std::abs(q.x), std::abs(q.y), std::abs(q.z), std::abs(q.w)});
+  double n = 0.0;
+  if (finite(m) && m > 0.0)
+    n = m * std::sqrt((q.x / m) * (q.x / m) + (q.y / m) * (q.y / m) + (q.z / m) * (q.z / m) + (q.w / m) * (q.w / m));
   if (!finite(n) || n < 1e-6) throw invalid(std::string(what) + " must be a finite, non-zero quaternion");
   // A unit quaternion (a recorded pose) stays bit for bit what it was.
   const double s = std::abs(n - 1.0) > 1e-9 ? 1.0 / n : 1.0;

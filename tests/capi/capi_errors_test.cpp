@@ -68,6 +68,12 @@ TEST(CApi, WrongStructTypesAndModes) {
   c.gaze_accuracy_deg = kNaN;
   EXPECT_EQ(make_data_plugin(&c), nullptr);
   EXPECT_NE(last_error(nullptr).find("gaze_accuracy_deg"), std::string::npos) << last_error(nullptr);
+  // A value too small to print with %f (a unit slip) is named as given, not as "0.000000",
+  // which read as if 0, the default, were refused.
+  c.gaze_accuracy_deg = 1e-310;
+  EXPECT_EQ(make_data_plugin(&c), nullptr);
+  EXPECT_NE(last_error(nullptr).find("config->gaze_accuracy_deg = 1e-310 is outside [0.01, 45]"), std::string::npos)
+      << last_error(nullptr);
   gzl_openxr_create_info xi{};
   xi.type = GZL_TYPE_OPENXR_CREATE_INFO;
   expect_error(nullptr, gzl_create_openxr(&xi, &q), GZL_ERROR_NULL_POINTER, "get_instance_proc_addr");
@@ -91,6 +97,14 @@ TEST(CApi, NonFiniteInputsAreRefusedByField) {
 
   gzl_frame_input in = still_head(1'000'000);
   in.head.orientation = {kNaN, 0, 0, 1};
+  expect_error(p, gzl_begin_frame_data(p, &in), GZL_ERROR_INVALID_ARGUMENT, "input->head.orientation");
+  // Finite but past the square's range: normalised, not refused as "not finite".
+  in = still_head(500'000);
+  in.head.orientation = {0, 0, 0, 1e200};
+  EXPECT_EQ(gzl_begin_frame_data(p, &in), GZL_SUCCESS) << last_error(p);
+  EXPECT_EQ(gzl_end_frame(p, 5.0), GZL_SUCCESS) << last_error(p);
+  in = still_head(600'000);
+  in.head.orientation = {0, 0, 0, 1e-7};  // below 1e-6: no orientation at all
   expect_error(p, gzl_begin_frame_data(p, &in), GZL_ERROR_INVALID_ARGUMENT, "input->head.orientation");
   in = still_head(1'000'000);
   in.head.angular_velocity_rad_s.z = std::numeric_limits<double>::infinity();

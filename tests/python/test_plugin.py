@@ -123,7 +123,7 @@ def test_bad_views_and_config():
         gazelod.Plugin(views, hmd_preset="nope")
     with pytest.raises(ValueError, match=r"^gazelod: info->views\[0\].fov: horizontal FOV"):
         gazelod.Plugin([dict(fov=(0, 0, 0, 0), width_px=10, height_px=10)])
-    with pytest.raises(ValueError, match=r"a view's fov is \(left, right, up, down\)"):
+    with pytest.raises(ValueError, match=r"views\[0\].fov is \(left, right, up, down\)"):
         gazelod.Plugin([dict(fov=(0, 0, 0), width_px=10, height_px=10)])
     with pytest.raises(ValueError, match="unknown HMD preset 'nope'"):
         gazelod.stereo_views("nope")

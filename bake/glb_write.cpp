@@ -5,6 +5,7 @@
 
 #include "auxiliary/atomic_file.hpp"
 #include "bake/bake_error.hpp"
+#include "auxiliary/json_text.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -48,7 +49,7 @@ std::string fill_empty_objects(std::string glb, const std::string& path) {
       if (element.is_null()) element = nlohmann::json::object(), changed = true;
   }
   if (!changed) return glb;
-  std::string json = doc.dump();
+  std::string json = aux::json_text(doc);
   json.resize((json.size() + 3) & ~std::size_t{3}, ' ');  // GLB chunks are 4-byte aligned
   std::string out = glb.substr(0, 20) + json + glb.substr(20 + json_length);
   put_le32(out, 8, static_cast<std::uint32_t>(out.size()));

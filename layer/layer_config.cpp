@@ -5,6 +5,7 @@
 #include "auxiliary/json_strict.hpp"
 #include "auxiliary/time.hpp"
 #include "auxiliary/yaw_pitch.hpp"
+#include "auxiliary/json_text.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -32,7 +33,7 @@ struct Bad {
 }
 
 std::string shown(const json& v) {
-  std::string s = v.dump();
+  std::string s = aux::json_text(v);
   return s.size() > 40 ? s.substr(0, 37) + "..." : s;
 }
 

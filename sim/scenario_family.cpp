@@ -2,6 +2,7 @@
 #include "sim/scenario_family.hpp"
 
 #include "auxiliary/random.hpp"
+#include "auxiliary/json_text.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -221,7 +222,7 @@ FamilyScenario family_scenario(std::uint64_t seed, double duration_s, IdealTrack
                        {"effects", effects},
                        {"runtime", {{"eye_gaze_supported", true}, {"gaze_delivery", "normal"}, {"paced", true}}}};
   FamilyScenario out;
-  out.json = sc.dump(2);
+  out.json = aux::json_text(sc, 2);
   char offset_text[48] = "";
   if (offset_deg > 0.0) std::snprintf(offset_text, sizeof offset_text, " offset %.2f deg", offset_deg);
   std::snprintf(text, sizeof text, "%s, %s%s, %s, %.0f Hz %.0f ms %.2f deg%s, %s", head_text.c_str(),

@@ -12,6 +12,7 @@
 #include "sim/simulator.hpp"
 
 #include "lod/display.hpp"
+#include "auxiliary/json_text.hpp"
 
 #include <sys/stat.h>
 
@@ -221,7 +222,7 @@ Scenario load_scenario_json(std::string_view json_text, std::string_view source_
                               bytes_text(bytes));
         tally.memory_bytes += bytes;
       }
-      spec.params_json = e.dump();
+      spec.params_json = aux::json_text(e);
       sc.effects.push_back(std::move(spec));
     }
   }
@@ -269,7 +270,9 @@ std::string read_scenario_text(const std::string& path) {
 }
 
 Scenario load_scenario_file(const std::string& path) {
-  return load_scenario_json(read_scenario_text(path), path);
+  Scenario sc = load_scenario_json(read_scenario_text(path), path);
+  sc.file = path;
+  return sc;
 }
 
 }  // namespace gazelod::sim

@@ -2,6 +2,7 @@
 // A scenario back to JSON (version 1), explicit: display fields in radians, generated objects
 // listed one by one, so that load_scenario_json(scenario_to_json(s)) equals s.
 #include "sim/simulator.hpp"
+#include "auxiliary/json_text.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -85,7 +86,7 @@ std::string scenario_to_json(const Scenario& sc) {
        {{"eye_gaze_supported", sc.runtime.eye_gaze_supported},
         {"gaze_delivery", delivery_name(sc.runtime.gaze_delivery)},
         {"paced", sc.runtime.paced}}}};
-  return j.dump(2) + "\n";
+  return aux::json_text(j, 2) + "\n";
 }
 
 }  // namespace gazelod::sim

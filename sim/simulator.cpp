@@ -19,7 +19,11 @@ struct Simulator::Impl final : EffectContext {
   std::vector<ObjectState> objects_buf;
 
   explicit Impl(Scenario s) : scenario(std::move(s)) {
-    const std::string source = scenario.name.empty() ? "<scenario>" : scenario.name;
+    // The file, where there is one: a relative trace file is found beside it (a scenario's
+    // "name" is a label, and named ones looked for their traces in the working folder).
+    const std::string source = !scenario.file.empty() ? scenario.file
+                               : scenario.name.empty() ? "<scenario>"
+                                                       : scenario.name;
     for (std::size_t i = 0; i < scenario.effects.size(); ++i) {
       owned.push_back(make_effect(scenario.effects[i], scenario, i, source));
       const Effect* e = owned.back().get();

@@ -74,6 +74,9 @@ inline constexpr double kRunSlackS = 1.0;
 struct Scenario {
   int version = 1;
   std::string name;
+  // The file it was read from (load_scenario_file; "" for text): the effects' relative trace
+  // files are found beside it. Not written back (scenario_to_json).
+  std::string file;
   lod::DisplaySpec display;
   double duration_s = 10.0;
   double frame_rate_hz = 90.0;

@@ -8,6 +8,7 @@
 #include "apps/gazelod/run/report.hpp"
 #include "apps/gazelod/run/session.hpp"
 #include "apps/gazelod/run/signals.hpp"
+#include "auxiliary/json_text.hpp"
 
 #include <unistd.h>
 
@@ -205,7 +206,7 @@ int run_eval_clusters(const ClusterEvalFlags& flags, const CLI::App& app, Io io)
   }
 
   const std::string md = "<!-- written by: gazelod eval clusters -->\n\n" + cluster_eval_markdown(report);
-  write_report(out, {{"clusters.md", md}, {"clusters.json", cluster_eval_json(report).dump(2) + "\n"}});
+  write_report(out, {{"clusters.md", md}, {"clusters.json", aux::json_text(cluster_eval_json(report), 2) + "\n"}});
   write_cluster_eval_svg(report, out / "clusters.svg");
   io.out << md << "\nfiles: clusters.md, clusters.json, clusters.svg in " << out.string() << "\n";
   for (const ClusterEvalColumn& c : report.columns)

@@ -11,6 +11,7 @@
 #include "budget/knapsack.hpp"
 #include "budget/budget_instance.hpp"
 #include "apps/gazelod/commands/command.hpp"
+#include "auxiliary/json_text.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -121,7 +122,7 @@ int solve_and_print(const Options& o, Io io) {
       j["moves"] = sol.iterations;
       j["truncated"] = sol.truncated;
     }
-    io.out << j.dump() << "\n";
+    io.out << aux::json_text(j) << "\n";
   } else {
     io.out << "solver:    " << o.solver << "\nprofit:    " << sol.profit << "\ncost:      " << sol.cost
            << " of capacity " << inst.capacity << "\nfeasible:  " << (sol.feasible ? "yes" : "NO") << "\nselection:";
@@ -166,7 +167,7 @@ int run_budget(const Options& o, Io io) {
   auto report = [&](const std::string& message, int code) {
     if (!o.json) return;
     const char* kind = code == 2 ? "bad_input" : code == 3 ? "infeasible_instance" : "error";
-    io.out << nlohmann::json{{"error", message}, {"exit_code", code}, {"kind", kind}}.dump() << "\n";
+    io.out << aux::json_text(nlohmann::json{{"error", message}, {"exit_code", code}, {"kind", kind}}) << "\n";
   };
   try {
     return solve_and_print(o, io);

@@ -8,6 +8,7 @@
 #include "apps/gazelod/compare/report.hpp"
 #include "apps/gazelod/compare/runs.hpp"
 #include "auxiliary/atomic_file.hpp"
+#include "auxiliary/json_text.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -40,10 +41,10 @@ int run_compare(const CompareOptions& o, bool json, Io io) {
   }
   const nlohmann::json doc = compare_json(results);
   const auto json_path = o.out_dir / "compare.json";
-  aux::write_file_atomic(json_path.string(), doc.dump(2) + "\n");  // before, a plain ofstream, unchecked
+  aux::write_file_atomic(json_path.string(), aux::json_text(doc, 2) + "\n");  // before, a plain ofstream, unchecked
   write_compare_chart(results, o.out_dir);
   if (json) {
-    io.out << doc.dump(2) << "\n";
+    io.out << aux::json_text(doc, 2) << "\n";
   } else {
     print_compare_table(results, io.out, o.breakdown);
     io.out << "files: " << json_path.string() << ", compare.svg, <hmd>/summary.json, <hmd>/frames.svg\n";

@@ -8,6 +8,7 @@
 #include "gaze/trace_writer.hpp"
 #include "apps/gazelod/commands/command.hpp"
 #include "apps/gazelod/run/signals.hpp"
+#include "auxiliary/json_text.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -53,7 +54,7 @@ int run_list(const Options& o, Io io) {
                      {"manufacturer", t.manufacturer},
                      {"product", t.product},
                      {"serial", t.serial}});
-    io.out << all.dump(2) << "\n";
+    io.out << aux::json_text(all, 2) << "\n";
     return 0;
   }
   if (found.empty()) {

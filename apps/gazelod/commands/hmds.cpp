@@ -3,6 +3,7 @@
 #include "lod/acuity.hpp"
 #include "lod/display.hpp"
 #include "apps/gazelod/commands/command.hpp"
+#include "auxiliary/json_text.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -40,7 +41,7 @@ int run_hmds(bool json, Io io) {
                      {"eye_tracking_accuracy_deg", d.eye_tracking_accuracy_deg},
                      {"source", d.source}});
     }
-    io.out << all.dump(2) << "\n";
+    io.out << aux::json_text(all, 2) << "\n";
     return 0;
   }
   io.out << std::left << std::setw(13) << "name" << std::setw(12) << "pixels/eye" << std::setw(14) << "FOV deg"

@@ -11,6 +11,7 @@
 #include "sim/simulator.hpp"
 
 #include <chrono>
+#include <filesystem>
 #include <memory>
 #include <stdexcept>
 
@@ -61,6 +62,9 @@ int run_print(const Options& o, Io io) {
 
 int run_record(const Options& o, Io io) {
   check_output_file("--out", o.out);
+  std::error_code ec;
+  if (!o.file.empty() && std::filesystem::exists(o.out, ec) && std::filesystem::equivalent(o.file, o.out, ec))
+    throw UsageError("--out: '" + o.out + "' is the scenario being recorded; write the trace to another file");
   sim::Scenario sc = load(o);
   sim::Simulator simulator(std::move(sc));
   sim::RecordOptions ro;

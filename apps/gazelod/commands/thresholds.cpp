@@ -4,6 +4,7 @@
 #include "lod/acuity.hpp"
 #include "lod/display.hpp"
 #include "apps/gazelod/commands/command.hpp"
+#include "auxiliary/json_text.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -89,7 +90,7 @@ int run_thresholds(const Options& o, Io io) {
       j["at_eccentricity_deg"] = *at_ecc;
       j["velocity_threshold_at_eccentricity_dps"] = lod::velocity_threshold_dps(xi, *at_ecc);
     }
-    io.out << j.dump(2) << "\n";
+    io.out << aux::json_text(j, 2) << "\n";
     return 0;
   }
   io.out << std::fixed << std::setprecision(2);

@@ -10,6 +10,7 @@
 #include "gaze/trace_writer.hpp"
 #include "apps/gazelod/commands/command.hpp"
 #include "apps/gazelod/run/signals.hpp"
+#include "auxiliary/json_text.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -140,7 +141,7 @@ int run_stats(const Options& o, Io io) {
       skipped.push_back({{"line", issue.line}, {"column", issue.column}, {"message", issue.message}});
     j["skipped"] = skipped;
     if (st.agreement) j["agreement"] = agreement_json(*st.agreement);
-    io.out << j.dump(2) << "\n";
+    io.out << aux::json_text(j, 2) << "\n";
     return 0;
   }
   io.out << std::fixed << std::setprecision(3) << "file              " << o.file << " (" << format << ")\n"

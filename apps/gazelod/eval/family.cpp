@@ -9,6 +9,7 @@
 #include "auxiliary/atomic_file.hpp"
 #include "auxiliary/time.hpp"
 #include "sim/scenario_family.hpp"
+#include "auxiliary/json_text.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -221,7 +222,7 @@ std::string family_json(const std::vector<FamilyMember>& members, const FamilySe
   j["members"] = nlohmann::json::array();
   for (const FamilyMember& m : members)
     j["members"].push_back({{"seed", m.seed}, {"scenario", m.summary}, {"audit", audit_json(m.audit)}});
-  return j.dump(2) + "\n";
+  return aux::json_text(j, 2) + "\n";
 }
 
 namespace {
@@ -309,7 +310,7 @@ int run_eval_family(const FamilyFlags& flags, Io io) {
     md += against_markdown(members, *base);
     nlohmann::json j = nlohmann::json::parse(json);
     j["against"] = against_json(members, *base);
-    json = j.dump(2) + "\n";
+    json = aux::json_text(j, 2) + "\n";
   }
   write_report(flags.out, {{"family.md", md}, {"family.json", json}});
   io.out << md << "\nfiles: " << (std::filesystem::path(flags.out) / "family.md").string() << ", family.json\n";

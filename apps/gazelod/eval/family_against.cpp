@@ -4,6 +4,7 @@
 #include "apps/gazelod/commands/command.hpp"
 #include "auxiliary/json_path.hpp"
 #include "auxiliary/json_strict.hpp"
+#include "auxiliary/json_text.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -180,7 +181,8 @@ FamilyBaseline read_family_baseline(const std::string& path) {
   const nlohmann::json& duration = member(doc, "", "duration_s", path);
   if (!duration.is_number() || !(duration.get<double>() > 0.0) || !std::isfinite(duration.get<double>()))
     fail(path, "duration_s",
-         "expected a number > 0, got " + (duration.is_number() ? duration.dump() : aux::json_type_name(duration)));
+         "expected a number > 0, got " +
+             (duration.is_number() ? aux::json_text(duration) : aux::json_type_name(duration)));
   base.duration_s = duration.get<double>();
   const nlohmann::json& members = member(doc, "", "members", path);
   if (!members.is_array() || members.empty())
@@ -190,7 +192,7 @@ FamilyBaseline read_family_baseline(const std::string& path) {
     const nlohmann::json& seed = member(members[i], at, "seed", path);
     if (!seed.is_number_unsigned())
       fail(path, aux::json_member_path(at, "seed"),
-           "expected an integer >= 0, got " + (seed.is_number() ? seed.dump() : aux::json_type_name(seed)));
+           "expected an integer >= 0, got " + (seed.is_number() ? aux::json_text(seed) : aux::json_type_name(seed)));
     BaselineRow r;
     r.seed = seed.get<std::uint64_t>();
     const std::string audit = aux::json_member_path(at, "audit");

@@ -7,6 +7,7 @@
 #include "apps/gazelod/commands/command.hpp"
 #include "auxiliary/time.hpp"
 #include "gaze/trace_error.hpp"
+#include "auxiliary/json_text.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -83,7 +84,7 @@ std::string with_recording(const std::string& scenario_json, const FamilyRecordi
     for (nlohmann::json& o : scene["objects"])
       if (o.contains("velocity_m_s")) o["velocity_m_s"][2] = o["velocity_m_s"][2].get<double>() + walk_m_s;
   j["duration_s"] = recording_duration_s(j.at("duration_s").get<double>(), recording);
-  return j.dump(2);
+  return aux::json_text(j, 2);
 }
 
 std::string recording_summary(const std::string& summary, const FamilyRecording& recording) {

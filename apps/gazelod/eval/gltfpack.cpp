@@ -8,6 +8,7 @@
 #include "bake/baked_scene.hpp"
 #include "bake/gltf_load.hpp"
 #include "bake/surface_deviation.hpp"
+#include "auxiliary/json_text.hpp"
 
 #include <fcntl.h>
 #include <spawn.h>
@@ -215,7 +216,7 @@ int run_eval_gltfpack(const GltfpackFlags& flags, Io io) {
                          {"source_to_result", deviation_json(r.to_result)},
                          {"result_to_source", deviation_json(r.from_result)},
                          {"seconds", r.seconds}});
-  write_report(out, {{"gltfpack.md", md.str()}, {"gltfpack.json", j.dump(2) + "\n"}});
+  write_report(out, {{"gltfpack.md", md.str()}, {"gltfpack.json", aux::json_text(j, 2) + "\n"}});
   io.out << md.str() << "\nfiles: gltfpack.md, gltfpack.json in " << out.string() << "\n";
   return 0;
 }

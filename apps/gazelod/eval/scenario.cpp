@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "apps/gazelod/eval/scenario.hpp"
+#include "auxiliary/json_text.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -73,7 +74,7 @@ std::string reddy_scenario_json(const ReddyScenario& s) {
   if (s.head_turn_deg_s != 0.0)
     j["effects"].push_back(
         {{"type", "head_turn"}, {"rate_deg_s", s.head_turn_deg_s}, {"start_s", 0.0}, {"duration_s", s.duration_s}});
-  return j.dump(1);
+  return aux::json_text(j, 1);
 }
 
 }  // namespace gazelod::cli

@@ -7,6 +7,7 @@
 #include "auxiliary/atomic_file.hpp"
 
 #include "apps/gazelod/plots/svg_plot.hpp"
+#include "auxiliary/json_text.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -303,7 +304,7 @@ void write_report_files(const std::filesystem::path& dir, const RunInfo& info, c
   }
 
   AtomicRunFile summary((dir / "summary.json").string());
-  summary.stream() << j.dump(2) << "\n";
+  summary.stream() << aux::json_text(j, 2) << "\n";
   summary.commit();
 }
 

@@ -11,6 +11,8 @@
 #include "gaze/trace_error.hpp"
 #include "gaze/trace_open.hpp"
 #include "lod/display.hpp"
+#include "sim/effects/effects.hpp"
+#include "auxiliary/json_text.hpp"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -114,7 +116,7 @@ std::string with_baked_scene(const std::string& text, const std::string& label, 
     }
     j["effects"] = kept;
   }
-  return j.dump(2);
+  return aux::json_text(j, 2);
 }
 
 // --trace with head poses: the scenario's head effects give way to a head_track of the same
@@ -151,7 +153,38 @@ std::string with_trace_head(const std::string& text, const std::string& trace_pa
   notes.push_back("--trace: the head moves as recorded in " + trace_path + ", from its first pose" +
                   (dropped.empty() ? "" : ", in place of " + dropped) +
                   " (--trace-head scenario keeps the scenario's head)");
-  return j.dump(2);
+  return aux::json_text(j, 2);
+}
+
+// The effects' relative trace files (head_track, gaze_track) as absolute paths, found where
+// the simulator finds them: beside the scenario file first. The runtime reads the copy in
+// --out, beside which they are not, and the copy then runs the same from anywhere. Unparsable
+// text is returned as it is, for the loader to report.
+std::string with_trace_files_resolved(const std::string& text, const std::string& scenario_path) {
+  nlohmann::json j;
+  try {
+    j = aux::parse_json_strict(text);
+  } catch (const aux::JsonStrictError&) {
+    return text;
+  } catch (const nlohmann::json::exception&) {
+    return text;
+  }
+  if (!j.is_object() || !j.contains("effects") || !j["effects"].is_array()) return text;
+  bool changed = false;
+  for (nlohmann::json& e : j["effects"]) {
+    if (!e.is_object()) continue;
+    const auto it = e.find("file");
+    if (it == e.end() || !it->is_string()) continue;
+    const std::string file = it->get<std::string>();
+    if (file.empty() || std::filesystem::path(file).is_absolute()) continue;
+    std::error_code ec;
+    const std::filesystem::path found =
+        std::filesystem::absolute(sim::effects::trace_file_path(file, scenario_path), ec);
+    if (ec) continue;
+    *it = found.string();
+    changed = true;
+  }
+  return changed ? aux::json_text(j, 2) : text;
 }
 
 }  // namespace
@@ -192,8 +225,9 @@ PreparedScenario prepare_scenario(const RunOptions& opt) {
   check_run_paths(opt);
   PreparedScenario p;
   p.label = opt.scenario_path.empty() ? "default" : opt.scenario_path;
-  std::string text =
-      opt.scenario_path.empty() ? std::string(sim::default_scenario_json()) : read_file(opt.scenario_path);
+  std::string text = opt.scenario_path.empty() ? std::string(sim::default_scenario_json())
+                                               : with_trace_files_resolved(read_file(opt.scenario_path),
+                                                                           opt.scenario_path);
   // --hmd replaces the scenario's display, so the runtime reports the same views the plugin
   // is told about. Patched in the JSON text so the runtime reads exactly this scenario.
   if (!opt.hmd.empty()) {
@@ -202,7 +236,7 @@ PreparedScenario prepare_scenario(const RunOptions& opt) {
     nlohmann::json j = parse_scenario_text(text, p.label);
     if (!j.is_object()) throw UsageError(p.label + ": the scenario must be a JSON object");
     j["display"] = opt.hmd;
-    text = j.dump(2);
+    text = aux::json_text(j, 2);
   }
   if (!opt.scene_path.empty()) {
     if (opt.scene_placement != "in-front" && opt.scene_placement != "file")

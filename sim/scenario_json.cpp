@@ -115,9 +115,8 @@ lod::DisplaySpec read_display(const nlohmann::json& j, JsonFields& top) {
   return d;
 }
 
-RuntimeOptions read_runtime(const nlohmann::json& j, JsonFields& top) {
+RuntimeOptions read_runtime(const nlohmann::json& j, JsonFields& top, RuntimeOptions r) {
   JsonFields f(j, top.key_path("runtime"), top.source());
-  RuntimeOptions r;
   r.eye_gaze_supported = f.boolean("eye_gaze_supported", r.eye_gaze_supported);
   const std::string g = f.string("gaze_delivery", "normal");
   if (g == "normal")
@@ -201,7 +200,12 @@ Scenario load_scenario_json(std::string_view json_text, std::string_view source_
   sc.seed = f.unsigned_integer("seed", sc.seed);
   ScenarioTally tally;
   if (const nlohmann::json* scene = f.child("scene")) read_scene(*scene, f.key_path("scene"), source, sc, tally);
-  if (const nlohmann::json* rt = f.child("runtime")) sc.runtime = read_runtime(*rt, f);
+  // A preset without an eye tracker (Quest 3, Index) offers no eye gaze unless the scenario
+  // says otherwise: the simulated runtime gave every display a perfect tracker, and `compare`
+  // reported gaze-contingent savings for headsets that cannot track the eye.
+  const bool from_preset = display->is_string() || (display->is_object() && display->contains("preset"));
+  sc.runtime.eye_gaze_supported = !from_preset || sc.display.eye_tracking_hz > 0.0;
+  if (const nlohmann::json* rt = f.child("runtime")) sc.runtime = read_runtime(*rt, f, sc.runtime);
   if (const nlohmann::json* effects = f.child("effects")) {
     if (!effects->is_array()) f.fail("effects", "expected an array, got " + aux::json_type_name(*effects));
     if (effects->size() > kMaxEffects)

@@ -105,6 +105,25 @@ TEST(ScenarioParse, RuntimeOptions) {
   EXPECT_FALSE(sc.runtime.paced);
 }
 
+// A preset without an eye tracker offers no eye gaze unless the scenario says so; a custom
+// display (the project's own test rigs) and a tracked preset do. Every display had a perfect
+// tracker, so `compare --hmd quest3` reported gaze-contingent savings.
+TEST(ScenarioParse, EyeGazeFollowsThePresetsTracker) {
+  nlohmann::json j = base_scenario();
+  j.erase("runtime");
+  j["display"] = "quest3";
+  EXPECT_FALSE(load_scenario_json(j.dump(), "q").runtime.eye_gaze_supported);
+  j["display"] = {{"preset", "index"}};
+  EXPECT_FALSE(load_scenario_json(j.dump(), "i").runtime.eye_gaze_supported);
+  j["display"] = {{"preset", "index"}, {"eye_tracking_hz", 120.0}};
+  EXPECT_TRUE(load_scenario_json(j.dump(), "i+").runtime.eye_gaze_supported);
+  j["display"] = "questpro";
+  EXPECT_TRUE(load_scenario_json(j.dump(), "p").runtime.eye_gaze_supported);
+  j["display"] = "quest3";
+  j["runtime"] = {{"eye_gaze_supported", true}};  // what if it had one: as the scenario says
+  EXPECT_TRUE(load_scenario_json(j.dump(), "q+").runtime.eye_gaze_supported);
+}
+
 TEST(ScenarioParse, ToJsonRoundTrips) {
   const Scenario a = load_scenario_json(default_scenario_json(), "<default>");
   const Scenario b = load_scenario_json(scenario_to_json(a), "<written>");

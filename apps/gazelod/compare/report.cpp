@@ -33,6 +33,8 @@ nlohmann::json compare_json(const std::vector<HmdComparison>& results) {
                     {"eccentricity_threshold_deg", c.eccentricity_threshold_deg},
                     {"velocity_threshold_dps", c.velocity_threshold_dps},
                     {"frames", c.frames},
+                    {"eye_tracker", c.eye_tracker},
+                    {"gaze_valid_share", c.gaze_valid_share},
                     {"runs", runs},
                     {"lod_map", set_json(c.lod_map, c.frames)},
                     {"shares",
@@ -50,9 +52,9 @@ void print_compare_table(const std::vector<HmdComparison>& results, std::ostream
   for (const HmdComparison& c : results) {
     std::snprintf(
         line, sizeof line,
-        "\n== %s: xi %.2f c/deg, eccentricity threshold %.1f deg, velocity threshold %.1f deg/s, %lld frames ==\n",
+        "\n== %s: xi %.2f c/deg, eccentricity threshold %.1f deg, velocity threshold %.1f deg/s, %lld frames%s ==\n",
         c.hmd.c_str(), c.xi_cpd, c.eccentricity_threshold_deg, c.velocity_threshold_dps,
-        static_cast<long long>(c.frames));
+        static_cast<long long>(c.frames), c.eye_tracker ? "" : ", no eye tracker: head-fixed gaze");
     out << line;
     std::snprintf(line, sizeof line, "%-28s %14s %9s %11s\n", "criteria", "triangles/frame", "of none", "average LOD");
     out << line;

@@ -26,6 +26,9 @@ HmdComparison comparison_from_run(const std::string& hmd, const RunSummary& run)
   c.eccentricity_threshold_deg = lod::eccentricity_threshold_deg(c.xi_cpd);
   c.velocity_threshold_dps = lod::velocity_threshold_dps(c.xi_cpd);
   c.frames = run.frames;
+  c.eye_tracker = display.eye_tracking_hz > 0.0;
+  c.gaze_valid_share =
+      run.frames > 0 ? static_cast<double>(run.gaze_valid_frames) / static_cast<double>(run.frames) : 0.0;
   const auto set = [](const SetTotals& t) { return SetResult{t.triangles, t.average_lod}; };
   c.sets = {set(run.set_none), set(run.set_size), set(run.set_size_eccentricity), set(run.set_size_velocity),
             set(run.set_drawn)};

@@ -32,6 +32,10 @@ struct HmdComparison {
   double eccentricity_threshold_deg = 0.0;  // v = 0
   double velocity_threshold_dps = 0.0;      // E = 0
   std::int64_t frames = 0;
+  // The preset has an eye tracker; without one the run has no eye gaze and the plugin draws
+  // with its head-fixed fallback. gaze_valid_share: the run's frames with a valid gaze.
+  bool eye_tracker = true;
+  double gaze_valid_share = 0.0;
   std::array<SetResult, kCriteriaSets.size()> sets{};  // indexed like kCriteriaSets
   SetResult lod_map;                                   // the LOD-map thesis's policy, same frames
   // Shares of the reduction (none -> all three criteria): the run's own (run/shares.hpp).

@@ -225,9 +225,9 @@ PreparedScenario prepare_scenario(const RunOptions& opt) {
   check_run_paths(opt);
   PreparedScenario p;
   p.label = opt.scenario_path.empty() ? "default" : opt.scenario_path;
-  std::string text = opt.scenario_path.empty() ? std::string(sim::default_scenario_json())
-                                               : with_trace_files_resolved(read_file(opt.scenario_path),
-                                                                           opt.scenario_path);
+  std::string text = opt.scenario_path.empty()
+                         ? std::string(sim::default_scenario_json())
+                         : with_trace_files_resolved(read_file(opt.scenario_path), opt.scenario_path);
   // --hmd replaces the scenario's display, so the runtime reports the same views the plugin
   // is told about. Patched in the JSON text so the runtime reads exactly this scenario.
   if (!opt.hmd.empty()) {
@@ -236,6 +236,14 @@ PreparedScenario prepare_scenario(const RunOptions& opt) {
     nlohmann::json j = parse_scenario_text(text, p.label);
     if (!j.is_object()) throw UsageError(p.label + ": the scenario must be a JSON object");
     j["display"] = opt.hmd;
+    // The headset's own eye tracking: a preset without a tracker offers no eye gaze, whatever
+    // the scenario's runtime said of the display it replaces (the default scenario's says yes).
+    if (lod::find_display_preset(opt.hmd)->eye_tracking_hz <= 0.0 &&
+        (!j.contains("runtime") || j["runtime"].is_object())) {
+      j["runtime"]["eye_gaze_supported"] = false;
+      p.notes.push_back("--hmd " + opt.hmd +
+                        ": no eye tracker, so no eye gaze (the plugin falls back to head-fixed gaze)");
+    }
     text = aux::json_text(j, 2);
   }
   if (!opt.scene_path.empty()) {

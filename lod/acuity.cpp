@@ -52,6 +52,9 @@ double eccentricity_threshold_deg(double freq_cpd, double vel_dps) {
   const double ratio = freq_cpd / g;  // in (0, 1]
   // M(E) = ratio  <=>  (0.3 E + 1)^2 = 7.49 / ratio. Past 5.79 only: M is 1 before it.
   const double e = (std::sqrt(kMNumerator / ratio) - 1.0) / kMSlope;
+  // Past 180 deg the formula has left the visual field: H never falls below freq_cpd in it
+  // (a display coarser than the far periphery resolves; 1 px over 179 deg gave 1334 deg).
+  if (!(e <= kMaxEccentricityDeg)) return std::numeric_limits<double>::infinity();
   return std::max(e, kEccentricitySeamDeg);
 }
 
@@ -69,7 +72,7 @@ std::string validate_acuity_inputs(double vel_dps, double ecc_deg, double xi_cpd
   std::ostringstream msg;
   if (std::isnan(vel_dps) || vel_dps < 0.0)
     msg << "velocity must be >= 0 deg/s, got " << vel_dps;
-  else if (std::isnan(ecc_deg) || ecc_deg < 0.0 || ecc_deg > 180.0)
+  else if (std::isnan(ecc_deg) || ecc_deg < 0.0 || ecc_deg > kMaxEccentricityDeg)
     msg << "eccentricity must be in [0, 180] deg, got " << ecc_deg;
   else if (!std::isfinite(xi_cpd) || xi_cpd <= 0.0)
     msg << "xi must be a finite number > 0 cycles/deg, got " << xi_cpd;

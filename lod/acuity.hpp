@@ -41,9 +41,13 @@ double spatiotemporal_acuity_cpd(double vel_dps, double ecc_deg);
 // (NaN s counts as 1). Result in [0, 60].
 double acuity_cpd(double vel_dps, double ecc_deg, double xi_cpd, double scale = 1.0);
 
+// The largest eccentricity there is: the opposite direction.
+inline constexpr double kMaxEccentricityDeg = 180.0;
+
 // Inverses (Reddy 1998 Figures 2 and 3): the smallest eccentricity / velocity beyond which the
 // viewer resolves less than freq_cpd, i.e. H first falls below freq_cpd.
-//   0 when H is below freq_cpd already at 0; +inf when it never falls below (freq_cpd <= 0).
+//   0 when H is below freq_cpd already at 0; +inf when it never falls below (freq_cpd <= 0,
+//   or for the eccentricity, not within kMaxEccentricityDeg).
 // With freq_cpd = xi these are the thresholds where LOD can start to drop on that criterion.
 double eccentricity_threshold_deg(double freq_cpd, double vel_dps = 0.0);
 double velocity_threshold_dps(double freq_cpd, double ecc_deg = 0.0);

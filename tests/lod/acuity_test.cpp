@@ -91,7 +91,13 @@ TEST(AcuityInverse, EdgeFrequencies) {
   EXPECT_DOUBLE_EQ(eccentricity_threshold_deg(60.0), kEccentricitySeamDeg);
   EXPECT_DOUBLE_EQ(velocity_threshold_dps(60.0), velocity_seam_repaired_dps());
   EXPECT_EQ(eccentricity_threshold_deg(10.0, kInf), 0.0);  // G = 0 at infinite speed
-  EXPECT_TRUE(std::isfinite(eccentricity_threshold_deg(1.0 / 360.0)));
+  // Within the visual field only: at 1/360 c/deg (1 px over 179 deg) the formula gives 1334 deg,
+  // past the opposite direction; H never falls that low in the visual field.
+  EXPECT_EQ(eccentricity_threshold_deg(1.0 / 360.0), kInf);
+  // The seam at 180 deg: M(180) * 60 c/deg, just above and below.
+  const double at_180 = eccentricity_factor(kMaxEccentricityDeg) * 60.0;
+  EXPECT_NEAR(eccentricity_threshold_deg(at_180 * (1 + 1e-9)), kMaxEccentricityDeg, 1e-3);
+  EXPECT_EQ(eccentricity_threshold_deg(at_180 * (1 - 1e-6)), kInf);
 }
 
 // --- hard cases for v ---------------------------------------------------------------------

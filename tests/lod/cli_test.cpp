@@ -55,6 +55,17 @@ TEST(CliThresholds, ReadableTable) {
   EXPECT_NE(r.out.find("23.99"), std::string::npos) << r.out;
 }
 
+// A display coarser than the far periphery resolves: no eccentricity threshold within the
+// visual field (it printed 1333.68 deg, past the opposite direction).
+TEST(CliThresholds, NoEccentricityThresholdPast180Degrees) {
+  Result r = run_cli({"thresholds", "--pixels", "1x1", "--fov", "179x179"});
+  ASSERT_EQ(r.rc, 0) << r.err;
+  EXPECT_NE(r.out.find("eccentricity threshold (v = 0)  none within 180 deg"), std::string::npos) << r.out;
+  r = run_cli({"thresholds", "--pixels", "1x1", "--fov", "179x179", "--json"});
+  ASSERT_EQ(r.rc, 0) << r.err;
+  EXPECT_TRUE(nlohmann::json::parse(r.out).at("eccentricity_threshold_deg").is_null()) << r.out;
+}
+
 void expect_refused(std::vector<std::string> args, const std::string& names) {
   const Result r = run_cli(args);
   EXPECT_NE(r.rc, 0) << names;

@@ -10,6 +10,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <iomanip>
 #include <memory>
 #include <optional>
@@ -22,6 +23,12 @@ struct Options {
   std::string hmd, pixels, fov, at_ecc;
   bool json = false;
 };
+
+std::string fixed2(double v) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.2f", v);
+  return b;
+}
 
 // "WxH" -> two numbers, each checked by the caller.
 std::pair<std::string, std::string> split_x(const std::string& option, const std::string& text) {
@@ -84,7 +91,8 @@ int run_thresholds(const Options& o, Io io) {
     j["xi_h_cpd"] = lod::xi_h_cpd(view);
     j["xi_v_cpd"] = lod::xi_v_cpd(view);
     j["xi_center_cpd"] = lod::xi_center_cpd(display);
-    j["eccentricity_threshold_deg"] = ecc_thr;
+    // null: none within 180 deg (JSON has no infinity).
+    j["eccentricity_threshold_deg"] = std::isfinite(ecc_thr) ? nlohmann::json(ecc_thr) : nlohmann::json(nullptr);
     j["velocity_threshold_dps"] = vel_thr;
     if (at_ecc) {
       j["at_eccentricity_deg"] = *at_ecc;
@@ -101,7 +109,9 @@ int run_thresholds(const Options& o, Io io) {
          << "xi horizontal x vertical (c/deg) " << lod::xi_h_cpd(view) << " x " << lod::xi_v_cpd(view) << "\n"
          << "xi (c/deg)                      " << xi << "\n";
   if (display.center_ppd > 0.0) io.out << "xi at lens centre (c/deg)       " << lod::xi_center_cpd(display) << "\n";
-  io.out << "eccentricity threshold (v = 0)  " << ecc_thr << " deg\n"
+  io.out << "eccentricity threshold (v = 0)  "
+         << (std::isfinite(ecc_thr) ? fixed2(ecc_thr) + " deg" : std::string("none within 180 deg (H stays above xi)"))
+         << "\n"
          << "velocity threshold (E = 0)      " << vel_thr << " deg/s\n";
   if (at_ecc)
     io.out << "velocity threshold at E = " << *at_ecc << " deg: " << lod::velocity_threshold_dps(xi, *at_ecc)

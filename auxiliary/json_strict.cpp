@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <set>
+#include <string>
 #include <vector>
 
 namespace gazelod::aux {
@@ -87,6 +88,49 @@ nlohmann::json parse_json_strict(std::string_view text, int max_depth) {
   Checker checker(max_depth);
   (void)nlohmann::json::sax_parse(text, &checker);  // throws JsonStrictError; stops at a syntax error
   return nlohmann::json::parse(text);               // the document, or its parse_error with the byte
+}
+
+namespace {
+
+// nlohmann's message without its "[json.exception.parse_error.101] parse error at line 1,
+// column 5: " prefix (the position is given as LINE:COLUMN after the source).
+std::string bare_message(const nlohmann::json::exception& e) {
+  std::string m = e.what();
+  if (m.starts_with("[json.exception.")) {
+    const std::size_t end = m.find("] ");
+    if (end != std::string::npos) m.erase(0, end + 2);
+  }
+  if (m.starts_with("parse error")) {
+    const std::size_t colon = m.find(": ");
+    if (colon != std::string::npos) m.erase(0, colon + 2);
+  }
+  return m;
+}
+
+}  // namespace
+
+nlohmann::json parse_json_text(std::string_view text, std::string_view source, int max_depth) {
+  const std::string src(source);
+  try {
+    return parse_json_strict(text, max_depth);
+  } catch (const JsonStrictError& e) {
+    throw JsonTextError(src + ": " + (e.path().empty() ? e.message() : std::string(e.what())));
+  } catch (const nlohmann::json::parse_error& e) {
+    throw JsonTextError(src + ":" + json_line_column(text, e.byte > 0 ? e.byte - 1 : 0) +
+                        ": JSON syntax error: " + bare_message(e));
+  } catch (const nlohmann::json::out_of_range& e) {  // 406: a number past a double's range
+    // nlohmann names the literal, not where it is: found in the text for the line and column.
+    const std::string what = e.what();
+    const std::size_t q = what.find("parsing '");
+    std::string literal, at;
+    if (q != std::string::npos) literal = what.substr(q + 9, what.find('\'', q + 9) - (q + 9));
+    if (const std::size_t pos = literal.empty() ? std::string::npos : text.find(literal); pos != std::string::npos)
+      at = ":" + json_line_column(text, pos);
+    throw JsonTextError(src + at + ": the number " + (literal.empty() ? std::string("here") : literal) +
+                        " is past the range of a double");
+  } catch (const nlohmann::json::exception& e) {
+    throw JsonTextError(src + ": JSON error: " + bare_message(e));
+  }
 }
 
 }  // namespace gazelod::aux

@@ -36,4 +36,21 @@ inline constexpr int kDefaultMaxJsonDepth = 64;
 // nlohmann::json::exception for anything else wrong with the text.
 nlohmann::json parse_json_strict(std::string_view text, int max_depth = kDefaultMaxJsonDepth);
 
+// Every way the text can fail to be a document, worded one way after `source` (the file, or
+// what stands for it), for the readers of hand-written JSON (scenarios, budget instances, the
+// layer's configuration, --against):
+//   "SOURCE:3:14: JSON syntax error: syntax error while parsing value - ..."
+//   "SOURCE:2:20: the number 1e999 is past the range of a double"
+//   "SOURCE: scene.objects[2].name: the key appears twice in one object"
+//   "SOURCE: JSON nesting must be at most 64 levels ..."
+// Each reader kept its own wording (byte offsets, nlohmann's "[json.exception.406]" text, an
+// empty path as ": : ").
+class JsonTextError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// parse_json_strict; throws JsonTextError.
+nlohmann::json parse_json_text(std::string_view text, std::string_view source, int max_depth = kDefaultMaxJsonDepth);
+
 }  // namespace gazelod::aux

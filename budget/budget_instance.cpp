@@ -141,13 +141,9 @@ budget::MckpInstance read_budget_instance(const std::string& path) {
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   json doc;
   try {
-    doc = aux::parse_json_strict(text);
-  } catch (const aux::JsonStrictError& e) {
-    throw InstanceError(path + ": " + e.what());
-  } catch (const json::parse_error& e) {
-    throw InstanceError(path + ": JSON parse error at byte " + std::to_string(e.byte) + ": " + e.what());
-  } catch (const json::exception& e) {  // e.g. out_of_range: a number too large for a double
-    throw InstanceError(path + ": JSON error: " + e.what());
+    doc = aux::parse_json_text(text, path);
+  } catch (const aux::JsonTextError& e) {
+    throw InstanceError(e.what());
   }
   return parse_budget_instance(doc, path);
 }

@@ -153,14 +153,9 @@ ConfigResult parse_config_json(const std::string& text, const std::string& file,
   try {
     json j;
     try {
-      j = aux::parse_json_strict(text);
-    } catch (const aux::JsonStrictError& e) {
-      throw Bad{file + ": " + e.what()};
-    } catch (const json::parse_error& e) {
-      // nlohmann's message after its "[json.exception.parse_error.N] " tag.
-      std::string what = e.what();
-      if (const auto p = what.find("] "); p != std::string::npos) what = what.substr(p + 2);
-      throw Bad{file + ": not valid JSON at byte " + std::to_string(e.byte) + ": " + what};
+      j = aux::parse_json_text(text, file);
+    } catch (const aux::JsonTextError& e) {
+      throw Bad{e.what()};
     }
     apply(j, file, r.config);
   } catch (const Bad& b) {

@@ -160,24 +160,9 @@ Scenario load_scenario_json(std::string_view json_text, std::string_view source_
   // pass over it without ever being a valid scenario), and a key given twice is refused.
   nlohmann::json j;
   try {
-    j = aux::parse_json_strict(json_text, kMaxJsonDepth);
-  } catch (const aux::JsonStrictError& e) {
-    throw ScenarioError(source + ": " + (e.path().empty() ? "" : e.path() + ": ") + e.message());
-  } catch (const nlohmann::json::parse_error& e) {
-    throw ScenarioError(source + ":" + aux::json_line_column(json_text, e.byte > 0 ? e.byte - 1 : 0) +
-                        ": JSON syntax error: " + e.what());
-  } catch (const nlohmann::json::out_of_range& e) {  // 406: a number past a double's range
-    // nlohmann names the literal, not where it is: found in the text for the line and column.
-    const std::string what = e.what();
-    const std::size_t q = what.find("parsing '");
-    std::string literal, at;
-    if (q != std::string::npos) literal = what.substr(q + 9, what.find('\'', q + 9) - (q + 9));
-    if (const std::size_t pos = literal.empty() ? std::string::npos : json_text.find(literal); pos != std::string::npos)
-      at = ":" + aux::json_line_column(json_text, pos);
-    throw ScenarioError(source + at + ": the number " + (literal.empty() ? std::string("here") : literal) +
-                        " is past the range of a double");
-  } catch (const nlohmann::json::exception& e) {
-    throw ScenarioError(source + ": JSON error: " + e.what());
+    j = aux::parse_json_text(json_text, source, kMaxJsonDepth);
+  } catch (const aux::JsonTextError& e) {
+    throw ScenarioError(e.what());
   }
   JsonFields f(j, "", source);
   Scenario sc;

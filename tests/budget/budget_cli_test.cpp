@@ -94,7 +94,8 @@ TEST(BudgetCli, ErrorsNameTheJsonPath) {
   expect_error(
       R"({"capacity": 5, "subsets": [[{"profit": 1, "cost": 1}]], "groups": [{"subsets": [0]}, {"subsets": [0]}]})",
       "groups[1].subsets[0]: subset 0 is already in groups[0]");
-  expect_error(R"({"capacity": 5, "subsets": [[{"profit": 1, "cost": 1}]] )", "JSON parse error at byte");
+  expect_error(R"({"capacity": 5, "subsets": [[{"profit": 1, "cost": 1}]] )",
+               ":1:57: JSON syntax error: syntax error while parsing object");
   expect_error(R"({"capacity": 5, "subsets": [[{"profit": 1, "cost": 1, "cost": 9}]]})",
                "subsets[0][0].cost: the key appears twice in one object");
   const Result unknown = budget(kT2, "simplex");

@@ -184,7 +184,7 @@ TEST(FamilyAgainst, AnUnusableEarlierReportIsRefusedBeforeAnySeedRuns) {
   refused(doc(R"({"seed": 1, "audit": {"visible_degradations": {"share": -0.1}}})"),
           "members[0].audit.visible_degradations.share: expected a number >= 0, got a negative or non-finite one");
   refused(doc(R"({"seed": 1, "audit": {"visible_degradations": {"share": 1e400}}})"),
-          "base.json: JSON error: number overflow parsing '1e400'");
+          "base.json:1:111: the number 1e400 is past the range of a double");
   refused(doc(R"({"seed": 1, "audit": {"visible_degradations": {"share": 0}, "triangles_in_view": {}}})"),
           "base.json: members[0].audit.triangles_in_view.drawn_over_oracle: missing");
   refused(doc(two + ", " + one), "base.json: members[1].seed: seeds must increase (1 after 2)");

@@ -71,7 +71,7 @@ TEST(LayerConfig, ErrorsSayWhatAndWhere) {
             "c.json: trace_format: must be \"auto\", \"gazelod\", \"gazebasevr\", \"pupil\", \"pupil_cloud\" or "
             "\"sranipal\", got \"csv\"");
   const std::string syntax = parse_error("{\"override\": tru}");
-  EXPECT_EQ(syntax.rfind("c.json: not valid JSON at byte 17: ", 0), 0u) << syntax;
+  EXPECT_EQ(syntax.rfind("c.json:1:17: JSON syntax error: ", 0), 0u) << syntax;
   EXPECT_EQ(load_config(nullptr, "/no/such/dir/c.json")
                 .error.rfind("GAZELOD_LAYER_CONFIG=/no/such/dir/c.json: cannot open: ", 0),
             0u);

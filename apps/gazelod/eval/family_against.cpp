@@ -66,21 +66,6 @@ std::string text_of(const std::string& path) {
   return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
 
-// nlohmann's message without its "[json.exception.NAME.ID] " tag and "parse error at line L,
-// column C: " (the position is given once, ours).
-std::string json_message(const std::exception& e) {
-  std::string m = e.what();
-  if (m.starts_with("[json.exception.")) {
-    const std::size_t end = m.find("] ");
-    if (end != std::string::npos) m.erase(0, end + 2);
-  }
-  if (m.starts_with("parse error")) {
-    const std::size_t colon = m.find(": ");
-    if (colon != std::string::npos) m.erase(0, colon + 2);
-  }
-  return m;
-}
-
 std::string fmt(const char* f, double v) {
   char b[64];
   std::snprintf(b, sizeof b, f, v);
@@ -158,14 +143,9 @@ FamilyBaseline read_family_baseline(const std::string& path) {
   const std::string text = text_of(path);
   nlohmann::json doc;
   try {
-    doc = aux::parse_json_strict(text);
-  } catch (const aux::JsonStrictError& e) {
-    fail(path, e.path().empty() ? aux::kJsonTopLevel : std::string_view(e.path()), e.message());
-  } catch (const nlohmann::json::parse_error& e) {
-    throw UsageError("--against: " + path + ":" + aux::json_line_column(text, e.byte > 0 ? e.byte - 1 : 0) +
-                     ": JSON syntax error: " + json_message(e));
-  } catch (const nlohmann::json::exception& e) {  // e.g. a number too large for a double
-    throw UsageError("--against: " + path + ": JSON error: " + json_message(e));
+    doc = aux::parse_json_text(text, path);
+  } catch (const aux::JsonTextError& e) {
+    throw UsageError(std::string("--against: ") + e.what());
   }
   FamilyBaseline base;
   base.source = path;

@@ -47,11 +47,9 @@ void set_env(const char* name, const std::string& value) {
 // recurses as deep as the text nests.
 nlohmann::json parse_scenario_text(const std::string& text, const std::string& label) {
   try {
-    return aux::parse_json_strict(text);
-  } catch (const aux::JsonStrictError& e) {
-    throw UsageError(label + ": " + (e.path().empty() ? e.message() : std::string(e.what())));
-  } catch (const nlohmann::json::exception& e) {
-    throw UsageError(label + ": not JSON: " + e.what());
+    return aux::parse_json_text(text, label);
+  } catch (const aux::JsonTextError& e) {
+    throw UsageError(e.what());
   }
 }
 

@@ -142,7 +142,11 @@ MckpSolution solve_exact(const MckpInstance& instance, std::uint64_t node_limit)
   MckpInstance flat = instance;
   flat.groups.clear();
   BranchAndBound bb(flat, node_limit);
-  bb.set_incumbent(solve_mason_full(flat));
+  try {
+    bb.set_incumbent(solve_mason_full(flat));  // the starting answer
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("exact: its starting answer: ") + e.what());
+  }
   const bool finished = bb.run();
   MckpSolution out;
   out.choice.resize(flat.subset_count());

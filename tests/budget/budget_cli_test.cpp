@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -304,6 +305,28 @@ TEST(BudgetCli, LimitOptionsAreChecked) {
   const auto j = nlohmann::json::parse(timed.out);
   EXPECT_EQ(j["selection"], nlohmann::json::parse("[1,1,1]"));
   EXPECT_FALSE(j["truncated"].get<bool>());
+}
+
+// One subset of 50 000 candidates, none dominated: mason-full's rescans (and exact, which starts
+// from its answer) would take seconds to minutes, quadratic in them; refused at once naming the
+// subset, while the linear greedy solves it.
+TEST(BudgetCli, QuadraticRescansAreRefusedForHugeSubsets) {
+  std::string items;
+  for (int i = 1; i <= 50'000; ++i)
+    items += (i > 1 ? "," : "") + std::string("{\"profit\": ") + std::to_string(i) +
+             ", \"cost\": " + std::to_string(i) + "}";
+  const std::string instance = R"({"capacity": 1e12, "subsets": [[{"profit": 1, "cost": 1}], [)" + items + "]]}";
+  for (const char* solver : {"mason-full", "exact"}) {
+    const auto started = std::chrono::steady_clock::now();
+    const Result r = budget(instance, solver, false);
+    EXPECT_EQ(r.code, 2) << solver << r.err;
+    EXPECT_NE(r.err.find("quadratic in them (subset 1 has 50000 after dominated items are dropped); use "
+                         "mason-greedy or mason-incremental"),
+              std::string::npos)
+        << r.err;
+    EXPECT_LT(std::chrono::steady_clock::now() - started, std::chrono::seconds(20)) << solver;
+  }
+  EXPECT_EQ(budget(instance, "mason-greedy", false).code, 0);
 }
 
 }  // namespace

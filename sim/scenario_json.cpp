@@ -216,6 +216,24 @@ Scenario load_scenario_json(std::string_view json_text, std::string_view source_
     }
   }
   f.finish();
+  // The gaze effects compose in list order (sim/scenarios/README.md): `vor` turns the saccades
+  // before it into those of an eye holding the world, and a `smooth_pursuit` after it wins
+  // while active. The other order ran without a word: saccades after the reflex overwrote it,
+  // a reflex after the pursuit held the pursuing eye against the head's rotation.
+  std::size_t vor_at = sc.effects.size(), pursuit_at = sc.effects.size();
+  for (std::size_t i = 0; i < sc.effects.size(); ++i) {
+    const std::string& type = sc.effects[i].type;
+    if (type == "saccades" && vor_at < i)
+      throw_at(source, sc.effects[i].json_path,
+               "saccades must come before vor (" + sc.effects[vor_at].json_path +
+                   "), which turns them into saccades of an eye holding the world; list vor after it");
+    if (type == "vor" && pursuit_at < i)
+      throw_at(source, sc.effects[i].json_path,
+               "vor must come before smooth_pursuit (" + sc.effects[pursuit_at].json_path +
+                   "), which wins while it is active; list smooth_pursuit after it");
+    if (type == "vor" && vor_at == sc.effects.size()) vor_at = i;
+    if (type == "smooth_pursuit" && pursuit_at == sc.effects.size()) pursuit_at = i;
+  }
   // Build every effect once so that bad parameters are reported now, with their path; and
   // add up what effects combine: the tracker latency (each <= 1000 ms, and so all together).
   TrackerTiming timing;

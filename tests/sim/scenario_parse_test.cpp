@@ -124,6 +124,29 @@ TEST(ScenarioParse, EyeGazeFollowsThePresetsTracker) {
   EXPECT_TRUE(load_scenario_json(j.dump(), "q+").runtime.eye_gaze_supported);
 }
 
+// The gaze effects compose in list order; the orders that undo one another are refused with
+// both places named (they ran without a word: saccades after the reflex overwrote it).
+TEST(ScenarioParse, GazeEffectsInAnOrderThatUndoesThemAreRefused) {
+  const auto error_of = [](const nlohmann::json& effects) -> std::string {
+    try {
+      (void)load_scenario_json(base_scenario(effects).dump(), "o.json");
+    } catch (const ScenarioError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  const nlohmann::json saccades = {{"type", "saccades"}}, vor = {{"type", "vor"}},
+                       pursuit = {{"type", "smooth_pursuit"}, {"object", "target"}};
+  EXPECT_EQ(error_of({vor, saccades}),
+            "o.json: effects[1]: saccades must come before vor (effects[0]), which turns them into saccades of an "
+            "eye holding the world; list vor after it");
+  EXPECT_EQ(error_of({saccades, pursuit, vor}),
+            "o.json: effects[2]: vor must come before smooth_pursuit (effects[1]), which wins while it is active; "
+            "list smooth_pursuit after it");
+  EXPECT_EQ(error_of({saccades, vor, pursuit}), "");
+  EXPECT_EQ(error_of({saccades, pursuit}), "");  // no reflex: nothing to order
+}
+
 TEST(ScenarioParse, ToJsonRoundTrips) {
   const Scenario a = load_scenario_json(default_scenario_json(), "<default>");
   const Scenario b = load_scenario_json(scenario_to_json(a), "<written>");

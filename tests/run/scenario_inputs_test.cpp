@@ -4,7 +4,8 @@
 // scenario. Each failed before: the effects were given the scenario's name, not its file, so run
 // read a file of the same name in the working folder (or failed in the runtime, which reads the
 // copy in --out); the name reached nlohmann's dump() and ended the run after its report was
-// printed, with summary.json missing; record turned the scenario into a CSV trace.
+// printed, with summary.json missing; record turned the scenario into a CSV trace, and wrote a
+// trace of no rows where the tracker was as late as the recording was long.
 #include "run_test_util.hpp"
 #include "sim/simulator.hpp"
 
@@ -95,6 +96,21 @@ TEST(ScenarioInputs, RecordOverItsOwnScenarioIsRefused) {
   EXPECT_NE(r.err.find("is the scenario being recorded"), std::string::npos) << r.err;
   std::ifstream kept(dir / "s.json");
   EXPECT_EQ(nlohmann::json::parse(kept), default_scenario()) << "the scenario was overwritten";
+}
+
+// A tracker as late as the whole recording: no sample arrives, so no trace is written (it said
+// "wrote 0 rows" and exited 0, and `run --trace` refused the file later).
+TEST(ScenarioInputs, ARecordingWithNoSampleIsRefused) {
+  const fs::path dir = scratch_dir();
+  nlohmann::json sc = default_scenario();
+  sc["duration_s"] = 0.5;
+  sc["effects"].push_back({{"type", "tracker_latency"}, {"latency_ms", 600}});
+  std::ofstream(dir / "late.json") << sc.dump(2);
+  const CliResult r =
+      run_cli({"scenario", "record", (dir / "late.json").string(), "--out", (dir / "late.csv").string()});
+  EXPECT_EQ(r.rc, 2) << r.err;
+  EXPECT_NE(r.err.find("no sample arrives within the recording's 0.5 s"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "late.csv"));
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include "sim/simulator.hpp"
 
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <stdexcept>
@@ -90,6 +91,14 @@ int run_record(const Options& o, Io io) {
          // signal removes the temporary too (AtomicRunFile)
     AtomicRunFile file(o.out);
     st = sim::record_trace(simulator, file.stream(), ro);
+    // A trace of no samples (a tracker latency of the whole duration or more) is no recording:
+    // `run --trace` refused it later, after this said "wrote 0 rows" and exited 0.
+    if (st.rows == 0) {
+      char seconds[32];
+      std::snprintf(seconds, sizeof seconds, "%g", ro.duration_s > 0 ? ro.duration_s : simulator.scenario().duration_s);
+      throw UsageError(std::string("no sample arrives within the recording's ") + seconds +
+                       " s (the tracker's latency is as long or longer); nothing written");
+    }
     file.commit();
   } catch (const aux::WriteError& e) {
     throw UsageError(std::string("--out: ") + e.what(), 1);

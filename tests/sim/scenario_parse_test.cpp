@@ -147,6 +147,25 @@ TEST(ScenarioParse, GazeEffectsInAnOrderThatUndoesThemAreRefused) {
   EXPECT_EQ(error_of({saccades, pursuit}), "");  // no reflex: nothing to order
 }
 
+// A sweep's peak rate is bounded as head_turn's rate is (300 deg/s): the seam from both sides.
+TEST(ScenarioParse, HeadSweepPeakRateIsBounded) {
+  const auto error_of = [](double amplitude_deg, double period_s) -> std::string {
+    const nlohmann::json sweep = {
+        {"type", "head_sweep"}, {"pitch_amplitude_deg", amplitude_deg}, {"pitch_period_s", period_s}};
+    try {
+      (void)load_scenario_json(base_scenario({sweep}).dump(), "s.json");
+    } catch (const ScenarioError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  const double period_at_300 = 2.0 * M_PI * 30.0 / 300.0;  // 30 deg: 300 deg/s at this period
+  EXPECT_EQ(error_of(30.0, period_at_300 * (1 + 1e-9)), "");
+  EXPECT_EQ(error_of(30.0, period_at_300 * 0.99),
+            "s.json: effects[0].pitch_period_s: gives a peak head rate of 303 deg/s (amplitude x 2 pi / period), "
+            "more than 300");
+}
+
 TEST(ScenarioParse, ToJsonRoundTrips) {
   const Scenario a = load_scenario_json(default_scenario_json(), "<default>");
   const Scenario b = load_scenario_json(scenario_to_json(a), "<written>");

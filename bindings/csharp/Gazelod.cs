@@ -333,8 +333,13 @@ namespace Gazelod
             if (config == null && hmdPreset == null) return IntPtr.Zero;
             gzl_config c = config ?? gzl_config.Create();
             c.type = gzl_structure_type.GZL_TYPE_CONFIG;
-            if (hmdPreset != null) presetPtr = Marshal.StringToHGlobalAnsi(hmdPreset);
-            c.hmd_preset = presetPtr;
+            // hmdPreset, when given, replaces config.hmd_preset; else the caller's own pointer stays
+            // (it was overwritten with null: a preset set in the struct was dropped unseen).
+            if (hmdPreset != null)
+            {
+                presetPtr = Marshal.StringToHGlobalAnsi(hmdPreset);
+                c.hmd_preset = presetPtr;
+            }
             IntPtr p = Marshal.AllocHGlobal(Marshal.SizeOf(typeof(gzl_config)));
             Marshal.StructureToPtr(c, p, false);
             return p;

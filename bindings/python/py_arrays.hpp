@@ -9,6 +9,7 @@
 
 #include <pybind11/numpy.h>
 
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -53,6 +54,38 @@ inline Doubles doubles(const py::handle& o, const std::string& what) {
     if (!e.matches(PyExc_ValueError) && !e.matches(PyExc_TypeError)) throw;
     throw py::value_error(what + " must be numbers, got " + std::string(py::repr(o)));
   }
+}
+
+// An (N, L) table of triangle counts like a levels table: integers in 0 to 2^32 - 1, row-major,
+// each refusal naming the element.
+inline std::vector<std::uint32_t> triangle_table(const py::object& o, py::ssize_t n, py::ssize_t width) {
+  py::array shape;
+  const std::vector<std::int64_t> v = int64s(o, "triangles", &shape);
+  if (shape.ndim() != 2 || shape.shape(0) != n || shape.shape(1) != width)
+    throw py::value_error("triangles must be an (N, L) array like levels");
+  std::vector<std::uint32_t> out(v.size());
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    if (v[k] < 0 || v[k] > std::numeric_limits<std::uint32_t>::max())
+      throw py::value_error("triangles[" + std::to_string(k / width) + ", " + std::to_string(k % width) +
+                            "] = " + std::to_string(v[k]) + " is not a triangle count (0 to 4294967295)");
+    out[k] = static_cast<std::uint32_t>(v[k]);
+  }
+  return out;
+}
+
+// Row i of an (N, L) levels table: how many levels its chain has. NaN pads a shorter chain at
+// the row's end; a level after a NaN is refused (it was dropped unseen).
+inline py::ssize_t chain_length(const Doubles& levels, py::ssize_t i) {
+  const py::ssize_t width = levels.shape(1);
+  const double* row = levels.data() + i * width;
+  py::ssize_t length = width;
+  for (py::ssize_t j = 1; j < width; ++j) {
+    if (length == width && std::isnan(row[j])) length = j;
+    if (length < j && !std::isnan(row[j]))
+      throw py::value_error("levels[" + std::to_string(i) + ", " + std::to_string(j) +
+                            "] follows a NaN (NaN only pads a shorter chain at its end)");
+  }
+  return length;
 }
 
 // A positive pixel count (a Python or numpy integer, not a bool or a float) that fits 32 bits.

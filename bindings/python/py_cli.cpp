@@ -60,7 +60,7 @@ class LineBuf final : public std::streambuf {
     }
     if (on_line_.is_none()) return;
     try {
-      on_line_(line.substr(0, line.size() - 1));
+      on_line_(text_of(line.substr(0, line.size() - 1)));
     } catch (py::error_already_set& e) {
       e.restore();
       PyErr_Fetch(&error_type, &error_value, &error_traceback);
@@ -95,7 +95,7 @@ py::tuple cli(const std::vector<std::string>& args, py::object on_line) {
     if (!PyErr_Occurred()) PyErr_SetNone(PyExc_KeyboardInterrupt);
     throw py::error_already_set();
   }
-  return py::make_tuple(rc, out.str(), errbuf.text);
+  return py::make_tuple(rc, text_of(out.str()), text_of(errbuf.text));
 }
 
 }  // namespace

@@ -127,33 +127,15 @@ class Plugin {
     if (velocities && (velocities->ndim() != 2 || velocities->shape(0) != n || velocities->shape(1) != 3))
       throw py::value_error("velocities must be an (N, 3) array");
     const py::ssize_t width = levels.shape(1);
-    std::vector<std::int64_t> counts;  // triangles, row-major like levels
-    if (triangles) {
-      py::array shape;
-      counts = int64s(*triangles, "triangles", &shape);
-      if (shape.ndim() != 2 || shape.shape(0) != n || shape.shape(1) != width)
-        throw py::value_error("triangles must be an (N, L) array like levels");
-      for (std::size_t k = 0; k < counts.size(); ++k)
-        if (counts[k] < 0 || counts[k] > std::numeric_limits<std::uint32_t>::max())
-          throw py::value_error("triangles[" + std::to_string(k / width) + ", " + std::to_string(k % width) +
-                                "] = " + std::to_string(counts[k]) + " is not a triangle count (0 to 4294967295)");
-    }
+    const std::vector<std::uint32_t> counts =
+        triangles ? triangle_table(*triangles, n, width) : std::vector<std::uint32_t>{};
     py::array_t<std::uint64_t> handles(n);
     std::vector<gzl_level> chain;
     for (py::ssize_t i = 0; i < n; ++i) {
       chain.clear();
-      for (py::ssize_t j = 0; j < width; ++j) {
-        if (j > 0 && std::isnan(levels.at(i, j))) {
-          // NaN pads a shorter chain at its end; a level after it would be dropped unseen.
-          for (py::ssize_t k = j + 1; k < width; ++k)
-            if (!std::isnan(levels.at(i, k)))
-              throw py::value_error("levels[" + std::to_string(i) + ", " + std::to_string(k) +
-                                    "] follows a NaN (NaN only pads a shorter chain at its end)");
-          break;
-        }
-        const auto tri = counts.empty() ? 0u : static_cast<std::uint32_t>(counts[i * width + j]);
-        chain.push_back({j == 0 ? 0.0 : levels.at(i, j), tri});
-      }
+      const py::ssize_t length = chain_length(levels, i);
+      for (py::ssize_t j = 0; j < length; ++j)
+        chain.push_back({j == 0 ? 0.0 : levels.at(i, j), counts.empty() ? 0u : counts[i * width + j]});
       gzl_object_desc d{};
       d.type = GZL_TYPE_OBJECT_DESC;
       d.center_m = {centers.at(i, 0), centers.at(i, 1), centers.at(i, 2)};

@@ -2,6 +2,7 @@
 // gazelod._gazelod: the perceptual core on numpy arrays. ObjectSet holds the objects in the
 // selection's own layout (built once, in C++); select() runs lod::select_lods on them for one
 // viewer, so a call costs the selection and two output arrays, nothing per object in Python.
+#include "bindings/python/py_arrays.hpp"
 #include "bindings/python/py_common.hpp"
 
 #include "lod/display.hpp"
@@ -18,8 +19,6 @@
 namespace gazelod::python {
 namespace {
 
-using Doubles = py::array_t<double, py::array::c_style | py::array::forcecast>;
-
 glm::dvec3 vec3(const Doubles& a, const char* what) {
   if (a.ndim() != 1 || a.shape(0) != 3) throw py::value_error(std::string(what) + " must have 3 components");
   return {a.at(0), a.at(1), a.at(2)};
@@ -32,7 +31,7 @@ struct PyObjects {
 
 // levels: (N, L) of removed detail per level (level 0 ignored); NaN pads a shorter chain.
 PyObjects make_objects(const Doubles& centers, const Doubles& radii, const Doubles& levels, const std::string& kind,
-                       std::optional<Doubles> velocities, std::optional<py::array_t<std::uint32_t>> triangles) {
+                       std::optional<Doubles> velocities, const std::optional<py::object>& triangles) {
   if (centers.ndim() != 2 || centers.shape(1) != 3) throw py::value_error("centers must be an (N, 3) array");
   const py::ssize_t n = centers.shape(0);
   if (radii.ndim() != 1 || radii.shape(0) != n) throw py::value_error("radii must be an (N,) array");
@@ -40,8 +39,6 @@ PyObjects make_objects(const Doubles& centers, const Doubles& radii, const Doubl
     throw py::value_error("levels must be an (N, L) array with L >= 1 (level 0 = full detail)");
   if (velocities && (velocities->ndim() != 2 || velocities->shape(0) != n || velocities->shape(1) != 3))
     throw py::value_error("velocities must be an (N, 3) array");
-  if (triangles && (triangles->ndim() != 2 || triangles->shape(0) != n || triangles->shape(1) != levels.shape(1)))
-    throw py::value_error("triangles must be an (N, L) array like levels");
   lod::DetailKind k;
   if (kind == "geometric_error_m")
     k = lod::DetailKind::geometric_error_m;
@@ -51,6 +48,8 @@ PyObjects make_objects(const Doubles& centers, const Doubles& radii, const Doubl
     throw py::value_error("kind must be 'geometric_error_m' or 'removed_cycles_per_diameter'");
   PyObjects o;
   const py::ssize_t width = levels.shape(1);
+  const std::vector<std::uint32_t> counts =
+      triangles ? triangle_table(*triangles, n, width) : std::vector<std::uint32_t>{};
   o.store.reserve(static_cast<std::size_t>(n), static_cast<std::size_t>(n * width));
   auto c = centers.unchecked<2>();
   auto r = radii.unchecked<1>();
@@ -58,12 +57,12 @@ PyObjects make_objects(const Doubles& centers, const Doubles& radii, const Doubl
   std::vector<lod::LodLevel> chain;
   for (py::ssize_t i = 0; i < n; ++i) {
     chain.clear();
-    for (py::ssize_t j = 0; j < width; ++j) {
-      if (j > 0 && std::isnan(l(i, j))) break;
+    const py::ssize_t length = chain_length(levels, i);
+    for (py::ssize_t j = 0; j < length; ++j) {
       lod::LodLevel level;
       level.detail_kind = k;
       level.detail = j == 0 ? 0.0 : l(i, j);
-      if (triangles) level.triangles = triangles->at(i, j);
+      if (!counts.empty()) level.triangles = counts[i * width + j];
       chain.push_back(level);
     }
     const glm::dvec3 v =
@@ -79,20 +78,25 @@ PyObjects make_objects(const Doubles& centers, const Doubles& radii, const Doubl
 
 lod::Viewer make_viewer(const py::kwargs& kw) {
   lod::Viewer v;
+  // Both set the display's limit: whichever came last won, silently.
+  if (kw.contains("hmd") && kw.contains("xi_cpd"))
+    throw py::value_error("select(): give xi_cpd or hmd (a preset's xi), not both");
   for (auto item : kw) {
     const std::string key = py::str(item.first);
     const py::handle val = item.second;
+    // None is no value: read as False for a flag, it turned a criterion off unseen.
+    if (val.is_none()) throw py::type_error("select(): viewer field '" + key + "' is None");
     try {
       if (key == "gaze_direction")
-        v.gaze_direction = vec3(py::cast<Doubles>(val), "gaze_direction");
+        v.gaze_direction = vec3(doubles(val, "gaze_direction"), "gaze_direction");
       else if (key == "eye_position_m")
-        v.eye_position_m = vec3(py::cast<Doubles>(val), "eye_position_m");
+        v.eye_position_m = vec3(doubles(val, "eye_position_m"), "eye_position_m");
       else if (key == "eye_velocity_m_s")
-        v.eye_velocity_m_s = vec3(py::cast<Doubles>(val), "eye_velocity_m_s");
+        v.eye_velocity_m_s = vec3(doubles(val, "eye_velocity_m_s"), "eye_velocity_m_s");
       else if (key == "head_angular_velocity_rad_s")
-        v.head_angular_velocity_rad_s = vec3(py::cast<Doubles>(val), key.c_str());
+        v.head_angular_velocity_rad_s = vec3(doubles(val, key), key.c_str());
       else if (key == "gaze_angular_velocity_in_head_rad_s")
-        v.gaze_angular_velocity_in_head_rad_s = vec3(py::cast<Doubles>(val), key.c_str());
+        v.gaze_angular_velocity_in_head_rad_s = vec3(doubles(val, key), key.c_str());
       else if (key == "xi_cpd")
         v.xi_cpd = py::cast<double>(val);
       else if (key == "tracker_error_deg")

@@ -127,7 +127,7 @@ void register_trace(py::module_& m) {
     try {
       if (p) std::rethrow_exception(p);
     } catch (const gaze::TraceError& e) {
-      PyErr_SetString(PyExc_ValueError, e.what());
+      PyErr_SetString(PyExc_ValueError, utf8_of(e.what()).c_str());
     }
   });
   m.def("read_trace", &read_trace, py::arg("path"), py::arg("format") = "auto", py::arg("lenient") = false);

@@ -115,3 +115,52 @@ def test_handles_in_any_shape():
     p.remove(column)
     with pytest.raises(ValueError, match="was removed"):
         p.remove(h[:1])
+
+
+def test_object_set_follows_the_plugins_rules():
+    """ObjectSet (select's objects) refuses what Plugin.add_objects refuses: a level after a NaN
+    pad was dropped, 2**32 + 5 triangles wrapped to 5, -1 to 4294967295."""
+    with pytest.raises(ValueError, match=r"levels\[0, 2\] follows a NaN"):
+        gazelod.ObjectSet(CENTERS[:1], RADII[:1], np.array([[0, np.nan, 0.01, 0.1]]))
+    with pytest.raises(ValueError, match=r"triangles\[0, 0\] = 4294967301 is not a triangle count"):
+        gazelod.ObjectSet(CENTERS[:1], RADII[:1], LEVELS[:1], triangles=np.array([[2**32 + 5, 50, 10]]))
+    with pytest.raises(ValueError, match=r"triangles\[0, 1\] = -1 is not a triangle count"):
+        gazelod.ObjectSet(CENTERS[:1], RADII[:1], LEVELS[:1], triangles=[[100, -1, 10]])
+    with pytest.raises(ValueError, match=r"triangles must hold integers"):
+        gazelod.ObjectSet(CENTERS[:1], RADII[:1], LEVELS[:1], triangles=[[100.5, 50, 10]])
+    objects = gazelod.ObjectSet(CENTERS, RADII, np.array([[0, 0.002, 0.008], [0, 0.002, np.nan]]))
+    assert len(objects) == 2
+
+
+def test_select_viewer_fields_are_not_guessed():
+    objects = gazelod.ObjectSet(CENTERS, RADII, LEVELS)
+    with pytest.raises(ValueError, match=r"give xi_cpd or hmd \(a preset's xi\), not both"):
+        gazelod.select(objects, hmd="questpro", xi_cpd=1.0)
+    with pytest.raises(TypeError, match=r"viewer field 'use_size' is None"):
+        gazelod.select(objects, use_size=None)
+    with pytest.raises(ValueError, match=r"gaze_direction must be numbers, got 'abc'"):
+        gazelod.select(objects, gaze_direction="abc")
+
+
+def test_paths_that_are_not_utf8(tmp_path):
+    """A recording named in Latin-1 (os.listdir gives it surrogate-escaped) opens, and its
+    errors name it; bytes paths work in every call (str(b"...") passed "b'...'")."""
+    good = tmp_path / "caf\udce9.csv"  # the bytes b"caf\xe9.csv" on disk
+    with open(good, "w") as f:
+        f.write("t_ns,gaze_x,gaze_y,gaze_z\n0,0,0,-1\n4000000,0,0,-1\n8000000,0,0,-1\n")
+    assert gazelod.read_trace(good)["t_ns"].tolist() == [0, 4_000_000, 8_000_000]
+    assert gazelod.read_trace(bytes(good))["t_ns"].size == 3
+    assert gazelod.trace_stats(bytes(good))["samples"] == 3
+    assert gazelod.trace_stats(good)["samples"] == 3
+    bad = tmp_path / "bad\udce9.csv"
+    with open(bad, "w") as f:
+        f.write("t_ns,gaze_x,gaze_y,gaze_z\n0,0,0\n")
+    with pytest.raises(ValueError, match="bad\ufffd.csv:2"):
+        gazelod.read_trace(bad)
+
+
+def test_run_and_compare_arguments():
+    with pytest.raises(TypeError, match="frames must be an integer, got 1.7"):
+        gazelod.run(frames=1.7)
+    rows = gazelod.compare("questpro", frames=3)  # one name, not its letters
+    assert [r["hmd"] for r in rows] == ["questpro"]

@@ -79,6 +79,7 @@ static class GazelodTest
             FunctionCheck(args[1]);
             Console.WriteLine("== data mode");
             DataMode();
+            ConfigPresetInTheStruct();
             Console.WriteLine("== OpenXR mode");
             if (args.Length == 3) Console.WriteLine("skipped (--skip-openxr: no simulated OpenXR runtime in this build)");
             else OpenXrMode();
@@ -264,6 +265,31 @@ static class GazelodTest
         head.flags = (uint)(gzl_head_flag_bits.GZL_HEAD_POSE_VALID | gzl_head_flag_bits.GZL_HEAD_ANGULAR_VELOCITY_VALID |
                             gzl_head_flag_bits.GZL_HEAD_LINEAR_VELOCITY_VALID);
         return head;
+    }
+
+    // A preset set in gzl_config.hmd_preset itself reaches gzl_create_data: MarshalConfig wrote
+    // null over it, so a preset given that way was dropped (the default xi) and a bogus one taken.
+    static void ConfigPresetInTheStruct()
+    {
+        IntPtr bogus = Marshal.StringToHGlobalAnsi("nope"), questpro = Marshal.StringToHGlobalAnsi("questpro");
+        try
+        {
+            var c = gzl_config.Create();
+            c.hmd_preset = bogus;
+            ExpectError(gzl_result.GZL_ERROR_INVALID_ARGUMENT, "a bogus preset in the config struct",
+                        () => Plugin.CreateData(QuestProViews(), c).Dispose());
+            c.hmd_preset = questpro;
+            using (Plugin plugin = Plugin.CreateData(QuestProViews(), c))
+            {
+                plugin.BeginFrameData(1000000000L, StillHead());
+                Check(Math.Abs(plugin.GetFrameInfo().xi_cpd - 10.0) < 1e-9, "the struct's preset sets xi (Quest Pro: 10 c/deg)");
+            }
+        }
+        finally
+        {
+            Marshal.FreeHGlobal(bogus);
+            Marshal.FreeHGlobal(questpro);
+        }
     }
 
     static void DataMode()

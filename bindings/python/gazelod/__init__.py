@@ -12,6 +12,7 @@ docs/python.md has a worked example. Errors in inputs raise ValueError with the 
 and column (or the field) at fault; Ctrl-C stops a long run cleanly (KeyboardInterrupt).
 """
 import json as _json
+import operator as _operator
 import os as _os
 import re as _re
 import tempfile as _tempfile
@@ -32,14 +33,14 @@ def read_trace(path, format="auto", lenient=False):
     valid (bool), direction (N, 3, head space), origin_m, confidence, and with head poses
     head_valid, head_orientation_xyzw, head_position_m; 'format' the layout read. A bad file
     raises ValueError naming the file, line and column."""
-    return _gazelod.read_trace(_os.fspath(path), format, lenient)
+    return _gazelod.read_trace(_os.fsencode(path), format, lenient)
 
 
 def classify(path, format="auto"):
     """The I-VT classification `gazelod trace stats` counts: per-sample label (0 fixation,
     1 saccade, 2 invalid, 3 unknown) and velocity_deg_s, the saccade and fixation events, and
     the stats (classified in the world where the trace has head poses)."""
-    return _gazelod.classify(_os.fspath(path), format)
+    return _gazelod.classify(_os.fsencode(path), format)
 
 
 def _installed_runtime_manifest():
@@ -59,9 +60,20 @@ if "XR_RUNTIME_JSON" not in _os.environ:
         _os.environ["XR_RUNTIME_JSON"] = _manifest
 
 
+def _frames(frames):
+    """A frame count as given: int(1.7) ran one frame."""
+    try:
+        return _operator.index(frames)
+    except TypeError:
+        raise TypeError(f"frames must be an integer, got {frames!r}") from None
+
+
 def _command(args, on_line=None):
     """Runs a gazelod command in-process; raises ValueError with its message when it fails."""
-    rc, out, err = _gazelod._cli([str(a) for a in args], on_line)
+    # Paths as the file system's bytes (os.fsencode): a name that is not UTF-8 reached pybind11
+    # as a str it could not convert, and str(b"...") passed "b'...'" as the path.
+    rc, out, err = _gazelod._cli([_os.fsencode(a) if isinstance(a, (str, bytes, _os.PathLike)) else str(a)
+                                  for a in args], on_line)
     if rc != 0:
         lines = [l for l in err.splitlines() if l.strip() and " frame " not in l]
         raise ValueError(lines[-1] if lines else f"gazelod {args[0]} failed ({rc})")
@@ -161,13 +173,13 @@ def run(scenario=None, *, frames=None, hmd=None, trace=None, audit=True, criteri
     (done, total) or True for tqdm; out: a folder for the report files (None: a temporary one).
     """
     with _tempfile.TemporaryDirectory(prefix="gazelod-run-") as tmp:
-        folder = str(out) if out is not None else _os.path.join(tmp, "out")
+        folder = _os.fspath(out) if out is not None else _os.path.join(tmp, "out")
         decisions = _os.path.join(tmp, "decisions.csv")
         args = ["run", "--no-render", "--out", folder, "--decisions", decisions]
         if scenario is not None:
             args += ["--scenario", _os.fspath(scenario)]
         if frames is not None:
-            args += ["--frames", int(frames)]
+            args += ["--frames", _frames(frames)]
         if hmd is not None:
             args += ["--hmd", hmd]
         if trace is not None:
@@ -195,12 +207,12 @@ def compare(hmds, scenario=None, *, frames=None):
     print no progress; Ctrl-C stops it (KeyboardInterrupt)."""
     with _tempfile.TemporaryDirectory(prefix="gazelod-compare-") as tmp:
         args = ["compare", "--json", "--out", tmp]
-        for h in hmds:
+        for h in [hmds] if isinstance(hmds, str) else hmds:  # one name, or several
             args += ["--hmd", h]
         if scenario is not None:
             args += ["--scenario", scenario]
         if frames is not None:
-            args += ["--frames", int(frames)]
+            args += ["--frames", _frames(frames)]
         out, _ = _command(args)
     rows = []
     for e in _json.loads(out)["hmds"]:

@@ -16,6 +16,9 @@ constexpr std::int64_t kUnixEpochTicks = 621'355'968'000'000'000;  // 1970-01-01
 constexpr std::int64_t kOriginValid = 1 << 0, kDirectionValid = 1 << 1;
 constexpr double kMaxOriginMm = 1000.0;
 constexpr double kMaxHeadPositionM = 1e6;
+// Unity writes Euler angles in [0, 360); past two turns a value is no angle it wrote (1e308 deg
+// turned the head at random and raised the peak saccade speed from 451 to 2941 deg/s).
+constexpr double kMaxHeadAngleDeg = 720.0;
 
 const char* const kValid[2] = {"eye_valid_L", "eye_valid_R"};
 const char* const kDirection[2][3] = {{"gaze_direct_L.x", "gaze_direct_L.y", "gaze_direct_L.z"},
@@ -146,7 +149,11 @@ void SranipalReader::parse_row(TraceRecord& out) {
         c.fail(c.fields()[head_->position[k]].column, std::string(kHeadPosition[k]) + ": beyond 1000 km of the origin");
     out.head.t_ns = out.gaze.t_ns;
     out.head.position_m = {p.x, p.y, -p.z};
-    out.head.orientation = unity_euler_deg_to_openxr(vec(head_->rotation, kHeadRotation));
+    const glm::dvec3 euler_deg = vec(head_->rotation, kHeadRotation);
+    for (std::size_t k = 0; k < 3; ++k)
+      if (std::fabs(euler_deg[static_cast<glm::length_t>(k)]) > kMaxHeadAngleDeg)
+        c.fail(c.fields()[head_->rotation[k]].column, std::string(kHeadRotation[k]) + ": beyond +-720 deg");
+    out.head.orientation = unity_euler_deg_to_openxr(euler_deg);
     out.head.valid = true;
   }
 }

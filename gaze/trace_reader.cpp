@@ -17,6 +17,11 @@ namespace {
 
 namespace tf = trace_format;
 
+// Physical ranges, as the SRanipal importer has them: an eye within 1 m of the head's origin, a
+// head within 1000 km of the world's. A head at 1e308 m passed, and the run drew nothing in view.
+constexpr double kMaxEyeOffsetM = 1.0;
+constexpr double kMaxHeadPositionM = 1e6;
+
 int parse_version(const CsvCursor& c) {
   for (const std::string& comment : c.leading_comments()) {
     std::string_view s(comment);
@@ -137,7 +142,14 @@ void TraceReader::parse_row(TraceRecord& out) {
     if (std::fabs(n - 1.0) > kUnitTolerance)
       c.fail(gaze_col, "gaze vector is not unit length (|g| = " + std::to_string(n) + ")");
   }
-  if (eye_) g.origin_m = {c.number(eye_->x, tf::kEyeX), c.number(eye_->y, tf::kEyeY), c.number(eye_->z, tf::kEyeZ)};
+  if (eye_) {
+    g.origin_m = {c.number(eye_->x, tf::kEyeX), c.number(eye_->y, tf::kEyeY), c.number(eye_->z, tf::kEyeZ)};
+    const std::size_t cols[3] = {eye_->x, eye_->y, eye_->z};
+    const std::string_view names[3] = {tf::kEyeX, tf::kEyeY, tf::kEyeZ};
+    for (int k = 0; k < 3; ++k)
+      if (std::fabs(g.origin_m[k]) > kMaxEyeOffsetM)
+        c.fail(c.fields()[cols[k]].column, std::string(names[k]) + ": beyond 1 m of the head's origin");
+  }
 
   out.has_head = false;
   if (head_q_) {
@@ -155,9 +167,15 @@ void TraceReader::parse_row(TraceRecord& out) {
       const double qn = std::sqrt(glm::dot(h.orientation, h.orientation));
       if (std::fabs(qn - 1.0) > kUnitTolerance)
         c.fail(c.fields()[head_q_->w].column, "head quaternion is not unit length (|q| = " + std::to_string(qn) + ")");
-      if (head_p_)
+      if (head_p_) {
         h.position_m = {c.number(head_p_->x, tf::kHeadPx), c.number(head_p_->y, tf::kHeadPy),
                         c.number(head_p_->z, tf::kHeadPz)};
+        const std::size_t cols[3] = {head_p_->x, head_p_->y, head_p_->z};
+        const std::string_view names[3] = {tf::kHeadPx, tf::kHeadPy, tf::kHeadPz};
+        for (int k = 0; k < 3; ++k)
+          if (std::fabs(h.position_m[k]) > kMaxHeadPositionM)
+            c.fail(c.fields()[cols[k]].column, std::string(names[k]) + ": beyond 1000 km of the origin");
+      }
       h.valid = true;
       if (head_valid_) {
         const auto& f = c.field(*head_valid_, tf::kHeadValid);

@@ -177,6 +177,7 @@ TEST(Sranipal, ErrorsNameFileLineAndColumn) {
   has(kHeader + row(kTicks, 31, 31, "0;0;1;0,06;0;0,998"),
       "gaze_direct_R.x: '0,06' has a decimal comma (the logger wrote its locale's numbers)");
   has(kHeader + row(kTicks, 31, 31, "0;0;1;0;0;1", "0;1.6;2e7;0;0;0"), "helmet_pos_z: beyond 1000 km of the origin");
+  has(kHeader + row(kTicks, 31, 31, "0;0;1;0;0;1", "0;1.6;0;0;1e308;0"), "helmet_rot_y: beyond +-720 deg");
   has("time(100ns),eye_valid_L,eye_valid_R\n", "in.csv:1: an SRanipal (HTC Vive Pro Eye) header separated by commas");
   // Lenient: the bad row is skipped and listed, the rest read.
   std::istringstream in(kHeader + row(kTicks, 32, 31, "0;0;1;0;0;1") + row(kTicks + 1, 31, 31, "0;0;1;0;0;1"));

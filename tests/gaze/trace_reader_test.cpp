@@ -148,6 +148,16 @@ TEST(TraceReader, ErrorsNameLineAndColumn) {
   EXPECT_NE(error_of(h + "1,0,0,inf,1\n").find("infinite"), std::string::npos);
   // Invalid samples may carry a zero vector (blinks); equal timestamps are not backwards.
   EXPECT_EQ(error_of(h + "1,0,0,0,0\n1,0,0,-1,1\n"), "");
+  // Physical ranges: an eye within 1 m of the head, a head within 1000 km (1e308 passed).
+  const std::string eh =
+      "t_ns,gaze_x,gaze_y,gaze_z,eye_px,eye_py,eye_pz,head_qw,head_qx,head_qy,head_qz,"
+      "head_px,head_py,head_pz\n";
+  EXPECT_NE(error_of(eh + "1,0,0,-1,1e300,0,0,1,0,0,0,0,0,0\n").find("t.csv:2:10: eye_px: beyond 1 m of the head's"),
+            std::string::npos)
+      << error_of(eh + "1,0,0,-1,1e300,0,0,1,0,0,0,0,0,0\n");
+  EXPECT_NE(error_of(eh + "1,0,0,-1,0.03,0,0,1,0,0,0,0,1e308,0\n").find("head_py: beyond 1000 km of the origin"),
+            std::string::npos);
+  EXPECT_EQ(error_of(eh + "1,0,0,-1,0.03,0,0,1,0,0,0,0,1.6,999999\n"), "");
 }
 
 TEST(TraceReader, LenientSkipsAndReportsEveryBadLine) {

@@ -84,6 +84,10 @@ TEST(RunOutputs, RefusedUpFrontWritesNothing) {
   huge["frame_rate_hz"] = 1000;
   { std::ofstream(dir / "huge.json") << huge.dump(); }
   { std::ofstream(dir / "empty.csv") << "t_ns,gaze_x,gaze_y,gaze_z\n"; }
+  {
+    std::ofstream(dir / "blind.csv")
+        << "t_ns,gaze_x,gaze_y,gaze_z,valid\n0,0,0,-1,0\n4000000,0,0,-1,0\n8000000,0,0,-1,1\n";
+  }
   struct Case {
     std::vector<std::string> args;
     std::string message;
@@ -95,6 +99,8 @@ TEST(RunOutputs, RefusedUpFrontWritesNothing) {
       {{"--runtime", "nosuch"}, "--runtime: must be 'sim' or 'system'"},
       {{"--cluster-decisions", (dir / "c.csv").string()}, "--cluster-decisions: the scene has no cluster meshes"},
       {{"--trace", (dir / "empty.csv").string(), "--trace-head", "scenario"}, "has no samples"},
+      // One valid sample: no gaze to replay (it ran with the gaze "valid in 0.0% of frames").
+      {{"--trace", (dir / "blind.csv").string()}, "has 1 valid gaze sample of 3; a replay needs at least two"},
       {{"--decisions", (dir / "missing" / "d.csv").string()}, "--decisions: cannot write", 1},
   };
   for (const bool earlier : {false, true}) {

@@ -18,6 +18,7 @@
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <set>
@@ -346,6 +347,14 @@ std::shared_ptr<TraceFromFirstFrame> make_external_source(const RunOptions& opt)
     auto stream = gaze::open_trace(opt.trace_path, gaze::TraceFormat::automatic);
     auto records = gaze::ReplaySource::load(*stream);
     if (records.empty()) throw UsageError("--trace: '" + opt.trace_path + "' has no samples");
+    // A recording without two valid samples has no gaze to replay: the run went on with the
+    // gaze "valid in 0.0% of frames" and no word (eval family --recording refuses it too).
+    const auto valid =
+        std::count_if(records.begin(), records.end(), [](const gaze::TraceRecord& r) { return r.gaze.valid; });
+    if (valid < 2)
+      throw UsageError("--trace: '" + opt.trace_path + "' has " + std::to_string(valid) + " valid gaze sample" +
+                       (valid == 1 ? "" : "s") + " of " + std::to_string(records.size()) +
+                       "; a replay needs at least two");
     return std::make_shared<TraceFromFirstFrame>(std::move(records));
   } catch (const gaze::TraceError& e) {
     throw UsageError(std::string("--trace: ") + e.what());

@@ -144,7 +144,10 @@ void PupilCloudReader::parse_row(TraceRecord& out) {
   const PupilCloudEventIds ids{event_id(fixation_id_, kFixationId), event_id(blink_id_, kBlinkId)};
 
   // Nothing below throws: the reader's state advances only for an accepted row.
-  const bool blink = in_blink(t);
+  // Without a blinks file (a pipe, a renamed export) the gaze's own `blink id` marks the same
+  // samples: the blinks were dropped without a word, 2 376 of the sample export's 8 567 samples
+  // read valid.
+  const bool blink = blinks_.file.empty() ? ids.blink_id != 0 : in_blink(t);
   samples_in_blinks_ += blink;
   if (!have_first_) {
     first_unix_ns_ = t;

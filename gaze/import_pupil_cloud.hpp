@@ -26,7 +26,8 @@
 // Blinks: blinks.csv beside the gaze file (pupil_cloud_blinks_path) lists blink intervals;
 // a sample with start <= t < end (end is the first sample after the blink: in the sample export
 // exactly the samples carrying that `blink id`) is marked as gazelod traces mark blinks:
-// valid = false, confidence 0 (trace_format.hpp `valid`).
+// valid = false, confidence 0 (trace_format.hpp `valid`). Without a blinks file, the samples
+// that carry a `blink id` are marked so.
 #pragma once
 
 #include "gaze/record_stream.hpp"
@@ -73,7 +74,7 @@ class PupilCloudReader : public CsvRecordStream {
   bool has_fixation_ids() const { return fixation_id_.has_value(); }
   bool has_blink_ids() const { return blink_id_.has_value(); }
   const PupilCloudBlinks& blinks() const { return blinks_; }
-  std::size_t samples_in_blinks() const { return samples_in_blinks_; }  // marked invalid so far
+  std::size_t samples_in_blinks() const { return samples_in_blinks_; }  // marked invalid so far (file or blink id)
 
  protected:
   void parse_row(TraceRecord& out) override;

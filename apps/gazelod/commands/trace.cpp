@@ -98,7 +98,8 @@ void print_category(std::ostream& out, std::string_view what, const std::optiona
 void print_agreement(std::ostream& out, const gaze::ReferenceAgreement& a) {
   out << "agreement with Pupil Cloud's fixation id / blink id, per sample\n";
   if (a.blinks_file.empty())
-    out << "  blinks file: none beside the trace, only worn = 0 makes samples invalid\n";
+    out << "  blinks file: none beside the trace; the samples with a blink id (" << a.samples_in_blinks
+        << ") made invalid, so blink agreement checks that import\n";
   else
     out << "  blinks file: " << a.blinks_file << ", " << a.blinks_in_file << " blinks, " << a.samples_in_blinks
         << " samples made invalid (so blink agreement checks that import)\n";

@@ -27,7 +27,9 @@ std::string format_summary(const BakeReport& r) {
                     k == 0 ? std::to_string(std::lround(m.seconds * 1000.0)).c_str() : "");
       s << line;
     }
-    if (!m.note.empty()) s << "  note: " << m.name << " " << m.note << "\n";
+    // The mesh's index as the table names it (a nameless mesh gave "note:  stops at ...").
+    if (!m.note.empty())
+      s << "  note: mesh " << m.mesh << (m.name.empty() ? "" : " " + m.name) << " " << m.note << "\n";
   }
   // Warnings before the total: a run ends with its result.
   for (const std::string& w : r.warnings) s << "warning: " << w << "\n";

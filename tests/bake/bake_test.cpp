@@ -3,6 +3,7 @@
 #include "bake/bake.hpp"
 #include "bake/detail.hpp"
 #include "bake/gltf_load.hpp"
+#include "bake/summary.hpp"
 #include "tests/bake/test_meshes.hpp"
 
 #include <gtest/gtest.h>
@@ -221,6 +222,12 @@ TEST(Bake, TooSmallMeshEndsItsChainEarlyAndSaysWhy) {
   ASSERT_EQ(r.meshes.size(), 1u);
   EXPECT_LT(r.meshes[0].levels.size(), 4u);
   EXPECT_NE(r.meshes[0].note.find("cannot get below"), std::string::npos);
+  // The summary names the mesh by its index as its table does (a nameless one gave "note:  ").
+  const std::string summary = format_summary(r);
+  EXPECT_NE(summary.find("  note: mesh 0" + std::string(r.meshes[0].name.empty() ? "" : " " + r.meshes[0].name) +
+                         " stops at level"),
+            std::string::npos)
+      << summary;
   const Model out = load_gltf(dir + "/out.glb").model;
   EXPECT_EQ(
       out.nodes[0].extensions.count("MSFT_lod") ? out.nodes[0].extensions.at("MSFT_lod").Get("ids").ArrayLen() + 1 : 1u,

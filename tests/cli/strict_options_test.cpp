@@ -36,6 +36,7 @@ TEST(StrictOptions, NumbersListsAndSourcesAreRefusedWithTheOption) {
       {{"run", "--criteria", "size,", "--no-render"}, "--criteria: an empty item in 'size,'"},
       {{"run", "--criteria", "velocity,size,velocity", "--no-render"}, "--criteria: 'velocity' twice"},
       {{"run", "--trace", "a.csv", "--gaze", "trace:b.csv", "--no-render"}, "two traces; give one"},
+      {{"run", "--trace", "a.csv", "--gaze", "runtime", "--no-render"}, "--gaze runtime and --trace: choose one"},
       {{"compare", "--hmd", "questpro", "--hmd", "questpro"}, "--hmd: 'questpro' twice"},
       {{"bake", "in.glb", "-o", "out.glb", "--levels", "0"}, "--levels: must be in [2, 16], got 0"},
   };

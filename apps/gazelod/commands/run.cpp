@@ -97,6 +97,9 @@ const Registrar reg(
           throw UsageError("--gaze: '" + *gaze_source + "' (use runtime, hid or trace:FILE)");
         }
         if (o.hid_gaze && !o.trace_path.empty()) throw UsageError("--gaze hid and --trace: choose one gaze source");
+        // --gaze runtime said the runtime's eye gaze, and the trace won without a word.
+        if (*gaze_source == "runtime" && !o.trace_path.empty())
+          throw UsageError("--gaze runtime and --trace: choose one gaze source");
         if (*trace_head != "recorded" && *trace_head != "scenario")
           throw UsageError("--trace-head: '" + *trace_head + "' (use recorded or scenario)");
         if (app.count("--trace-head") > 0 && o.trace_path.empty()) throw UsageError("--trace-head: needs --trace");

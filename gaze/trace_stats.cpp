@@ -112,7 +112,9 @@ TraceStats compute_trace_stats(RecordStream& stream, IvtOptions ivt, EventOption
     st.last_ns = r.gaze.t_ns;
     ++st.samples;
     st.invalid += !r.gaze.valid;
-    st.with_head += r.has_head;
+    // A valid pose only: a row whose head cells say head_valid = 0 is no pose, and counting it
+    // printed "with head pose 1665" beside "in the head: no head poses".
+    st.with_head += r.has_head && r.head.valid;
     if (r.has_head && r.head.valid) {
       if (!last_head && st.samples > 1) {  // from head to world: no velocity across the switch
         classifier.finish(labeled);

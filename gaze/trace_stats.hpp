@@ -38,7 +38,7 @@ struct ReferenceAgreement {
 struct TraceStats {
   std::size_t samples = 0;
   std::size_t invalid = 0;
-  std::size_t with_head = 0;
+  std::size_t with_head = 0;  // samples with a valid head pose
   std::int64_t first_ns = 0, last_ns = 0;
   double duration_s = 0.0;        // last - first sample time
   double rate_hz = 0.0;           // (samples - 1) / duration; 0 with < 2 samples

@@ -142,6 +142,21 @@ TEST(TraceCli, StatsSwitchToTheWorldAtTheFirstHeadPoseWithoutAFalseSaccade) {
   EXPECT_EQ(j["saccades"].get<int>(), 0);
 }
 
+// Head cells marked head_valid = 0 are no pose: counted as one, they printed "with head pose 3"
+// beside "in the head: no head poses".
+TEST(TraceCli, StatsCountOnlyValidHeadPoses) {
+  const fs::path p = temp_file("headless.csv");
+  write_text(p,
+             "t_ns,gaze_x,gaze_y,gaze_z,head_qw,head_qx,head_qy,head_qz,head_valid\n"
+             "0,0,0,-1,1,0,0,0,0\n4000000,0,0,-1,1,0,0,0,0\n8000000,0,0,-1,1,0,0,0,0\n");
+  Result r = run({"trace", "stats", p.string()});
+  ASSERT_EQ(r.rc, 0) << r.err;
+  EXPECT_NE(r.out.find("with head pose    0"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("in the head: no head poses"), std::string::npos) << r.out;
+  r = run({"trace", "stats", p.string(), "--json"});
+  EXPECT_EQ(nlohmann::json::parse(r.out).at("samples_with_head"), 0);
+}
+
 TEST(TraceCli, MalformedFileExitsNonZeroNamingTheLine) {
   const fs::path p = temp_file("bad.csv");
   write_text(p, "t_ns,gaze_x,gaze_y,gaze_z\n0,0,0,-1\n4000000,0,0,x\n");

@@ -85,6 +85,11 @@ TEST(RunOutputs, RefusedUpFrontWritesNothing) {
   { std::ofstream(dir / "huge.json") << huge.dump(); }
   { std::ofstream(dir / "empty.csv") << "t_ns,gaze_x,gaze_y,gaze_z\n"; }
   {
+    std::ofstream(dir / "late_bad.csv") << "t_ns,gaze_x,gaze_y,gaze_z,head_qw,head_qx,head_qy,head_qz\n"
+                                           "0,0,0,-1,1,0,0,0\n4000000,0,0,-1,1,0,0,0\n8000000,0,0,-1,1,0,0,0\n"
+                                           "12000000,0,0,-1,1,0\n";
+  }
+  {
     std::ofstream(dir / "blind.csv")
         << "t_ns,gaze_x,gaze_y,gaze_z,valid\n0,0,0,-1,0\n4000000,0,0,-1,0\n8000000,0,0,-1,1\n";
   }
@@ -99,6 +104,9 @@ TEST(RunOutputs, RefusedUpFrontWritesNothing) {
       {{"--runtime", "nosuch"}, "--runtime: must be 'sim' or 'system'"},
       {{"--cluster-decisions", (dir / "c.csv").string()}, "--cluster-decisions: the scene has no cluster meshes"},
       {{"--trace", (dir / "empty.csv").string(), "--trace-head", "scenario"}, "has no samples"},
+      // A bad row after the first head pose: named in the trace, not as the scenario's effect
+      // the --trace head adds ("default + --trace head: effects[7].file: ...").
+      {{"--trace", (dir / "late_bad.csv").string()}, "--trace: " + (dir / "late_bad.csv").string() + ":5:"},
       // One valid sample: no gaze to replay (it ran with the gaze "valid in 0.0% of frames").
       {{"--trace", (dir / "blind.csv").string()}, "has 1 valid gaze sample of 3; a replay needs at least two"},
       {{"--decisions", (dir / "missing" / "d.csv").string()}, "--decisions: cannot write", 1},

@@ -127,8 +127,10 @@ std::string with_trace_head(const std::string& text, const std::string& trace_pa
   try {
     auto stream = gaze::open_trace(trace_path, gaze::TraceFormat::automatic);
     gaze::TraceRecord r;
+    // Read whole: a bad row past the first pose was reported later by the scenario loader, as
+    // an effect the user never wrote ("default + --trace head: effects[7].file: ...").
     if (stream->has_head())
-      while (!head && stream->next(r)) head = r.has_head && r.head.valid;
+      while (stream->next(r)) head = head || (r.has_head && r.head.valid);
   } catch (const gaze::TraceError& e) {
     throw UsageError(std::string("--trace: ") + e.what());
   }

@@ -75,6 +75,7 @@ int Session::run() {
 
 // The runtime's events, a stop signal, and the end of the planned frames.
 bool Session::handle_events_and_signals() {
+  drain_thread_log();
   for (;;) {
     const bool keep_going = app_->poll_events([&](XrSessionState s, XrTime t) {
       if (s == XR_SESSION_STATE_STOPPING || s == XR_SESSION_STATE_EXITING || s == XR_SESSION_STATE_LOSS_PENDING)
@@ -214,6 +215,7 @@ void Session::progress_line(std::uint64_t cluster_triangles) {
 
 // The summary printed and returned, the report files and the decisions files committed.
 int Session::finish() {
+  drain_thread_log();
   RunInfo info;
   info.scenario = prepared_.label;
   info.hmd = opt_.hmd.empty() ? scenario_.display.name : opt_.hmd;

@@ -105,8 +105,12 @@ int Session::open_runtime_and_plugin() {
     gaze::hid::HidTrackerConfig hid;
     const xr_host::XrApp* host = &*app_;
     hid.host_now_ns = [host] { return static_cast<std::int64_t>(host->now()); };
-    hid.log = [this](const std::string& line) {
-      if (!opt_.quiet) io_.err << line << "\n";  // already "gazelod hid: ..."
+    hid.log = [log = thread_log_](const std::string& line) {  // the reader thread's: queued
+      const std::lock_guard<std::mutex> lock(log->mutex);
+      if (log->lines.size() < ThreadLog::kMaxLines)
+        log->lines.push_back(line);  // already "gazelod hid: ..."
+      else
+        ++log->dropped;
     };
     config.external_source = std::make_shared<gaze::hid::HidGazeSource>(std::move(hid));
   }
@@ -116,6 +120,20 @@ int Session::open_runtime_and_plugin() {
                               app_->local_space(), config);
   say_source_changes();
   return 0;
+}
+
+// The HID reader thread's lines, written by the frame loop's thread (ThreadLog).
+void Session::drain_thread_log() {
+  std::vector<std::string> lines;
+  std::size_t dropped = 0;
+  {
+    const std::lock_guard<std::mutex> lock(thread_log_->mutex);
+    lines.swap(thread_log_->lines);
+    std::swap(dropped, thread_log_->dropped);
+  }
+  if (opt_.quiet) return;
+  for (const std::string& line : lines) io_.err << line << "\n";
+  if (dropped > 0) io_.err << "gazelod hid: (" << dropped << " more lines not shown)\n";
 }
 
 // The first few source changes are said as they happen, the rest (every blink is one) counted

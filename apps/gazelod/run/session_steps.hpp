@@ -23,7 +23,9 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <mutex>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace gazelod::cli::run_steps {
@@ -93,6 +95,19 @@ class Session {
   std::optional<ClusterDecisionsFile> cluster_decisions_;
   std::optional<xr_host::XrApp> app_;
   std::shared_ptr<TraceFromFirstFrame> trace_;
+  // Lines the HID reader thread logs wait here for the frame loop (drain_thread_log): io_.err
+  // is not that thread's to write. In-process (Python, eval, the tests) it is an ostringstream,
+  // and the thread's line written beside the frame loop's corrupted its buffer ("malloc():
+  // smallbin double linked list corrupted", once in a loaded CI run). Shared with the thread's
+  // callback, so a line logged while the plugin shuts down has somewhere to go.
+  struct ThreadLog {
+    std::mutex mutex;
+    std::vector<std::string> lines;
+    std::size_t dropped = 0;  // past kMaxLines between two drains
+    static constexpr std::size_t kMaxLines = 1000;
+  };
+  std::shared_ptr<ThreadLog> thread_log_ = std::make_shared<ThreadLog>();
+  void drain_thread_log();
   std::unique_ptr<LodPlugin> plugin_;
   // Source changes: the first few said as they happen, the rest (every blink is one) counted.
   int source_changes_ = 0, source_changes_unshown_ = 0;
